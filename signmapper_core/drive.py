@@ -1,0 +1,309 @@
+"""Reader of the drive folder, version 1 (``shared/drive-format.md``).
+
+:func:`open_drive` validates the whole folder up front (metadata, every CSV row,
+every image header) and fails with a :class:`DriveFormatError` naming the file,
+line and field. Pixels are only decoded when a pair is asked for, one pair at a
+time, so memory does not grow with the length of the drive.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Iterator
+
+import numpy as np
+
+from .errors import DriveFormatError
+from .geometry import Camera, Pose
+from .rasterio import DEPTH_SUFFIXES, IMAGE_SUFFIXES, image_size, read_depth, read_image
+
+FORMAT_ID = "stereo-drive/1"
+POSE_COLUMNS = ("id", "time", "easting", "northing", "height", "heading", "pitch", "roll")
+TRUTH_COLUMNS = ("sign_id", "template_id", "easting", "northing", "height", "width_m", "height_m", "facing")
+CAMERA_KEYS = ("width", "height", "fx", "fy", "cx", "cy", "baseline_m")
+
+
+@dataclass(frozen=True)
+class PairRecord:
+    """One stereo pair: its pose and the paths of its files (not their pixels)."""
+
+    index: int
+    id: str
+    time: float
+    pose: Pose
+    left_path: Path
+    right_path: Path | None
+    depth_path: Path | None
+
+
+@dataclass(frozen=True)
+class TruthSign:
+    """One row of ``truth.csv``: a physical sign's face centre, standard size and facing."""
+
+    sign_id: str
+    template_id: str
+    easting: float
+    northing: float
+    height: float
+    width_m: float
+    height_m: float
+    facing: float
+
+    @property
+    def position(self) -> np.ndarray:
+        return np.array([self.easting, self.northing, self.height])
+
+
+@dataclass
+class Drive:
+    """A validated drive folder."""
+
+    root: Path
+    crs: str
+    camera: Camera
+    pairs: list[PairRecord]
+    truth: list[TruthSign] | None = None
+    metadata: dict = field(default_factory=dict)
+
+    def __len__(self) -> int:
+        return len(self.pairs)
+
+    @property
+    def image_size(self) -> tuple[int, int]:
+        return self.camera.width, self.camera.height
+
+    def pair(self, pair_id: str) -> PairRecord:
+        for record in self.pairs:
+            if record.id == pair_id:
+                return record
+        raise KeyError(f"{self.root}: no pair with id '{pair_id}' in poses.csv")
+
+    def load_left(self, record: PairRecord) -> np.ndarray:
+        """Left normal image as BGR uint8."""
+        return read_image(record.left_path, self.image_size)
+
+    def load_right(self, record: PairRecord) -> np.ndarray | None:
+        """Right normal image as BGR uint8, or None where the drive has none."""
+        return None if record.right_path is None else read_image(record.right_path, self.image_size)
+
+    def load_depth(self, record: PairRecord) -> np.ndarray | None:
+        """Given depth map (float32 metres, NaN = no depth), or None where none is given."""
+        return None if record.depth_path is None else read_depth(record.depth_path, self.image_size)
+
+    def iter_pairs(self) -> Iterator[PairRecord]:
+        return iter(self.pairs)
+
+
+def open_drive(path, check_images: bool = True) -> Drive:
+    """Validate and open a drive folder.
+
+    ``check_images`` reads the header of every image and depth map to check it
+    decodes and has the camera's size; leave it on unless the caller checks.
+    """
+    root = Path(path)
+    if not root.is_dir():
+        raise DriveFormatError(root, "drive folder does not exist or is not a folder")
+    metadata = _read_drive_json(root / "drive.json")
+    crs = _validate_crs(root / "drive.json", metadata["crs"])
+    camera = _read_camera(root / "drive.json", metadata["camera"])
+    rows = _read_poses(root / "poses.csv")
+    pairs = _attach_files(root, rows, camera, check_images)
+    truth_path = root / "truth.csv"
+    truth = read_truth(truth_path) if truth_path.exists() else None
+    return Drive(root=root, crs=crs, camera=camera, pairs=pairs, truth=truth, metadata=metadata)
+
+
+def _read_drive_json(path: Path) -> dict:
+    if not path.is_file():
+        raise DriveFormatError(path, "required file is missing")
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+        line = getattr(exc, "lineno", None)
+        raise DriveFormatError(path, f"not valid JSON ({exc})", line=line) from exc
+    if not isinstance(data, dict):
+        raise DriveFormatError(path, "must hold a JSON object")
+    for key in ("format", "crs", "camera"):
+        if key not in data:
+            raise DriveFormatError(path, "required key is missing", field=key)
+    if data["format"] != FORMAT_ID:
+        raise DriveFormatError(path, f"unsupported format {data['format']!r}, expected {FORMAT_ID!r}", field="format")
+    if not isinstance(data["camera"], dict):
+        raise DriveFormatError(path, "must be an object", field="camera")
+    return data
+
+
+def _validate_crs(path: Path, crs_text) -> str:
+    """Accept any projected CRS with metre units that PROJ knows; return it as given."""
+    from pyproj import CRS
+    from pyproj.exceptions import CRSError
+
+    if not isinstance(crs_text, str) or not crs_text.strip():
+        raise DriveFormatError(path, "must be a CRS string such as 'EPSG:2056'", field="crs")
+    try:
+        crs = CRS.from_user_input(crs_text)
+    except CRSError as exc:
+        raise DriveFormatError(path, f"unknown CRS {crs_text!r}", field="crs") from exc
+    horizontal = crs.sub_crs_list[0] if crs.is_compound else crs
+    if not horizontal.is_projected:
+        raise DriveFormatError(path, f"CRS {crs_text!r} is not projected; positions must be in metres", field="crs")
+    units = {axis.unit_name.lower() for axis in horizontal.axis_info}
+    if units - {"metre", "meter"}:
+        raise DriveFormatError(path, f"CRS {crs_text!r} has units {sorted(units)}, not metres", field="crs")
+    return crs_text.strip()
+
+
+def _read_camera(path: Path, cam: dict) -> Camera:
+    values = {}
+    for key in CAMERA_KEYS:
+        if key not in cam:
+            raise DriveFormatError(path, "required key is missing", field=f"camera.{key}")
+        value = cam[key]
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+            raise DriveFormatError(path, f"must be a finite number, found {value!r}", field=f"camera.{key}")
+        values[key] = value
+    for key in ("width", "height"):
+        if values[key] != int(values[key]) or values[key] <= 0:
+            raise DriveFormatError(path, f"must be a positive whole number, found {values[key]!r}", field=f"camera.{key}")
+        values[key] = int(values[key])
+    for key in ("fx", "fy", "baseline_m"):
+        if values[key] <= 0:
+            raise DriveFormatError(path, f"must be positive, found {values[key]!r}", field=f"camera.{key}")
+    return Camera(**values)
+
+
+def _parse_float(path, line, name, text) -> float:
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        raise DriveFormatError(path, f"{text!r} is not a number", line=line, field=name) from None
+    if not math.isfinite(value):
+        raise DriveFormatError(path, f"{text!r} is not a finite number", line=line, field=name)
+    return value
+
+
+def _read_csv_rows(path: Path, columns: tuple[str, ...]) -> Iterator[tuple[int, dict]]:
+    """Yield (line number, row) with every required column present and non-empty."""
+    if not path.is_file():
+        raise DriveFormatError(path, "required file is missing")
+    with open(path, newline="", encoding="utf-8-sig") as fh:
+        reader = csv.reader(fh)
+        try:
+            header = next(reader)
+        except StopIteration:
+            raise DriveFormatError(path, "file is empty, expected a header line", line=1) from None
+        except (csv.Error, UnicodeDecodeError) as exc:
+            raise DriveFormatError(path, f"unreadable CSV ({exc})", line=1) from exc
+        header = [h.strip() for h in header]
+        for col in columns:
+            if col not in header:
+                raise DriveFormatError(path, f"header lacks required column; found {header}", line=1, field=col)
+        index = {col: header.index(col) for col in columns}
+        while True:
+            try:
+                raw = next(reader)
+            except StopIteration:
+                return
+            except (csv.Error, UnicodeDecodeError) as exc:
+                raise DriveFormatError(path, f"unreadable CSV ({exc})", line=reader.line_num) from exc
+            line = reader.line_num
+            if not raw or all(not cell.strip() for cell in raw):
+                continue
+            if len(raw) != len(header):
+                raise DriveFormatError(path, f"has {len(raw)} fields, header has {len(header)}", line=line)
+            row = {}
+            for col, i in index.items():
+                cell = raw[i].strip()
+                if cell == "":
+                    raise DriveFormatError(path, "value is empty", line=line, field=col)
+                row[col] = cell
+            yield line, row
+
+
+def _read_poses(path: Path) -> list[tuple[int, str, float, Pose]]:
+    rows = []
+    seen: dict[str, int] = {}
+    last_time = -math.inf
+    for line, row in _read_csv_rows(path, POSE_COLUMNS):
+        pair_id = row["id"]
+        if "/" in pair_id or "\\" in pair_id or pair_id in (".", ".."):
+            raise DriveFormatError(path, f"id {pair_id!r} must not contain a path separator", line=line, field="id")
+        if pair_id in seen:
+            raise DriveFormatError(path, f"id {pair_id!r} repeats line {seen[pair_id]}", line=line, field="id")
+        seen[pair_id] = line
+        nums = {k: _parse_float(path, line, k, row[k]) for k in POSE_COLUMNS[1:]}
+        if nums["time"] <= last_time:
+            raise DriveFormatError(
+                path, f"time {row['time']} is not after the previous row's {last_time:g}", line=line, field="time"
+            )
+        last_time = nums["time"]
+        if not -90.0 <= nums["pitch"] <= 90.0:
+            raise DriveFormatError(path, f"pitch {nums['pitch']} outside [-90, 90] degrees", line=line, field="pitch")
+        pose = Pose(nums["easting"], nums["northing"], nums["height"], nums["heading"], nums["pitch"], nums["roll"])
+        rows.append((line, pair_id, nums["time"], pose))
+    if not rows:
+        raise DriveFormatError(path, "has a header but no pair rows", line=2)
+    return rows
+
+
+def _find_file(folder: Path, stem: str, suffixes: tuple[str, ...], poses_path: Path, line: int) -> Path | None:
+    """The single file ``<stem><suffix>`` in ``folder``; more than one is ambiguous."""
+    found = [folder / f"{stem}{s}" for s in suffixes if (folder / f"{stem}{s}").is_file()]
+    if len(found) > 1:
+        names = ", ".join(p.name for p in found)
+        raise DriveFormatError(poses_path, f"ambiguous files for id {stem!r} in {folder.name}/: {names}", line=line, field="id")
+    return found[0] if found else None
+
+
+def _attach_files(root: Path, rows, camera: Camera, check_images: bool) -> list[PairRecord]:
+    poses_path = root / "poses.csv"
+    left_dir, right_dir, depth_dir = root / "left", root / "right", root / "depth"
+    if not left_dir.is_dir():
+        raise DriveFormatError(left_dir, "required folder is missing")
+    expected = (camera.width, camera.height)
+    pairs = []
+    for index, (line, pair_id, time, pose) in enumerate(rows):
+        left = _find_file(left_dir, pair_id, IMAGE_SUFFIXES, poses_path, line)
+        if left is None:
+            raise DriveFormatError(
+                poses_path, f"no left image left/{pair_id}.jpg|.png|.tif for id {pair_id!r}", line=line, field="id"
+            )
+        right = _find_file(right_dir, pair_id, IMAGE_SUFFIXES, poses_path, line) if right_dir.is_dir() else None
+        depth = _find_file(depth_dir, pair_id, DEPTH_SUFFIXES, poses_path, line) if depth_dir.is_dir() else None
+        if right is None and depth is None:
+            raise DriveFormatError(
+                poses_path,
+                f"pair {pair_id!r} has neither depth/{pair_id}.* nor right/{pair_id}.* to compute depth from",
+                line=line,
+                field="id",
+            )
+        if check_images:
+            for path in (left, right, depth):
+                size = image_size(path) if path is not None else expected
+                if size != expected:
+                    raise DriveFormatError(
+                        path, f"size {size[0]}x{size[1]} differs from the camera's {expected[0]}x{expected[1]}"
+                    )
+        pairs.append(PairRecord(index, pair_id, time, pose, left, right, depth))
+    return pairs
+
+
+def read_truth(path) -> list[TruthSign]:
+    """Read and validate ``truth.csv``."""
+    path = Path(path)
+    signs = []
+    seen: dict[str, int] = {}
+    for line, row in _read_csv_rows(path, TRUTH_COLUMNS):
+        if row["sign_id"] in seen:
+            raise DriveFormatError(path, f"sign_id {row['sign_id']!r} repeats line {seen[row['sign_id']]}", line=line, field="sign_id")
+        seen[row["sign_id"]] = line
+        nums = {k: _parse_float(path, line, k, row[k]) for k in TRUTH_COLUMNS[2:]}
+        for k in ("width_m", "height_m"):
+            if nums[k] <= 0:
+                raise DriveFormatError(path, f"must be positive, found {row[k]}", line=line, field=k)
+        signs.append(TruthSign(row["sign_id"], row["template_id"], **nums))
+    return signs

@@ -1,0 +1,23 @@
+"""Exceptions of the core, each carrying enough context to name the culprit."""
+
+from __future__ import annotations
+
+
+class DriveFormatError(ValueError):
+    """A drive folder breaks ``drive-format.md``; the message names file, line and field."""
+
+    def __init__(self, path, message: str, line: int | None = None, field: str | None = None):
+        self.path = str(path)
+        self.line = line
+        self.field = field
+        self.reason = message
+        where = self.path
+        if line is not None:
+            where += f", line {line}"
+        if field is not None:
+            where += f", field '{field}'"
+        super().__init__(f"{where}: {message}")
+
+
+class ImageReadError(DriveFormatError):
+    """An image or depth map exists but cannot be decoded or has the wrong size."""
