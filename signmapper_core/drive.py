@@ -13,7 +13,7 @@ import json
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Iterator
+from typing import Callable, Iterator
 
 import numpy as np
 
@@ -24,6 +24,7 @@ from .rasterio import DEPTH_SUFFIXES, IMAGE_SUFFIXES, image_size, read_depth, re
 FORMAT_ID = "stereo-drive/1"
 POSE_COLUMNS = ("id", "time", "easting", "northing", "height", "heading", "pitch", "roll")
 TRUTH_COLUMNS = ("sign_id", "template_id", "easting", "northing", "height", "width_m", "height_m", "facing")
+ProgressCallback = Callable[[int, int], None]
 CAMERA_KEYS = ("width", "height", "fx", "fy", "cx", "cy", "baseline_m")
 
 
@@ -98,11 +99,12 @@ class Drive:
         return iter(self.pairs)
 
 
-def open_drive(path, check_images: bool = True) -> Drive:
+def open_drive(path, check_images: bool = True, progress: ProgressCallback | None = None) -> Drive:
     """Validate and open a drive folder.
 
     ``check_images`` reads the header of every image and depth map to check it
     decodes and has the camera's size; leave it on unless the caller checks.
+    ``progress(done, total)`` is called per pair; it may raise to cancel.
     """
     root = Path(path)
     if not root.is_dir():
@@ -111,7 +113,7 @@ def open_drive(path, check_images: bool = True) -> Drive:
     crs = _validate_crs(root / "drive.json", metadata["crs"])
     camera = _read_camera(root / "drive.json", metadata["camera"])
     rows = _read_poses(root / "poses.csv")
-    pairs = _attach_files(root, rows, camera, check_images)
+    pairs = _attach_files(root, rows, camera, check_images, progress)
     truth_path = root / "truth.csv"
     truth = read_truth(truth_path) if truth_path.exists() else None
     return Drive(root=root, crs=crs, camera=camera, pairs=pairs, truth=truth, metadata=metadata)
@@ -168,7 +170,9 @@ def _read_camera(path: Path, cam: dict) -> Camera:
         values[key] = value
     for key in ("width", "height"):
         if values[key] != int(values[key]) or values[key] <= 0:
-            raise DriveFormatError(path, f"must be a positive whole number, found {values[key]!r}", field=f"camera.{key}")
+            raise DriveFormatError(
+                path, f"must be a positive whole number, found {values[key]!r}", field=f"camera.{key}"
+            )
         values[key] = int(values[key])
     for key in ("fx", "fy", "baseline_m"):
         if values[key] <= 0:
@@ -255,11 +259,13 @@ def _find_file(folder: Path, stem: str, suffixes: tuple[str, ...], poses_path: P
     found = [folder / f"{stem}{s}" for s in suffixes if (folder / f"{stem}{s}").is_file()]
     if len(found) > 1:
         names = ", ".join(p.name for p in found)
-        raise DriveFormatError(poses_path, f"ambiguous files for id {stem!r} in {folder.name}/: {names}", line=line, field="id")
+        raise DriveFormatError(
+            poses_path, f"ambiguous files for id {stem!r} in {folder.name}/: {names}", line=line, field="id"
+        )
     return found[0] if found else None
 
 
-def _attach_files(root: Path, rows, camera: Camera, check_images: bool) -> list[PairRecord]:
+def _attach_files(root: Path, rows, camera: Camera, check_images: bool, progress=None) -> list[PairRecord]:
     poses_path = root / "poses.csv"
     left_dir, right_dir, depth_dir = root / "left", root / "right", root / "depth"
     if not left_dir.is_dir():
@@ -289,6 +295,8 @@ def _attach_files(root: Path, rows, camera: Camera, check_images: bool) -> list[
                         path, f"size {size[0]}x{size[1]} differs from the camera's {expected[0]}x{expected[1]}"
                     )
         pairs.append(PairRecord(index, pair_id, time, pose, left, right, depth))
+        if progress is not None:
+            progress(index + 1, len(rows))
     return pairs
 
 
@@ -299,7 +307,9 @@ def read_truth(path) -> list[TruthSign]:
     seen: dict[str, int] = {}
     for line, row in _read_csv_rows(path, TRUTH_COLUMNS):
         if row["sign_id"] in seen:
-            raise DriveFormatError(path, f"sign_id {row['sign_id']!r} repeats line {seen[row['sign_id']]}", line=line, field="sign_id")
+            raise DriveFormatError(
+                path, f"sign_id {row['sign_id']!r} repeats line {seen[row['sign_id']]}", line=line, field="sign_id"
+            )
         seen[row["sign_id"]] = line
         nums = {k: _parse_float(path, line, k, row[k]) for k in TRUTH_COLUMNS[2:]}
         for k in ("width_m", "height_m"):

@@ -1,0 +1,86 @@
+# Sign Mapper — set-up, tests, demo and packaging on Debian 12.
+#
+# QGIS and qgis_process.bin run the system Python (/usr/bin/python3), not the
+# venv, so every target puts the venv's site-packages on PYTHONPATH: that is
+# how OpenCV (pip) becomes importable next to Debian's QGIS, numpy and GDAL.
+
+SHELL := /bin/bash
+SYSTEM_PYTHON := /usr/bin/python3
+VENV := .venv
+PY := $(VENV)/bin/python
+PY_VERSION := $(shell $(SYSTEM_PYTHON) -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null || echo 3.11)
+SITE_PACKAGES := $(CURDIR)/$(VENV)/lib/python$(PY_VERSION)/site-packages
+QGIS_PROCESS := qgis_process.bin
+SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
+APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-pip python3-numpy python3-scipy \
+                python3-pyproj python3-shapely python3-pil python3-gdal git
+
+export PYTHONPATH := $(SITE_PACKAGES)$(if $(PYTHONPATH),:$(PYTHONPATH))
+export QT_QPA_PLATFORM := offscreen
+
+DEMO_DIR := demo-output
+DEMO_DRIVE := $(DEMO_DIR)/sample-drive
+DEMO_PAIRS := 20
+PLUGIN_NAME := sign_mapper
+QGIS_PROFILE_PLUGINS := $(HOME)/.local/share/QGIS/QGIS3/profiles/default/python/plugins
+
+.PHONY: setup apt venv test test-core demo lint zip deploy catalogue-sheet clean help
+
+help:
+	@echo "make setup     Debian packages (QGIS), venv with pinned requirements"
+	@echo "make test      all tests (core, QGIS, qgis_process.bin)"
+	@echo "make test-core core tests only, without QGIS"
+	@echo "make demo      generate a sample drive and run Sign Mapper on it with qgis_process.bin"
+	@echo "make lint      ruff"
+	@echo "make zip       dist/sign_mapper.zip, installable in QGIS"
+	@echo "make deploy    link this checkout into the default QGIS profile"
+
+setup: apt venv
+
+apt:
+	@if ! dpkg -s $(APT_PACKAGES) >/dev/null 2>&1; then \
+		echo "Installing Debian packages: $(APT_PACKAGES)"; \
+		$(SUDO) apt-get update -qq && \
+		DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $(APT_PACKAGES); \
+	fi
+
+venv: $(VENV)/.installed
+
+$(VENV)/.installed: requirements.txt requirements-dev.txt
+	$(SYSTEM_PYTHON) -m venv --system-site-packages $(VENV)
+	$(PY) -m pip install -q -r requirements-dev.txt
+	$(PY) -c "import cv2, numpy, qgis.core; print('OpenCV', cv2.__version__, 'numpy', numpy.__version__)"
+	touch $@
+
+test: setup
+	$(PY) -m pytest
+
+test-core: venv
+	$(PY) -m pytest -p no:pytest_qgis tests/core
+
+demo: setup
+	@mkdir -p $(DEMO_DIR)/profile
+	@[ -f $(DEMO_DRIVE)/poses.csv ] || $(PY) -m signmapper_core.simulate $(DEMO_DRIVE) --pairs $(DEMO_PAIRS) --seed 7
+	@rm -rf $(DEMO_DIR)/plugins && mkdir -p $(DEMO_DIR)/plugins && ln -s $(CURDIR) $(DEMO_DIR)/plugins/$(PLUGIN_NAME)
+	@export QGIS_PLUGINPATH=$(CURDIR)/$(DEMO_DIR)/plugins QGIS_CUSTOM_CONFIG_PATH=$(CURDIR)/$(DEMO_DIR)/profile; \
+	$(QGIS_PROCESS) plugins enable $(PLUGIN_NAME) >/dev/null 2>&1; \
+	$(QGIS_PROCESS) run signmapper:drivetrajectory -- DRIVE=$(CURDIR)/$(DEMO_DRIVE) \
+		OUTPUT=$(CURDIR)/$(DEMO_DIR)/trajectory.gpkg TRACK=$(CURDIR)/$(DEMO_DIR)/track.gpkg
+	@echo "Demo output: $(DEMO_DIR)/trajectory.gpkg, $(DEMO_DIR)/track.gpkg"
+
+lint: venv
+	$(PY) -m ruff check .
+
+catalogue-sheet: venv
+	$(PY) -m signmapper_core.catalogue.sheet docs/catalogue-sheet.png
+
+zip: venv
+	$(PY) scripts/build_zip.py dist/$(PLUGIN_NAME).zip
+
+deploy:
+	mkdir -p $(QGIS_PROFILE_PLUGINS)
+	ln -sfn $(CURDIR) $(QGIS_PROFILE_PLUGINS)/$(PLUGIN_NAME)
+	@echo "Linked into $(QGIS_PROFILE_PLUGINS)/$(PLUGIN_NAME); start QGIS with PYTHONPATH=$(SITE_PACKAGES)"
+
+clean:
+	rm -rf build dist $(DEMO_DIR) .pytest_cache .ruff_cache

@@ -1,0 +1,12 @@
+"""Sign Mapper QGIS plugin entry point.
+
+Kept free of QGIS imports at module level so the package (and its core) can be
+imported by plain Python tools; QGIS calls :func:`classFactory`.
+"""
+
+
+def classFactory(iface):  # noqa: N802 - name fixed by QGIS
+    """Construct the plugin; QGIS (and ``qgis_process`` with ``iface`` None) calls this."""
+    from .plugin import SignMapperPlugin
+
+    return SignMapperPlugin(iface)

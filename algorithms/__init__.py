@@ -1,0 +1,12 @@
+"""Processing algorithms of Sign Mapper: thin wrappers around ``signmapper_core``.
+
+Algorithm modules import the core lazily inside ``processAlgorithm`` so the
+provider loads (and explains what to install) even when OpenCV is missing.
+"""
+
+
+def algorithm_classes():
+    """Every algorithm class the provider registers."""
+    from .drive_trajectory import DriveTrajectoryAlgorithm
+
+    return [DriveTrajectoryAlgorithm]

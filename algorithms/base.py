@@ -1,0 +1,73 @@
+"""Shared idioms of Sign Mapper's algorithms: groups, help, dependency check, feedback."""
+
+from __future__ import annotations
+
+from qgis.core import QgsProcessingAlgorithm, QgsProcessingException
+from qgis.PyQt.QtCore import QCoreApplication
+
+from ..dependencies import install_hint, missing_modules
+
+
+class SignMapperAlgorithm(QgsProcessingAlgorithm):
+    """Base class: subclasses set NAME, DISPLAY_NAME, GROUP_ID, HELP and add parameters."""
+
+    NAME = ""
+    DISPLAY_NAME = ""
+    GROUP_ID = "mapping"
+    HELP = ""
+
+    GROUPS = {"mapping": "Mapping", "tools": "Tools", "quality": "Quality"}
+
+    def tr(self, text):
+        return QCoreApplication.translate("SignMapper", text)
+
+    def createInstance(self):  # noqa: N802
+        return type(self)()
+
+    def name(self):
+        return self.NAME
+
+    def displayName(self):  # noqa: N802
+        return self.tr(self.DISPLAY_NAME)
+
+    def group(self):
+        return self.tr(self.GROUPS[self.GROUP_ID])
+
+    def groupId(self):  # noqa: N802
+        return self.GROUP_ID
+
+    def shortHelpString(self):  # noqa: N802
+        """The algorithm's help followed by every parameter's own help text."""
+        lines = [self.tr(self.HELP), "", "<b>Parameters</b>", "<ul>"]
+        for param in self.parameterDefinitions():
+            help_text = param.help() if hasattr(param, "help") else ""
+            lines.append(f"<li><b>{param.description()}</b>: {help_text}</li>")
+        lines.append("</ul>")
+        return "\n".join(lines)
+
+    def add_parameter(self, param, help_text: str):
+        """Add a parameter with its help text (shown in the dialog and in shortHelpString)."""
+        param.setHelp(self.tr(help_text))
+        self.addParameter(param)
+        return param
+
+    def require_dependencies(self):
+        """Raise a clear QgsProcessingException naming what to install when OpenCV & co. are missing."""
+        missing = missing_modules()
+        if missing:
+            raise QgsProcessingException(install_hint(missing))
+
+
+class Cancelled(Exception):
+    """Raised from progress callbacks of the core when the user cancels."""
+
+
+def core_progress(feedback, start: float = 0.0, span: float = 100.0):
+    """A ``progress(done, total)`` callback for the core that drives ``feedback`` and honours cancel."""
+
+    def progress(done: int, total: int) -> None:
+        if feedback.isCanceled():
+            raise Cancelled()
+        feedback.setProgress(start + span * done / max(total, 1))
+
+    return progress

@@ -1,0 +1,111 @@
+"""``signmapper:drivetrajectory``: the pose of every stereo pair as a PointZ layer (and a track line)."""
+
+from __future__ import annotations
+
+from qgis.core import (
+    QgsCoordinateReferenceSystem,
+    QgsFeature,
+    QgsFeatureSink,
+    QgsField,
+    QgsFields,
+    QgsGeometry,
+    QgsLineString,
+    QgsPoint,
+    QgsProcessing,
+    QgsProcessingException,
+    QgsProcessingParameterFeatureSink,
+    QgsProcessingParameterFile,
+    QgsWkbTypes,
+)
+from qgis.PyQt.QtCore import QVariant
+
+from .base import Cancelled, SignMapperAlgorithm, core_progress
+from .drive_input import open_drive_or_raise
+
+
+def trajectory_fields() -> QgsFields:
+    fields = QgsFields()
+    fields.append(QgsField("pair_id", QVariant.String))
+    fields.append(QgsField("pair_index", QVariant.Int))
+    fields.append(QgsField("time", QVariant.Double))
+    fields.append(QgsField("heading", QVariant.Double))
+    fields.append(QgsField("pitch", QVariant.Double))
+    fields.append(QgsField("roll", QVariant.Double))
+    fields.append(QgsField("image", QVariant.String))
+    return fields
+
+
+class DriveTrajectoryAlgorithm(SignMapperAlgorithm):
+    NAME = "drivetrajectory"
+    DISPLAY_NAME = "Drive trajectory"
+    GROUP_ID = "tools"
+    HELP = (
+        "Reads a drive folder (stereo-drive/1: drive.json, poses.csv, left/, right/ or depth/) and writes one "
+        "3D point per stereo pair at the left camera's projection centre, in the drive's CRS, with the pair id, "
+        "time, heading, pitch, roll and the path of the left image. Optionally writes the track as a 3D line. "
+        "The whole folder is validated first: a missing or malformed file stops the run with a message naming "
+        "the file, the line and the field."
+    )
+
+    DRIVE = "DRIVE"
+    OUTPUT = "OUTPUT"
+    TRACK = "TRACK"
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add_parameter(
+            QgsProcessingParameterFile(self.DRIVE, self.tr("Drive folder"), behavior=QgsProcessingParameterFile.Folder),
+            "Folder of one drive in the stereo-drive/1 layout: drive.json, poses.csv, left/ and right/ or depth/.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSink(self.OUTPUT, self.tr("Trajectory points"), QgsProcessing.TypeVectorPoint),
+            "PointZ layer (GeoPackage by default) with one feature per stereo pair, in the drive's CRS.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSink(
+                self.TRACK, self.tr("Trajectory line"), QgsProcessing.TypeVectorLine, optional=True,
+                createByDefault=False,
+            ),
+            "Optional LineStringZ layer joining the pairs in driving order.",
+        )
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        self.require_dependencies()
+        folder = self.parameterAsFile(parameters, self.DRIVE, context)
+        feedback.pushInfo(self.tr(f"Validating drive {folder}"))
+        try:
+            drive = open_drive_or_raise(folder, core_progress(feedback, 0, 50))
+        except Cancelled:
+            raise QgsProcessingException(self.tr("Cancelled while validating the drive; nothing written.")) from None
+        crs = QgsCoordinateReferenceSystem(drive.crs)
+        fields = trajectory_fields()
+        sink, dest_id = self.parameterAsSink(
+            parameters, self.OUTPUT, context, fields, QgsWkbTypes.PointZ, crs
+        )
+        if sink is None:
+            raise QgsProcessingException(self.invalidSinkError(parameters, self.OUTPUT))
+        track_sink, track_id = self.parameterAsSink(
+            parameters, self.TRACK, context, QgsFields(), QgsWkbTypes.LineStringZ, crs
+        )
+        vertices = []
+        total = len(drive.pairs)
+        for record in drive.pairs:
+            if feedback.isCanceled():
+                break
+            pose = record.pose
+            point = QgsPoint(pose.easting, pose.northing, pose.height)
+            vertices.append(QgsPoint(pose.easting, pose.northing, pose.height))
+            feature = QgsFeature(fields)
+            feature.setGeometry(QgsGeometry(point))
+            feature.setAttributes(
+                [record.id, record.index, record.time, pose.heading, pose.pitch, pose.roll, str(record.left_path)]
+            )
+            sink.addFeature(feature, QgsFeatureSink.FastInsert)
+            feedback.setProgress(50 + 50 * (record.index + 1) / total)
+        feedback.pushInfo(self.tr(f"{len(vertices)} of {total} pairs written"))
+        results = {self.OUTPUT: dest_id}
+        if track_sink is not None:
+            line = QgsFeature()
+            line.setGeometry(QgsGeometry(QgsLineString(vertices)))
+            track_sink.addFeature(line, QgsFeatureSink.FastInsert)
+            results[self.TRACK] = track_id
+        return results

@@ -1,0 +1,40 @@
+"""The plugin object QGIS holds: registers the provider, later the review dock."""
+
+from __future__ import annotations
+
+from qgis.core import Qgis, QgsApplication, QgsMessageLog
+
+from .dependencies import install_hint, missing_modules
+
+LOG_TAG = "Sign Mapper"
+
+
+class SignMapperPlugin:
+    """``classFactory`` only constructs; ``initProcessing``/``initGui`` do the work."""
+
+    def __init__(self, iface):
+        self.iface = iface
+        self.provider = None
+
+    def initProcessing(self):  # noqa: N802 - called by QGIS and qgis_process
+        """Register the Processing provider once; a second call does nothing."""
+        if self.provider is not None:
+            return
+        missing = missing_modules()
+        if missing:
+            QgsMessageLog.logMessage(install_hint(missing), LOG_TAG, Qgis.Warning)
+        from .provider.provider import SignMapperProvider
+
+        self.provider = SignMapperProvider()
+        QgsApplication.processingRegistry().addProvider(self.provider)
+
+    def initGui(self):  # noqa: N802
+        self.initProcessing()
+        missing = missing_modules()
+        if missing and self.iface is not None:
+            self.iface.messageBar().pushMessage(LOG_TAG, install_hint(missing), Qgis.Warning, 0)
+
+    def unload(self):
+        if self.provider is not None:
+            QgsApplication.processingRegistry().removeProvider(self.provider)
+            self.provider = None
