@@ -1,0 +1,116 @@
+"""Step 7: hierarchical classification by normalised cross-correlation.
+
+Colour and shape have already cut the catalogue to a few candidates; each is
+rendered at the segment's size (a small scale and shift search absorbs the
+segment's outline error) and compared with TM_CCOEFF_NORMED, masked with the
+template's alpha so the background around the face does not count. The best
+score is the classification indicator.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Dict, Optional, Sequence, Tuple
+
+import cv2
+import numpy as np
+
+CANONICAL_PX = 128  # templates are rendered once at this size and resized per segment
+
+_render_cache: Dict[Tuple[int, str], tuple] = {}
+
+
+@dataclass(frozen=True)
+class ClassificationResult:
+    template_id: Optional[str]
+    score: float  # best NCC, the classification indicator (clipped to 0..1)
+    scores: Dict[str, float] = field(default_factory=dict)
+    scale: float = 1.0
+    shift_px: Tuple[int, int] = (0, 0)
+
+
+def canonical_template(catalogue, template_id: str) -> tuple:
+    """(bgr, alpha) of a template cropped to its face, rendered once per catalogue."""
+    key = (id(catalogue), template_id)
+    hit = _render_cache.get(key)
+    if hit is not None and hit[0] is catalogue:
+        return hit[1], hit[2]
+    bgr, alpha = catalogue.render(template_id, CANONICAL_PX)
+    ys, xs = np.nonzero(alpha > 127)
+    if ys.size:
+        y0, y1, x0, x1 = ys.min(), ys.max() + 1, xs.min(), xs.max() + 1
+        bgr, alpha = bgr[y0:y1, x0:x1], alpha[y0:y1, x0:x1]
+    _render_cache[key] = (catalogue, bgr, alpha)
+    return bgr, alpha
+
+
+def template_at(catalogue, template_id: str, width: int, height: int) -> tuple:
+    """Template (bgr, binary alpha) resized so its face fills width x height pixels."""
+    bgr, alpha = canonical_template(catalogue, template_id)
+    interp = cv2.INTER_AREA if width < bgr.shape[1] else cv2.INTER_LINEAR
+    bgr = cv2.resize(bgr, (width, height), interpolation=interp)
+    alpha = cv2.resize(alpha, (width, height), interpolation=cv2.INTER_LINEAR)
+    return bgr, np.where(alpha > 127, 255, 0).astype(np.uint8)
+
+
+def crop_for_matching(image: np.ndarray, bbox, scales: Sequence[float], shift_fraction: float, max_px: int):
+    """Region around ``bbox`` big enough for the scale and shift search, downscaled to ``max_px``.
+
+    Returns (region, factor, (w, h) of the bbox at that factor). Pixels beyond the
+    image border are replicated so the search never runs off the image.
+    """
+    x, y, w, h = bbox
+    side = max(w, h)
+    factor = min(1.0, max_px / float(side))
+    margin = int(math.ceil((max(scales) - 1.0) / 2.0 * side + shift_fraction * side)) + 2
+    region = cv2.copyMakeBorder(image, margin, margin, margin, margin, cv2.BORDER_REPLICATE)[
+        y : y + h + 2 * margin, x : x + w + 2 * margin
+    ]
+    if factor < 1.0:
+        region = cv2.resize(region, None, fx=factor, fy=factor, interpolation=cv2.INTER_AREA)
+    return region, factor, (max(3, int(round(w * factor))), max(3, int(round(h * factor))))
+
+
+def match_score(region: np.ndarray, tmpl: np.ndarray, alpha: np.ndarray) -> tuple:
+    """Best masked TM_CCOEFF_NORMED of ``tmpl`` in ``region``: (score, (dx, dy) of the best offset)."""
+    if tmpl.shape[0] > region.shape[0] or tmpl.shape[1] > region.shape[1] or not alpha.any():
+        return -1.0, (0, 0)
+    result = cv2.matchTemplate(region, tmpl, cv2.TM_CCOEFF_NORMED, mask=alpha)
+    result = np.nan_to_num(result, nan=-1.0, posinf=-1.0, neginf=-1.0)
+    _, best, _, loc = cv2.minMaxLoc(result)
+    return float(best), loc
+
+
+def classify_segment(
+    image: np.ndarray,
+    bbox,
+    catalogue,
+    template_ids: Sequence[str],
+    scales: Sequence[float] = (0.92, 1.0, 1.08),
+    shift_fraction: float = 0.08,
+    max_px: int = 96,
+) -> ClassificationResult:
+    """Best-matching template among ``template_ids`` for the segment in ``bbox`` of ``image``."""
+    if not template_ids:
+        return ClassificationResult(None, 0.0)
+    region, factor, (w, h) = crop_for_matching(image, bbox, scales, shift_fraction, max_px)
+    region = cv2.GaussianBlur(region, (3, 3), 0)  # both sides slightly smoothed: less aliasing
+    scores: Dict[str, float] = {}
+    best = (-1.0, None, 1.0, (0, 0))
+    for tid in template_ids:
+        top = -1.0
+        for s in scales:
+            tw, th = max(3, int(round(w * s))), max(3, int(round(h * s)))
+            tmpl, alpha = template_at(catalogue, tid, tw, th)
+            tmpl = cv2.GaussianBlur(tmpl, (3, 3), 0)
+            score, loc = match_score(region, tmpl, alpha)
+            if score > top:
+                top = score
+            if score > best[0]:
+                centre = ((region.shape[1] - tw) / 2.0, (region.shape[0] - th) / 2.0)
+                shift = (int(round((loc[0] - centre[0]) / factor)), int(round((loc[1] - centre[1]) / factor)))
+                best = (score, tid, s, shift)
+        scores[tid] = top
+    score, tid, scale, shift = best
+    return ClassificationResult(tid, float(np.clip(score, 0.0, 1.0)), scores, scale, shift)

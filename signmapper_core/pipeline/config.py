@@ -1,0 +1,75 @@
+"""Settings of the detection pipeline, one frozen dataclass so a run is reproducible.
+
+Defaults follow Cavegn (2011): a 4-14 m search space in front of the camera and
+HSV thresholds for the three sign colours. Hue is OpenCV's 0-179 scale.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Dict, Tuple
+
+# (hue_lo, hue_hi, sat_lo, sat_hi, val_lo, val_hi); several ranges per colour are OR-ed.
+HsvRange = Tuple[int, int, int, int, int, int]
+
+DEFAULT_HSV_RANGES: Dict[str, Tuple[HsvRange, ...]] = {
+    # red wraps around hue 0, so it needs both ends of the hue circle
+    "red": ((0, 10, 90, 255, 50, 255), (165, 179, 90, 255, 50, 255)),
+    "blue": ((100, 130, 110, 255, 40, 255),),
+    "yellow": ((16, 35, 110, 255, 90, 255),),
+}
+
+
+@dataclass(frozen=True)
+class PipelineConfig:
+    """All thresholds of the detection steps; the first six are the documented contract."""
+
+    near_m: float = 4.0
+    far_m: float = 14.0
+    colours: Tuple[str, ...] = ("red", "blue", "yellow")
+    exclude: Tuple[str, ...] = ()
+    detection_threshold: float = 0.5  # planar share of a segment needed to keep it
+    classification_threshold: float = 0.6  # NCC score needed for status "accepted"
+    size_tolerance: float = 0.15  # relative deviation from a standard format
+
+    # colour segmentation
+    hsv_ranges: Dict[str, Tuple[HsvRange, ...]] = field(default_factory=lambda: dict(DEFAULT_HSV_RANGES))
+    morph_open_px: int = 3  # removes speckle
+    morph_close_px: int = 5  # bridges small gaps in a sign's ring
+    min_segment_px: int = 150  # smaller segments cannot be sized or classified reliably
+    min_bbox_px: int = 12
+    border_margin_px: int = 2  # segments this close to the image border are cut and rejected
+
+    # shape
+    min_shape_fit: float = 0.72  # IoU with the best ideal outline
+
+    # depth from stereo (used when no depth map is given)
+    sgbm_scale: float = 0.5  # SGBM on a downscaled pair: ~8x faster, disparity still sub-pixel
+    sgbm_block_size: int = 5
+    sgbm_rows_only: bool = True  # match only the row bands holding colour candidates
+    sgbm_row_margin_px: int = 24
+
+    # planarity (detection indicator)
+    planarity_window_px: int = 7
+    planarity_tolerance_px: float = 0.6  # residual in full-resolution disparity pixels
+    max_slant_deg: float = 45.0  # signs face the road, roughly along the optical axis
+    min_depth_coverage: float = 0.3  # share of a segment's pixels needing a valid depth
+
+    # classification
+    scales: Tuple[float, ...] = (0.92, 1.0, 1.08)
+    shift_fraction: float = 0.08  # shift search, as a fraction of the segment size
+    max_template_px: int = 96  # larger segments are compared downscaled
+
+    # Hough fallback for faded or white/grey round signs
+    hough_enabled: bool = True
+    hough_scale: float = 0.5
+    hough_circularity: float = 0.85  # param2 of HOUGH_GRADIENT_ALT
+    hough_edge_threshold: float = 150.0  # param1 of HOUGH_GRADIENT_ALT
+    hough_max_status: str = "review"  # Hough finds are never accepted without a look
+
+    def __post_init__(self):
+        if not 0 < self.near_m < self.far_m:
+            raise ValueError(f"need 0 < near_m < far_m, got {self.near_m}, {self.far_m}")
+        unknown = set(self.colours) - set(self.hsv_ranges)
+        if unknown:
+            raise ValueError(f"no HSV thresholds for colours {sorted(unknown)}")

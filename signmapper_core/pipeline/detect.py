@@ -1,0 +1,208 @@
+"""Orchestration of the detection steps for one stereo pair or a window of it.
+
+depth -> search space -> colour segments -> shape -> metric size and format ->
+planarity (detection indicator) -> template NCC (classification indicator) ->
+3D position; then the Hough fallback for round signs the colour step missed.
+"""
+
+from __future__ import annotations
+
+from typing import List, Optional, Sequence, Tuple
+
+import numpy as np
+
+from ..geometry import Camera, Pose
+from .classify import classify_segment
+from .colour import Segment, colour_masks, segments_from_mask
+from .config import PipelineConfig
+from .depth import merge_row_bands, sgbm_depth
+from .detection import Detection
+from .hough import hough_segments, radius_range_px
+from .locate import bbox_centre, locate
+from .planarity import segment_planarity
+from .search_space import search_space_mask
+from .shape import catalogue_shapes, classify_shape
+from .sizing import measure_segment, round_to_format
+
+Roi = Tuple[int, int, int, int]  # x0, y0, x1, y1 (exclusive)
+
+
+def _entry_name(entry) -> str:
+    names = getattr(entry, "names", None) or {}
+    return names.get("de") or next(iter(names.values()), None) or entry.id
+
+
+def _shift_segment(seg: Segment, dx: int, dy: int) -> Segment:
+    x, y, w, h = seg.bbox
+    return Segment(seg.colour, (x + dx, y + dy, w, h), seg.mask, seg.contour + np.array([dx, dy]),
+                   seg.area_px, seg.touches_border, seg.source)
+
+
+def colour_segments(left: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig, roi: Roi) -> List[Segment]:
+    """Colour segments inside ``roi`` in full-image coordinates; cut ones are flagged ``touches_border``."""
+    x0, y0, x1, y1 = roi
+    crop = left[y0:y1, x0:x1]
+    masks = colour_masks(crop, config.hsv_ranges, config.colours, None if search is None else search[y0:y1, x0:x1],
+                         config.morph_open_px, config.morph_close_px)
+    out = []
+    for colour, mask in masks.items():
+        for seg in segments_from_mask(mask, colour, config.min_segment_px, config.min_bbox_px, config.border_margin_px):
+            out.append(_shift_segment(seg, x0, y0))
+    return out
+
+
+def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, catalogue,
+                     config: PipelineConfig) -> Optional[Detection]:
+    """Steps 4-8 for one segment; None when it is rejected (cut, no shape, no format, not planar)."""
+    if seg.touches_border:
+        return None
+    shape = "circle" if seg.source == "hough" else classify_shape(seg.mask, config.min_shape_fit).shape
+    if shape is None:
+        return None
+    entries = catalogue.filter(colours=[seg.colour], shapes=catalogue_shapes(shape, seg.bbox[2], seg.bbox[3]),
+                               exclude=tuple(config.exclude))
+    if not entries:
+        return None
+    size = measure_segment(camera, depth, seg.bbox, seg.mask, config.near_m, config.far_m)
+    if size is None:
+        return None
+    match = round_to_format(catalogue, entries, size.width_m, size.height_m, config.size_tolerance)
+    if match is None:
+        return None
+    planarity = segment_planarity(camera, depth, seg.bbox, seg.mask, config.planarity_window_px,
+                                  config.planarity_tolerance_px, config.max_slant_deg, config.min_depth_coverage)
+    if planarity.indicator < config.detection_threshold:
+        return None
+    allowed = {e.id for e in entries}
+    ids = [t for t in match.template_ids if t in allowed]
+    cls = classify_segment(left, seg.bbox, catalogue, ids, config.scales, config.shift_fraction,
+                           config.max_template_px)
+    if cls.template_id is None:
+        return None
+    status = "accepted" if cls.score >= config.classification_threshold else "review"
+    if seg.source == "hough":
+        status = config.hough_max_status if status == "accepted" else status
+    u, v = bbox_centre(seg.bbox)
+    z = planarity.depth_at(camera, u, v)
+    if not (np.isfinite(z) and config.near_m * 0.8 <= z <= config.far_m * 1.2):
+        z = size.depth_m
+    entry = catalogue[cls.template_id]
+    return Detection(
+        template_id=cls.template_id, name=_entry_name(entry), colour=seg.colour, shape=entry.shape,
+        width_m=match.width_m, height_m=match.height_m, format=match.format,
+        detection_indicator=planarity.indicator, classification_indicator=cls.score, status=status,
+        u=u, v=v, bbox=tuple(int(b) for b in seg.bbox), depth_m=float(z),
+        position=locate(camera, pose, u, v, z), source=seg.source, scores=cls.scores,
+    )
+
+
+def _iou(a, b) -> float:
+    ax, ay, aw, ah = a
+    bx, by, bw, bh = b
+    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
+    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
+    inter = iw * ih
+    return inter / float(aw * ah + bw * bh - inter) if inter else 0.0
+
+
+def suppress_overlaps(detections: Sequence[Detection], max_iou: float = 0.3) -> List[Detection]:
+    """Keep the best of overlapping detections (one sign found twice)."""
+    ranked = sorted(detections, key=lambda d: d.detection_indicator * d.classification_indicator, reverse=True)
+    kept: List[Detection] = []
+    for det in ranked:
+        if all(_iou(det.bbox, k.bbox) <= max_iou for k in kept):
+            kept.append(det)
+    return kept
+
+
+def _round_diameters(catalogue, config: PipelineConfig) -> List[float]:
+    entries = catalogue.filter(shapes=["circle"], exclude=tuple(config.exclude))
+    diam = [max(f) for e in entries for f in e.formats.values()]
+    return diam or [0.4, 0.6]
+
+
+def _ensure_depth(left, depth, right, camera, config: PipelineConfig, roi: Roi) -> np.ndarray:
+    """The given depth, or SGBM depth over the rows that can hold a sign in ``roi``."""
+    if depth is not None:
+        return np.asarray(depth, dtype=np.float32)
+    if right is None:
+        raise ValueError("no depth map and no right image: cannot compute depth")
+    x0, y0, x1, y1 = roi
+    bands = [(y0, y1)]
+    if config.sgbm_rows_only:
+        # Colour candidates before depth: match only their rows (plus Hough needs the rest, see below).
+        segs = colour_segments(left, None, config, roi)
+        max_px = 1.3 * 1.0 * camera.fy / config.near_m  # no sign face is taller than ~1 m
+        bands = [(s.bbox[1], s.bbox[1] + s.bbox[3]) for s in segs if s.bbox[3] <= max_px]
+        bands = merge_row_bands(bands, left.shape[0], config.sgbm_row_margin_px)
+    if not bands:
+        return np.full(left.shape[:2], np.nan, dtype=np.float32)
+    return sgbm_depth(left, right, camera, config.near_m, config.far_m, config.sgbm_scale,
+                      config.sgbm_block_size, bands)
+
+
+def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig, roi: Roi) -> List[Detection]:
+    depth = _ensure_depth(left, depth, right, camera, config, roi)
+    x0, y0, x1, y1 = roi
+    search = search_space_mask(depth, config.near_m, config.far_m)
+    if (x0, y0, x1, y1) != (0, 0, left.shape[1], left.shape[0]):
+        inside = np.zeros_like(search)
+        inside[y0:y1, x0:x1] = True
+        search &= inside
+    detections = []
+    for seg in colour_segments(left, search, config, roi):
+        det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config)
+        if det is not None:
+            detections.append(det)
+    if config.hough_enabled:
+        r_min, r_max = radius_range_px(camera.fx, config.near_m, config.far_m, _round_diameters(catalogue, config))
+        taken = [d.bbox for d in detections]
+        sub = search[y0:y1, x0:x1]
+        for seg in hough_segments(left[y0:y1, x0:x1], sub, r_min, r_max, (), config.hough_scale,
+                                  config.hough_circularity, config.hough_edge_threshold, config.border_margin_px):
+            seg = _shift_segment(seg, x0, y0)
+            cu, cv = bbox_centre(seg.bbox)
+            if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken):
+                continue
+            det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config)
+            if det is not None:
+                detections.append(det)
+    return suppress_overlaps(detections)
+
+
+def detect_pair(left, depth, right, camera: Camera, pose: Pose, catalogue,
+                config: Optional[PipelineConfig] = None) -> List[Detection]:
+    """All signs detected in one stereo pair.
+
+    ``depth``: float32 metres (NaN = none) or None to compute it by SGBM from
+    ``left``/``right`` with the disparity range of the configured search space.
+    """
+    config = config or PipelineConfig()
+    height, width = left.shape[:2]
+    return _detect(left, depth, right, camera, pose, catalogue, config, (0, 0, width, height))
+
+
+def detect_in_window(left, depth, right, camera: Camera, pose: Pose, catalogue, config: Optional[PipelineConfig],
+                     click_uv, half_size_px: int) -> Optional[Detection]:
+    """The sign nearest a clicked pixel: the same steps on a window of +-``half_size_px`` around it.
+
+    A sign cut by the window is rejected like one cut by the image border, so the
+    window should be larger than the sign. Returns None when nothing is found.
+    """
+    config = config or PipelineConfig()
+    height, width = left.shape[:2]
+    cu, cv = float(click_uv[0]), float(click_uv[1])
+    roi = (max(0, int(cu - half_size_px)), max(0, int(cv - half_size_px)),
+           min(width, int(cu + half_size_px) + 1), min(height, int(cv + half_size_px) + 1))
+    if roi[2] <= roi[0] or roi[3] <= roi[1]:
+        return None
+    found = _detect(left, depth, right, camera, pose, catalogue, config, roi)
+    if not found:
+        return None
+
+    def rank(det: Detection):
+        x, y, w, h = det.bbox
+        contains = x <= cu < x + w and y <= cv < y + h
+        return (not contains, np.hypot(det.u - cu, det.v - cv))
+
+    return min(found, key=rank)

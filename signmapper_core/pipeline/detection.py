@@ -1,0 +1,37 @@
+"""The result of the pipeline for one sign seen in one stereo pair."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Dict, Optional, Tuple
+
+import numpy as np
+
+
+@dataclass
+class Detection:
+    """One detected sign face in one pair; indicators are 0..1.
+
+    ``detection_indicator``: planar share of the segment (is it a sign?);
+    ``classification_indicator``: best template NCC (is it this sign?).
+    ``status`` is "accepted" when the classification indicator reaches the
+    threshold, else "review".
+    """
+
+    template_id: Optional[str]
+    name: str
+    colour: str
+    shape: str
+    width_m: float
+    height_m: float
+    format: str
+    detection_indicator: float
+    classification_indicator: float
+    status: str
+    u: float
+    v: float
+    bbox: Tuple[int, int, int, int]
+    depth_m: float
+    position: np.ndarray
+    source: str = "colour"  # "colour" segmentation or "hough" fallback
+    scores: Dict[str, float] = field(default_factory=dict)  # NCC per candidate template

@@ -1,0 +1,115 @@
+"""Step 9: Hough circle fallback for round signs the colour thresholds miss.
+
+Faded red rings and white/grey round signs (end-of-restriction signs) have too
+little saturation for the colour step. The Hough transform runs on the grey
+image restricted to the search space: pixels outside the depth range are set to
+black, so a round sign standing in front of a distant background also gets a
+circular edge from the depth map. Candidates are downscaled for speed and go
+through the same size, planarity and classification steps as colour segments.
+"""
+
+from __future__ import annotations
+
+from typing import List, Optional, Sequence
+
+import cv2
+import numpy as np
+
+from .colour import Segment
+
+# Hue bins (OpenCV 0-179) for naming the weak colour of a Hough circle's ring.
+WEAK_HUES = {"red": ((0, 10), (165, 179)), "yellow": ((16, 35),), "blue": ((95, 135),)}
+
+
+def radius_range_px(fx: float, near_m: float, far_m: float, diameters_m: Sequence[float], slack: float = 0.2):
+    """(min, max) radius in pixels of round signs of the given diameters within near..far."""
+    lo = min(diameters_m) * fx / (2.0 * far_m) * (1.0 - slack)
+    hi = max(diameters_m) * fx / (2.0 * near_m) * (1.0 + slack)
+    return max(3, int(np.floor(lo))), int(np.ceil(hi))
+
+
+def find_circles(
+    bgr: np.ndarray,
+    search_mask: np.ndarray,
+    r_min: int,
+    r_max: int,
+    scale: float = 0.5,
+    circularity: float = 0.85,
+    edge_threshold: float = 150.0,
+) -> np.ndarray:
+    """Circles (N, 3) as (u, v, r) in full-image pixels, found in the search space."""
+    grey = cv2.cvtColor(bgr, cv2.COLOR_BGR2GRAY) if bgr.ndim == 3 else bgr.copy()
+    grey[~search_mask] = 0
+    if scale != 1.0:
+        grey = cv2.resize(grey, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA)
+    lo, hi = max(2, int(r_min * scale)), max(3, int(np.ceil(r_max * scale)))
+    circles = cv2.HoughCircles(
+        grey, cv2.HOUGH_GRADIENT_ALT, dp=1.5, minDist=max(4, lo), param1=edge_threshold,
+        param2=circularity, minRadius=lo, maxRadius=hi,
+    )
+    if circles is None:
+        return np.zeros((0, 3))
+    return circles.reshape(-1, 3) / scale
+
+
+def weak_colour(bgr: np.ndarray, mask: np.ndarray, min_saturation: int = 40, min_share: float = 0.25) -> str:
+    """Dominant weak colour of the outer ring of a disc mask: red/blue/yellow, else white."""
+    ring = cv2.subtract(mask, cv2.erode(mask, np.ones((3, 3), np.uint8), iterations=max(1, mask.shape[0] // 10)))
+    hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
+    pixels = hsv[ring > 0]
+    if pixels.size == 0:
+        return "white"
+    tinted = pixels[pixels[:, 1] >= min_saturation]
+    best, best_share = "white", min_share
+    for name, ranges in WEAK_HUES.items():
+        hit = np.zeros(len(tinted), bool)
+        for h0, h1 in ranges:
+            hit |= (tinted[:, 0] >= h0) & (tinted[:, 0] <= h1)
+        share = hit.sum() / float(len(pixels))
+        if share > best_share:
+            best, best_share = name, share
+    return best
+
+
+def circle_segment(bgr: np.ndarray, u: float, v: float, r: float, border_margin_px: int = 2) -> Optional[Segment]:
+    """A Hough circle as a segment (disc mask in its box), its colour from the ring."""
+    height, width = bgr.shape[:2]
+    x0, y0 = int(round(u - r)), int(round(v - r))
+    size = int(round(2 * r)) + 1
+    if size < 3:
+        return None
+    m = border_margin_px
+    touches = x0 <= m or y0 <= m or x0 + size >= width - m or y0 + size >= height - m
+    if x0 < 0 or y0 < 0 or x0 + size > width or y0 + size > height:
+        return None
+    mask = np.zeros((size, size), np.uint8)
+    cv2.circle(mask, (size // 2, size // 2), size // 2, 255, -1)
+    crop = bgr[y0 : y0 + size, x0 : x0 + size]
+    colour = weak_colour(crop, mask)
+    contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
+    return Segment(colour, (x0, y0, size, size), mask, contours[0] + np.array([x0, y0]),
+                   int(np.count_nonzero(mask)), touches, source="hough")
+
+
+def hough_segments(
+    bgr: np.ndarray,
+    search_mask: np.ndarray,
+    r_min: int,
+    r_max: int,
+    taken: Sequence[tuple] = (),
+    scale: float = 0.5,
+    circularity: float = 0.85,
+    edge_threshold: float = 150.0,
+    border_margin_px: int = 2,
+) -> List[Segment]:
+    """Round-sign segments from Hough circles whose centre is not inside a ``taken`` box."""
+    out = []
+    if not search_mask.any():
+        return out
+    for u, v, r in find_circles(bgr, search_mask, r_min, r_max, scale, circularity, edge_threshold):
+        if any(x <= u < x + w and y <= v < y + h for x, y, w, h in taken):
+            continue
+        seg = circle_segment(bgr, u, v, r, border_margin_px)
+        if seg is not None:
+            out.append(seg)
+    return out

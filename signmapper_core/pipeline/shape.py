@@ -1,0 +1,100 @@
+"""Step 4: the outline shape of a segment from two descriptors.
+
+The fill ratio (area / bounding-box area) separates the families: ~0.5 for
+triangles and diamonds, ~0.8 for circles and octagons, ~1 for rectangles. The
+outline fit (IoU with each ideal outline drawn into the same box) then picks
+the shape inside the family, which also tells an up from a down triangle and a
+circle (IoU with an octagon 0.95) from an octagon. Ideal outlines are drawn into
+the bounding box, so mild perspective (ellipses, sheared boxes) still fits.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Dict, Optional
+
+import cv2
+import numpy as np
+
+_A = 1.0 / (2.0 + np.sqrt(2.0))  # corner cut of a regular octagon, fraction of its width
+
+# Vertices in the unit box (x right, y down).
+IDEAL_POLYGONS = {
+    "triangle": [(0.5, 0.0), (1.0, 1.0), (0.0, 1.0)],
+    "triangle-down": [(0.0, 0.0), (1.0, 0.0), (0.5, 1.0)],
+    "octagon": [(_A, 0), (1 - _A, 0), (1, _A), (1, 1 - _A), (1 - _A, 1), (_A, 1), (0, 1 - _A), (0, _A)],
+    "diamond": [(0.5, 0.0), (1.0, 0.5), (0.5, 1.0), (0.0, 0.5)],
+    "rectangle": [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)],
+}
+IDEAL_FILL = {"circle": np.pi / 4, "triangle": 0.5, "triangle-down": 0.5, "octagon": 2 / (1 + np.sqrt(2)),
+              "diamond": 0.5, "rectangle": 1.0}
+SHAPES = tuple(IDEAL_FILL)
+_SHIFT = 4  # fixed-point bits for sub-pixel drawing
+
+
+@dataclass(frozen=True)
+class ShapeResult:
+    shape: Optional[str]  # None: no ideal outline fits
+    fit: float  # IoU with the chosen ideal outline
+    fill_ratio: float
+    circularity: float
+    corners: int
+    fits: Dict[str, float]
+
+
+def ideal_mask(shape: str, width: int, height: int) -> np.ndarray:
+    """uint8 0/255 mask of the ideal ``shape`` filling a width x height box.
+
+    The box spans the pixels' outer edges, -0.5 .. width-0.5 in pixel-centre coordinates.
+    """
+    mask = np.zeros((height, width), dtype=np.uint8)
+    scale = 1 << _SHIFT
+    if shape == "circle":
+        centre = (int(round((width - 1) / 2 * scale)), int(round((height - 1) / 2 * scale)))
+        axes = (int(round(width / 2 * scale)), int(round(height / 2 * scale)))
+        cv2.ellipse(mask, centre, axes, 0, 0, 360, 255, thickness=cv2.FILLED, shift=_SHIFT)
+        return mask
+    pts = np.array([[(x * width - 0.5) * scale, (y * height - 0.5) * scale] for x, y in IDEAL_POLYGONS[shape]])
+    cv2.fillPoly(mask, [np.round(pts).astype(np.int32)], 255, shift=_SHIFT)
+    return mask
+
+
+def _iou(a: np.ndarray, b: np.ndarray) -> float:
+    a, b = a > 0, b > 0
+    union = np.count_nonzero(a | b)
+    return float(np.count_nonzero(a & b)) / union if union else 0.0
+
+
+def classify_shape(mask: np.ndarray, min_fit: float = 0.72, fill_window: float = 0.15) -> ShapeResult:
+    """Shape of a filled segment mask cropped to its bounding box.
+
+    Shapes whose ideal fill ratio is more than ``fill_window`` from the measured
+    one are not considered; of the rest, the best outline fit wins if >= ``min_fit``.
+    """
+    height, width = mask.shape[:2]
+    area = float(np.count_nonzero(mask))
+    fill = area / float(width * height) if width * height else 0.0
+    contours, _ = cv2.findContours((mask > 0).astype(np.uint8), cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
+    circularity, corners = 0.0, 0
+    if contours:
+        contour = max(contours, key=cv2.contourArea)
+        perimeter = cv2.arcLength(contour, True)
+        if perimeter > 0:
+            circularity = float(4 * np.pi * cv2.contourArea(contour) / perimeter**2)
+            hull = cv2.convexHull(contour)
+            corners = len(cv2.approxPolyDP(hull, 0.04 * cv2.arcLength(hull, True), True))
+    fits = {}
+    for shape, ideal_fill in IDEAL_FILL.items():
+        if abs(fill - ideal_fill) <= fill_window:
+            fits[shape] = _iou(mask, ideal_mask(shape, width, height))
+    best = max(fits, key=fits.get) if fits else None
+    if best is None or fits[best] < min_fit:
+        return ShapeResult(None, fits.get(best, 0.0) if best else 0.0, fill, circularity, corners, fits)
+    return ShapeResult(best, fits[best], fill, circularity, corners, fits)
+
+
+def catalogue_shapes(shape: str, width_px: int, height_px: int) -> tuple:
+    """Catalogue shape names a detected outline may be: a rectangle may be a square."""
+    if shape == "rectangle":
+        return ("square", "rectangle")
+    return (shape,)

@@ -1,0 +1,64 @@
+"""Step 5: metric size of a segment from its depth, rounded to a standard format.
+
+Signs come in a few standard formats (round 0.60/0.40 m, triangles 0.90/0.60 m
+side, ...); a segment whose metric size fits none of the formats of its colour
+and shape is not a sign. This removes most distractors (façades, cars, clothes).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Optional
+
+import numpy as np
+
+from ..geometry import Camera
+from .search_space import valid_depth
+
+
+@dataclass(frozen=True)
+class SegmentSize:
+    depth_m: float  # median depth of the segment's pixels
+    width_m: float
+    height_m: float
+    coverage: float  # share of the segment's pixels with a valid depth
+
+
+def segment_depth(depth: np.ndarray, bbox, mask: np.ndarray, near_m: float = 0.0, far_m: float = np.inf):
+    """(median depth, coverage) of the masked pixels inside ``bbox``; NaN when none is valid.
+
+    Only depths within near..far count, so background seen through holes of the
+    filled outline (or matching errors) does not pull the median.
+    """
+    x, y, w, h = bbox
+    values = depth[y : y + h, x : x + w][mask > 0]
+    n = values.size
+    if n == 0:
+        return float("nan"), 0.0
+    ok = valid_depth(values) & (values >= near_m) & (values <= far_m)
+    if not ok.any():
+        return float("nan"), 0.0
+    return float(np.median(values[ok])), float(np.count_nonzero(ok)) / n
+
+
+def metric_size(camera: Camera, bbox, depth_m: float) -> tuple:
+    """(width_m, height_m) of a pixel bounding box at depth Z: ``w*Z/fx``, ``h*Z/fy``."""
+    _, _, w, h = bbox
+    return w * depth_m / camera.fx, h * depth_m / camera.fy
+
+
+def measure_segment(camera: Camera, depth: np.ndarray, bbox, mask, near_m: float, far_m: float
+                    ) -> Optional[SegmentSize]:
+    """Depth and metric size of a segment, or None when it has no depth in range."""
+    z, coverage = segment_depth(depth, bbox, mask, near_m, far_m)
+    if not np.isfinite(z):
+        return None
+    width_m, height_m = metric_size(camera, bbox, z)
+    return SegmentSize(z, width_m, height_m, coverage)
+
+
+def round_to_format(catalogue, entries, width_m: float, height_m: float, tolerance: float):
+    """The catalogue's nearest standard format among ``entries`` within ``tolerance``, or None."""
+    if not entries:
+        return None
+    return catalogue.round_size(width_m, height_m, tolerance=tolerance, entries=entries)
