@@ -141,7 +141,7 @@ def segment_planarity(
             break
         coef = _fit_plane(u_img.astype(float), v_img.astype(float), d, near)
     resid = np.abs(d - (coef[0] + coef[1] * u_img + coef[2] * v_img))
-    planar = local_ok & (resid <= 2 * tolerance_px)
+    planar = local_ok & (resid <= tolerance_px)
     uc, vc = float(u_img.mean()), float(v_img.mean())
     dc = coef[0] + coef[1] * uc + coef[2] * vc
     plane_slant = float(_slant_deg(camera, dc, coef[1], coef[2], uc, vc))

@@ -1,0 +1,62 @@
+import cv2
+import numpy as np
+import pytest
+from pipeline_scenes import CAMERA
+
+from signmapper_core.pipeline.depth import disparity_range, merge_row_bands, sgbm_depth
+
+
+def _textured_pair(disparity, seed=0):
+    """Left/right of a fronto-parallel textured plane at the given disparity (pixels)."""
+    rng = np.random.default_rng(seed)
+    texture = rng.integers(0, 256, (CAMERA.height // 4 + 1, (CAMERA.width + disparity) // 4 + 1)).astype(np.uint8)
+    texture = cv2.resize(texture, None, fx=4, fy=4, interpolation=cv2.INTER_LINEAR)[: CAMERA.height]
+    left = texture[:, : CAMERA.width]
+    right = texture[:, disparity : disparity + CAMERA.width]  # right(u) shows left(u + d)
+    return cv2.merge([left] * 3), cv2.merge([right] * 3)
+
+
+def test_disparity_range_covers_the_search_space_in_multiples_of_16():
+    fb = CAMERA.fx * CAMERA.baseline_m  # 540 px*m
+    d_min, num = disparity_range(CAMERA, 4.0, 14.0)
+    assert d_min <= fb / 14.0 and d_min + num >= fb / 4.0
+    assert num % 16 == 0 and num <= (fb / 4.0 - fb / 14.0) + 16 + 4
+    d_min_half, num_half = disparity_range(CAMERA, 4.0, 14.0, scale=0.5)
+    assert d_min_half <= fb / 28.0 and d_min_half + num_half >= fb / 8.0 and num_half % 16 == 0
+
+
+@pytest.mark.parametrize("scale", [1.0, 0.5])
+def test_sgbm_depth_of_a_textured_plane(scale):
+    z_true = 6.0
+    disparity = int(round(CAMERA.fx * CAMERA.baseline_m / z_true))  # 90 px
+    left, right = _textured_pair(disparity)
+    depth = sgbm_depth(left, right, CAMERA, 4.0, 14.0, scale=scale)
+    usable = depth[20:-20, 160:-20]  # columns left of the disparity range have no match
+    valid = np.isfinite(usable)
+    assert valid.mean() > 0.9
+    assert np.median(usable[valid]) == pytest.approx(z_true, rel=0.01)
+    assert np.mean(np.abs(usable[valid] - z_true) < 0.15) > 0.95
+
+
+def test_sgbm_outside_the_depth_range_finds_nothing_plausible():
+    disparity = int(round(CAMERA.fx * CAMERA.baseline_m / 30.0))  # a plane at 30 m, far beyond 14 m
+    left, right = _textured_pair(disparity, seed=1)
+    depth = sgbm_depth(left, right, CAMERA, 4.0, 14.0, scale=0.5)
+    usable = depth[20:-20, 160:-20]
+    near_truth = np.abs(usable - 30.0) < 1.0
+    assert near_truth.mean() < 0.05  # the range starts at 14 m: the true depth cannot be found
+
+
+def test_sgbm_on_row_bands_leaves_other_rows_nan():
+    disparity = 90
+    left, right = _textured_pair(disparity)
+    depth = sgbm_depth(left, right, CAMERA, 4.0, 14.0, scale=0.5, row_bands=[(100, 160)])
+    assert np.isnan(depth[:100]).all() and np.isnan(depth[160:]).all()
+    band = depth[100:160, 160:-20]
+    assert np.nanmedian(band) == pytest.approx(6.0, rel=0.01)
+
+
+def test_merge_row_bands():
+    assert merge_row_bands([(50, 60), (10, 20), (58, 70)], 100, 5) == [(5, 25), (45, 75)]
+    assert merge_row_bands([(0, 10), (95, 100)], 100, 10) == [(0, 20), (85, 100)]
+    assert merge_row_bands([], 100, 5) == []

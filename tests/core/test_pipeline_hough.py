@@ -1,0 +1,55 @@
+import cv2
+import numpy as np
+from pipeline_scenes import CAMERA, noisy_background, pixels_for
+
+from signmapper_core.pipeline.hough import find_circles, hough_segments, radius_range_px, weak_colour
+from signmapper_core.pipeline.search_space import search_space_mask
+
+
+def _scene(ring_bgr, field_bgr, u=300, v=180, z=7.0):
+    image = noisy_background(level=150, sigma=6)
+    r = pixels_for(0.60, z) // 2
+    cv2.circle(image, (u, v), r, ring_bgr, -1)
+    cv2.circle(image, (u, v), int(r * 0.8), field_bgr, -1)
+    depth = np.full(image.shape[:2], 30.0, np.float32)  # far background
+    disc = np.zeros(image.shape[:2], np.uint8)
+    cv2.circle(disc, (u, v), r, 255, -1)
+    depth[disc > 0] = z
+    return image, depth, r
+
+
+def test_radius_range_covers_round_formats_in_the_search_space():
+    lo, hi = radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6])
+    assert lo <= 0.4 * CAMERA.fx / 28.0 and hi >= 0.6 * CAMERA.fx / 8.0
+
+
+def test_faded_red_ring_is_found_and_named_red():
+    faded_red = (120, 115, 165)  # saturation ~ 80: below the red threshold of the colour step
+    image, depth, r = _scene(faded_red, (200, 200, 200))
+    search = search_space_mask(depth, 4.0, 14.0)
+    segs = hough_segments(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6]))
+    assert len(segs) >= 1
+    best = min(segs, key=lambda s: abs(s.bbox[0] + s.bbox[2] / 2 - 300) + abs(s.bbox[1] + s.bbox[3] / 2 - 180))
+    x, y, w, h = best.bbox
+    assert abs(x + w / 2 - 300) < 4 and abs(y + h / 2 - 180) < 4 and abs(w - 2 * r) < 6
+    assert best.colour == "red" and best.source == "hough"
+
+
+def test_white_round_sign_is_found_from_the_depth_edge():
+    image, depth, r = _scene((160, 160, 160), (160, 160, 160))  # same grey as the background
+    search = search_space_mask(depth, 4.0, 14.0)
+    circles = find_circles(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6]))
+    assert any(abs(u - 300) < 4 and abs(v - 180) < 4 and abs(rr - r) < 4 for u, v, rr in circles)
+
+
+def test_nothing_in_the_search_space_means_no_circles():
+    image, depth, _ = _scene((120, 115, 165), (200, 200, 200), z=20.0)
+    search = search_space_mask(depth, 4.0, 14.0)
+    assert hough_segments(image, search, 10, 60) == []
+
+
+def test_weak_colour_of_grey_ring_is_white():
+    patch = np.full((41, 41, 3), 180, np.uint8)
+    mask = np.zeros((41, 41), np.uint8)
+    cv2.circle(mask, (20, 20), 20, 255, -1)
+    assert weak_colour(patch, mask) == "white"
