@@ -8,5 +8,7 @@ provider loads (and explains what to install) even when OpenCV is missing.
 def algorithm_classes():
     """Every algorithm class the provider registers."""
     from .drive_trajectory import DriveTrajectoryAlgorithm
+    from .map_signs import MapSignsAlgorithm
+    from .synthetic_drive import SyntheticDriveAlgorithm
 
-    return [DriveTrajectoryAlgorithm]
+    return [MapSignsAlgorithm, DriveTrajectoryAlgorithm, SyntheticDriveAlgorithm]

@@ -1,0 +1,95 @@
+"""``signmapper:syntheticdrive``: a realistic stereo drive with ground truth, for trying and testing Sign Mapper."""
+
+from __future__ import annotations
+
+from qgis.core import (
+    QgsProcessingException,
+    QgsProcessingParameterBoolean,
+    QgsProcessingParameterFolderDestination,
+    QgsProcessingParameterNumber,
+)
+
+from .base import SignMapperAlgorithm
+
+
+class SyntheticDriveAlgorithm(SignMapperAlgorithm):
+    NAME = "syntheticdrive"
+    DISPLAY_NAME = "Synthetic drive"
+    GROUP_ID = "tools"
+    HELP = (
+        "Generates a synthetic stereo mobile-mapping drive in the stereo-drive/1 layout: a street with façades, "
+        "vegetation, cars and other sign-coloured distractors, and poles carrying Swiss traffic signs, rendered "
+        "as rectified stereo pairs with sensor noise, blur, JPEG compression, exposure changes, shadows and "
+        "occlusions. poses.csv holds the poses with GNSS/INS noise; truth.csv the true sign positions, ids and "
+        "sizes. The same seed always gives the same files. Use it to try the mapping or to measure its accuracy."
+    )
+
+    OUTPUT = "OUTPUT"
+    PAIRS = "PAIRS"
+    SEED = "SEED"
+    WRITE_DEPTH = "WRITE_DEPTH"
+    WIDTH = "WIDTH"
+    HEIGHT = "HEIGHT"
+    FX = "FX"
+    BASELINE = "BASELINE"
+    POSITION_SIGMA = "POSITION_SIGMA"
+    ANGLE_SIGMA = "ANGLE_SIGMA"
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        number = QgsProcessingParameterNumber
+        self.add_parameter(number(self.PAIRS, self.tr("Number of stereo pairs"), number.Integer, 50, minValue=1,
+                                  maxValue=100000),
+                           "Pairs to record; at 40 km/h and 5 pairs/s consecutive pairs are about 2.2 m apart.")
+        self.add_parameter(number(self.SEED, self.tr("Random seed"), number.Integer, 1, minValue=0),
+                           "Seed of the scene, the rendering effects and the pose noise; same seed, same drive.")
+        self.add_parameter(QgsProcessingParameterBoolean(self.WRITE_DEPTH, self.tr("Write true depth maps"), False),
+                           "Also write depth/<id>.npy with the exact depth; off = depth is computed from the "
+                           "stereo pair, as with real data.")
+        self.add_parameter(number(self.WIDTH, self.tr("Image width [px]"), number.Integer, 1920, minValue=64,
+                                  maxValue=8192), "Width of the rectified normal images.")
+        self.add_parameter(number(self.HEIGHT, self.tr("Image height [px]"), number.Integer, 1080, minValue=64,
+                                  maxValue=8192), "Height of the rectified normal images.")
+        self.add_parameter(number(self.FX, self.tr("Focal length [px]"), number.Double, 1750.0, minValue=10.0),
+                           "Focal length of the normal images in pixels (fx = fy).")
+        self.add_parameter(number(self.BASELINE, self.tr("Stereo baseline [m]"), number.Double, 0.9, minValue=0.05,
+                                  maxValue=5.0), "Distance of the right camera along the left camera's x axis.")
+        self.add_parameter(number(self.POSITION_SIGMA, self.tr("GNSS position noise σ [m]"), number.Double, 0.02,
+                                  minValue=0.0, maxValue=10.0),
+                           "Standard deviation of the noise added per axis to the recorded positions.")
+        self.add_parameter(number(self.ANGLE_SIGMA, self.tr("INS attitude noise σ [°]"), number.Double, 0.02,
+                                  minValue=0.0, maxValue=5.0),
+                           "Standard deviation of the noise added to the recorded heading, pitch and roll.")
+        self.add_parameter(QgsProcessingParameterFolderDestination(self.OUTPUT, self.tr("Drive folder")),
+                           "Folder to write the drive into; it must not exist yet or be empty.")
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        self.require_dependencies()
+        from ..signmapper_core.simulate import SimulationConfig, generate_drive
+
+        out_dir = self.parameterAsString(parameters, self.OUTPUT, context)
+        config = SimulationConfig(
+            pairs=self.parameterAsInt(parameters, self.PAIRS, context),
+            seed=self.parameterAsInt(parameters, self.SEED, context),
+            write_depth=self.parameterAsBool(parameters, self.WRITE_DEPTH, context),
+            width=self.parameterAsInt(parameters, self.WIDTH, context),
+            height=self.parameterAsInt(parameters, self.HEIGHT, context),
+            fx=self.parameterAsDouble(parameters, self.FX, context),
+            baseline_m=self.parameterAsDouble(parameters, self.BASELINE, context),
+            position_sigma_m=self.parameterAsDouble(parameters, self.POSITION_SIGMA, context),
+            angle_sigma_deg=self.parameterAsDouble(parameters, self.ANGLE_SIGMA, context),
+        )
+
+        def progress(fraction, message=""):
+            feedback.setProgress(100.0 * fraction)
+            if message:
+                feedback.setProgressText(message)
+
+        try:
+            summary = generate_drive(out_dir, config, progress=progress, is_cancelled=feedback.isCanceled)
+        except (ValueError, OSError) as exc:
+            raise QgsProcessingException(f"Synthetic drive: {exc}") from exc
+        if feedback.isCanceled():
+            raise QgsProcessingException("Cancelled; no drive written.")
+        feedback.pushInfo(f"{summary.pairs} pairs and {len(summary.signs)} signs written to {out_dir} "
+                          f"in {summary.seconds:.1f} s")
+        return {self.OUTPUT: out_dir}
