@@ -179,3 +179,16 @@ def format_report(report: EvaluationReport, title: str = "") -> str:
     if report.confusions:
         lines.append("Misclassified (reference -> assigned): " + ", ".join(f"{a}->{b}" for a, b in report.confusions))
     return "\n".join(lines)
+
+
+def combine_reports(reports: list[EvaluationReport]) -> EvaluationReport:
+    """Pool the reports of several drives: counts add up, Table 2 is over all differences."""
+    counts = {name: sum(getattr(r.table1, name) for r in reports) for name in (
+        "reference_signs", "detected_signs", "correctly_classified_signs", "detections",
+        "false_positive_detections", "duplicates")}
+    differences = np.vstack([r.differences for r in reports]) if reports else np.zeros((0, 5))
+    table2 = {name: component_stats(differences[:, k]) for k, name in enumerate(COMPONENTS)}
+    return EvaluationReport(
+        Table1(**counts), table2, np.concatenate([r.match for r in reports]) if reports else np.zeros(0, int),
+        differences, [i for r in reports for i in r.reference_ids], [c for r in reports for c in r.confusions],
+    )

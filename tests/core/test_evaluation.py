@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from signmapper_core.evaluation import decompose, evaluate, match_to_reference, track_directions
+from signmapper_core.evaluation import combine_reports, decompose, evaluate, match_to_reference, track_directions
 
 TRAJ = np.array([[0.0, 0.0], [10.0, 0.0], [20.0, 0.0], [30.0, 0.0]])  # driving east
 REF = np.array([[5.0, 4.0, 2.0], [12.0, -4.0, 2.5], [25.0, 4.0, 1.8]])
@@ -58,3 +58,12 @@ def test_along_track_follows_the_trajectory_direction():
 def test_match_radius():
     assert list(match_to_reference(np.array([[5.0, 4.6, 2.0]]), REF, radius_m=0.5)) == [-1]
     assert list(match_to_reference(np.array([[5.0, 4.4, 2.0]]), REF, radius_m=0.5)) == [0]
+
+
+def test_combined_reports_add_counts_and_pool_differences():
+    a = evaluate(REF + [0.0, -0.05, 0.0], IDS, REF, IDS, TRAJ)
+    b = evaluate(REF[:1] + [0.0, 0.0, 0.1], IDS[:1], REF, IDS, TRAJ)
+    both = combine_reports([a, b])
+    assert both.table1.reference_signs == 6 and both.table1.detected_signs == 4
+    assert both.table2["3d"].n == 4
+    assert both.table2["3d"].max_abs == pytest.approx(0.1)
