@@ -1,0 +1,11 @@
+"""Synthetic stereo drives with ground truth, for tests, demos and benchmarks.
+
+``generate_drive(out_dir, SimulationConfig(...))`` writes a drive folder
+(``drive-format.md`` v1) with ``truth.csv``; ``true_poses(config)`` gives the
+poses the images were rendered from (poses.csv holds them with GNSS/INS noise).
+"""
+
+from .config import SimulationConfig, SimulationSummary
+from .generator import Cancelled, generate_drive, recorded_poses, true_poses
+
+__all__ = ["Cancelled", "SimulationConfig", "SimulationSummary", "generate_drive", "recorded_poses", "true_poses"]

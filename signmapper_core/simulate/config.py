@@ -1,0 +1,88 @@
+"""Settings and result of a synthetic drive, kept apart so the CLI, the Processing
+algorithm and the tests share one definition of every knob and its default."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..drive import TruthSign
+from ..geometry import Camera, Pose
+
+
+@dataclass
+class SimulationConfig:
+    """Everything that shapes a synthetic drive; the same config and seed give the same files."""
+
+    pairs: int = 100
+    seed: int = 0
+    write_depth: bool = False
+    # Camera of the rectified normal images.
+    width: int = 1920
+    height: int = 1080
+    fx: float = 1750.0
+    baseline_m: float = 0.9
+    camera_height_m: float = 2.4          # projection centre above the road
+    # Vehicle.
+    speed_kmh: float = 40.0
+    rate_hz: float = 5.0
+    # GNSS/INS noise of the recorded poses (true poses are used for rendering).
+    position_sigma_m: float = 0.02
+    angle_sigma_deg: float = 0.02
+    # Scene content, per 100 m of street.
+    sign_density: float = 6.0             # sign poles
+    distractor_density: float = 8.0       # cars, cones, shop signs, coloured patches, sign backs
+    # Realism switches.
+    noise: bool = True
+    motion_blur: bool = True
+    exposure_changes: bool = True
+    shadows: bool = True
+    weathering: bool = True               # faded and dirty sign faces
+    occlusion: bool = True                # branches and poles in front of some signs
+    glare: bool = True
+    jpeg_quality: int = 90
+    # Georeference.
+    crs: str = "EPSG:2056"
+    start_easting: float = 2600000.0
+    start_northing: float = 1200000.0
+    start_height: float = 400.0
+
+    @property
+    def spacing_m(self) -> float:
+        """Distance driven between two pairs."""
+        return self.speed_kmh / 3.6 / self.rate_hz
+
+    def camera(self) -> Camera:
+        return Camera(width=int(self.width), height=int(self.height), fx=float(self.fx), fy=float(self.fx),
+                      cx=(self.width - 1) / 2.0, cy=(self.height - 1) / 2.0, baseline_m=float(self.baseline_m))
+
+    def validate(self) -> None:
+        """Reject settings that cannot give a drive, with a message naming the setting."""
+        checks = [
+            (self.pairs >= 1, "pairs must be at least 1"),
+            (self.width >= 64 and self.height >= 64, "width and height must be at least 64 pixels"),
+            (self.fx > 0, "fx must be positive"),
+            (self.baseline_m > 0, "baseline_m must be positive"),
+            (self.speed_kmh > 0 and self.rate_hz > 0, "speed_kmh and rate_hz must be positive"),
+            (self.position_sigma_m >= 0 and self.angle_sigma_deg >= 0, "pose noise sigmas must not be negative"),
+            (self.sign_density >= 0 and self.distractor_density >= 0, "densities must not be negative"),
+            (1 <= self.jpeg_quality <= 100, "jpeg_quality must be within 1..100"),
+        ]
+        for ok, message in checks:
+            if not ok:
+                raise ValueError(message)
+
+
+@dataclass
+class SimulationSummary:
+    """What :func:`generate_drive` wrote, with the true poses the images were rendered from."""
+
+    out_dir: Path
+    pairs: int
+    signs: list[TruthSign]
+    true_poses: list[Pose]
+    recorded_poses: list[Pose]
+    seconds: float
+    bytes_written: int
+    camera: Camera
+    notes: dict = field(default_factory=dict)
