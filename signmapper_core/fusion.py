@@ -1,0 +1,275 @@
+"""Fusing per-pair detections into one feature per physical sign.
+
+At 5 pairs/s a sign is seen in about five pairs within 4-14 m. Observations are
+chained in driving order into tracks (3D proximity, compatible colour and shape,
+a consistent face direction, at most one observation per pair, and no long gap),
+then tracks of the same sign from separate passes are merged. Each sign gets a
+robust, weighted position, a class by weighted vote, its standard size, the
+spread of its observations and its face azimuth.
+
+The gates keep apart what must stay apart: two signs stacked on one pole are
+~0.7 m apart vertically (vertical gate 0.3 m), back-to-back signs face opposite
+ways (face gate 60°), and two identical signs a few metres apart exceed the 3D gate.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from dataclasses import dataclass, field
+from typing import Optional, Sequence
+
+import numpy as np
+
+
+@dataclass
+class Observation:
+    """One detection of a sign in one pair, with what fusion needs of its pair."""
+
+    template_id: str
+    colour: str
+    shape: str
+    width_m: float
+    height_m: float
+    format: str
+    detection_indicator: float
+    classification_indicator: float
+    position: np.ndarray  # (3,) world
+    depth_m: float
+    pair_index: int
+    pair_id: str
+    camera_centre: np.ndarray  # (3,) world position of the left camera of the pair
+    bbox: tuple = (0, 0, 0, 0)
+    normal: Optional[np.ndarray] = None  # (3,) world unit normal of the face, towards the camera
+    status: str = "accepted"
+    detection_id: Optional[int] = None  # the feature id of the detection, to link back
+
+    @classmethod
+    def from_detection(cls, detection, record, detection_id=None, normal=None) -> Observation:
+        return cls(
+            template_id=detection.template_id, colour=detection.colour, shape=detection.shape,
+            width_m=detection.width_m, height_m=detection.height_m, format=detection.format,
+            detection_indicator=detection.detection_indicator,
+            classification_indicator=detection.classification_indicator,
+            position=np.asarray(detection.position, float), depth_m=detection.depth_m, pair_index=record.index,
+            pair_id=record.id, camera_centre=record.pose.centre, bbox=tuple(detection.bbox),
+            normal=normal if normal is not None else getattr(detection, "normal_world", None),
+            status=detection.status, detection_id=detection_id,
+        )
+
+
+@dataclass(frozen=True)
+class FusionConfig:
+    gate_m: float = 0.6  # 3D distance from a track's position
+    vertical_gate_m: float = 0.3  # stacked signs are ~0.7 m apart
+    face_gate_deg: float = 60.0  # back-to-back signs face ~180° apart
+    max_gap_pairs: int = 4  # a track not seen for longer is closed
+    merge_gate_m: float = 0.35  # tracks of one sign from separate passes
+    outlier_min_m: float = 0.10  # observations beyond max(this, 3 robust σ) from the median are not averaged
+    accept_vote_share: float = 0.6
+    accept_classification: float = 0.6
+    min_obs_accepted: int = 2
+
+
+@dataclass
+class FusedSign:
+    sign_id: int
+    template_id: str
+    colour: str
+    shape: str
+    width_m: float
+    height_m: float
+    format: str
+    position: np.ndarray
+    n_obs: int
+    vote_share: float
+    sigma_m: float  # RMS 3D distance of the contributing positions from the fused one
+    azimuth: Optional[float]  # direction the face looks towards, degrees from grid north
+    detection_indicator: float
+    classification_indicator: float
+    status: str
+    best: Observation
+    observations: list = field(default_factory=list)
+
+
+def _compatible_shape(a: str, b: str) -> bool:
+    squareish = {"square", "rectangle"}
+    return a == b or (a in squareish and b in squareish)
+
+
+def _angle_deg(a: Optional[np.ndarray], b: Optional[np.ndarray]) -> float:
+    if a is None or b is None:
+        return 0.0
+    cos = float(np.dot(a, b) / (np.linalg.norm(a) * np.linalg.norm(b)))
+    return float(np.degrees(np.arccos(np.clip(cos, -1.0, 1.0))))
+
+
+def _face_direction(obs: Observation) -> np.ndarray:
+    """The face normal if measured, else the horizontal direction from the sign to the camera."""
+    if obs.normal is not None:
+        return np.asarray(obs.normal, float)
+    v = obs.camera_centre - obs.position
+    v[2] = 0.0
+    n = np.linalg.norm(v)
+    return v / n if n > 0 else np.array([0.0, 1.0, 0.0])
+
+
+def mean_face(observations: Sequence[Observation]) -> np.ndarray:
+    """Unit mean of the observations' face directions."""
+    v = np.sum([_face_direction(o) for o in observations], axis=0)
+    n = np.linalg.norm(v)
+    return v / n if n > 0 else v
+
+
+class _Track:
+    def __init__(self, obs: Observation):
+        self.observations = [obs]
+
+    @property
+    def last_pair(self) -> int:
+        return self.observations[-1].pair_index
+
+    @property
+    def position(self) -> np.ndarray:
+        return np.median(np.array([o.position for o in self.observations]), axis=0)
+
+    @property
+    def face(self) -> np.ndarray:
+        return mean_face(self.observations)
+
+    def cost(self, obs: Observation, config: FusionConfig) -> Optional[float]:
+        """Distance to ``obs`` if it may continue this track, else None."""
+        head = self.observations[-1]
+        if obs.colour != head.colour or not _compatible_shape(obs.shape, head.shape):
+            return None
+        if obs.pair_index - self.last_pair > config.max_gap_pairs or obs.pair_index == self.last_pair:
+            return None
+        delta = obs.position - self.position
+        if abs(delta[2]) > config.vertical_gate_m:
+            return None
+        dist = float(np.linalg.norm(delta))
+        if dist > config.gate_m or _angle_deg(self.face, _face_direction(obs)) > config.face_gate_deg:
+            return None
+        return dist
+
+
+def _assign_pair(tracks: list, open_ids: list, observations: Sequence[Observation], config: FusionConfig):
+    """Greedy nearest assignment of one pair's observations to open tracks, one each."""
+    candidates = []
+    for oi, obs in enumerate(observations):
+        for ti in open_ids:
+            cost = tracks[ti].cost(obs, config)
+            if cost is not None:
+                candidates.append((cost, oi, ti))
+    used_obs, used_tracks = set(), set()
+    for _cost, oi, ti in sorted(candidates):
+        if oi in used_obs or ti in used_tracks:
+            continue
+        tracks[ti].observations.append(observations[oi])
+        used_obs.add(oi)
+        used_tracks.add(ti)
+    for oi, obs in enumerate(observations):
+        if oi not in used_obs:
+            tracks.append(_Track(obs))
+
+
+def build_tracks(observations: Sequence[Observation], config: FusionConfig) -> list[list[Observation]]:
+    """Chain observations in driving order into tracks of one sign each."""
+    by_pair = defaultdict(list)
+    for obs in observations:
+        by_pair[obs.pair_index].append(obs)
+    tracks: list[_Track] = []
+    for pair_index in sorted(by_pair):
+        open_ids = [i for i, t in enumerate(tracks) if pair_index - t.last_pair <= config.max_gap_pairs]
+        _assign_pair(tracks, open_ids, by_pair[pair_index], config)
+    return [t.observations for t in tracks]
+
+
+def _vote(observations: Sequence[Observation]) -> tuple[str, float]:
+    weights = defaultdict(float)
+    for o in observations:
+        weights[o.template_id] += max(o.classification_indicator, 1e-3) * max(o.detection_indicator, 1e-3)
+    winner = max(weights, key=weights.get)
+    return winner, weights[winner] / sum(weights.values())
+
+
+def _merge_tracks(tracks: list[list[Observation]], config: FusionConfig) -> list[list[Observation]]:
+    """Join tracks of the same sign seen in separate passes (or split by a long occlusion)."""
+    merged = True
+    tracks = [list(t) for t in tracks]
+    while merged:
+        merged = False
+        for i in range(len(tracks)):
+            for j in range(i + 1, len(tracks)):
+                a, b = tracks[i], tracks[j]
+                pairs_a, pairs_b = {o.pair_index for o in a}, {o.pair_index for o in b}
+                if pairs_a & pairs_b:
+                    continue  # seen side by side in one pair: two signs
+                pa = np.median([o.position for o in a], axis=0)
+                pb = np.median([o.position for o in b], axis=0)
+                if (np.linalg.norm(pa - pb) <= config.merge_gate_m and abs(pa[2] - pb[2]) <= config.vertical_gate_m
+                        and _vote(a)[0] == _vote(b)[0]
+                        and _angle_deg(mean_face(a), mean_face(b)) <= config.face_gate_deg):
+                    tracks[i] = sorted(a + b, key=lambda o: o.pair_index)
+                    del tracks[j]
+                    merged = True
+                    break
+            if merged:
+                break
+    return tracks
+
+
+def robust_position(observations: Sequence[Observation], outlier_min_m: float,
+                    ) -> tuple[np.ndarray, list[Observation]]:
+    """Weighted mean of the observations near the median; weight ~ indicators / depth² (error grows with Z²).
+
+    Observations farther from the median than max(``outlier_min_m``, 3 robust σ)
+    (σ from the median absolute distance) are left out of the mean.
+    """
+    pts = np.array([o.position for o in observations])
+    median = np.median(pts, axis=0)
+    dist = np.linalg.norm(pts - median, axis=1)
+    limit = max(outlier_min_m, 3.0 * 1.4826 * float(np.median(dist)))
+    inliers = [o for o, d in zip(observations, dist) if d <= limit] or list(observations)
+    w = np.array([max(o.detection_indicator * o.classification_indicator, 1e-3) / max(o.depth_m, 0.5) ** 2
+                  for o in inliers])
+    return (np.array([o.position for o in inliers]) * w[:, None]).sum(axis=0) / w.sum(), inliers
+
+
+def azimuth_deg(direction: np.ndarray) -> Optional[float]:
+    """Azimuth (clockwise from grid north) of the horizontal part of ``direction``."""
+    if direction is None or np.hypot(direction[0], direction[1]) < 1e-9:
+        return None
+    return float(np.degrees(np.arctan2(direction[0], direction[1])) % 360.0)
+
+
+def fuse_track(sign_id: int, observations: Sequence[Observation], config: FusionConfig) -> FusedSign:
+    template_id, share = _vote(observations)
+    voters = [o for o in observations if o.template_id == template_id]
+    position, inliers = robust_position(voters, config.outlier_min_m)
+    sigma = float(np.sqrt(np.mean([np.sum((o.position - position) ** 2) for o in inliers])))
+    formats = defaultdict(float)
+    for o in voters:
+        formats[(o.format, o.width_m, o.height_m)] += o.classification_indicator
+    fmt, width, height = max(formats, key=formats.get)
+    best = max(voters, key=lambda o: (o.detection_indicator * o.classification_indicator, -o.depth_m))
+    det_ind = float(np.mean([o.detection_indicator for o in voters]))
+    cls_ind = float(np.mean([o.classification_indicator for o in voters]))
+    accepted = (len(voters) >= config.min_obs_accepted and share >= config.accept_vote_share
+                and cls_ind >= config.accept_classification)
+    if len(voters) == 1 and best.status == "accepted" and cls_ind >= config.accept_classification + 0.15:
+        accepted = True  # a single, very clear observation
+    return FusedSign(
+        sign_id=sign_id, template_id=template_id, colour=best.colour, shape=best.shape, width_m=width,
+        height_m=height, format=fmt, position=position, n_obs=len(observations), vote_share=share,
+        sigma_m=sigma, azimuth=azimuth_deg(mean_face(voters)), detection_indicator=det_ind,
+        classification_indicator=cls_ind, status="accepted" if accepted else "review", best=best,
+        observations=list(observations),
+    )
+
+
+def fuse_observations(observations: Sequence[Observation], config: Optional[FusionConfig] = None) -> list[FusedSign]:
+    """One :class:`FusedSign` per physical sign, numbered from 1 in order of first sight."""
+    config = config or FusionConfig()
+    tracks = _merge_tracks(build_tracks(observations, config), config)
+    tracks.sort(key=lambda t: (t[0].pair_index, t[0].position[0], t[0].position[1]))
+    return [fuse_track(i, t, config) for i, t in enumerate(tracks, start=1)]

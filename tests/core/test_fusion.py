@@ -1,0 +1,112 @@
+"""Fusion of per-pair detections into physical signs, on constructed observations."""
+
+import numpy as np
+import pytest
+
+from signmapper_core.fusion import FusionConfig, Observation, fuse_observations
+
+WEST = np.array([-1.0, 0.0, 0.0])  # face looking west, towards a vehicle driving east
+EAST = np.array([1.0, 0.0, 0.0])
+
+
+def camera_at(pair_index: int) -> np.ndarray:
+    return np.array([2.0 * pair_index, 0.0, 2.4])  # driving east, 2 m per pair
+
+
+def observe(pos, pair_index, template_id="2.30-50", colour="red", shape="circle", noise=0.0, rng=None,
+            normal=WEST, cls=0.85, det=0.95, fmt=("normal", 0.6, 0.6)):
+    pos = np.asarray(pos, float)
+    if noise and rng is not None:
+        pos = pos + rng.normal(0, noise, 3)
+    depth = float(np.linalg.norm(pos[:2] - camera_at(pair_index)[:2]))
+    return Observation(template_id, colour, shape, fmt[1], fmt[2], fmt[0], det, cls, pos, depth, pair_index,
+                       f"{pair_index:06d}", camera_at(pair_index), (10, 10, 40, 40), normal)
+
+
+def seen_from(pos, pairs, **kwargs):
+    rng = np.random.default_rng(hash(tuple(np.round(pos, 3))) % 2**32)
+    return [observe(pos, k, rng=rng, **kwargs) for k in pairs]
+
+
+def test_one_sign_in_five_pairs_is_one_feature():
+    truth = np.array([20.0, 3.0, 2.5])
+    signs = fuse_observations(seen_from(truth, range(3, 8), noise=0.03))
+    assert len(signs) == 1
+    sign = signs[0]
+    assert sign.n_obs == 5 and sign.template_id == "2.30-50" and sign.vote_share == pytest.approx(1.0)
+    assert np.linalg.norm(sign.position - truth) < 0.04
+    assert 0.0 < sign.sigma_m < 0.1
+    assert sign.status == "accepted"
+    assert sign.azimuth == pytest.approx(270.0)
+    assert (sign.format, sign.width_m, sign.height_m) == ("normal", 0.6, 0.6)
+
+
+def test_stacked_signs_on_one_pole_stay_apart():
+    upper, lower = np.array([20.0, 3.0, 3.2]), np.array([20.0, 3.0, 2.5])
+    obs = seen_from(upper, range(3, 8), noise=0.03) + seen_from(lower, range(3, 8), template_id="2.01", noise=0.03)
+    signs = fuse_observations(obs)
+    assert sorted(s.template_id for s in signs) == ["2.01", "2.30-50"]
+    assert {s.n_obs for s in signs} == {5}
+
+
+def test_stacked_identical_signs_stay_apart():
+    upper, lower = np.array([20.0, 3.0, 3.2]), np.array([20.0, 3.0, 2.5])
+    signs = fuse_observations(seen_from(upper, range(3, 8), noise=0.02) + seen_from(lower, range(3, 8), noise=0.02))
+    assert len(signs) == 2
+    assert sorted(round(s.position[2], 1) for s in signs) == [2.5, 3.2]
+
+
+def test_back_to_back_signs_stay_apart():
+    pole = np.array([20.0, 3.0, 2.5])
+    front = seen_from(pole + [-0.03, 0, 0], range(3, 8), normal=WEST, noise=0.02)
+    # The back-facing sign is seen on the way back (pairs 40-44), facing east.
+    back = [observe(pole + [0.03, 0, 0], k, normal=EAST, template_id="2.30-50") for k in range(40, 45)]
+    signs = fuse_observations(front + back)
+    assert len(signs) == 2
+    assert sorted(round(s.azimuth) for s in signs) == [90, 270]
+
+
+def test_identical_signs_a_few_metres_apart_stay_apart():
+    a, b = np.array([20.0, 3.0, 2.5]), np.array([23.0, 3.0, 2.5])
+    signs = fuse_observations(seen_from(a, range(3, 8), noise=0.03) + seen_from(b, range(4, 9), noise=0.03))
+    assert len(signs) == 2
+    assert all(s.n_obs == 5 for s in signs)
+
+
+def test_outlier_observation_does_not_pull_the_position():
+    truth = np.array([20.0, 3.0, 2.5])
+    obs = seen_from(truth, range(3, 8), noise=0.01)
+    obs[2].position = truth + [0.25, 0.0, 0.1]  # a bad depth in one pair, still inside the gate
+    sign = fuse_observations(obs)[0]
+    assert sign.n_obs == 5
+    assert np.linalg.norm(sign.position - truth) < 0.02
+
+
+def test_weighted_vote_and_share():
+    truth = np.array([20.0, 3.0, 2.5])
+    obs = seen_from(truth, range(3, 8), noise=0.01)
+    obs[1].template_id = "2.30-60"
+    sign = fuse_observations(obs)[0]
+    assert sign.template_id == "2.30-50"
+    assert sign.vote_share == pytest.approx(0.8)
+
+
+def test_single_weak_observation_goes_to_review_not_dropped():
+    signs = fuse_observations([observe([20.0, 3.0, 2.5], 4, cls=0.55, det=0.6)])
+    assert len(signs) == 1 and signs[0].status == "review" and signs[0].n_obs == 1
+
+
+def test_same_sign_on_a_second_pass_is_merged():
+    truth = np.array([20.0, 3.0, 2.5])
+    first = seen_from(truth, range(3, 8), noise=0.02)
+    second = seen_from(truth, range(60, 64), noise=0.02)
+    signs = fuse_observations(first + second)
+    assert len(signs) == 1 and signs[0].n_obs == 9
+
+
+def test_long_gap_without_merge_gate_gives_two_tracks():
+    truth = np.array([20.0, 3.0, 2.5])
+    config = FusionConfig(merge_gate_m=0.0)
+    signs = fuse_observations(seen_from(truth, range(3, 6), noise=0.02) + seen_from(truth, range(30, 33), noise=0.02),
+                              config)
+    assert len(signs) == 2
