@@ -7,6 +7,8 @@ planarity (detection indicator) -> template NCC (classification indicator) ->
 
 from __future__ import annotations
 
+import time
+from contextlib import contextmanager
 from typing import List, Optional, Sequence, Tuple
 
 import numpy as np
@@ -17,12 +19,13 @@ from .colour import Segment, colour_masks, segments_from_mask
 from .config import PipelineConfig
 from .depth import merge_row_bands, sgbm_depth
 from .detection import Detection
+from .face_extent import FULL, colour_extent, face_bbox
 from .hough import hough_segments, radius_range_px
 from .locate import bbox_centre, locate
 from .planarity import segment_planarity
 from .search_space import search_space_mask
 from .shape import catalogue_shapes, classify_shape
-from .sizing import measure_segment, round_to_format
+from .sizing import measure_segment, metric_size, round_to_format
 
 Roi = Tuple[int, int, int, int]  # x0, y0, x1, y1 (exclusive)
 
@@ -51,6 +54,27 @@ def colour_segments(left: np.ndarray, search: Optional[np.ndarray], config: Pipe
     return out
 
 
+def size_to_format(seg: Segment, entries, depth_m: float, camera: Camera, catalogue, config: PipelineConfig):
+    """(SizeMatch, face bbox, candidate ids) of the best-fitting standard format, or None.
+
+    Entries are grouped by where their colour lies in the face (see face_extent),
+    so a coloured part inside a white rim is sized as the whole face.
+    """
+    groups = {}
+    for entry in entries:
+        ext = colour_extent(catalogue, entry.id, seg.colour, config.hsv_ranges) if seg.source == "colour" else FULL
+        groups.setdefault(tuple(round(v, 2) for v in ext), (ext, []))[1].append(entry)
+    best = None
+    for ext, group in groups.values():
+        face = face_bbox(seg.bbox, ext)
+        width_m, height_m = metric_size(camera, face, depth_m)
+        match = round_to_format(catalogue, group, width_m, height_m, config.size_tolerance)
+        if match is not None and (best is None or match.rel_error < best[0].rel_error):
+            allowed = {e.id for e in group}
+            best = (match, face, [t for t in match.template_ids if t in allowed])
+    return best if best is not None and best[2] else None
+
+
 def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, catalogue,
                      config: PipelineConfig) -> Optional[Detection]:
     """Steps 4-8 for one segment; None when it is rejected (cut, no shape, no format, not planar)."""
@@ -66,23 +90,21 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     size = measure_segment(camera, depth, seg.bbox, seg.mask, config.near_m, config.far_m)
     if size is None:
         return None
-    match = round_to_format(catalogue, entries, size.width_m, size.height_m, config.size_tolerance)
-    if match is None:
+    sized = size_to_format(seg, entries, size.depth_m, camera, catalogue, config)
+    if sized is None:
         return None
+    match, face, ids = sized
     planarity = segment_planarity(camera, depth, seg.bbox, seg.mask, config.planarity_window_px,
                                   config.planarity_tolerance_px, config.max_slant_deg, config.min_depth_coverage)
     if planarity.indicator < config.detection_threshold:
         return None
-    allowed = {e.id for e in entries}
-    ids = [t for t in match.template_ids if t in allowed]
-    cls = classify_segment(left, seg.bbox, catalogue, ids, config.scales, config.shift_fraction,
-                           config.max_template_px)
+    cls = classify_segment(left, face, catalogue, ids, config.scales, config.shift_fraction, config.max_template_px)
     if cls.template_id is None:
         return None
     status = "accepted" if cls.score >= config.classification_threshold else "review"
     if seg.source == "hough":
         status = config.hough_max_status if status == "accepted" else status
-    u, v = bbox_centre(seg.bbox)
+    u, v = bbox_centre(face)
     z = planarity.depth_at(camera, u, v)
     if not (np.isfinite(z) and config.near_m * 0.8 <= z <= config.far_m * 1.2):
         z = size.depth_m
@@ -91,7 +113,7 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
         template_id=cls.template_id, name=_entry_name(entry), colour=seg.colour, shape=entry.shape,
         width_m=match.width_m, height_m=match.height_m, format=match.format,
         detection_indicator=planarity.indicator, classification_indicator=cls.score, status=status,
-        u=u, v=v, bbox=tuple(int(b) for b in seg.bbox), depth_m=float(z),
+        u=u, v=v, bbox=face, depth_m=float(z),
         position=locate(camera, pose, u, v, z), source=seg.source, scores=cls.scores,
     )
 
@@ -130,7 +152,7 @@ def _ensure_depth(left, depth, right, camera, config: PipelineConfig, roi: Roi) 
     x0, y0, x1, y1 = roi
     bands = [(y0, y1)]
     if config.sgbm_rows_only:
-        # Colour candidates before depth: match only their rows (plus Hough needs the rest, see below).
+        # Colour candidates before depth: match only their rows (the Hough fallback then sees only these).
         segs = colour_segments(left, None, config, roi)
         max_px = 1.3 * 1.0 * camera.fy / config.near_m  # no sign face is taller than ~1 m
         bands = [(s.bbox[1], s.bbox[1] + s.bbox[3]) for s in segs if s.bbox[3] <= max_px]
@@ -141,8 +163,29 @@ def _ensure_depth(left, depth, right, camera, config: PipelineConfig, roi: Roi) 
                       config.sgbm_block_size, bands)
 
 
-def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig, roi: Roi) -> List[Detection]:
-    depth = _ensure_depth(left, depth, right, camera, config, roi)
+class _Timer:
+    """Accumulates seconds per step into a dict (or does nothing without one)."""
+
+    def __init__(self, sink: Optional[dict]):
+        self.sink = sink
+
+    @contextmanager
+    def __call__(self, step: str):
+        if self.sink is None:
+            yield
+            return
+        start = time.perf_counter()
+        try:
+            yield
+        finally:
+            self.sink[step] = self.sink.get(step, 0.0) + time.perf_counter() - start
+
+
+def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig, roi: Roi,
+            timings: Optional[dict] = None) -> List[Detection]:
+    timer = _Timer(timings)
+    with timer("depth"):
+        depth = _ensure_depth(left, depth, right, camera, config, roi)
     x0, y0, x1, y1 = roi
     search = search_space_mask(depth, config.near_m, config.far_m)
     if (x0, y0, x1, y1) != (0, 0, left.shape[1], left.shape[0]):
@@ -150,13 +193,26 @@ def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig,
         inside[y0:y1, x0:x1] = True
         search &= inside
     detections = []
-    for seg in colour_segments(left, search, config, roi):
-        det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config)
-        if det is not None:
-            detections.append(det)
+    with timer("colour"):
+        segments = colour_segments(left, search, config, roi)
+    with timer("segments"):
+        for seg in segments:
+            det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config)
+            if det is not None:
+                detections.append(det)
+    with timer("hough"):
+        detections += _hough_detections(left, depth, search, camera, pose, catalogue, config, roi, detections)
+    return suppress_overlaps(detections)
+
+
+def _hough_detections(left, depth, search, camera, pose, catalogue, config: PipelineConfig, roi: Roi,
+                      found: Sequence[Detection]) -> List[Detection]:
+    """Round signs from Hough circles whose centre is not inside an already found sign."""
+    x0, y0, x1, y1 = roi
+    detections: List[Detection] = []
     if config.hough_enabled:
         r_min, r_max = radius_range_px(camera.fx, config.near_m, config.far_m, _round_diameters(catalogue, config))
-        taken = [d.bbox for d in detections]
+        taken = [d.bbox for d in found]
         sub = search[y0:y1, x0:x1]
         for seg in hough_segments(left[y0:y1, x0:x1], sub, r_min, r_max, (), config.hough_scale,
                                   config.hough_circularity, config.hough_edge_threshold, config.border_margin_px):
@@ -167,19 +223,20 @@ def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig,
             det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config)
             if det is not None:
                 detections.append(det)
-    return suppress_overlaps(detections)
+    return detections
 
 
 def detect_pair(left, depth, right, camera: Camera, pose: Pose, catalogue,
-                config: Optional[PipelineConfig] = None) -> List[Detection]:
+                config: Optional[PipelineConfig] = None, timings: Optional[dict] = None) -> List[Detection]:
     """All signs detected in one stereo pair.
 
     ``depth``: float32 metres (NaN = none) or None to compute it by SGBM from
     ``left``/``right`` with the disparity range of the configured search space.
+    ``timings``: optional dict that receives the seconds spent per step.
     """
     config = config or PipelineConfig()
     height, width = left.shape[:2]
-    return _detect(left, depth, right, camera, pose, catalogue, config, (0, 0, width, height))
+    return _detect(left, depth, right, camera, pose, catalogue, config, (0, 0, width, height), timings)
 
 
 def detect_in_window(left, depth, right, camera: Camera, pose: Pose, catalogue, config: Optional[PipelineConfig],
