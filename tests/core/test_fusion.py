@@ -24,7 +24,8 @@ def observe(pos, pair_index, template_id="2.30-50", colour="red", shape="circle"
 
 
 def seen_from(pos, pairs, **kwargs):
-    rng = np.random.default_rng(hash(tuple(np.round(pos, 3))) % 2**32)
+    pairs = list(pairs)
+    rng = np.random.default_rng([int(1000 * c) % 2**31 for c in pos] + [pairs[0]])
     return [observe(pos, k, rng=rng, **kwargs) for k in pairs]
 
 
