@@ -31,11 +31,32 @@ DETECTION_FIELDS = [
 ]
 
 
-def detection_fields() -> QgsFields:
+# The fused layer "signs": one feature per physical sign. Pixel fields (pair_id, time, u, v, bbox_*, depth_m)
+# describe its best observation, the one the review dock shows first.
+SIGN_FIELDS = [("sign_id", QVariant.Int)] + DETECTION_FIELDS[:12] + [
+    ("n_obs", QVariant.Int),
+    ("vote_share", QVariant.Double),
+    ("sigma_m", QVariant.Double),
+    ("azimuth", QVariant.Double),
+    ("mount_height_m", QVariant.Double),
+    ("best_pair_id", QVariant.String),
+] + DETECTION_FIELDS[13:]
+
+# Detections additionally name the sign they were fused into.
+DETECTION_LAYER_FIELDS = DETECTION_FIELDS + [("sign_id", QVariant.Int)]
+
+STATUSES = ("accepted", "review", "rejected", "manual")
+
+
+def make_fields(spec) -> QgsFields:
     fields = QgsFields()
-    for name, kind in DETECTION_FIELDS:
+    for name, kind in spec:
         fields.append(QgsField(name, kind))
     return fields
+
+
+def detection_fields() -> QgsFields:
+    return make_fields(DETECTION_FIELDS)
 
 
 def detection_feature(fields: QgsFields, detection, record) -> QgsFeature:
