@@ -1,0 +1,38 @@
+"""Sign template catalogue: loader, renderer, size rounding and the procedural Swiss sign drawer.
+
+Public API (see docs/core-api.md, section "Catalogue")::
+
+    load_catalogue(folder=None) -> Catalogue      # None -> bundled Swiss catalogue
+    Catalogue.filter / render / round_size / pictogram_path
+    render_face(template_id, size_px, style=None) -> (bgr, alpha)
+"""
+
+from .faces import render_face
+from .model import (
+    COLOURS,
+    DEFAULT_CATALOGUE_DIR,
+    SHAPES,
+    Catalogue,
+    CatalogueError,
+    SizeMatch,
+    TemplateEntry,
+    load_catalogue,
+    round_size,
+    shape_mask,
+)
+from .style import FaceStyle
+
+__all__ = [
+    "COLOURS",
+    "DEFAULT_CATALOGUE_DIR",
+    "SHAPES",
+    "Catalogue",
+    "CatalogueError",
+    "FaceStyle",
+    "SizeMatch",
+    "TemplateEntry",
+    "load_catalogue",
+    "render_face",
+    "round_size",
+    "shape_mask",
+]
