@@ -19,7 +19,7 @@ from .colour import Segment, colour_masks, segments_from_mask
 from .config import PipelineConfig
 from .depth import merge_row_bands, sgbm_depth
 from .detection import Detection
-from .face_extent import FULL, colour_extent, face_bbox
+from .face_extent import FULL, candidate_entries, face_bbox
 from .hough import hough_segments, radius_range_px
 from .locate import bbox_centre, locate
 from .planarity import segment_planarity
@@ -54,15 +54,14 @@ def colour_segments(left: np.ndarray, search: Optional[np.ndarray], config: Pipe
     return out
 
 
-def size_to_format(seg: Segment, entries, depth_m: float, camera: Camera, catalogue, config: PipelineConfig):
+def size_to_format(seg: Segment, candidates, depth_m: float, camera: Camera, catalogue, config: PipelineConfig):
     """(SizeMatch, face bbox, candidate ids) of the best-fitting standard format, or None.
 
-    Entries are grouped by where their colour lies in the face (see face_extent),
-    so a coloured part inside a white rim is sized as the whole face.
+    ``candidates``: (entry, colour extent) pairs, grouped by extent so that a
+    coloured part inside a white rim or panel is sized as the whole face.
     """
     groups = {}
-    for entry in entries:
-        ext = colour_extent(catalogue, entry.id, seg.colour, config.hsv_ranges) if seg.source == "colour" else FULL
+    for entry, ext in candidates:
         groups.setdefault(tuple(round(v, 2) for v in ext), (ext, []))[1].append(entry)
     best = None
     for ext, group in groups.values():
@@ -75,6 +74,15 @@ def size_to_format(seg: Segment, entries, depth_m: float, camera: Camera, catalo
     return best if best is not None and best[2] else None
 
 
+def segment_candidates(seg: Segment, shape: str, catalogue, config: PipelineConfig):
+    """(entry, extent) pairs the segment may be: colour and shape cut the catalogue."""
+    shapes = catalogue_shapes(shape, seg.bbox[2], seg.bbox[3])
+    if seg.source == "hough":  # the circle is the face's outline, whatever its weak colour
+        return [(e, FULL) for e in catalogue.filter(colours=[seg.colour], shapes=shapes, exclude=config.exclude)]
+    return candidate_entries(catalogue, seg.colour, shapes, config.hsv_ranges, tuple(config.colours) + ("white",),
+                             config.exclude)
+
+
 def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, catalogue,
                      config: PipelineConfig) -> Optional[Detection]:
     """Steps 4-8 for one segment; None when it is rejected (cut, no shape, no format, not planar)."""
@@ -83,14 +91,13 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     shape = "circle" if seg.source == "hough" else classify_shape(seg.mask, config.min_shape_fit).shape
     if shape is None:
         return None
-    entries = catalogue.filter(colours=[seg.colour], shapes=catalogue_shapes(shape, seg.bbox[2], seg.bbox[3]),
-                               exclude=tuple(config.exclude))
-    if not entries:
+    candidates = segment_candidates(seg, shape, catalogue, config)
+    if not candidates:
         return None
     size = measure_segment(camera, depth, seg.bbox, seg.mask, config.near_m, config.far_m)
     if size is None:
         return None
-    sized = size_to_format(seg, entries, size.depth_m, camera, catalogue, config)
+    sized = size_to_format(seg, candidates, size.depth_m, camera, catalogue, config)
     if sized is None:
         return None
     match, face, ids = sized
