@@ -30,7 +30,7 @@ class SimulationConfig:
     position_sigma_m: float = 0.02
     angle_sigma_deg: float = 0.02
     # Scene content, per 100 m of street.
-    sign_density: float = 6.0             # sign poles
+    sign_density: float = 10.0            # sign poles
     distractor_density: float = 8.0       # cars, cones, shop signs, coloured patches, sign backs
     # Realism switches.
     noise: bool = True

@@ -59,11 +59,16 @@ def random_face_style(rng: np.random.Generator):
     return FaceStyle.random(rng, strength=float(rng.uniform(0.5, 1.0)))
 
 
-def render_sign_face(template_id: str, size_px: int, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
-    """Face (BGR, alpha) of one physical sign, drawn by the catalogue with a random style."""
+def render_sign_face(template_id: str, size_wh: tuple[int, int], rng: np.random.Generator
+                     ) -> tuple[np.ndarray, np.ndarray]:
+    """Face (BGR, alpha) of one physical sign, (w, h) pixels, drawn by the catalogue with a random style."""
     from ..catalogue import render_face
 
-    bgr, alpha = render_face(template_id, int(size_px), style=random_face_style(rng))
+    w, h = int(size_wh[0]), int(size_wh[1])
+    bgr, alpha = render_face(template_id, (w, h), style=random_face_style(rng))
+    if bgr.shape[:2] != (h, w):
+        bgr = cv2.resize(bgr, (w, h), interpolation=cv2.INTER_AREA)
+        alpha = cv2.resize(alpha, (w, h), interpolation=cv2.INTER_AREA)
     return np.ascontiguousarray(bgr), np.ascontiguousarray(alpha)
 
 

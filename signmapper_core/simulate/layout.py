@@ -131,11 +131,13 @@ class _Builder:
                 self.strip(s0, s1, l0, l1, KERB_H, self._paving_tex(s0, s1, l1 - l0))
             for l0, l1 in ((SIDEWALK_RIGHT[1], SIDEWALK_RIGHT[1] + 14), (SIDEWALK_LEFT[0] - 14, SIDEWALK_LEFT[0])):
                 self.strip(s0, s1, l0, l1, KERB_H, self._verge_tex(l1 - l0))
-            # kerb faces, seen from the road
-            for l_kerb, sign in ((SIDEWALK_RIGHT[0], 1), (PARKING_LEFT[0], -1)):
+            # kerb faces, following the slope (two triangles each)
+            for l_kerb in (SIDEWALK_RIGHT[0], PARKING_LEFT[0]):
                 a, b = st.point(s0, l_kerb), st.point(s1, l_kerb)
-                left, right = (b, a) if sign > 0 else (a, b)
-                self.wall(left, right, a[2], a[2] + KERB_H, None, (150, 152, 150), (s0 - 1, s1 + 1))
+                a_up, b_up = a + UP * KERB_H, b + UP * KERB_H
+                tc = [(0, 0), (1, 0), (0, 1)]
+                for tri in ((a, b, a_up), (b, b_up, a_up)):
+                    self.surfaces.append(triangle_surface(tri, tc, None, (150, 152, 150), True, (s0 - 1, s1 + 1)))
 
     def _carriageway_tex(self, s0, s1, zebras):
         key, rng = self.key("road")
@@ -242,7 +244,7 @@ class _Builder:
         w, h = max(8, int(length / 0.04)), int(1.2 / 0.04)
         tex = TextureSource(key, w, h, lambda: _opaque(tx.foliage(trng, h * 3, w, dark=True), h))
         a, b = self.street.point(s0, lat, KERB_H), self.street.point(s1, lat, KERB_H)
-        self.wall(a, b, a[2], a[2] + 1.2, tex, s_range=(s0 - 1, s1 + 1))
+        self.wall(a, b, min(a[2], b[2]) - 0.3, max(a[2], b[2]) + 1.2, tex, s_range=(s0 - 1, s1 + 1))
 
     def tree(self, s, lat, rng):
         base = self.street.point(s, lat, KERB_H)
@@ -274,6 +276,7 @@ class _Builder:
         right = np.array([-np.cos(phi), np.sin(phi), 0.0])
         up = UP * np.cos(tau) - n_h * np.sin(tau)
         size_px = int(np.clip(self.fx * max(w_m, h_m) / 3.0, 48, 640))
+        fh, fw = _face_shape(size_px, w_m, h_m)
         key, rng = self.key("face")
         style_seed = int(rng.integers(2**63))
         real = self.realism
@@ -283,14 +286,13 @@ class _Builder:
         effect_seed = int(rng.integers(2**63))
 
         def face_pixels():
-            return render_sign_face(kind.template_id, size_px, np.random.default_rng(style_seed))
+            return render_sign_face(kind.template_id, (fw, fh), np.random.default_rng(style_seed))
 
         def make_face():
             bgr, alpha = face_pixels()
             bgr = weather_face(bgr, alpha, np.random.default_rng(effect_seed), faded, dirt, shadow)
             return Texture(bgr, alpha)
 
-        fh, fw = _face_shape(kind, size_px, w_m, h_m)
         face_src = TextureSource(key, fw, fh, make_face)
         corner = centre - right * w_m / 2 + up * h_m / 2
         face = rect_surface(corner, right * w_m, -up * h_m, face_src, two_sided=False, s_range=(s - 2, s + 2))
@@ -480,8 +482,8 @@ def _opaque(tex: Texture, h: int) -> Texture:
     return Texture(np.ascontiguousarray(tex.bgr[top:top + h]))
 
 
-def _face_shape(kind: SignKind, size_px: int, w_m: float, h_m: float) -> tuple[int, int]:
-    """(height, width) in pixels that ``render_face(id, size_px)`` gives: longer side = size_px."""
+def _face_shape(size_px: int, w_m: float, h_m: float) -> tuple[int, int]:
+    """(height, width) in pixels of a face texture whose longer side is ``size_px``."""
     if w_m >= h_m:
         return max(1, int(round(size_px * h_m / w_m))), size_px
     return size_px, max(1, int(round(size_px * w_m / h_m)))
@@ -495,8 +497,8 @@ def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float
     b._facade_spans = []
     rng = b.rng(1, 1)
     s_end = street.length
-    # signs between 12 m ahead of the first pair and 6 m ahead of the last: each is seen in range
-    s_lo, s_hi = s_cam_first + 12.0, s_cam_last + 6.0
+    # signs between 8 m ahead of the first pair and 12 m ahead of the last: each is seen within 4-14 m
+    s_lo, s_hi = s_cam_first + 8.0, s_cam_last + 12.0
     spots: list[float] = []
     if s_hi > s_lo:
         n_poles = max(1, rng.poisson(sign_density * (s_hi - s_lo) / 100.0)) if sign_density > 0 else 0

@@ -110,10 +110,10 @@ class Rasterizer:
         uv = self.k[:2, :2] @ (pts_c[:, :2] / zc[:, None]).T + self.k[:2, 2:3]
         uv = uv.T
         cam = self.camera
-        x0 = max(int(np.floor(uv[:, 0].min())), 0)
-        y0 = max(int(np.floor(uv[:, 1].min())), 0)
-        x1 = min(int(np.ceil(uv[:, 0].max())) + 1, cam.width)
-        y1 = min(int(np.ceil(uv[:, 1].max())) + 1, cam.height)
+        x0 = max(int(np.floor(uv[:, 0].min())) - 1, 0)
+        y0 = max(int(np.floor(uv[:, 1].min())) - 1, 0)
+        x1 = min(int(np.ceil(uv[:, 0].max())) + 2, cam.width)
+        y1 = min(int(np.ceil(uv[:, 1].max())) + 2, cam.height)
         if x1 <= x0 or y1 <= y0:
             return None
         h = self.k @ np.column_stack([u_c, v_c, o_c])
@@ -131,8 +131,13 @@ class Rasterizer:
         x0, y0, x1, y1 = box
         bw, bh = x1 - x0, y1 - y0
         cover = np.zeros((bh, bw), np.uint8)
-        pts = np.round((uv - [x0, y0]) * (1 << SUBPIXEL_BITS)).astype(np.int32)
-        cv2.fillConvexPoly(cover, pts, 255, cv2.LINE_AA, SUBPIXEL_BITS)
+        # Grown by ~0.6 px and filled without anti-aliasing, so neighbouring surfaces overlap
+        # instead of leaving seams; soft outlines come from alpha textures and the camera blur.
+        centre = uv.mean(axis=0)
+        away = uv - centre
+        grown = uv + 0.6 * away / np.maximum(np.linalg.norm(away, axis=1, keepdims=True), 1e-9)
+        pts = np.round((grown - [x0, y0]) * (1 << SUBPIXEL_BITS)).astype(np.int32)
+        cv2.fillConvexPoly(cover, pts, 255, cv2.LINE_8, SUBPIXEL_BITS)
         us = np.arange(x0, x1, dtype=np.float32)
         vs = np.arange(y0, y1, dtype=np.float32)
         inv_z = (plane[0] * us)[None, :] + (plane[1] * vs + plane[2])[:, None]
