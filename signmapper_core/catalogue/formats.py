@@ -33,4 +33,4 @@ TALL_INFO = {"large": (0.90, 1.35), "normal": (0.60, 0.90)}
 # Zone signs (Tempo-30-Zone, pedestrian zone), from the project brief (uncertain).
 ZONE = {"large": (0.75, 1.05), "normal": (0.50, 0.70)}
 # "50 generell" panel (uncertain).
-GENERAL_LIMIT = {"large": (1.00, 1.40), "normal": (0.70, 1.00)}
+GENERAL_LIMIT = {"large": (1.05, 1.50), "normal": (0.70, 1.00)}

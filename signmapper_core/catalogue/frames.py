@@ -37,12 +37,12 @@ def triangle(style: FaceStyle, content: Content | None = None, down: bool = Fals
              rim_colour: str = "red", fill: str = "white") -> Drawing:
     """Danger triangle (point up) or give-way triangle (point down) with rounded corners."""
     sharp = [(0, 0), (1, 0), (0.5, H_TRI)] if down else [(0.5, 0), (1, H_TRI), (0, H_TRI)]
-    r0 = 0.06 * style.corner_scale
+    r0 = 0.035 * style.corner_scale
     rim = (0.115 if down else 0.095) * style.rim_scale
     d, outer = _poly_drawing(sharp, r0, rim_colour)
     d.ops.append(FillPoly(outer, rim_colour))
     d.ops.append(FillPoly(shapes.rounded_inset(sharp, r0, rim), fill))
-    _content(d, style, content, 0.5, 0.30 if down else 0.595, 0.19)
+    _content(d, style, content, 0.5, 0.30 if down else 0.59, 0.2)
     return d
 
 

@@ -105,7 +105,11 @@ class Pen:
         d = d / np.linalg.norm(d)
         n = np.array([-d[1], d[0]])
         base = tip - d * hl
-        shaft = np.vstack([p[:-1], base + d * 0.05 * hl])
+        # keep only the shaft points farther than the head length from the tip (curved arrows)
+        seg = np.linalg.norm(np.diff(p, axis=0), axis=1)
+        from_tip = np.concatenate([np.cumsum(seg[::-1])[::-1], [0.0]])
+        keep = p[from_tip > hl * 1.05]
+        shaft = np.vstack([keep, base + d * 0.05 * hl]) if len(keep) else np.array([p[0], base + d * 0.05 * hl])
         self.line(shaft, width, colour)
         self.poly([tip, base + n * hw, base - n * hw], colour)
 

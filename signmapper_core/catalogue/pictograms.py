@@ -224,11 +224,9 @@ def road_curve(p: Pen, c: str = "black", width: float = 0.3):
 
 def road_double_curve(p: Pen, c: str = "black", width: float = 0.26):
     """Double bend, first to the right (mirror for first to the left)."""
-    a = shapes.arc(0.3, 0.55, 0.5, 180, 270, 10)
-    b = shapes.arc(0.3, -0.45, 0.5, 90, 150, 8)[::-1]
-    b = shapes.arc(0.3, -0.45, 0.5, 90, 180, 10)[::-1]
-    pts = np.vstack([[(-0.2, 0.95)], a, b[1:], [(-0.25, -0.72)]])
-    p.arrow(pts, width, c, head_length=0.34, head_width=0.32)
+    t = np.linspace(0.0, 1.0, 33)
+    pts = np.stack([-0.05 + 0.36 * np.sin(2 * np.pi * t), 0.95 - 1.75 * t], axis=1)
+    p.arrow(pts, width, c, head_length=0.36, head_width=0.34)
 
 
 def narrowing(p: Pen, c: str = "black", left: bool = True, right: bool = True, width: float = 0.16):
@@ -321,9 +319,9 @@ def u_turn(p: Pen, c: str = "black"):
 
 
 def roundabout(p: Pen, c: str = "white"):
-    for start in (-60, 60, 180):
-        pts = shapes.arc(0, 0, 0.68, start + 95, start + 20, 14)
-        p.arrow(pts, 0.2, c, 0.4, 0.34)
+    for start in (-90, 30, 150):
+        pts = shapes.arc(0, 0, 0.66, start + 100, start, 20)
+        p.arrow(pts, 0.22, c, 0.42, 0.36)
 
 
 def tyre_with_chains(p: Pen, c: str = "white"):

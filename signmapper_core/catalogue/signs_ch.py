@@ -246,7 +246,8 @@ def _stopping(cross: bool):
     return lambda st: frames.disc(st, content, fill="blue", rim=0.1)
 
 
-_add("2.49", "Halten verboten", "Interdiction de s'arrêter", "Divieto di fermata", "blue", "circle", F.ROUND, True,
+# The red rim and cross of 2.49 cover more of the face than its blue ground: its colour class is red.
+_add("2.49", "Halten verboten", "Interdiction de s'arrêter", "Divieto di fermata", "red", "circle", F.ROUND, True,
      _stopping(True))
 _add("2.50", "Parkieren verboten", "Interdiction de parquer", "Divieto di parcheggio", "blue", "circle", F.ROUND,
      True, _stopping(False))
@@ -281,14 +282,14 @@ mandatory("2.62", "Reitweg", "Allée d'équitation", "Strada per cavalieri", pg.
 mandatory("2.63", "Rad- und Fussweg mit getrennten Verkehrsflächen",
           "Piste cyclable et chemin pour piétons, avec partage de l'aire de circulation",
           "Ciclopista e strada pedonale con divisione dell'area di circolazione",
-          _all(lambda p: pg.bicycle(p.sub(-0.62, 0, 0.5), "white", 0.14), lambda p: p.rect(-0.04, -1.3, 0.04, 1.3,
-                                                                                         "white"),
-               _at(pg.pedestrian, 0.58, 0, 0.62, False, "white")))
+          _all(lambda p: pg.bicycle(p.sub(-0.66, 0.05, 0.6), "white", 0.14),
+               lambda p: p.rect(-0.04, -1.4, 0.04, 1.4, "white"),
+               _at(pg.pedestrian, 0.62, 0.0, 0.8, False, "white")))
 mandatory("2.63.1", "Gemeinsamer Rad- und Fussweg",
           "Piste cyclable et chemin pour piétons, sans partage de l'aire de circulation",
           "Ciclopista e strada pedonale senza divisione dell'area di circolazione",
-          _all(lambda p: pg.bicycle(p.sub(0, -0.55, 0.5), "white", 0.14),
-               _at(pg.pedestrian, 0, 0.55, 0.45, False, "white")))
+          _all(lambda p: pg.bicycle(p.sub(0, -0.58, 0.62), "white", 0.13),
+               _at(pg.pedestrian, 0, 0.6, 0.58, False, "white")))
 mandatory("2.64", "Busfahrbahn", "Voie réservée aux bus", "Corsia riservata ai bus",
           lambda p: pg.bus_side(p.sub(0, 0, 0.95), "white", "blue"))
 
@@ -349,8 +350,8 @@ info("4.17", "Parkieren gestattet", "Parking autorisé", "Parcheggio autorizzato
 
 def _tall_parking(sub):
     def content(p: Pen):
-        p.text("P", 0, -0.62, 0.85, "white", max_width=1.0)
-        sub(p.sub(0, 0.62, 0.5))
+        p.text("P", 0, -0.72, 1.05, "white", max_width=1.4)
+        sub(p.sub(0, 0.75, 0.85))
     return lambda st: frames.panel(st, content, aspect=0.60 / 0.90, fill="blue", edge="white",
                                    content_box=(0.5, 0.75, 0.38))
 
