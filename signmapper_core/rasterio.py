@@ -67,13 +67,28 @@ def _pfm_header(path: Path) -> tuple[int, int, int, float]:
 
 
 def read_image(path: Path, expected_size: tuple[int, int] | None = None) -> np.ndarray:
-    """Decode an 8-bit colour image as BGR uint8 (H, W, 3)."""
+    """Decode an 8-bit colour image as BGR uint8 (H, W, 3).
+
+    libjpeg fills a truncated JPEG with grey and only warns; such a file is
+    rejected here (no end-of-image marker) rather than mapped as a grey picture.
+    """
     cv2 = _cv2()
-    img = cv2.imread(str(path), cv2.IMREAD_COLOR)
+    try:
+        data = np.fromfile(path, dtype=np.uint8)
+    except OSError as exc:
+        raise ImageReadError(path, f"cannot be read ({exc.strerror or exc})") from exc
+    if Path(path).suffix.lower() in (".jpg", ".jpeg") and not _has_jpeg_end(data):
+        raise ImageReadError(path, "truncated JPEG (no end-of-image marker)")
+    img = cv2.imdecode(data, cv2.IMREAD_COLOR) if data.size else None
     if img is None:
         raise ImageReadError(path, "cannot be decoded as an image (corrupt or unsupported)")
     _check_size(path, img.shape, expected_size)
     return img
+
+
+def _has_jpeg_end(data: np.ndarray) -> bool:
+    tail = data[-64:].tobytes().rstrip(b"\x00\r\n ")
+    return tail.endswith(b"\xff\xd9")
 
 
 def read_depth(path: Path, expected_size: tuple[int, int] | None = None) -> np.ndarray:

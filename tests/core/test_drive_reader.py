@@ -231,3 +231,13 @@ def test_pairs_are_loaded_one_at_a_time(tmp_path):
     assert drive.load_left(drive.pairs[0]).shape == (48, 64, 3)
     with pytest.raises(ImageReadError):
         drive.load_left(drive.pairs[2])
+
+
+def test_truncated_jpeg_is_an_error_not_a_grey_picture(tmp_path):
+    root = make_drive(tmp_path / "d", n_pairs=2, image_suffix=".jpg")
+    drive = open_drive(root)
+    path = drive.pairs[1].left_path
+    path.write_bytes(path.read_bytes()[:-200])
+    assert drive.load_left(drive.pairs[0]).shape == (48, 64, 3)
+    with pytest.raises(ImageReadError, match="truncated JPEG"):
+        drive.load_left(drive.pairs[1])
