@@ -20,7 +20,7 @@ from qgis.core import (
 from .base import Cancelled, SignMapperAlgorithm, core_progress
 from .drive_input import open_drive_or_raise
 from .gpkg_output import AtomicGeoPackage, layer_uri
-from .sign_fields import detection_feature, detection_fields
+from .sign_fields import DETECTION_LAYER_FIELDS, SIGN_FIELDS, detection_feature, make_fields, sign_feature
 
 COLOURS = ["red", "blue", "yellow"]
 
@@ -35,7 +35,9 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         "colour segmentation, shape, metric size rounded to the catalogue's standard formats, planarity "
         "(detection indicator), template matching (classification indicator) and the 3D position of the sign "
         "centre from the pair's pose. Writes a GeoPackage with the layer 'detections' (one PointZ per sign per "
-        "pair, in the drive's CRS) and the table 'signmapper_run' recording the drive folder and parameters. "
+        "pair, in the drive's CRS), the layer 'signs' (the detections of each physical sign fused into one point with "
+        "class by weighted vote, number of observations, position spread and face azimuth) and the table "
+        "'signmapper_run' recording the drive folder and parameters. "
         "A pair with a corrupt or missing image is logged and skipped; a failed or cancelled run writes nothing."
     )
 
@@ -49,6 +51,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
     CATALOGUE = "CATALOGUE"
     OUTPUT = "OUTPUT"
     DETECTIONS = "DETECTIONS"
+    SIGNS = "SIGNS"
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_parameter(
@@ -95,6 +98,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                                                   fileFilter="GeoPackage (*.gpkg)"),
             "GeoPackage to write; it is replaced only when the run completes.",
         )
+        self.addOutput(QgsProcessingOutputVectorLayer(self.SIGNS, self.tr("Signs"), QgsProcessing.TypeVectorPoint))
         self.addOutput(QgsProcessingOutputVectorLayer(self.DETECTIONS, self.tr("Detections"),
                                                       QgsProcessing.TypeVectorPoint))
 
@@ -135,20 +139,24 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
 
         output = AtomicGeoPackage(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
         try:
-            count = self.write_detections(output, drive, catalogue, config, feedback)
-            output.write_run_table(self.run_record(drive, catalogue, config))
+            detections = self.detect(drive, catalogue, config, feedback)
             if feedback.isCanceled():
                 raise QgsProcessingException("Cancelled; no output written.")
+            signs = self.fuse(detections, feedback)
+            self.write_layers(output, drive, detections, signs)
+            output.write_run_table(self.run_record(drive, catalogue, config))
             path = output.commit()
         except BaseException:
             output.discard()
             raise
-        feedback.pushInfo(f"{count} detections written to {path}")
-        uri = layer_uri(path, "detections")
-        context.addLayerToLoadOnCompletion(
-            uri, QgsProcessingContext.LayerDetails("Sign detections", context.project(), self.DETECTIONS)
-        )
-        return {self.OUTPUT: path, self.DETECTIONS: uri}
+        feedback.pushInfo(f"{len(detections)} detections fused into {len(signs)} signs, written to {path}")
+        results = {self.OUTPUT: path}
+        for key, layer, title in ((self.SIGNS, "signs", "Signs"), (self.DETECTIONS, "detections", "Sign detections")):
+            results[key] = layer_uri(path, layer)
+            context.addLayerToLoadOnCompletion(
+                results[key], QgsProcessingContext.LayerDetails(title, context.project(), key)
+            )
+        return results
 
     def excluded_ids(self, parameters, context, catalogue) -> list[str]:
         text = self.parameterAsString(parameters, self.EXCLUDE, context) or ""
@@ -158,29 +166,47 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             raise QgsProcessingException(f"Sign types to exclude: {', '.join(unknown)} not in the catalogue")
         return ids
 
-    def write_detections(self, output, drive, catalogue, config, feedback) -> int:
+    def detect(self, drive, catalogue, config, feedback) -> list:
+        """Run the pipeline pair by pair; returns (detection, pair record) in driving order."""
         from ..signmapper_core.mapping import map_drive
 
-        fields = detection_fields()
-        crs = QgsCoordinateReferenceSystem(drive.crs)
-        writer = output.open_layer("detections", fields, QgsWkbTypes.PointZ, crs,
-                                   abstract=f"Sign Mapper detections of drive {drive.root}")
-        total, count, skipped = len(drive.pairs), 0, 0
+        detections, skipped, total = [], 0, len(drive.pairs)
         for done, result in enumerate(map_drive(drive, catalogue, config, feedback.isCanceled), start=1):
             if result.error:
                 skipped += 1
                 feedback.reportError(f"Skipped pair {result.record.id}: {result.error}", fatalError=False)
-            for detection in result.detections:
-                writer.addFeature(detection_feature(fields, detection, result.record), QgsFeatureSink.FastInsert)
-                count += 1
-            feedback.setProgress(5 + 95 * done / total)
+            detections.extend((detection, result.record) for detection in result.detections)
+            feedback.setProgress(5 + 90 * done / total)
             feedback.setProgressText(
                 f"Pair {result.record.id}: {len(result.detections)} signs ({result.seconds:.2f} s)"
             )
-        del writer
         if skipped:
             feedback.pushWarning(f"{skipped} of {total} pairs skipped, see the messages above")
-        return count
+        return detections
+
+    def fuse(self, detections, feedback) -> list:
+        from ..signmapper_core.fusion import Observation, fuse_observations
+
+        feedback.setProgressText(f"Fusing {len(detections)} detections into signs")
+        signs = fuse_observations([Observation.from_detection(d, r, i) for i, (d, r) in enumerate(detections)])
+        feedback.setProgress(97)
+        return signs
+
+    def write_layers(self, output, drive, detections, signs) -> None:
+        crs = QgsCoordinateReferenceSystem(drive.crs)
+        sign_of = {o.detection_id: s.sign_id for s in signs for o in s.observations}
+        fields = make_fields(SIGN_FIELDS)
+        writer = output.open_layer("signs", fields, QgsWkbTypes.PointZ, crs,
+                                   abstract=f"Sign Mapper: traffic signs of drive {drive.root}")
+        for sign in signs:
+            writer.addFeature(sign_feature(fields, sign), QgsFeatureSink.FastInsert)
+        del writer
+        fields = make_fields(DETECTION_LAYER_FIELDS)
+        writer = output.open_layer("detections", fields, QgsWkbTypes.PointZ, crs,
+                                   abstract=f"Sign Mapper: per-pair sign detections of drive {drive.root}")
+        for i, (detection, record) in enumerate(detections):
+            writer.addFeature(detection_feature(fields, detection, record, sign_of.get(i)), QgsFeatureSink.FastInsert)
+        del writer
 
     @staticmethod
     def run_record(drive, catalogue, config) -> dict:

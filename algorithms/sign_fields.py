@@ -59,18 +59,47 @@ def detection_fields() -> QgsFields:
     return make_fields(DETECTION_FIELDS)
 
 
-def detection_feature(fields: QgsFields, detection, record) -> QgsFeature:
-    """A PointZ feature for one core ``Detection`` seen in pair ``record``."""
-    east, north, up = (float(c) for c in detection.position)
+def _point_feature(fields: QgsFields, position, attributes: list) -> QgsFeature:
     feature = QgsFeature(fields)
+    east, north, up = (float(c) for c in position)
     feature.setGeometry(QgsGeometry(QgsPoint(east, north, up)))
-    x, y, w, h = (int(c) for c in detection.bbox)
-    feature.setAttributes([
-        detection.template_id, detection.name, detection.colour, detection.shape,
-        float(detection.width_m), float(detection.height_m), detection.format,
-        round(float(detection.detection_indicator), 4), round(float(detection.classification_indicator), 4),
-        detection.status, 0, getattr(detection, "source", "colour"),
-        record.id, float(record.time), round(float(detection.u), 2), round(float(detection.v), 2),
-        x, y, w, h, round(float(detection.depth_m), 3),
-    ])
+    feature.setAttributes(attributes)
     return feature
+
+
+def _sign_attributes(item) -> list:
+    """The attributes shared by detections and signs, from a Detection or an Observation."""
+    return [
+        item.template_id, item.name, item.colour, item.shape,
+        float(item.width_m), float(item.height_m), item.format,
+        round(float(item.detection_indicator), 4), round(float(item.classification_indicator), 4),
+        item.status, 0, getattr(item, "source", "colour"),
+    ]
+
+
+def _pixel_attributes(pair_id, time, obs) -> list:
+    x, y, w, h = (int(c) for c in obs.bbox)
+    return [pair_id, float(time), round(float(obs.u), 2), round(float(obs.v), 2), x, y, w, h,
+            round(float(obs.depth_m), 3)]
+
+
+def detection_feature(fields: QgsFields, detection, record, sign_id=None) -> QgsFeature:
+    """A PointZ feature for one core ``Detection`` seen in pair ``record``; ``sign_id`` links it to its sign."""
+    attributes = _sign_attributes(detection) + _pixel_attributes(record.id, record.time, detection)
+    if fields.indexOf("sign_id") >= 0:
+        attributes.append(sign_id)
+    return _point_feature(fields, detection.position, attributes)
+
+
+def sign_feature(fields: QgsFields, sign, mount_height_m=None) -> QgsFeature:
+    """A PointZ feature for one fused sign; the pixel fields describe its best observation."""
+    best = sign.best
+    shared = _sign_attributes(sign)
+    shared[11] = best.source
+    attributes = [sign.sign_id] + shared + [
+        sign.n_obs, round(float(sign.vote_share), 3), round(float(sign.sigma_m), 4),
+        None if sign.azimuth is None else round(float(sign.azimuth), 1),
+        None if mount_height_m is None else round(float(mount_height_m), 2),
+        best.pair_id,
+    ] + _pixel_attributes(best.pair_id, best.time, best)[1:]
+    return _point_feature(fields, sign.position, attributes)

@@ -42,6 +42,11 @@ class Observation:
     normal: Optional[np.ndarray] = None  # (3,) world unit normal of the face, towards the camera
     status: str = "accepted"
     detection_id: Optional[int] = None  # the feature id of the detection, to link back
+    time: float = 0.0
+    u: float = 0.0
+    v: float = 0.0
+    name: str = ""
+    source: str = "colour"
 
     @classmethod
     def from_detection(cls, detection, record, detection_id=None, normal=None) -> Observation:
@@ -53,7 +58,8 @@ class Observation:
             position=np.asarray(detection.position, float), depth_m=detection.depth_m, pair_index=record.index,
             pair_id=record.id, camera_centre=record.pose.centre, bbox=tuple(detection.bbox),
             normal=normal if normal is not None else getattr(detection, "normal_world", None),
-            status=detection.status, detection_id=detection_id,
+            status=detection.status, detection_id=detection_id, time=record.time, u=float(detection.u),
+            v=float(detection.v), name=detection.name, source=getattr(detection, "source", "colour"),
         )
 
 
@@ -89,6 +95,7 @@ class FusedSign:
     status: str
     best: Observation
     observations: list = field(default_factory=list)
+    name: str = ""
 
 
 def _compatible_shape(a: str, b: str) -> bool:
@@ -263,7 +270,7 @@ def fuse_track(sign_id: int, observations: Sequence[Observation], config: Fusion
         height_m=height, format=fmt, position=position, n_obs=len(observations), vote_share=share,
         sigma_m=sigma, azimuth=azimuth_deg(mean_face(voters)), detection_indicator=det_ind,
         classification_indicator=cls_ind, status="accepted" if accepted else "review", best=best,
-        observations=list(observations),
+        observations=list(observations), name=best.name,
     )
 
 

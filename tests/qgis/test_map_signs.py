@@ -1,0 +1,163 @@
+"""``signmapper:mapsigns`` on a small synthetic drive: toolbox call, model chain, cancel, bad pairs, CLI."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from qgis.core import (
+    QgsProcessingException,
+    QgsProcessingFeedback,
+    QgsProcessingModelAlgorithm,
+    QgsProcessingModelChildAlgorithm,
+    QgsProcessingModelChildParameterSource,
+    QgsProcessingModelOutput,
+    QgsVectorLayer,
+    QgsWkbTypes,
+)
+from qgis_process_runner import enable_plugin, qgis_process_env, run_algorithm
+
+from signmapper_core.drive import open_drive
+from signmapper_core.simulate import SimulationConfig, generate_drive
+
+# Half-HD with half the focal length keeps the angular resolution of the real camera's 4-14 m range
+# at a quarter of the pixels, so the tests stay quick.
+SMALL = dict(width=960, height=540, fx=875.0)
+
+
+@pytest.fixture(scope="module")
+def small_drive(tmp_path_factory) -> Path:
+    out = tmp_path_factory.mktemp("drives") / "drive"
+    generate_drive(out, SimulationConfig(pairs=12, seed=11, write_depth=True, **SMALL))
+    return out
+
+
+@pytest.fixture
+def run(registered_plugin):
+    import processing
+
+    return processing.run
+
+
+def read_detections(path):
+    layer = QgsVectorLayer(f"{path}|layername=detections", "d", "ogr")
+    assert layer.isValid()
+    return layer
+
+
+def positions_and_ids(layer):
+    xyz, ids = [], []
+    for f in layer.getFeatures():
+        p = f.geometry().constGet()
+        xyz.append((p.x(), p.y(), p.z()))
+        ids.append(f["template_id"])
+    return np.array(xyz).reshape(-1, 3), ids
+
+
+def assert_finds_truth(layer, drive_dir, tolerance_m=0.3, min_signs=1):
+    xyz, ids = positions_and_ids(layer)
+    truth = open_drive(drive_dir).truth
+    found = 0
+    for sign in truth:
+        dist = np.linalg.norm(xyz - sign.position, axis=1) if len(xyz) else np.array([])
+        close = [ids[i] for i in np.flatnonzero(dist < tolerance_m)]
+        found += sign.template_id in close
+    assert found >= min_signs, f"{found} truth signs found with the right id among {len(xyz)} detections"
+    return found
+
+
+def test_map_signs_writes_detections_with_the_right_ids_and_positions(run, small_drive, tmp_path):
+    out = tmp_path / "signs.gpkg"
+    result = run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out)})
+    assert result["OUTPUT"] == str(out)
+    layer = read_detections(out)
+    assert layer.wkbType() == QgsWkbTypes.PointZ
+    assert layer.crs().authid() == "EPSG:2056"
+    for name in ("template_id", "name", "colour", "shape", "width_m", "height_m", "format", "detection_indicator",
+                 "classification_indicator", "status", "pair_id", "time", "u", "v", "bbox_x", "bbox_y", "bbox_w",
+                 "bbox_h", "depth_m"):
+        assert name in layer.fields().names()
+    assert layer.featureCount() > 0
+    statuses = {f["status"] for f in layer.getFeatures()}
+    assert statuses <= {"accepted", "review"}
+    assert_finds_truth(layer, small_drive, min_signs=2)
+    run_table = QgsVectorLayer(f"{out}|layername=signmapper_run", "run", "ogr")
+    values = {f["key"]: f["value"] for f in run_table.getFeatures()}
+    assert Path(values["drive"]) == small_drive.resolve()
+    assert not list(tmp_path.glob(".*partial*"))
+
+
+def test_excluded_type_is_never_assigned(run, small_drive, tmp_path):
+    truth_ids = sorted({s.template_id for s in open_drive(small_drive).truth})
+    out = tmp_path / "excl.gpkg"
+    run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out), "EXCLUDE": ", ".join(truth_ids[:2])})
+    ids = {f["template_id"] for f in read_detections(out).getFeatures()}
+    assert not ids & set(truth_ids[:2])
+
+
+def test_unknown_excluded_id_is_a_clear_error(run, small_drive, tmp_path):
+    with pytest.raises(QgsProcessingException, match="9.99 not in the catalogue"):
+        run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(tmp_path / "x.gpkg"), "EXCLUDE": "9.99"})
+
+
+def test_corrupt_pair_is_logged_and_skipped(run, small_drive, tmp_path):
+    import shutil
+
+    drive = tmp_path / "corrupt"
+    shutil.copytree(small_drive, drive)
+    broken = sorted((drive / "left").iterdir())[3]
+    broken.write_bytes(broken.read_bytes()[:2000])  # header readable, pixels truncated
+    messages = []
+
+    class Recorder(QgsProcessingFeedback):
+        def reportError(self, error, fatalError=False):  # noqa: N802, N803
+            messages.append(error)
+
+    out = tmp_path / "c.gpkg"
+    run("signmapper:mapsigns", {"DRIVE": str(drive), "OUTPUT": str(out)}, feedback=Recorder())
+    assert read_detections(out).featureCount() > 0
+    assert any(broken.stem in m and broken.name in m for m in messages), messages
+
+
+def test_cancel_writes_nothing(run, small_drive, tmp_path):
+    out = tmp_path / "cancelled.gpkg"
+    feedback = QgsProcessingFeedback()
+    feedback.progressChanged.connect(lambda p: feedback.cancel() if p > 20 else None)
+    with pytest.raises(QgsProcessingException, match="Cancelled"):
+        run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out)}, feedback=feedback)
+    assert not out.exists()
+    assert not list(tmp_path.glob("*.gpkg")) and not list(tmp_path.glob(".*partial*"))
+
+
+def test_model_chains_synthetic_drive_into_map_signs(run, tmp_path):
+    model = QgsProcessingModelAlgorithm("chain", "tests")
+    sim = QgsProcessingModelChildAlgorithm("signmapper:syntheticdrive")
+    sim.setChildId("sim")
+    for name, value in {"PAIRS": 6, "SEED": 12, "WRITE_DEPTH": True, "WIDTH": SMALL["width"],
+                        "HEIGHT": SMALL["height"], "FX": SMALL["fx"]}.items():
+        sim.addParameterSources(name, [QgsProcessingModelChildParameterSource.fromStaticValue(value)])
+    sim.addParameterSources("OUTPUT", [QgsProcessingModelChildParameterSource.fromStaticValue(str(tmp_path / "d"))])
+    mapper = QgsProcessingModelChildAlgorithm("signmapper:mapsigns")
+    mapper.setChildId("map")
+    mapper.addParameterSources("DRIVE", [QgsProcessingModelChildParameterSource.fromChildOutput("sim", "OUTPUT")])
+    output = QgsProcessingModelOutput("gpkg", "Mapped signs")
+    output.setChildId("map")
+    output.setChildOutputName("OUTPUT")
+    mapper.setModelOutputs({"gpkg": output})
+    model.addChildAlgorithm(sim)
+    model.addChildAlgorithm(mapper)
+    model.updateDestinationParameters()
+    out = tmp_path / "chain.gpkg"
+    result = run(model, {"map:gpkg": str(out)})
+    assert Path(result["map:gpkg"]) == out
+    assert read_detections(out).featureCount() > 0
+    assert (tmp_path / "d" / "truth.csv").exists()
+
+
+def test_map_signs_through_qgis_process(plugin_dir, small_drive, tmp_path):
+    env = qgis_process_env(plugin_dir, tmp_path / "profile")
+    enable_plugin(env)
+    out = tmp_path / "cli.gpkg"
+    code, data, log = run_algorithm(env, "signmapper:mapsigns", DRIVE=small_drive, OUTPUT=out, NEAR=4, FAR=14)
+    assert code == 0, log
+    assert data["results"]["OUTPUT"] == str(out)
+    assert_finds_truth(read_detections(out), small_drive, min_signs=2)
