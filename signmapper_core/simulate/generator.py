@@ -26,7 +26,7 @@ from .realism import apply_effects, draw_effects
 from .street import Street
 
 S_FIRST = 10.0          # street position of the first pair (objects exist behind it)
-LOOK_AHEAD_M = 200.0
+LOOK_AHEAD_M = 160.0
 LOOK_BEHIND_M = 5.0
 
 

@@ -22,7 +22,7 @@ from .surfaces import Surface, Texture, TextureSource, rect_surface, triangle_su
 ROAD_PX_M = 0.015
 GROUND_PX_M = 0.03
 FACADE_PX_M = 0.04
-PIECE_M = 3.0
+PIECE_M = 6.0
 BIN_M = 10.0
 UP = np.array([0.0, 0.0, 1.0])
 

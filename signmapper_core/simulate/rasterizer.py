@@ -80,8 +80,8 @@ class Rasterizer:
         rot = pose.rotation
         centre = pose.centre
         jobs = []
-        for surf in surfaces:
-            job = self._prepare(surf, rot, centre)
+        for k in self._candidates(surfaces, rot, centre):
+            job = self._prepare(surfaces[k], rot, centre)
             if job is not None:
                 jobs.append(job)
         jobs.sort(key=lambda j: -j[0])
@@ -91,10 +91,33 @@ class Rasterizer:
             depth = np.where(inv_depth > 0, 1.0 / inv_depth, np.nan).astype(np.float32)
         return image, depth
 
+    def _candidates(self, surfaces: list[Surface], rot: np.ndarray, centre: np.ndarray) -> np.ndarray:
+        """Indices of surfaces that may be seen: vectorised near/far, back-face and frustum culling."""
+        if not surfaces:
+            return np.empty(0, int)
+        packed = np.stack([s.packed for s in surfaces])
+        o_c = (packed[:, 0:3] - centre) @ rot
+        u_c = packed[:, 3:6] @ rot
+        v_c = packed[:, 6:9] @ rot
+        poly = packed[:, 12:20].reshape(-1, 4, 2)
+        pts = o_c[:, None, :] + poly[..., 0:1] * u_c[:, None, :] + poly[..., 1:2] * v_c[:, None, :]
+        z = pts[..., 2]
+        keep = (z.max(axis=1) >= NEAR_M) & (z.min(axis=1) <= FAR_M)
+        one_sided = packed[:, 20] > 0
+        facing = np.einsum("ij,ij->i", packed[:, 9:12], centre - packed[:, 0:3]) > 0
+        keep &= ~one_sided | facing
+        # frustum test for surfaces entirely in front of the near plane
+        front = keep & (z.min(axis=1) >= NEAR_M)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            u = self.camera.fx * pts[..., 0] / z + self.camera.cx
+            v = self.camera.fy * pts[..., 1] / z + self.camera.cy
+        outside = ((u.max(axis=1) < -1) | (u.min(axis=1) > self.camera.width) | (v.max(axis=1) < -1)
+                   | (v.min(axis=1) > self.camera.height))
+        keep &= ~(front & outside)
+        return np.flatnonzero(keep)
+
     def _prepare(self, surf: Surface, rot: np.ndarray, centre: np.ndarray):
         o_c = (surf.origin - centre) @ rot
-        if not surf.two_sided and np.dot(surf.front_normal, centre - surf.origin) <= 0:
-            return None
         u_c = surf.axis_u @ rot
         v_c = surf.axis_v @ rot
         st = surf.polygon
@@ -116,16 +139,17 @@ class Rasterizer:
         y1 = min(int(np.ceil(uv[:, 1].max())) + 2, cam.height)
         if x1 <= x0 or y1 <= y0:
             return None
-        h = self.k @ np.column_stack([u_c, v_c, o_c])
+        h = self.k @ np.array([u_c, v_c, o_c]).T
         # Plane n.X = d in camera coordinates; inverse depth is affine in the pixel.
-        normal = np.cross(u_c, v_c)
+        normal = surf.front_normal @ rot
         d = float(np.dot(normal, o_c))
         if abs(d) < 1e-12:
             return None  # seen edge-on
         plane = (normal[0] / cam.fx / d, normal[1] / cam.fy / d,
                  (normal[2] - normal[0] * cam.cx / cam.fx - normal[1] * cam.cy / cam.fy) / d)
-        texel_px = np.linalg.norm(u_c) * cam.fx / max(float(np.mean(zc)), NEAR_M)
-        return float(np.mean(zc)), surf, uv, (x0, y0, x1, y1), h, plane, texel_px
+        mean_z = float(zc.mean())
+        texel_px = float(np.sqrt(u_c @ u_c)) * cam.fx / max(mean_z, NEAR_M)
+        return mean_z, surf, uv, (x0, y0, x1, y1), h, plane, texel_px
 
     def _draw(self, image, inv_depth, surf: Surface, uv, box, h, plane, texel_px):
         x0, y0, x1, y1 = box

@@ -75,11 +75,13 @@ def apply_effects(image: np.ndarray, fx: PairEffects, right: bool) -> np.ndarray
     if fx.glare is not None:
         img += _glare_layer(img.shape[1], img.shape[0], fx.glare)
     if fx.noise_sigma > 0:
-        rng = np.random.default_rng([fx.noise_seed, int(right)])
-        noise = rng.standard_normal(img.shape[:2], dtype=np.float32)
+        # OpenCV's generator is fast and thread-local: seeding it right before use is deterministic
+        cv2.setRNGSeed(int((fx.noise_seed + int(right)) % (2**31 - 1)))
+        noise = np.empty(img.shape[:2], np.float32)
+        cv2.randn(noise, 0.0, fx.noise_sigma)
         # luminance noise plus a little chroma noise at lower resolution
-        img += (fx.noise_sigma * noise)[..., None]
-        chroma = rng.standard_normal((img.shape[0] // 2 + 1, img.shape[1] // 2 + 1, 3), dtype=np.float32)
-        chroma = cv2.resize(chroma, (img.shape[1], img.shape[0]), interpolation=cv2.INTER_NEAREST)
-        img += (0.5 * fx.noise_sigma) * chroma
+        img += noise[..., None]
+        chroma = np.empty((img.shape[0] // 2 + 1, img.shape[1] // 2 + 1, 3), np.float32)
+        cv2.randn(chroma, (0.0, 0.0, 0.0), (0.5 * fx.noise_sigma,) * 3)
+        img += cv2.resize(chroma, (img.shape[1], img.shape[0]), interpolation=cv2.INTER_NEAREST)
     return np.clip(img, 0, 255).astype(np.uint8)

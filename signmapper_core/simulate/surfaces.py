@@ -64,10 +64,16 @@ class Surface:
     s_min: float = 0.0
     s_max: float = 0.0
 
-    @property
-    def front_normal(self) -> np.ndarray:
+    def __post_init__(self):
         n = np.cross(self.axis_v, self.axis_u)
-        return n / np.linalg.norm(n)
+        self.front_normal = n / np.linalg.norm(n)
+        poly = np.asarray(self.polygon, float)
+        if len(poly) not in (3, 4):
+            raise ValueError("surfaces are triangles or quadrilaterals")
+        quad = poly if len(poly) == 4 else np.vstack([poly, poly[-1:]])
+        # one row for the rasteriser's vectorised culling: origin, u, v, normal, 4 polygon vertices
+        self.packed = np.concatenate([self.origin, self.axis_u, self.axis_v, self.front_normal, quad.ravel(),
+                                      [0.0 if self.two_sided else 1.0]])
 
 
 def rect_surface(corner: np.ndarray, right: np.ndarray, down: np.ndarray, texture: TextureSource | None = None,
