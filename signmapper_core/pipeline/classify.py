@@ -82,6 +82,27 @@ def match_score(region: np.ndarray, tmpl: np.ndarray, alpha: np.ndarray) -> tupl
     return float(best), loc
 
 
+def _inner_mask(alpha: np.ndarray, fraction: float) -> np.ndarray:
+    """The alpha eroded by ``fraction`` of the template size: the pictogram field without the rim."""
+    k = max(1, int(round(fraction * min(alpha.shape))))
+    return cv2.erode(alpha, cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * k + 1, 2 * k + 1)))
+
+
+def _best_over_scales(region, w, h, catalogue, tid, scales, inner_fraction=0.0):
+    """(score, scale, location) of one template's best masked match in ``region``."""
+    best = (-1.0, 1.0, (0, 0), (w, h))
+    for s in scales:
+        tw, th = max(3, int(round(w * s))), max(3, int(round(h * s)))
+        tmpl, alpha = template_at(catalogue, tid, tw, th)
+        tmpl = cv2.GaussianBlur(tmpl, (3, 3), 0)
+        if inner_fraction > 0:
+            alpha = _inner_mask(alpha, inner_fraction)
+        score, loc = match_score(region, tmpl, alpha)
+        if score > best[0]:
+            best = (score, s, loc, (tw, th))
+    return best
+
+
 def classify_segment(
     image: np.ndarray,
     bbox,
@@ -90,27 +111,38 @@ def classify_segment(
     scales: Sequence[float] = (0.92, 1.0, 1.08),
     shift_fraction: float = 0.08,
     max_px: int = 96,
+    coarse_px: int = 32,
+    keep: int = 6,
+    tie_margin: float = 0.04,
+    inner_fraction: float = 0.14,
 ) -> ClassificationResult:
-    """Best-matching template among ``template_ids`` for the segment in ``bbox`` of ``image``."""
+    """Best-matching template among ``template_ids`` for the face in ``bbox`` of ``image``.
+
+    Coarse to fine: all candidates are compared at ``coarse_px`` without scale
+    search, the best ``keep`` at up to ``max_px`` with the scale and shift search.
+    Candidates within ``tie_margin`` of the best (speed limits differing in one
+    digit: the rim dominates the whole-face score) are decided on the pictogram
+    field alone, the face without its outer ``inner_fraction``.
+    """
     if not template_ids:
         return ClassificationResult(None, 0.0)
+    ids = list(dict.fromkeys(template_ids))
+    if len(ids) > keep:
+        region, _, (w, h) = crop_for_matching(image, bbox, (1.0,), shift_fraction, coarse_px)
+        region = cv2.GaussianBlur(region, (3, 3), 0)
+        coarse = {tid: _best_over_scales(region, w, h, catalogue, tid, (1.0,))[0] for tid in ids}
+        ids = sorted(ids, key=coarse.get, reverse=True)[:keep]
     region, factor, (w, h) = crop_for_matching(image, bbox, scales, shift_fraction, max_px)
     region = cv2.GaussianBlur(region, (3, 3), 0)  # both sides slightly smoothed: less aliasing
-    scores: Dict[str, float] = {}
-    best = (-1.0, None, 1.0, (0, 0))
-    for tid in template_ids:
-        top = -1.0
-        for s in scales:
-            tw, th = max(3, int(round(w * s))), max(3, int(round(h * s)))
-            tmpl, alpha = template_at(catalogue, tid, tw, th)
-            tmpl = cv2.GaussianBlur(tmpl, (3, 3), 0)
-            score, loc = match_score(region, tmpl, alpha)
-            if score > top:
-                top = score
-            if score > best[0]:
-                centre = ((region.shape[1] - tw) / 2.0, (region.shape[0] - th) / 2.0)
-                shift = (int(round((loc[0] - centre[0]) / factor)), int(round((loc[1] - centre[1]) / factor)))
-                best = (score, tid, s, shift)
-        scores[tid] = top
-    score, tid, scale, shift = best
-    return ClassificationResult(tid, float(np.clip(score, 0.0, 1.0)), scores, scale, shift)
+    fine = {tid: _best_over_scales(region, w, h, catalogue, tid, scales) for tid in ids}
+    scores = {tid: float(r[0]) for tid, r in fine.items()}
+    ranked = sorted(ids, key=scores.get, reverse=True)
+    best_id = ranked[0]
+    close = [t for t in ranked if scores[t] >= scores[best_id] - tie_margin]
+    if len(close) > 1:
+        inner = {t: _best_over_scales(region, w, h, catalogue, t, (fine[t][1],), inner_fraction)[0] for t in close}
+        best_id = max(close, key=inner.get)
+    score, scale, loc, (tw, th) = fine[best_id]
+    centre = ((region.shape[1] - tw) / 2.0, (region.shape[0] - th) / 2.0)
+    shift = (int(round((loc[0] - centre[0]) / factor)), int(round((loc[1] - centre[1]) / factor)))
+    return ClassificationResult(best_id, float(np.clip(score, 0.0, 1.0)), scores, scale, shift)

@@ -29,3 +29,34 @@ def constant_depth(z, height=CAMERA.height, width=CAMERA.width) -> np.ndarray:
 def pixels_for(size_m: float, depth_m: float, camera: Camera = CAMERA) -> int:
     """Pixel extent of ``size_m`` metres at depth Z."""
     return int(round(size_m * camera.fx / depth_m))
+
+
+def paste(image: np.ndarray, bgr: np.ndarray, alpha: np.ndarray, x: int, y: int) -> None:
+    """Alpha-blend a face into ``image`` with its top-left pixel at (x, y), in place."""
+    h, w = alpha.shape
+    a = alpha[..., None].astype(np.float32) / 255.0
+    roi = image[y : y + h, x : x + w].astype(np.float32)
+    image[y : y + h, x : x + w] = (bgr * a + roi * (1 - a)).astype(np.uint8)
+
+
+def sign_scene(catalogue, template_id, size_m, sign_world, depth_m=None, seed=0, camera=CAMERA, pose=POSE,
+               background_depth=None):
+    """Left image and depth of a flat sign face centred at ``sign_world``, facing the camera.
+
+    Returns (left, depth, bbox). Depth is the sign's Z on the face (constant: it faces
+    the camera) and ``background_depth`` elsewhere (default: the same plane).
+    """
+    from signmapper_core.geometry import world_to_pixel
+
+    u, v, z = world_to_pixel(camera, pose, np.asarray(sign_world, float))
+    z = float(z if depth_m is None else depth_m)
+    entry = catalogue[template_id]
+    w_m, h_m = entry.formats[size_m] if isinstance(size_m, str) else size_m
+    w, h = int(round(w_m * camera.fx / z)), int(round(h_m * camera.fy / z))
+    bgr, alpha = catalogue.render(template_id, (w, h))
+    left = noisy_background(seed=seed)
+    x, y = int(round(float(u) - (w - 1) / 2)), int(round(float(v) - (h - 1) / 2))
+    paste(left, bgr, alpha, x, y)
+    depth = constant_depth(z if background_depth is None else background_depth)
+    depth[y : y + h, x : x + w][alpha > 127] = z
+    return left, depth, (x, y, w, h)
