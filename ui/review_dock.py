@@ -1,0 +1,315 @@
+"""The review dock (Cavegn 2011, section 4: a person verifies doubtful candidates and adds missed signs).
+
+The dock only shows a :class:`ReviewItem` and turns button presses, shortcuts and
+clicks into signals; :class:`review.controller.ReviewController` reads layers,
+decodes images and writes the decisions. That keeps this widget testable alone.
+"""
+
+from __future__ import annotations
+
+from typing import List, Optional, Sequence
+
+from qgis.PyQt.QtCore import QSize, Qt, pyqtSignal
+from qgis.PyQt.QtGui import QIcon, QKeySequence, QPixmap
+from qgis.PyQt.QtWidgets import (
+    QAction,
+    QCheckBox,
+    QComboBox,
+    QDockWidget,
+    QFormLayout,
+    QGridLayout,
+    QGroupBox,
+    QHBoxLayout,
+    QLabel,
+    QListView,
+    QListWidget,
+    QListWidgetItem,
+    QPushButton,
+    QSizePolicy,
+    QVBoxLayout,
+    QWidget,
+)
+
+from .image_view import ImageView
+from .review_item import Observation, ReviewItem
+from .template_picker import TemplateChoice, TemplatePicker
+
+STATUS_COLOURS = {"accepted": "#2e7d32", "review": "#ef6c00", "rejected": "#c62828", "manual": "#1565c0"}
+
+# action name -> (button text, shortcut); the shortcuts act while the dock has the focus
+SHORTCUTS = {
+    "accept": ("Accept", "A"),
+    "reject": ("Reject", "R"),
+    "reclassify": ("Reclassify…", "C"),
+    "previous": ("◀ Previous", "P"),
+    "next": ("Next ▶", "N"),
+    "next_review": ("Next to review", "Space"),
+    "zoom": ("Zoom map", "Z"),
+    "add_sign": ("Add missed sign", "M"),
+    "undo": ("Undo last decision", "U"),
+}
+
+
+def _fmt(value, digits=2) -> str:
+    return "–" if value is None else f"{value:.{digits}f}"
+
+
+class ReviewDock(QDockWidget):
+    """Shows one feature of a Sign Mapper layer and asks for a decision on it."""
+
+    acceptRequested = pyqtSignal()  # noqa: N815
+    rejectRequested = pyqtSignal()  # noqa: N815
+    reclassifyRequested = pyqtSignal(str)  # noqa: N815 - new template id
+    nextRequested = pyqtSignal()  # noqa: N815
+    previousRequested = pyqtSignal()  # noqa: N815
+    nextReviewRequested = pyqtSignal()  # noqa: N815
+    zoomRequested = pyqtSignal()  # noqa: N815
+    addSignClicked = pyqtSignal(str, float, float)  # noqa: N815 - pair id, u, v
+    undoRequested = pyqtSignal()  # noqa: N815
+    pairRequested = pyqtSignal(str)  # noqa: N815 - show a pair's image (to add a sign where nothing was found)
+    observationRequested = pyqtSignal(int)  # noqa: N815 - index into the item's observations
+
+    def __init__(self, parent=None):
+        super().__init__("Sign Mapper review", parent)
+        self.setObjectName("SignMapperReviewDock")
+        self.item: Optional[ReviewItem] = None
+        self.pair_id = ""
+        self.actions_by_name = {}
+        body = QWidget()
+        self.setWidget(body)
+        layout = QVBoxLayout(body)
+        layout.setContentsMargins(4, 4, 4, 4)
+
+        self.title = QLabel("Select a feature of a Sign Mapper signs or detections layer")
+        self.title.setWordWrap(True)
+        self.title.setStyleSheet("font-weight: bold")
+        layout.addWidget(self.title)
+
+        self.image_view = ImageView()
+        self.image_view.imageClicked.connect(self._image_clicked)
+        layout.addWidget(self.image_view, 3)
+
+        layout.addLayout(self._build_info())
+
+        self.strip_box = QGroupBox("Observations")
+        self.strip = QListWidget()
+        self.strip.setViewMode(QListView.IconMode)
+        self.strip.setFlow(QListView.LeftToRight)
+        self.strip.setWrapping(False)
+        self.strip.setIconSize(QSize(72, 72))
+        self.strip.setFixedHeight(112)
+        self.strip.setMovement(QListView.Static)
+        self.strip.itemClicked.connect(lambda item: self.observationRequested.emit(self.strip.row(item)))
+        strip_layout = QVBoxLayout(self.strip_box)
+        strip_layout.setContentsMargins(2, 2, 2, 2)
+        strip_layout.addWidget(self.strip)
+        self.strip_box.setVisible(False)
+        layout.addWidget(self.strip_box)
+
+        layout.addLayout(self._build_buttons())
+
+        self.picker_box = QGroupBox("Reclassify")
+        self.picker = TemplatePicker()
+        self.picker.templateChosen.connect(self.reclassifyRequested)
+        picker_layout = QVBoxLayout(self.picker_box)
+        picker_layout.setContentsMargins(2, 2, 2, 2)
+        picker_layout.addWidget(self.picker)
+        self.picker_box.setVisible(False)
+        layout.addWidget(self.picker_box, 2)
+
+        self.message = QLabel("")
+        self.message.setWordWrap(True)
+        layout.addWidget(self.message)
+        self._install_shortcuts()
+        self.set_item_enabled(False)
+
+    # construction -------------------------------------------------------------------------------------
+    def _build_info(self) -> QHBoxLayout:
+        row = QHBoxLayout()
+        self.pictogram = QLabel()
+        self.pictogram.setFixedSize(72, 72)
+        self.pictogram.setAlignment(Qt.AlignCenter)
+        row.addWidget(self.pictogram, 0, Qt.AlignTop)
+        form = QFormLayout()
+        form.setVerticalSpacing(1)
+        self.info = {}
+        for key, label in (("template", "Template"), ("status", "Status"), ("format", "Format"),
+                           ("indicators", "Indicators"), ("pair", "Pair"), ("extra", "")):
+            value = QLabel("–")
+            value.setTextInteractionFlags(Qt.TextSelectableByMouse)
+            value.setWordWrap(True)
+            value.setSizePolicy(QSizePolicy.Expanding, QSizePolicy.Preferred)
+            self.info[key] = value
+            form.addRow(label, value)
+        row.addLayout(form, 1)
+        return row
+
+    def _button(self, name: str) -> QPushButton:
+        text, key = SHORTCUTS[name]
+        button = QPushButton(text)
+        button.setToolTip(f"{text} ({key})")
+        button.setFocusPolicy(Qt.TabFocus)
+        self.buttons[name] = button
+        return button
+
+    def _build_buttons(self) -> QGridLayout:
+        self.buttons = {}
+        grid = QGridLayout()
+        grid.setSpacing(3)
+        for col, name in enumerate(("previous", "next", "next_review", "zoom")):
+            grid.addWidget(self._button(name), 0, col)
+        for col, name in enumerate(("accept", "reject", "reclassify", "undo")):
+            grid.addWidget(self._button(name), 1, col)
+        self.buttons["accept"].setStyleSheet(f"color: {STATUS_COLOURS['accepted']}; font-weight: bold")
+        self.buttons["reject"].setStyleSheet(f"color: {STATUS_COLOURS['rejected']}; font-weight: bold")
+        self.buttons["reclassify"].setCheckable(True)
+        add = self._button("add_sign")
+        add.setCheckable(True)
+        add.setToolTip("Then click the centre of a missed sign in the image (M)")
+        grid.addWidget(add, 2, 0, 1, 2)
+        self.pair_box = QComboBox()
+        self.pair_box.setToolTip("Show another pair of the drive, e.g. to add a sign no detection points to")
+        self.pair_box.activated.connect(lambda i: self.pairRequested.emit(self.pair_box.itemText(i)))
+        grid.addWidget(self.pair_box, 2, 2)
+        self.advance_box = QCheckBox("Advance")
+        self.advance_box.setToolTip("After a decision, go to the next feature needing review")
+        self.advance_box.setChecked(True)
+        grid.addWidget(self.advance_box, 2, 3)
+
+        b = self.buttons
+        b["accept"].clicked.connect(self.acceptRequested)
+        b["reject"].clicked.connect(self.rejectRequested)
+        b["reclassify"].toggled.connect(self.show_picker)
+        b["previous"].clicked.connect(self.previousRequested)
+        b["next"].clicked.connect(self.nextRequested)
+        b["next_review"].clicked.connect(self.nextReviewRequested)
+        b["zoom"].clicked.connect(self.zoomRequested)
+        b["undo"].clicked.connect(self.undoRequested)
+        b["undo"].setEnabled(False)
+        return grid
+
+    def _install_shortcuts(self) -> None:
+        handlers = {
+            "accept": lambda: self._if_enabled("accept"),
+            "reject": lambda: self._if_enabled("reject"),
+            "reclassify": lambda: self._if_enabled("reclassify"),
+            "previous": self.previousRequested.emit,
+            "next": self.nextRequested.emit,
+            "next_review": self.nextReviewRequested.emit,
+            "zoom": lambda: self._if_enabled("zoom"),
+            "add_sign": lambda: self._if_enabled("add_sign"),
+            "undo": lambda: self._if_enabled("undo"),
+        }
+        for name, handler in handlers.items():
+            text, key = SHORTCUTS[name]
+            action = QAction(text, self)
+            action.setShortcut(QKeySequence(key))
+            action.setShortcutContext(Qt.WidgetWithChildrenShortcut)
+            action.triggered.connect(handler)
+            self.addAction(action)
+            self.actions_by_name[name] = action
+
+    def _if_enabled(self, name: str) -> None:
+        button = self.buttons[name]
+        if button.isEnabled():
+            button.click()
+
+    # slots the controller calls ----------------------------------------------------------------------
+    def set_template_choices(self, choices: Sequence[TemplateChoice]) -> None:
+        self.picker.set_choices(choices)
+
+    def set_pairs(self, pair_ids: Sequence[str]) -> None:
+        self.pair_box.clear()
+        self.pair_box.addItems(list(pair_ids))
+        if self.pair_id:
+            self.pair_box.setCurrentText(self.pair_id)
+
+    def set_item_enabled(self, enabled: bool) -> None:
+        for name in ("accept", "reject", "reclassify", "zoom"):
+            self.buttons[name].setEnabled(enabled)
+        if not enabled:
+            self.buttons["reclassify"].setChecked(False)
+
+    def set_undo_enabled(self, enabled: bool, text: str = "") -> None:
+        self.buttons["undo"].setEnabled(enabled)
+        self.buttons["undo"].setToolTip(f"Undo: {text} (U)" if text else "Undo last decision (U)")
+
+    def advance_after_decision(self) -> bool:
+        return self.advance_box.isChecked()
+
+    def show_message(self, text: str, error: bool = False) -> None:
+        self.message.setText(text)
+        self.message.setStyleSheet("color: #c62828" if error else "")
+
+    def show_empty(self, text: str) -> None:
+        """No reviewable feature: keep the pair image if any, disable the decisions."""
+        self.item = None
+        self.title.setText(text)
+        for value in self.info.values():
+            value.setText("–")
+        self.pictogram.clear()
+        self.strip_box.setVisible(False)
+        self.set_item_enabled(False)
+
+    def show_item(self, item: ReviewItem) -> None:
+        """Show a feature's attributes now; its image and observations may follow via set_image/set_observations."""
+        self.item = item
+        self.title.setText(item.title)
+        colour = STATUS_COLOURS.get(item.status, "#555")
+        self.info["template"].setText(f"<b>{item.template_id or '–'}</b> {item.name}")
+        reviewed = " · reviewed" if item.reviewed else ""
+        self.info["status"].setText(f"<span style='color:{colour}; font-weight:bold'>{item.status}</span>{reviewed}")
+        w, h = item.size_m
+        self.info["format"].setText(f"{item.colour} {item.shape}, {item.format} {w:.2f} × {h:.2f} m")
+        self.info["indicators"].setText(
+            f"detection {_fmt(item.detection_indicator)} · classification {_fmt(item.classification_indicator)}"
+        )
+        depth = f" · depth {item.depth_m:.1f} m" if item.depth_m is not None else ""
+        self.info["pair"].setText(f"{item.pair_id or '–'} · t = {_fmt(item.time, 2)} s{depth}")
+        self.info["extra"].setText(" · ".join(f"{k} {v}" for k, v in item.extra))
+        pix = QPixmap(item.pictogram_path) if item.pictogram_path else QPixmap()
+        if pix.isNull():
+            self.pictogram.setText("no\npictogram")
+        else:
+            self.pictogram.setPixmap(pix.scaled(68, 68, Qt.KeepAspectRatio, Qt.SmoothTransformation))
+        self.picker.set_filter(item.colour, item.shape, "")
+        self.picker.select(item.template_id)
+        self.set_item_enabled(True)
+        self.pair_id = item.pair_id
+        if item.pair_id and self.pair_box.findText(item.pair_id) >= 0:
+            self.pair_box.setCurrentText(item.pair_id)
+        if item.image is not None:
+            self.set_image(item.pair_id, item.image, item.crop, item.bbox, item.centroid)
+        self.set_observations(item.observations)
+
+    def set_image(self, pair_id: str, image, crop=None, bbox=None, centroid=None) -> None:
+        self.pair_id = pair_id
+        self.image_view.set_image(image, crop, bbox, centroid)
+
+    def set_observations(self, observations: Optional[List[Observation]]) -> None:
+        self.strip.clear()
+        self.strip_box.setVisible(observations is not None)
+        if observations is None:
+            return
+        self.strip_box.setTitle(f"Observations ({len(observations)})")
+        for obs in observations:
+            icon = QIcon(QPixmap.fromImage(obs.thumbnail)) if obs.thumbnail is not None else QIcon()
+            entry = QListWidgetItem(icon, obs.label)
+            entry.setToolTip(f"pair {obs.pair_id}: {obs.label}")
+            self.strip.addItem(entry)
+
+    def show_picker(self, visible: bool) -> None:
+        self.picker_box.setVisible(visible)
+        if self.buttons["reclassify"].isChecked() != visible:
+            self.buttons["reclassify"].setChecked(visible)
+        if visible:
+            self.picker.search.setFocus()
+
+    def adding_sign(self) -> bool:
+        return self.buttons["add_sign"].isChecked()
+
+    # clicks -----------------------------------------------------------------------------------------
+    def _image_clicked(self, u: float, v: float) -> None:
+        if self.adding_sign() and self.pair_id:
+            self.buttons["add_sign"].setChecked(False)
+            self.addSignClicked.emit(self.pair_id, u, v)

@@ -1,0 +1,58 @@
+"""View-model of the review dock: everything it shows of one feature, already read and decoded.
+
+The controller fills it from the layer, the drive and the catalogue; the dock
+only displays it. Images arrive later than the attributes (they are decoded off
+the GUI thread), so they are optional.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import List, Optional, Tuple
+
+from qgis.PyQt.QtGui import QImage
+
+
+@dataclass
+class Observation:
+    """One detection of a fused sign, shown as a thumbnail in the strip."""
+
+    pair_id: str
+    label: str
+    thumbnail: Optional[QImage] = None
+
+
+@dataclass
+class ReviewItem:
+    """One feature of a ``signs`` or ``detections`` layer as the dock shows it."""
+
+    layer_kind: str  # "signs" or "detections"
+    fid: int
+    title: str
+    template_id: str = ""
+    name: str = ""
+    colour: str = ""
+    shape: str = ""
+    format: str = ""
+    size_m: Tuple[float, float] = (0.0, 0.0)
+    status: str = ""
+    reviewed: bool = False
+    detection_indicator: Optional[float] = None
+    classification_indicator: Optional[float] = None
+    pair_id: str = ""
+    time: Optional[float] = None
+    depth_m: Optional[float] = None
+    extra: List[Tuple[str, str]] = field(default_factory=list)  # e.g. n_obs, vote share for fused signs
+    pictogram_path: str = ""
+    bbox: Optional[Tuple[int, int, int, int]] = None
+    centroid: Optional[Tuple[float, float]] = None
+    crop: Optional[Tuple[int, int, int, int]] = None  # x, y, w, h of the region around the sign
+    image: Optional[QImage] = None  # the whole left image of pair_id
+    observations: Optional[List[Observation]] = None  # None for a detection; list (maybe empty) for a sign
+    position: Optional[Tuple[float, float, float]] = None
+
+    def crop_image(self) -> Optional[QImage]:
+        """The crop around the sign as a separate image (what the view opens zoomed to)."""
+        if self.image is None or self.crop is None:
+            return None
+        return self.image.copy(*self.crop)

@@ -1,0 +1,141 @@
+"""A grid of template pictograms to reclassify a sign, filtered by colour, shape and a search text.
+
+It is given plain :class:`TemplateChoice` records (the controller builds them
+from the catalogue), so it neither reads the catalogue nor writes layers.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Iterable, List, Optional
+
+from qgis.PyQt.QtCore import QSize, Qt, pyqtSignal
+from qgis.PyQt.QtGui import QIcon
+from qgis.PyQt.QtWidgets import (
+    QComboBox,
+    QHBoxLayout,
+    QLineEdit,
+    QListView,
+    QListWidget,
+    QListWidgetItem,
+    QPushButton,
+    QVBoxLayout,
+    QWidget,
+)
+
+ANY = ""
+ID_ROLE = Qt.UserRole
+
+
+@dataclass(frozen=True)
+class TemplateChoice:
+    """What the picker needs to know of one catalogue entry."""
+
+    id: str
+    name: str
+    colour: str
+    shape: str
+    icon_path: str = ""
+
+    def matches(self, colour: str, shape: str, text: str) -> bool:
+        text = text.strip().lower()
+        return ((not colour or self.colour == colour) and (not shape or self.shape == shape)
+                and (not text or text in self.id.lower() or text in self.name.lower()))
+
+
+class TemplatePicker(QWidget):
+    """Emits ``templateChosen(id)`` on double click or on the Reclassify button."""
+
+    templateChosen = pyqtSignal(str)  # noqa: N815
+
+    def __init__(self, parent=None, icon_px: int = 40):
+        super().__init__(parent)
+        self._choices: List[TemplateChoice] = []
+        self.colour_box = QComboBox()
+        self.colour_box.setToolTip("Show only templates of this dominant colour")
+        self.shape_box = QComboBox()
+        self.shape_box.setToolTip("Show only templates of this shape")
+        self.search = QLineEdit()
+        self.search.setPlaceholderText("Search id or name…")
+        self.search.setClearButtonEnabled(True)
+        self.grid = QListWidget()
+        self.grid.setViewMode(QListView.IconMode)
+        self.grid.setIconSize(QSize(icon_px, icon_px))
+        self.grid.setGridSize(QSize(icon_px + 34, icon_px + 30))
+        self.grid.setResizeMode(QListView.Adjust)
+        self.grid.setMovement(QListView.Static)
+        self.grid.setWordWrap(True)
+        self.grid.setUniformItemSizes(True)
+        self.grid.setMinimumHeight(2 * (icon_px + 30) + 8)
+        self.choose_button = QPushButton("Reclassify as selected")
+        self.choose_button.setEnabled(False)
+
+        filters = QHBoxLayout()
+        filters.addWidget(self.colour_box)
+        filters.addWidget(self.shape_box)
+        filters.addWidget(self.search, 1)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addLayout(filters)
+        layout.addWidget(self.grid, 1)
+        layout.addWidget(self.choose_button)
+
+        self.colour_box.currentIndexChanged.connect(self._refilter)
+        self.shape_box.currentIndexChanged.connect(self._refilter)
+        self.search.textChanged.connect(self._refilter)
+        self.grid.itemDoubleClicked.connect(lambda item: self.templateChosen.emit(item.data(ID_ROLE)))
+        self.grid.currentItemChanged.connect(lambda cur, _prev: self.choose_button.setEnabled(cur is not None))
+        self.choose_button.clicked.connect(self._choose_current)
+
+    def set_choices(self, choices: Iterable[TemplateChoice]) -> None:
+        self._choices = list(choices)
+        colours = sorted({c.colour for c in self._choices})
+        shapes = sorted({c.shape for c in self._choices})
+        for box, values, label in ((self.colour_box, colours, "Any colour"), (self.shape_box, shapes, "Any shape")):
+            box.blockSignals(True)
+            box.clear()
+            box.addItem(label, ANY)
+            for value in values:
+                box.addItem(value, value)
+            box.blockSignals(False)
+        self._refilter()
+
+    def set_filter(self, colour: str = ANY, shape: str = ANY, text: Optional[str] = None) -> None:
+        """Preset the filters, e.g. to the colour and shape of the sign under review."""
+        for box, value in ((self.colour_box, colour), (self.shape_box, shape)):
+            index = box.findData(value or ANY)
+            box.blockSignals(True)
+            box.setCurrentIndex(max(index, 0))
+            box.blockSignals(False)
+        if text is not None:
+            self.search.blockSignals(True)
+            self.search.setText(text)
+            self.search.blockSignals(False)
+        self._refilter()
+
+    def visible_ids(self) -> List[str]:
+        return [self.grid.item(i).data(ID_ROLE) for i in range(self.grid.count())]
+
+    def select(self, template_id: str) -> bool:
+        for i in range(self.grid.count()):
+            if self.grid.item(i).data(ID_ROLE) == template_id:
+                self.grid.setCurrentRow(i)
+                return True
+        return False
+
+    def _refilter(self) -> None:
+        colour, shape, text = self.colour_box.currentData() or ANY, self.shape_box.currentData() or ANY, \
+            self.search.text()
+        self.grid.clear()
+        for choice in self._choices:
+            if choice.matches(colour, shape, text):
+                item = QListWidgetItem(QIcon(choice.icon_path) if choice.icon_path else QIcon(), choice.id)
+                item.setData(ID_ROLE, choice.id)
+                item.setToolTip(f"{choice.id} {choice.name}")
+                self.grid.addItem(item)
+        self.choose_button.setEnabled(False)
+
+    def _choose_current(self) -> None:
+        item = self.grid.currentItem()
+        if item is not None:
+            self.templateChosen.emit(item.data(ID_ROLE))
