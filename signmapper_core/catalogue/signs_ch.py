@@ -253,29 +253,60 @@ _add("2.50", "Parkieren verboten", "Interdiction de parquer", "Divieto di parche
      True, _stopping(False))
 end_sign("2.53-50", "Ende der Höchstgeschwindigkeit", "Fin de la vitesse maximale", "Fine della velocità massima",
          _text("50", 0, 1.3, "grey"))
-end_sign("2.56", "Ende des Überholverbots", "Fin de l'interdiction de dépasser", "Fine del divieto di sorpasso",
-         _all(_at(pg.car_rear, -0.5, 0.05, 0.5, False, "grey"), _at(pg.car_rear, 0.5, 0.05, 0.5, False, "grey")))
 
 
-def _zone(kind: str):
+def _limit_disc(p: Pen, value: str, ring: str, ink: str):
+    p.circle(0, 0, 0.95, ring)
+    p.circle(0, 0, 0.76, "white")
+    p.text(value, 0, 0, 0.65, ink, max_width=1.15)
+
+
+def _zone(kind: str, end: bool = False):
+    """Zone panel: symbol disc over 'ZONE'; the cancelling panel is grey with black stripes."""
+    ring, ink = ("grey", "grey") if end else ("red", "black")
+
     def content(p: Pen):
         top = p.sub(0, -0.38, 0.9, jitter=False)
-        if kind == "30":
-            top.circle(0, 0, 0.95, "red")
-            top.circle(0, 0, 0.76, "white")
-            top.text("30", 0, 0, 0.65, "black", max_width=1.15)
+        if kind in ("30", "20"):
+            _limit_disc(top, kind, ring, ink)
         else:
-            top.circle(0, 0, 0.95, "blue")
-            adult_child = top.sub(0, 0, 0.62, jitter=False)
-            pg.adult_and_child(adult_child, "white")
-        p.text("ZONE", 0, 0.72, 0.3, "black", max_width=1.6)
-    return lambda st: frames.panel(st, content, aspect=0.5 / 0.7, fill="white", edge="black",
-                                   content_box=(0.5, 0.7, 0.5))
+            top.circle(0, 0, 0.95, "grey" if end else "blue")
+            pg.adult_and_child(top.sub(0, 0, 0.62, jitter=False), "white")
+        p.text("ZONE", 0, 0.72, 0.3, ink, max_width=1.6)
+
+    def draw(st):
+        d = frames.panel(st, content, aspect=0.5 / 0.7, fill="white", edge="black", content_box=(0.5, 0.7, 0.5))
+        if end:
+            frames.diagonal_stripes(d, [(0.03, 0.03), (0.97, 0.03), (0.97, 1.37), (0.03, 1.37)], "black", n=5,
+                                    spacing=0.05, width=0.016 * st.stroke_scale, angle_deg=-55, centre=(0.5, 0.7))
+        return d
+    return draw
 
 
+def _general_limit_end(st):
+    def content(p):
+        _limit_disc(p.sub(0, -0.42, 0.95, jitter=False), "50", "grey", "grey")
+        p.text("GENERELL", 0, 0.72, 0.22, "grey", max_width=1.7)
+    d = frames.panel(st, content, aspect=0.70, fill="white", edge="black", content_box=(0.5, 0.714, 0.5))
+    frames.diagonal_stripes(d, [(0.03, 0.03), (0.97, 0.03), (0.97, 1.40), (0.03, 1.40)], "black", n=5,
+                            spacing=0.05, width=0.016 * st.stroke_scale, angle_deg=-55, centre=(0.5, 0.714))
+    return d
+
+
+_add("2.53.1", "Ende der Höchstgeschwindigkeit 50 generell", "Fin de la vitesse maximale 50, limite générale",
+     "Fine della velocità massima 50, limite generale", "white", "rectangle", F.GENERAL_LIMIT, False,
+     _general_limit_end)
 _add("2.59.1", "Tempo-30-Zone", "Zone 30", "Zona 30", "red", "rectangle", F.ZONE, False, _zone("30"))
+_add("2.59.2", "Ende der Tempo-30-Zone", "Fin de la zone 30", "Fine della zona 30", "white", "rectangle", F.ZONE,
+     False, _zone("30", end=True))
 _add("2.59.3", "Fussgängerzone", "Zone piétonne", "Zona pedonale", "blue", "rectangle", F.ZONE, False,
      _zone("pedestrian"))
+_add("2.59.4", "Ende der Fussgängerzone", "Fin de la zone piétonne", "Fine della zona pedonale", "white",
+     "rectangle", F.ZONE, False, _zone("pedestrian", end=True))
+_add("2.59.5", "Begegnungszone", "Zone de rencontre", "Zona d'incontro", "red", "rectangle", F.ZONE, False,
+     _zone("20"))
+_add("2.59.6", "Ende der Begegnungszone", "Fin de la zone de rencontre", "Fine della zona d'incontro", "white",
+     "rectangle", F.ZONE, False, _zone("20", end=True))
 mandatory("2.60", "Radweg", "Piste cyclable", "Ciclopista", lambda p: pg.bicycle(p, "white", 0.1))
 mandatory("2.61", "Fussweg", "Chemin pour piétons", "Strada pedonale", pg.adult_and_child)
 mandatory("2.62", "Reitweg", "Allée d'équitation", "Strada per cavalieri", pg.horse_rider)
