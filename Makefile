@@ -64,9 +64,11 @@ demo: setup
 	@rm -rf $(DEMO_DIR)/plugins && mkdir -p $(DEMO_DIR)/plugins && ln -s $(CURDIR) $(DEMO_DIR)/plugins/$(PLUGIN_NAME)
 	@export QGIS_PLUGINPATH=$(CURDIR)/$(DEMO_DIR)/plugins QGIS_CUSTOM_CONFIG_PATH=$(CURDIR)/$(DEMO_DIR)/profile; \
 	$(QGIS_PROCESS) plugins enable $(PLUGIN_NAME) >/dev/null 2>&1; \
+	$(QGIS_PROCESS) run signmapper:mapsigns -- DRIVE=$(CURDIR)/$(DEMO_DRIVE) \
+		OUTPUT=$(CURDIR)/$(DEMO_DIR)/signs.gpkg && \
 	$(QGIS_PROCESS) run signmapper:drivetrajectory -- DRIVE=$(CURDIR)/$(DEMO_DRIVE) \
-		OUTPUT=$(CURDIR)/$(DEMO_DIR)/trajectory.gpkg TRACK=$(CURDIR)/$(DEMO_DIR)/track.gpkg
-	@echo "Demo output: $(DEMO_DIR)/trajectory.gpkg, $(DEMO_DIR)/track.gpkg"
+		OUTPUT=$(CURDIR)/$(DEMO_DIR)/trajectory.gpkg TRACK=$(CURDIR)/$(DEMO_DIR)/track.gpkg >/dev/null
+	@echo "Demo output: $(DEMO_DIR)/signs.gpkg (layers signs, detections), $(DEMO_DIR)/trajectory.gpkg, track.gpkg"
 
 lint: venv
 	$(PY) -m ruff check .

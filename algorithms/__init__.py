@@ -8,7 +8,8 @@ provider loads (and explains what to install) even when OpenCV is missing.
 def algorithm_classes():
     """Every algorithm class the provider registers."""
     from .drive_trajectory import DriveTrajectoryAlgorithm
+    from .evaluate import EvaluateAlgorithm
     from .map_signs import MapSignsAlgorithm
     from .synthetic_drive import SyntheticDriveAlgorithm
 
-    return [MapSignsAlgorithm, DriveTrajectoryAlgorithm, SyntheticDriveAlgorithm]
+    return [MapSignsAlgorithm, EvaluateAlgorithm, DriveTrajectoryAlgorithm, SyntheticDriveAlgorithm]

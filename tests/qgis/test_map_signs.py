@@ -80,6 +80,18 @@ def test_map_signs_writes_detections_with_the_right_ids_and_positions(run, small
     statuses = {f["status"] for f in layer.getFeatures()}
     assert statuses <= {"accepted", "review"}
     assert_finds_truth(layer, small_drive, min_signs=2)
+    assert result["SIGNS"].endswith("|layername=signs") and result["DETECTIONS"].endswith("|layername=detections")
+    signs = QgsVectorLayer(f"{out}|layername=signs", "s", "ogr")
+    assert signs.isValid() and signs.wkbType() == QgsWkbTypes.PointZ
+    for name in ("sign_id", "n_obs", "vote_share", "sigma_m", "azimuth", "best_pair_id", "bbox_x", "status"):
+        assert name in signs.fields().names()
+    assert 0 < signs.featureCount() < layer.featureCount()
+    # one fused sign per truth sign, close to it and with its id; every detection names its sign
+    found = assert_finds_truth(signs, small_drive, tolerance_m=0.1, min_signs=2)
+    assert signs.featureCount() <= found + 1
+    sign_ids = {f["sign_id"] for f in signs.getFeatures()}
+    assert {f["sign_id"] for f in layer.getFeatures()} == sign_ids
+    assert sum(f["n_obs"] for f in signs.getFeatures()) == layer.featureCount()
     run_table = QgsVectorLayer(f"{out}|layername=signmapper_run", "run", "ogr")
     values = {f["key"]: f["value"] for f in run_table.getFeatures()}
     assert Path(values["drive"]) == small_drive.resolve()

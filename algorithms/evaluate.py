@@ -1,0 +1,265 @@
+"""``signmapper:evaluate``: the paper's Tables 1 and 2 for a signs layer against a surveyed reference."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from qgis.core import (
+    QgsCoordinateTransform,
+    QgsFeature,
+    QgsFeatureRequest,
+    QgsFeatureSink,
+    QgsField,
+    QgsFields,
+    QgsGeometry,
+    QgsLineString,
+    QgsPoint,
+    QgsProcessing,
+    QgsProcessingException,
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterDistance,
+    QgsProcessingParameterFeatureSink,
+    QgsProcessingParameterFeatureSource,
+    QgsProcessingParameterField,
+    QgsProcessingParameterFileDestination,
+    QgsVectorLayer,
+    QgsWkbTypes,
+)
+from qgis.PyQt.QtCore import QVariant
+
+from .base import SignMapperAlgorithm
+from .gpkg_output import RUN_TABLE
+
+
+class EvaluateAlgorithm(SignMapperAlgorithm):
+    NAME = "evaluate"
+    DISPLAY_NAME = "Evaluate against reference"
+    GROUP_ID = "quality"
+    HELP = (
+        "Compares mapped signs with a reference inventory (surveyed signs, or a drive's truth.csv loaded as a "
+        "point layer) as in Cavegn (2011). Each mapped sign is matched to the nearest reference sign within the "
+        "matching radius (3D). Table 1: reference signs, detection rate, correct-classification rate (share of "
+        "detected signs whose id equals the reference id), false positives and duplicates (reference signs "
+        "matched by more than one mapped sign). Table 2: mean, empirical standard deviation, RMS and maximum "
+        "of the coordinate differences across track, along track, in height, planimetric and 3D, in the frame "
+        "of the trajectory at each sign. Signs with status 'rejected' are left out. Writes an HTML report with "
+        "a plot of the error vectors, a statistics table and a line layer joining each matched pair."
+    )
+
+    SIGNS = "SIGNS"
+    SIGNS_ID_FIELD = "SIGNS_ID_FIELD"
+    REFERENCE = "REFERENCE"
+    REFERENCE_ID_FIELD = "REFERENCE_ID_FIELD"
+    REFERENCE_HEIGHT_FIELD = "REFERENCE_HEIGHT_FIELD"
+    RADIUS = "RADIUS"
+    TRAJECTORY = "TRAJECTORY"
+    REPORT = "REPORT"
+    STATISTICS = "STATISTICS"
+    MATCHES = "MATCHES"
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add_parameter(
+            QgsProcessingParameterFeatureSource(self.SIGNS, self.tr("Mapped signs"), [QgsProcessing.TypeVectorPoint]),
+            "Point layer of mapped signs, e.g. the 'signs' layer written by Map traffic signs.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterField(self.SIGNS_ID_FIELD, self.tr("Sign type field of the mapped signs"),
+                                        "template_id", self.SIGNS, QgsProcessingParameterField.String, optional=True),
+            "Field holding the catalogue id (SSV number) of each mapped sign; empty = template_id.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSource(self.REFERENCE, self.tr("Reference signs"),
+                                                [QgsProcessing.TypeVectorPoint]),
+            "Surveyed reference inventory as a point layer (PointZ, or a height field below).",
+        )
+        self.add_parameter(
+            QgsProcessingParameterField(self.REFERENCE_ID_FIELD, self.tr("Sign type field of the reference"),
+                                        "template_id", self.REFERENCE, QgsProcessingParameterField.Any),
+            "Field of the reference holding the catalogue id of each sign.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterField(self.REFERENCE_HEIGHT_FIELD, self.tr("Height field of the reference"),
+                                        None, self.REFERENCE, QgsProcessingParameterField.Numeric, optional=True),
+            "Only for a reference without Z values: the field holding the height of each sign centre.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterDistance(self.RADIUS, self.tr("Matching radius"), 1.0, self.SIGNS, minValue=0.01),
+            "A mapped sign farther than this (3D) from every reference sign is a false positive.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSource(self.TRAJECTORY, self.tr("Trajectory"), [
+                QgsProcessing.TypeVectorPoint, QgsProcessing.TypeVectorLine], optional=True),
+            "Trajectory points (in driving order) or line defining along and across track. Empty: taken from the "
+            "drive recorded in the mapped signs' GeoPackage.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterFileDestination(self.REPORT, self.tr("HTML report"), "HTML files (*.html)"),
+            "Tables 1 and 2 and the error-vector plot as one HTML page.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSink(self.STATISTICS, self.tr("Statistics"), QgsProcessing.TypeVector),
+            "Table with one row per figure of Tables 1 and 2.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterFeatureSink(self.MATCHES, self.tr("Matches"), QgsProcessing.TypeVectorLine),
+            "Line from each mapped sign to its reference sign, with the ids and the error components.",
+        )
+        for name, title in (("DETECTION_RATE", "Detection rate"), ("CLASSIFICATION_RATE", "Classification rate"),
+                            ("FALSE_POSITIVES", "False positives"), ("DUPLICATES", "Duplicates"),
+                            ("SIGMA_3D", "Empirical σ 3D [m]")):
+            self.addOutput(QgsProcessingOutputNumber(name, self.tr(title)))
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        import numpy as np
+
+        from ..signmapper_core.evaluation import COMPONENTS, evaluate, format_report
+        from ..signmapper_core.report_html import report_html
+
+        signs = self.parameterAsSource(parameters, self.SIGNS, context)
+        reference = self.parameterAsSource(parameters, self.REFERENCE, context)
+        if signs is None or reference is None:
+            raise QgsProcessingException("Mapped signs and reference layer are required.")
+        sign_field = self.parameterAsString(parameters, self.SIGNS_ID_FIELD, context) or "template_id"
+        ref_field = self.parameterAsString(parameters, self.REFERENCE_ID_FIELD, context)
+        height_field = self.parameterAsString(parameters, self.REFERENCE_HEIGHT_FIELD, context)
+        radius = self.parameterAsDouble(parameters, self.RADIUS, context)
+
+        mapped = self.read_points(signs, sign_field, None, None, context, skip_rejected=True)
+        to_signs = QgsCoordinateTransform(reference.sourceCrs(), signs.sourceCrs(), context.transformContext())
+        refs = self.read_points(reference, ref_field, height_field, to_signs, context)
+        if not refs["xyz"]:
+            raise QgsProcessingException("The reference layer has no points.")
+        trajectory = self.trajectory_xy(parameters, context, signs, to_signs)
+        feedback.pushInfo(f"{len(mapped['xyz'])} mapped signs, {len(refs['xyz'])} reference signs, "
+                          f"radius {radius} m, trajectory of {len(trajectory)} vertices")
+        report = evaluate(np.array(mapped["xyz"]).reshape(-1, 3), mapped["ids"], np.array(refs["xyz"]),
+                          refs["ids"], trajectory, radius)
+        feedback.pushInfo(format_report(report))
+
+        html_path = self.parameterAsFileOutput(parameters, self.REPORT, context)
+        notes = [f"Matching radius {radius} m (3D). Signs with status 'rejected' left out.",
+                 f"Mapped signs: {signs.sourceName()}; reference: {reference.sourceName()}."]
+        Path(html_path).write_text(report_html(report, "Sign Mapper: evaluation against reference", notes),
+                                   encoding="utf-8")
+
+        stats_sink, stats_id = self.statistics_sink(parameters, context, report, COMPONENTS)
+        matches_id = self.write_matches(parameters, context, signs, report, mapped, refs)
+        t1 = report.table1
+        return {
+            self.REPORT: html_path, self.STATISTICS: stats_id, self.MATCHES: matches_id,
+            "DETECTION_RATE": t1.detection_rate, "CLASSIFICATION_RATE": t1.classification_rate,
+            "FALSE_POSITIVES": t1.false_positive_detections, "DUPLICATES": t1.duplicates,
+            "SIGMA_3D": report.table2["3d"].std,
+        }
+
+    @staticmethod
+    def read_points(source, id_field, height_field, transform, context, skip_rejected=False) -> dict:
+        names = source.fields().names()
+        if id_field not in names:
+            raise QgsProcessingException(f"{source.sourceName()}: no field '{id_field}'")
+        has_status = skip_rejected and "status" in names
+        out = {"xyz": [], "ids": [], "fids": []}
+        for feature in source.getFeatures(QgsFeatureRequest()):
+            if has_status and feature["status"] == "rejected":
+                continue
+            geom = QgsGeometry(feature.geometry())
+            if geom.isNull():
+                continue
+            if transform is not None and transform.sourceCrs() != transform.destinationCrs():
+                geom.transform(transform)
+            point = next(geom.vertices())
+            z = point.z() if QgsWkbTypes.hasZ(geom.wkbType()) else None
+            if height_field:
+                z = feature[height_field]
+            if z is None or z != z:
+                raise QgsProcessingException(
+                    f"{source.sourceName()}: feature {feature.id()} has no height; use a PointZ layer or choose "
+                    "the height field")
+            out["xyz"].append((point.x(), point.y(), float(z)))
+            out["ids"].append(str(feature[id_field]))
+            out["fids"].append(feature.id())
+        return out
+
+    def trajectory_xy(self, parameters, context, signs, to_signs):
+        import numpy as np
+
+        source = self.parameterAsSource(parameters, self.TRAJECTORY, context)
+        if source is not None:
+            transform = QgsCoordinateTransform(source.sourceCrs(), signs.sourceCrs(), context.transformContext())
+            xy = []
+            for feature in source.getFeatures():
+                geom = QgsGeometry(feature.geometry())
+                geom.transform(transform)
+                xy.extend((v.x(), v.y()) for v in geom.vertices())
+            if len(xy) < 2:
+                raise QgsProcessingException("The trajectory needs at least two vertices.")
+            return np.array(xy)
+        drive = self.recorded_drive(parameters, context)
+        if drive is None:
+            raise QgsProcessingException(
+                "No trajectory given and the mapped signs do not name their drive (table signmapper_run); "
+                "give the trajectory, e.g. from Drive trajectory.")
+        return np.array([[r.pose.easting, r.pose.northing] for r in drive.pairs])
+
+    def recorded_drive(self, parameters, context):
+        from ..signmapper_core.drive import open_drive
+        from ..signmapper_core.errors import DriveFormatError
+
+        layer = self.parameterAsVectorLayer(parameters, self.SIGNS, context)
+        if layer is None:
+            return None
+        path = layer.source().split("|")[0]
+        table = QgsVectorLayer(f"{path}|layername={RUN_TABLE}", "run", "ogr")
+        if not table.isValid():
+            return None
+        values = {f["key"]: f["value"] for f in table.getFeatures()}
+        if "drive" not in values:
+            return None
+        try:
+            return open_drive(values["drive"], check_images=False)
+        except DriveFormatError as exc:
+            raise QgsProcessingException(f"Drive recorded in {path}: {exc}") from exc
+
+    def statistics_sink(self, parameters, context, report, components):
+        fields = QgsFields()
+        for name, kind in (("table", QVariant.String), ("figure", QVariant.String), ("value", QVariant.Double)):
+            fields.append(QgsField(name, kind))
+        sink, dest = self.parameterAsSink(parameters, self.STATISTICS, context, fields, QgsWkbTypes.NoGeometry)
+        t1 = report.table1
+        rows = [("1", "reference_signs", t1.reference_signs), ("1", "detected_signs", t1.detected_signs),
+                ("1", "detection_rate", t1.detection_rate),
+                ("1", "correctly_classified_signs", t1.correctly_classified_signs),
+                ("1", "classification_rate", t1.classification_rate), ("1", "mapped_features", t1.detections),
+                ("1", "false_positives", t1.false_positive_detections), ("1", "duplicates", t1.duplicates)]
+        for c in components:
+            s = report.table2[c]
+            rows += [("2", f"{c}_mean", s.mean), ("2", f"{c}_std", s.std), ("2", f"{c}_rms", s.rms),
+                     ("2", f"{c}_max", s.max_abs)]
+        for table, figure, value in rows:
+            feature = QgsFeature(fields)
+            feature.setAttributes([table, figure, float(value)])
+            sink.addFeature(feature, QgsFeatureSink.FastInsert)
+        return sink, dest
+
+    def write_matches(self, parameters, context, signs, report, mapped, refs):
+        fields = QgsFields()
+        for name, kind in (("mapped_fid", QVariant.LongLong), ("mapped_id", QVariant.String),
+                           ("reference_id", QVariant.String), ("correct", QVariant.Bool),
+                           ("across", QVariant.Double), ("along", QVariant.Double), ("height", QVariant.Double),
+                           ("planimetric", QVariant.Double), ("d3", QVariant.Double)):
+            fields.append(QgsField(name, kind))
+        sink, dest = self.parameterAsSink(parameters, self.MATCHES, context, fields, QgsWkbTypes.LineStringZ,
+                                          signs.sourceCrs())
+        k = 0
+        for i, ref in enumerate(report.match):
+            if ref < 0:
+                continue
+            a, b = mapped["xyz"][i], refs["xyz"][ref]
+            feature = QgsFeature(fields)
+            feature.setGeometry(QgsGeometry(QgsLineString([QgsPoint(*a), QgsPoint(*b)])))
+            comps = [round(float(c), 4) for c in report.differences[k]]
+            feature.setAttributes([mapped["fids"][i], mapped["ids"][i], refs["ids"][ref],
+                                   mapped["ids"][i] == refs["ids"][ref]] + comps)
+            sink.addFeature(feature, QgsFeatureSink.FastInsert)
+            k += 1
+        return dest

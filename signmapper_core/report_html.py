@@ -1,0 +1,86 @@
+"""The evaluation report as a self-contained HTML page: Tables 1 and 2 and a plot of the error vectors.
+
+The plot is inline SVG drawn here (no plotting library, no scripts, no WebKit
+needed to show it): each matched sign's planimetric error as an arrow in the
+across/along track frame, magnified so centimetre errors are visible.
+"""
+
+from __future__ import annotations
+
+import html
+
+import numpy as np
+
+from .evaluation import COMPONENTS, EvaluationReport
+
+LABELS = {"across": "across track", "along": "along track", "height": "height", "planimetric": "planimetric",
+          "3d": "3D"}
+
+
+def _pct(x: float) -> str:
+    return "–" if not np.isfinite(x) else f"{100 * x:.1f} %"
+
+
+def _m(x: float) -> str:
+    return "–" if not np.isfinite(x) else f"{x:.3f}"
+
+
+def error_plot_svg(differences: np.ndarray, size_px: int = 360) -> str:
+    """Scatter of (across, along) errors with arrows from the origin; axes in metres."""
+    d = np.asarray(differences, float).reshape(-1, 5)
+    half = size_px / 2
+    extent = max(0.05, float(np.abs(d[:, :2]).max()) * 1.15) if len(d) else 0.05
+    scale = (half - 30) / extent
+    parts = [
+        f'<svg xmlns="http://www.w3.org/2000/svg" width="{size_px}" height="{size_px}" '
+        f'viewBox="0 0 {size_px} {size_px}" font-family="sans-serif" font-size="11">',
+        f'<rect width="{size_px}" height="{size_px}" fill="white" stroke="#ccc"/>',
+        f'<line x1="20" y1="{half}" x2="{size_px - 20}" y2="{half}" stroke="#999"/>',
+        f'<line x1="{half}" y1="20" x2="{half}" y2="{size_px - 20}" stroke="#999"/>',
+        f'<text x="{size_px - 22}" y="{half - 6}" text-anchor="end">across +{extent:.2f} m</text>',
+        f'<text x="{half + 6}" y="30">along +{extent:.2f} m</text>',
+    ]
+    for across, along, *_ in d:
+        x, y = half + across * scale, half - along * scale
+        parts.append(f'<line x1="{half}" y1="{half}" x2="{x:.1f}" y2="{y:.1f}" stroke="#1f4fa3" '
+                     'stroke-opacity="0.5"/>')
+        parts.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="2.5" fill="#d52b1e"/>')
+    parts.append("</svg>")
+    return "\n".join(parts)
+
+
+def report_html(report: EvaluationReport, title: str, notes: list[str] | None = None) -> str:
+    t1 = report.table1
+    rows1 = [
+        ("Reference signs", f"{t1.reference_signs}"),
+        ("Detected signs", f"{t1.detected_signs} ({_pct(t1.detection_rate)})"),
+        ("Correctly classified signs", f"{t1.correctly_classified_signs} ({_pct(t1.classification_rate)} of detected)"),
+        ("Mapped features", f"{t1.detections}"),
+        ("False positives (features matching no reference sign)", f"{t1.false_positive_detections}"),
+        ("Duplicates (reference signs matched by more than one feature)", f"{t1.duplicates}"),
+    ]
+    rows2 = "\n".join(
+        f"<tr><td>{LABELS[c]}</td><td>{report.table2[c].n}</td><td>{_m(report.table2[c].mean)}</td>"
+        f"<td>{_m(report.table2[c].std)}</td><td>{_m(report.table2[c].rms)}</td>"
+        f"<td>{_m(report.table2[c].max_abs)}</td></tr>"
+        for c in COMPONENTS
+    )
+    confusions = "".join(f"<li>{html.escape(a)} → {html.escape(b)}</li>" for a, b in report.confusions)
+    notes_html = "".join(f"<li>{html.escape(n)}</li>" for n in (notes or []))
+    return f"""<!DOCTYPE html>
+<html><head><meta charset="utf-8"><title>{html.escape(title)}</title>
+<style>body{{font-family:sans-serif;margin:2em}} table{{border-collapse:collapse;margin-bottom:1.5em}}
+td,th{{border:1px solid #bbb;padding:4px 10px;text-align:right}} td:first-child,th:first-child{{text-align:left}}
+</style></head><body>
+<h1>{html.escape(title)}</h1>
+<h2>Table 1: detection and classification</h2>
+<table>{"".join(f"<tr><td>{html.escape(k)}</td><td>{v}</td></tr>" for k, v in rows1)}</table>
+<h2>Table 2: coordinate differences, mapped − reference [m]</h2>
+<table><tr><th>component</th><th>n</th><th>mean</th><th>empirical σ</th><th>RMS</th><th>max |d|</th></tr>
+{rows2}</table>
+<h2>Error vectors (across / along track)</h2>
+{error_plot_svg(report.differences)}
+{f"<h2>Misclassified (reference → assigned)</h2><ul>{confusions}</ul>" if confusions else ""}
+{f"<h2>Notes</h2><ul>{notes_html}</ul>" if notes_html else ""}
+</body></html>
+"""

@@ -1,0 +1,156 @@
+"""``signmapper:evaluate`` on hand-made references with known offsets, and the full modeler chain."""
+
+from pathlib import Path
+
+import pytest
+from qgis.core import (
+    QgsFeature,
+    QgsGeometry,
+    QgsLineString,
+    QgsPoint,
+    QgsProcessingModelAlgorithm,
+    QgsProcessingModelChildAlgorithm,
+    QgsProcessingModelChildParameterSource,
+    QgsProcessingModelOutput,
+    QgsVectorLayer,
+)
+
+REF = [("s1", "2.01", 2600010.0, 1200004.0, 402.0), ("s2", "3.03", 2600020.0, 1199996.0, 402.5),
+       ("s3", "2.30-50", 2600030.0, 1200004.0, 401.8), ("s4", "1.22", 2600040.0, 1199996.0, 402.2)]
+
+
+@pytest.fixture
+def run(registered_plugin):
+    import processing
+
+    return processing.run
+
+
+def point_layer(rows, name, status=None):
+    layer = QgsVectorLayer("PointZ?crs=EPSG:2056&field=template_id:string&field=status:string", name, "memory")
+    features = []
+    for i, (_sid, tid, e, n, h) in enumerate(rows):
+        f = QgsFeature(layer.fields())
+        f.setGeometry(QgsGeometry(QgsPoint(e, n, h)))
+        f.setAttributes([tid, (status or {}).get(i, "accepted")])
+        features.append(f)
+    layer.dataProvider().addFeatures(features)
+    return layer
+
+
+def eastward_trajectory():
+    layer = QgsVectorLayer("LineString?crs=EPSG:2056", "traj", "memory")
+    f = QgsFeature()
+    f.setGeometry(QgsGeometry(QgsLineString([QgsPoint(2599990.0, 1200000.0), QgsPoint(2600060.0, 1200000.0)])))
+    layer.dataProvider().addFeatures([f])
+    return layer
+
+
+def evaluate(run, tmp_path, mapped, **extra):
+    params = {"SIGNS": mapped, "REFERENCE": point_layer(REF, "ref"), "REFERENCE_ID_FIELD": "template_id",
+              "RADIUS": 1.0, "TRAJECTORY": eastward_trajectory(), "REPORT": str(tmp_path / "report.html"),
+              "STATISTICS": "memory:", "MATCHES": "memory:"}
+    params.update(extra)
+    return run("signmapper:evaluate", params)
+
+
+def stats_of(result):
+    return {f["figure"]: f["value"] for f in result["STATISTICS"].getFeatures()}
+
+
+def test_every_sign_moved_5cm_across_track(run, tmp_path):
+    moved = [(s, t, e, n - 0.05, h) for s, t, e, n, h in REF]  # south = right of an eastward drive
+    result = evaluate(run, tmp_path, point_layer(moved, "mapped"))
+    stats = stats_of(result)
+    assert stats["across_mean"] == pytest.approx(0.05, abs=1e-6)
+    assert stats["across_std"] == pytest.approx(0.0, abs=1e-6)
+    assert stats["along_max"] == pytest.approx(0.0, abs=1e-6)
+    assert stats["3d_rms"] == pytest.approx(0.05, abs=1e-6)
+    assert result["DETECTION_RATE"] == 1.0 and result["CLASSIFICATION_RATE"] == 1.0
+    assert result["FALSE_POSITIVES"] == 0 and result["DUPLICATES"] == 0
+    html = Path(result["REPORT"]).read_text()
+    assert "Table 1" in html and "Table 2" in html and "<svg" in html
+    lines = list(result["MATCHES"].getFeatures())
+    assert len(lines) == 4 and all(f["correct"] for f in lines)
+    assert lines[0].geometry().length() == pytest.approx(0.05, abs=1e-6)
+
+
+def test_one_missing_sign_drops_the_detection_rate_by_exactly_one(run, tmp_path):
+    result = evaluate(run, tmp_path, point_layer(REF[:3], "mapped"))
+    assert result["DETECTION_RATE"] == pytest.approx(3 / 4)
+    assert stats_of(result)["detected_signs"] == 3
+
+
+def test_false_positive_duplicate_misclassified_and_rejected(run, tmp_path):
+    rows = list(REF) + [("x", "2.01", 2600050.0, 1200010.0, 402.0),  # nothing there
+                        ("d", "2.01", 2600010.1, 1200004.0, 402.0),  # second feature for s1
+                        ("r", "2.01", 2600055.0, 1200010.0, 402.0)]  # rejected in review: ignored
+    rows[1] = ("s2", "3.04", *REF[1][2:])
+    result = evaluate(run, tmp_path, point_layer(rows, "mapped", status={6: "rejected"}))
+    assert result["FALSE_POSITIVES"] == 1
+    assert result["DUPLICATES"] == 1
+    assert result["CLASSIFICATION_RATE"] == pytest.approx(3 / 4)
+    assert "3.03 → 3.04" in Path(result["REPORT"]).read_text()
+
+
+def test_truth_csv_as_reference_and_trajectory_from_the_recorded_drive(run, tmp_path):
+    from drive_fixtures import make_drive
+
+    drive = make_drive(tmp_path / "drive", n_pairs=5)
+    uri = (f"file://{drive / 'truth.csv'}?delimiter=,&xField=easting&yField=northing&zField=height"
+           "&crs=EPSG:2056")
+    truth = QgsVectorLayer(uri, "truth", "delimitedtext")
+    assert truth.isValid() and truth.featureCount() == 1
+    gpkg = tmp_path / "signs.gpkg"
+    mapped = point_layer([("s", "2.30-50", 2600005.0, 1200003.0, 401.6)], "signs")
+    from sign_mapper.algorithms.gpkg_output import AtomicGeoPackage
+
+    out = AtomicGeoPackage(str(gpkg))
+    writer = out.open_layer("signs", mapped.fields(), mapped.wkbType(), mapped.crs())
+    for f in mapped.getFeatures():
+        writer.addFeature(f)
+    del writer
+    out.write_run_table({"drive": str(drive)})
+    out.commit()
+    result = run("signmapper:evaluate", {
+        "SIGNS": f"{gpkg}|layername=signs", "REFERENCE": truth, "REFERENCE_ID_FIELD": "template_id",
+        "RADIUS": 0.5, "REPORT": str(tmp_path / "r.html"), "STATISTICS": "memory:", "MATCHES": "memory:"})
+    stats = stats_of(result)
+    assert result["DETECTION_RATE"] == 1.0
+    assert stats["height_mean"] == pytest.approx(0.1, abs=1e-6)
+    assert stats["along_max"] == pytest.approx(0.0, abs=1e-6)
+
+
+def test_modeler_chain_synthetic_drive_map_signs_evaluate(run, tmp_path):
+    model = QgsProcessingModelAlgorithm("chain", "tests")
+    static = QgsProcessingModelChildParameterSource.fromStaticValue
+    sim = QgsProcessingModelChildAlgorithm("signmapper:syntheticdrive")
+    sim.setChildId("sim")
+    for name, value in {"PAIRS": 8, "SEED": 21, "WRITE_DEPTH": True, "WIDTH": 960, "HEIGHT": 540, "FX": 875.0,
+                        "OUTPUT": str(tmp_path / "drive")}.items():
+        sim.addParameterSources(name, [static(value)])
+    mapper = QgsProcessingModelChildAlgorithm("signmapper:mapsigns")
+    mapper.setChildId("map")
+    mapper.addParameterSources("DRIVE", [QgsProcessingModelChildParameterSource.fromChildOutput("sim", "OUTPUT")])
+    mapper.addParameterSources("OUTPUT", [static(str(tmp_path / "signs.gpkg"))])
+    truth_uri = (f"file://{tmp_path / 'drive' / 'truth.csv'}?delimiter=,&xField=easting&yField=northing"
+                 "&zField=height&crs=EPSG:2056")
+    ev = QgsProcessingModelChildAlgorithm("signmapper:evaluate")
+    ev.setChildId("eval")
+    ev.addParameterSources("SIGNS", [QgsProcessingModelChildParameterSource.fromChildOutput("map", "SIGNS")])
+    ev.addParameterSources("REFERENCE", [static(truth_uri)])
+    ev.addParameterSources("REFERENCE_ID_FIELD", [static("template_id")])
+    ev.addParameterSources("RADIUS", [static(0.5)])
+    ev.addParameterSources("STATISTICS", [static("memory:")])
+    ev.addParameterSources("MATCHES", [static("memory:")])
+    report = QgsProcessingModelOutput("report", "Report")
+    report.setChildId("eval")
+    report.setChildOutputName("REPORT")
+    ev.setModelOutputs({"report": report})
+    for child in (sim, mapper, ev):
+        model.addChildAlgorithm(child)
+    model.updateDestinationParameters()
+    result = run(model, {"eval:report": str(tmp_path / "report.html")})
+    html = Path(result["eval:report"]).read_text()
+    assert "Table 1" in html
+    assert "Detected signs" in html
