@@ -101,15 +101,20 @@ class Pen:
         hl = head_length if head_length is not None else width_eff * 1.6
         hw = head_width if head_width is not None else width_eff * 1.45
         tip = p[-1]
-        d = p[-1] - p[-2]
+        # the head follows the chord over its own length, so heads on curved shafts stay aligned
+        seg = np.linalg.norm(np.diff(p, axis=0), axis=1)
+        from_tip = np.concatenate([np.cumsum(seg[::-1])[::-1], [0.0]])
+        k = int(np.searchsorted(-from_tip, -hl)) if from_tip[0] > hl else 1
+        k = min(max(k, 1), len(p) - 1)
+        t = (from_tip[k - 1] - hl) / max(from_tip[k - 1] - from_tip[k], 1e-12)
+        back = p[k - 1] + (p[k] - p[k - 1]) * min(max(t, 0.0), 1.0) if from_tip[0] > hl else p[0]
+        d = tip - back
         d = d / np.linalg.norm(d)
         n = np.array([-d[1], d[0]])
         base = tip - d * hl
-        # keep only the shaft points farther than the head length from the tip (curved arrows)
-        seg = np.linalg.norm(np.diff(p, axis=0), axis=1)
-        from_tip = np.concatenate([np.cumsum(seg[::-1])[::-1], [0.0]])
         keep = p[from_tip > hl * 1.05]
-        shaft = np.vstack([keep, base + d * 0.05 * hl]) if len(keep) else np.array([p[0], base + d * 0.05 * hl])
+        end = base + d * 0.05 * hl
+        shaft = np.vstack([keep, end]) if len(keep) else np.array([p[0], end])
         self.line(shaft, width, colour)
         self.poly([tip, base + n * hw, base - n * hw], colour)
 

@@ -239,15 +239,17 @@ mandatory("2.48", "Schneeketten obligatorisch", "Chaînes à neige obligatoires"
 
 
 def _stopping(cross: bool):
+    """Blue disc with red rim and bar(s); proportions keep blue the dominant colour under any style."""
+    width = 0.2 if cross else 0.24
+
     def content(p: Pen):
-        p.line([(-0.96, -0.96), (0.96, 0.96)], 0.3, "red", scaled=False)
+        p.line([(-0.96, -0.96), (0.96, 0.96)], width, "red", scaled=False)
         if cross:
-            p.line([(-0.96, 0.96), (0.96, -0.96)], 0.3, "red", scaled=False)
-    return lambda st: frames.disc(st, content, fill="blue", rim=0.1)
+            p.line([(-0.96, 0.96), (0.96, -0.96)], width, "red", scaled=False)
+    return lambda st: frames.disc(st, content, fill="blue", rim=0.085)
 
 
-# The red rim and cross of 2.49 cover more of the face than its blue ground: its colour class is red.
-_add("2.49", "Halten verboten", "Interdiction de s'arrêter", "Divieto di fermata", "red", "circle", F.ROUND, True,
+_add("2.49", "Halten verboten", "Interdiction de s'arrêter", "Divieto di fermata", "blue", "circle", F.ROUND, True,
      _stopping(True))
 _add("2.50", "Parkieren verboten", "Interdiction de parquer", "Divieto di parcheggio", "blue", "circle", F.ROUND,
      True, _stopping(False))

@@ -125,3 +125,13 @@ def test_svg_is_written_from_the_same_drawing():
     svg = to_svg(face_drawing("2.30-50"), 64, "2.30-50")
     assert svg.startswith("<?xml") and "<svg" in svg and svg.rstrip().endswith("</svg>")
     assert ">50</text>" in svg and "#c81420" in svg.lower()
+
+
+def test_random_styles_keep_every_entry_in_its_colour_class_and_shape(cat):
+    """The generator draws random styles: no style may turn a sign into another colour class."""
+    for e in cat:
+        for seed in (11, 12):
+            bgr, alpha = render_face(e.id, 48, FaceStyle.random(np.random.default_rng(seed)))
+            assert colour_class(bgr, alpha) == e.colour, (e.id, seed)
+            expected, tol = SHAPE_FILL[e.shape]
+            assert alpha.mean() / 255 == pytest.approx(expected, abs=tol + 0.03), (e.id, seed)
