@@ -32,11 +32,16 @@ def pixels_for(size_m: float, depth_m: float, camera: Camera = CAMERA) -> int:
 
 
 def paste(image: np.ndarray, bgr: np.ndarray, alpha: np.ndarray, x: int, y: int) -> None:
-    """Alpha-blend a face into ``image`` with its top-left pixel at (x, y), in place."""
+    """Alpha-blend a face into ``image`` with its top-left pixel at (x, y), in place, clipped to the image."""
     h, w = alpha.shape
-    a = alpha[..., None].astype(np.float32) / 255.0
-    roi = image[y : y + h, x : x + w].astype(np.float32)
-    image[y : y + h, x : x + w] = (bgr * a + roi * (1 - a)).astype(np.uint8)
+    x0, y0 = max(0, x), max(0, y)
+    x1, y1 = min(image.shape[1], x + w), min(image.shape[0], y + h)
+    if x1 <= x0 or y1 <= y0:
+        return
+    a = alpha[y0 - y : y1 - y, x0 - x : x1 - x, None].astype(np.float32) / 255.0
+    face = bgr[y0 - y : y1 - y, x0 - x : x1 - x]
+    roi = image[y0:y1, x0:x1].astype(np.float32)
+    image[y0:y1, x0:x1] = (face * a + roi * (1 - a)).astype(np.uint8)
 
 
 def sign_scene(catalogue, template_id, size_m, sign_world, depth_m=None, seed=0, camera=CAMERA, pose=POSE,
@@ -58,5 +63,9 @@ def sign_scene(catalogue, template_id, size_m, sign_world, depth_m=None, seed=0,
     x, y = int(round(float(u) - (w - 1) / 2)), int(round(float(v) - (h - 1) / 2))
     paste(left, bgr, alpha, x, y)
     depth = constant_depth(z if background_depth is None else background_depth)
-    depth[y : y + h, x : x + w][alpha > 127] = z
+    face = np.zeros(depth.shape, np.uint8)
+    x0, y0 = max(0, x), max(0, y)
+    x1, y1 = min(depth.shape[1], x + w), min(depth.shape[0], y + h)
+    face[y0:y1, x0:x1] = alpha[y0 - y : y1 - y, x0 - x : x1 - x]
+    depth[face > 127] = z
     return left, depth, (x, y, w, h)

@@ -1,0 +1,94 @@
+import cv2
+import numpy as np
+import pytest
+from pipeline_scenes import noisy_background, paste
+
+from signmapper_core.catalogue import FaceStyle, load_catalogue, render_face
+from signmapper_core.pipeline.classify import classify_segment
+from signmapper_core.pipeline.config import DEFAULT_HSV_RANGES
+from signmapper_core.pipeline.face_extent import candidate_entries, colour_extent
+
+ALL_COLOURS = ("red", "blue", "yellow", "white")
+
+
+@pytest.fixture(scope="module")
+def catalogue():
+    return load_catalogue()
+
+
+def _candidates(catalogue, template_id):
+    entry = catalogue[template_id]
+    shapes = ("square", "rectangle") if entry.shape in ("square", "rectangle") else (entry.shape,)
+    return [e.id for e, _ in candidate_entries(catalogue, entry.colour, shapes, DEFAULT_HSV_RANGES, ALL_COLOURS)]
+
+
+def _perspective(bgr, alpha, turn=0.08):
+    """The face seen slightly from the side: its right edge shorter by ``turn``."""
+    h, w = alpha.shape
+    src = np.float32([[0, 0], [w, 0], [w, h], [0, h]])
+    dst = np.float32([[0, 0], [w, turn * h / 2], [w, h * (1 - turn / 2)], [0, h]])
+    m = cv2.getPerspectiveTransform(src, dst)
+    return (cv2.warpPerspective(bgr, m, (w, h), flags=cv2.INTER_LINEAR),
+            cv2.warpPerspective(alpha, m, (w, h), flags=cv2.INTER_LINEAR))
+
+
+def _degraded_scene(face_bgr, face_alpha, seed):
+    rng = np.random.default_rng(seed)
+    image = noisy_background(200, 200, seed=seed)
+    paste(image, face_bgr, face_alpha, 60, 50)
+    image = cv2.GaussianBlur(image, (0, 0), 0.9)
+    image = np.clip(image + rng.normal(0, 6, image.shape), 0, 255).astype(np.uint8)
+    h, w = face_alpha.shape
+    return image, (60, 50, w, h)
+
+
+@pytest.mark.parametrize("template_id", ["2.30-50", "2.30-80", "1.01", "1.23", "3.01", "3.02", "2.36", "4.17"])
+@pytest.mark.parametrize("size_px", [56, 90])
+def test_template_under_blur_noise_and_perspective_is_recognised(catalogue, template_id, size_px):
+    bgr, alpha = catalogue.render(template_id, size_px)
+    bgr, alpha = _perspective(bgr, alpha)
+    image, bbox = _degraded_scene(bgr, alpha, seed=size_px)
+    result = classify_segment(image, bbox, catalogue, _candidates(catalogue, template_id))
+    assert result.template_id == template_id
+    assert result.score > 0.8
+
+
+@pytest.mark.parametrize("template_id", ["2.30-60", "1.22", "2.44", "2.41"])
+def test_procedurally_varied_face_is_recognised(catalogue, template_id):
+    # the generator's faces differ from the templates: stroke widths, palette, fonts, details
+    style = FaceStyle(stroke_scale=1.1, rim_scale=0.9, palette_jitter=0.5, font="duplex", detail_jitter=0.3, seed=3)
+    bgr, alpha = render_face(template_id, 70, style)
+    image, bbox = _degraded_scene(bgr, alpha, seed=7)
+    result = classify_segment(image, bbox, catalogue, _candidates(catalogue, template_id))
+    assert result.template_id == template_id
+    assert result.score > 0.7
+
+
+def test_a_non_sign_scores_low(catalogue):
+    image = noisy_background(200, 200, seed=5)
+    cv2.circle(image, (90, 80), 30, (40, 40, 200), -1)  # a plain red disc: no white field, no pictogram
+    result = classify_segment(image, (60, 50, 61, 61), catalogue, _candidates(catalogue, "2.30-50"))
+    assert result.score < 0.6
+
+
+def test_no_candidates_gives_no_template(catalogue):
+    image = noisy_background(100, 100)
+    assert classify_segment(image, (10, 10, 40, 40), catalogue, []).template_id is None
+
+
+def test_face_at_the_image_border_is_matched_without_error(catalogue):
+    bgr, alpha = catalogue.render("2.30-50", 60)
+    image = noisy_background(120, 120)
+    paste(image, bgr, alpha, 0, 0)
+    result = classify_segment(image, (0, 0, 60, 60), catalogue, _candidates(catalogue, "2.30-50"))
+    assert result.template_id == "2.30-50"
+
+
+def test_colour_extent_of_rimmed_and_panel_faces(catalogue):
+    # the priority road's yellow lies inside a white rim; a zone sign's red ring in the panel's upper part
+    x0, y0, x1, y1 = colour_extent(catalogue, "3.03", "yellow", DEFAULT_HSV_RANGES)
+    assert 0.05 < x0 < 0.2 and 0.8 < x1 < 0.95
+    x0, y0, x1, y1 = colour_extent(catalogue, "2.59.1", "red", DEFAULT_HSV_RANGES)
+    assert y1 < 0.8
+    assert colour_extent(catalogue, "2.30-50", "red", DEFAULT_HSV_RANGES) == (0.0, 0.0, 1.0, 1.0)
+    assert colour_extent(catalogue, "2.30-50", "blue", DEFAULT_HSV_RANGES) is None

@@ -1,0 +1,111 @@
+import cv2
+import numpy as np
+import pytest
+from pipeline_scenes import CAMERA, POSE, constant_depth, noisy_background, paste, sign_scene
+
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.pipeline import Detection, PipelineConfig, detect_in_window, detect_pair
+
+FORWARD, RIGHT, DOWN = POSE.rotation[:, 2], POSE.rotation[:, 0], POSE.rotation[:, 1]
+
+
+@pytest.fixture(scope="module")
+def catalogue():
+    return load_catalogue()
+
+
+def _world(ahead, right, up):
+    return POSE.centre + ahead * FORWARD + right * RIGHT - up * DOWN
+
+
+def _detect(catalogue, left, depth, right=None, **config):
+    return detect_pair(left, depth, right, CAMERA, POSE, catalogue, PipelineConfig(**config))
+
+
+def test_speed_limit_sign_with_given_depth(catalogue):
+    sign = _world(7.0, 1.5, 0.4)
+    left, depth, bbox = sign_scene(catalogue, "2.30-50", "normal", sign)
+    (det,) = _detect(catalogue, left, depth)
+    assert isinstance(det, Detection)
+    assert det.template_id == "2.30-50" and det.status == "accepted"
+    assert det.colour == "red" and det.shape == "circle" and det.format == "normal"
+    assert det.width_m == pytest.approx(0.60) and det.height_m == pytest.approx(0.60)
+    assert det.detection_indicator > 0.95 and det.classification_indicator > 0.8
+    assert det.depth_m == pytest.approx(7.0, abs=0.01)
+    assert np.linalg.norm(det.position - sign) < 0.03
+    assert abs(det.u - (bbox[0] + (bbox[2] - 1) / 2)) <= 1 and abs(det.v - (bbox[1] + (bbox[3] - 1) / 2)) <= 1
+
+
+@pytest.mark.parametrize("template_id,size", [("1.23", "normal"), ("3.03", "normal"), ("2.36", "small"),
+                                              ("3.01", "small"), ("2.59.1", "normal")])
+def test_other_shapes_colours_and_formats(catalogue, template_id, size):
+    sign = _world(8.0, -1.0, 0.3)
+    left, depth, _ = sign_scene(catalogue, template_id, size, sign, seed=2)
+    dets = _detect(catalogue, left, depth)
+    assert [d.template_id for d in dets] == [template_id]
+    assert dets[0].format == size
+    assert np.linalg.norm(dets[0].position - sign) < 0.05
+
+
+def test_speed_limit_sign_with_depth_from_sgbm(catalogue):
+    z = 6.0
+    d = int(round(CAMERA.fx * CAMERA.baseline_m / z))  # 90 px: everything on one plane at 6 m
+    wide = noisy_background(CAMERA.height, CAMERA.width + d, seed=4)
+    bgr, alpha = catalogue.render("2.30-60", 60)
+    paste(wide, bgr, alpha, 300, 150)
+    left, right = wide[:, : CAMERA.width].copy(), wide[:, d : d + CAMERA.width].copy()
+    (det,) = _detect(catalogue, left, None, right)
+    assert det.template_id == "2.30-60" and det.format == "normal"
+    assert det.depth_m == pytest.approx(z, rel=0.02)
+    assert det.detection_indicator > 0.8
+
+
+def test_blue_facade_patch_is_rejected_by_size(catalogue):
+    left = noisy_background()
+    cv2.rectangle(left, (200, 100), (420, 260), (170, 80, 20), -1)  # ~2.9 m x 2.1 m of blue at 8 m
+    assert _detect(catalogue, left, constant_depth(8.0)) == []
+
+
+def test_red_disc_on_a_facade_along_the_road_is_rejected_by_planarity(catalogue):
+    sign = _world(7.0, 1.5, 0.4)
+    left, _, _ = sign_scene(catalogue, "2.30-50", "normal", sign)
+    # the same image, but the surface is a wall at 70 deg to the optical axis
+    a = np.radians(70)
+    vv, uu = np.mgrid[0 : CAMERA.height, 0 : CAMERA.width].astype(float)
+    rays = np.stack([(uu - CAMERA.cx) / CAMERA.fx, (vv - CAMERA.cy) / CAMERA.fy, np.ones_like(uu)], -1)
+    u0 = 1.5 * CAMERA.fx / 7.0 + CAMERA.cx  # the sign centre column
+    n = np.array([np.sin(a), 0, np.cos(a)])
+    depth = (rays @ n) ** -1 * (n @ np.array([(u0 - CAMERA.cx) * 7.0 / CAMERA.fx, 0, 7.0]))
+    assert _detect(catalogue, left, depth.astype(np.float32)) == []
+
+
+def test_sign_out_of_the_depth_range_or_cut_by_the_border_is_not_detected(catalogue):
+    left, depth, _ = sign_scene(catalogue, "2.30-50", "normal", _world(7.0, 1.5, 0.4))
+    assert _detect(catalogue, left, depth, near_m=8.0, far_m=14.0) == []
+    cut = _world(7.0, CAMERA.cx * 7.0 / CAMERA.fx - 0.1, 0.0)  # centre 0.1 m inside the right border
+    left, depth, bbox = sign_scene(catalogue, "2.30-50", "normal", cut)
+    assert bbox[0] + bbox[2] > CAMERA.width  # the face is cut by the right border
+    assert _detect(catalogue, left, depth) == []
+
+
+def test_nan_depth_and_empty_image_give_no_detections(catalogue):
+    left, _, _ = sign_scene(catalogue, "2.30-50", "normal", _world(7.0, 1.5, 0.4))
+    assert _detect(catalogue, left, np.full(left.shape[:2], np.nan, np.float32)) == []
+    assert _detect(catalogue, noisy_background(), constant_depth(8.0)) == []
+
+
+def test_excluded_template_is_not_reported_as_itself(catalogue):
+    left, depth, _ = sign_scene(catalogue, "2.30-50", "normal", _world(7.0, 1.5, 0.4))
+    dets = _detect(catalogue, left, depth, exclude=("2.30-50",))
+    assert all(d.template_id != "2.30-50" for d in dets)
+
+
+def test_detect_in_window_finds_the_sign_near_a_click(catalogue):
+    left, depth, bbox = sign_scene(catalogue, "1.23", "normal", _world(9.0, -1.2, 0.6))
+    x, y, w, h = bbox
+    click = (x + w / 2 + 6, y + h / 2 - 4)  # a click a few pixels off the centre
+    det = detect_in_window(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig(), click, 80)
+    assert det is not None and det.template_id == "1.23"
+    assert abs(det.u - (x + (w - 1) / 2)) <= 1
+    # a click far from any sign finds nothing
+    assert detect_in_window(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig(), (40, 40), 30) is None
