@@ -269,8 +269,12 @@ def _zone(kind: str, end: bool = False):
 
     def content(p: Pen):
         top = p.sub(0, -0.38, 0.9, jitter=False)
-        if kind in ("30", "20"):
+        if kind == "30":
             _limit_disc(top, kind, ring, ink)
+        elif kind == "20":  # meeting zone: smaller limit disc over a pedestrian and a car
+            _limit_disc(p.sub(0, -0.62, 0.62, jitter=False), kind, ring, ink)
+            pg.pedestrian(p.sub(-0.45, 0.12, 0.3), ink)
+            pg.car_side(p.sub(0.3, 0.2, 0.38), ink)
         else:
             top.circle(0, 0, 0.95, "grey" if end else "blue")
             pg.adult_and_child(top.sub(0, 0, 0.62, jitter=False), "white")
