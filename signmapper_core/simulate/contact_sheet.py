@@ -1,8 +1,8 @@
 """Contact sheet of a drive: a few left images with the truth signs boxed, in one PNG.
 
 ``python -m signmapper_core.simulate.contact_sheet DRIVE OUT.png [--tiles 4] [--tile-width 640]``
-Boxes are projected from truth.csv with the poses of poses.csv; signs nearer than
-4 m or farther than 14 m (the detection range) are drawn thin.
+Boxes are projected from truth.csv with the poses of poses.csv; signs within the
+detection range (4-14 m) are boxed green and labelled, others thin orange.
 """
 
 from __future__ import annotations
@@ -53,6 +53,8 @@ def annotate(drive: Drive, index: int) -> np.ndarray:
         colour = (0, 255, 0) if in_range else (0, 200, 255)
         cv2.polylines(img, [np.round(uv).astype(np.int32)], True, colour, 2 * scale if in_range else scale,
                       cv2.LINE_AA)
+        if not in_range:
+            continue
         label = f"{sign.template_id} {z:.1f} m"
         org = (int(uv[:, 0].min()), max(12, int(uv[:, 1].min()) - 4))
         cv2.putText(img, label, org, cv2.FONT_HERSHEY_SIMPLEX, 0.45 * scale, (0, 0, 0), 3 * scale, cv2.LINE_AA)

@@ -101,7 +101,8 @@ def render_pair(config: SimulationConfig, scene: Scene, rasterizer: Rasterizer, 
     cam = rasterizer.camera
     surfaces = scene.surfaces_between(s_cam - LOOK_BEHIND_M, s_cam + LOOK_AHEAD_M)
     horizon_v = cam.cy + cam.fy * np.tan(np.radians(pose.pitch))
-    sky = tx.sky(cam.height, cam.width, horizon_v, cam.fy, np.random.default_rng([config.seed, 8, index]))
+    # the same clouds all drive long: they are far away and should not flicker from pair to pair
+    sky = tx.sky(cam.height, cam.width, horizon_v, cam.fy, np.random.default_rng([config.seed, 8]))
     left, depth = rasterizer.render(surfaces, pose, sky)
     right, _ = rasterizer.render(surfaces, right_pose(pose, config.baseline_m), sky)
     switches = {"exposure_changes": config.exposure_changes, "motion_blur": config.motion_blur,

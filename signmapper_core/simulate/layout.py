@@ -144,8 +144,20 @@ class _Builder:
         w = int(round((CARRIAGEWAY[1] - CARRIAGEWAY[0]) / ROAD_PX_M))
         h = int(round((s1 - s0) / ROAD_PX_M))
 
+        shaded = self.realism["shadows"] and self.rng(1, 20, int(s0 * 10)).random() < 0.15
+
         def make():
             img = tx.asphalt(rng, h, w, ROAD_PX_M)
+            shade = None
+            if shaded:  # a building's shadow: straight slanted edge reaching in from one side
+                side = 1.0 if rng.random() < 0.5 else -1.0
+                reach = rng.uniform(-2.5, 2.5)
+                slope = rng.uniform(-0.8, 0.8)
+                yy, xx = np.mgrid[0:h, 0:w].astype(np.float32) * ROAD_PX_M
+                edge = side * (xx + CARRIAGEWAY[0]) - reach - slope * (yy - h * ROAD_PX_M / 2)
+                edge += 0.15 * tx.smooth_noise(rng, h, w, 0.4 / ROAD_PX_M)
+                shade = np.where(edge > 0, 0.68, 1.0).astype(np.float32)
+                shade = cv2.GaussianBlur(shade, (0, 0), 0.05 / ROAD_PX_M)
             rows_s = s0 + (np.arange(h) + 0.5) * ROAD_PX_M
             cols_l = CARRIAGEWAY[0] + (np.arange(w) + 0.5) * ROAD_PX_M
             paint = np.zeros((h, w), bool)
@@ -157,6 +169,8 @@ class _Builder:
             for z in zebras:  # Swiss pedestrian crossings are yellow: a colour distractor
                 stripes = (np.abs(rows_s - z) < 2.0)[:, None] & ((np.floor((cols_l + 10) / 0.5) % 2) == 0)[None, :]
                 img[stripes] = (0.35 * img[stripes] + np.array([20, 175, 215]) * 0.65).astype(np.uint8)
+            if shade is not None:  # soft cast shadows of trees and buildings across the road
+                img[:] = (img * shade[..., None]).astype(np.uint8)
             return Texture(img)
 
         return TextureSource(key, w, h, make)
