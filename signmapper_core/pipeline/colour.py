@@ -1,7 +1,9 @@
 """Step 3: colour segmentation in HSV and connected segments with filled outlines.
 
 Red signs are a red ring around a white field, so each segment is the filled
-outer contour of its colour component, not the coloured pixels alone.
+outer contour of its colour component, not the coloured pixels alone. Where
+that outline is far from convex (a ring opened by an occluding pole or branch),
+the convex hull is used instead: every sign outline is convex.
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ class Segment:
     area_px: int
     touches_border: bool
     source: str = "colour"
+    solidity: float = 1.0  # filled outline area / convex hull area, before any hull filling
 
     @property
     def centroid(self) -> Tuple[float, float]:
@@ -86,8 +89,12 @@ def segments_from_mask(
     min_bbox_px: int = 12,
     border_margin_px: int = 2,
     source: str = "colour",
+    min_solidity: float = 0.85,
 ) -> List[Segment]:
-    """Connected segments of ``mask`` as filled outer contours with bounding boxes."""
+    """Connected segments of ``mask`` as filled outer contours with bounding boxes.
+
+    Outlines with a solidity below ``min_solidity`` are replaced by their convex hull.
+    """
     height, width = mask.shape[:2]
     contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
     out = []
@@ -100,9 +107,15 @@ def segments_from_mask(
         area = int(np.count_nonzero(filled))
         if area < min_area_px:
             continue
+        hull = cv2.convexHull(contour)
+        hull_area = max(1.0, cv2.contourArea(hull))
+        solidity = min(1.0, cv2.contourArea(contour) / hull_area)
+        if solidity < min_solidity:
+            cv2.drawContours(filled, [hull], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
+            area = int(np.count_nonzero(filled))
         m = border_margin_px
         touches = x <= m or y <= m or x + w >= width - m or y + h >= height - m
-        out.append(Segment(colour, (x, y, w, h), filled, contour, area, touches, source))
+        out.append(Segment(colour, (x, y, w, h), filled, contour, area, touches, source, solidity))
     return out
 
 

@@ -48,6 +48,8 @@ class PipelineConfig:
     sgbm_block_size: int = 5
     sgbm_rows_only: bool = True  # match only the row bands holding colour candidates
     sgbm_row_margin_px: int = 24
+    sgbm_far_factor: float = 2.0  # search disparities down to far*2: far points then match outside the range
+    sgbm_uniqueness: int = 15
 
     # planarity (detection indicator)
     planarity_window_px: int = 7
@@ -56,6 +58,7 @@ class PipelineConfig:
     min_depth_coverage: float = 0.3  # share of a segment's pixels needing a valid depth
 
     # classification
+    min_classification_score: float = 0.35  # below this no template resembles the segment: not reported
     scales: Tuple[float, ...] = (0.92, 1.0, 1.08)
     shift_fraction: float = 0.08  # shift search, as a fraction of the segment size
     max_template_px: int = 96  # larger segments are compared downscaled
@@ -66,6 +69,7 @@ class PipelineConfig:
     hough_circularity: float = 0.85  # param2 of HOUGH_GRADIENT_ALT
     hough_edge_threshold: float = 150.0  # param1 of HOUGH_GRADIENT_ALT
     hough_max_status: str = "review"  # Hough finds are never accepted without a look
+    hough_max_diameter_m: float = 0.6  # larger round formats only by colour: the radius range sets the cost
 
     def __post_init__(self):
         if not 0 < self.near_m < self.far_m:

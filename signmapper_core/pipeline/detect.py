@@ -106,7 +106,7 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     if planarity.indicator < config.detection_threshold:
         return None
     cls = classify_segment(left, face, catalogue, ids, config.scales, config.shift_fraction, config.max_template_px)
-    if cls.template_id is None:
+    if cls.template_id is None or cls.score < config.min_classification_score:
         return None
     status = "accepted" if cls.score >= config.classification_threshold else "review"
     if seg.source == "hough":
@@ -146,7 +146,7 @@ def suppress_overlaps(detections: Sequence[Detection], max_iou: float = 0.3) -> 
 
 def _round_diameters(catalogue, config: PipelineConfig) -> List[float]:
     entries = catalogue.filter(shapes=["circle"], exclude=tuple(config.exclude))
-    diam = [max(f) for e in entries for f in e.formats.values()]
+    diam = [max(f) for e in entries for f in e.formats.values() if max(f) <= config.hough_max_diameter_m]
     return diam or [0.4, 0.6]
 
 
@@ -167,7 +167,7 @@ def _ensure_depth(left, depth, right, camera, config: PipelineConfig, roi: Roi) 
     if not bands:
         return np.full(left.shape[:2], np.nan, dtype=np.float32)
     return sgbm_depth(left, right, camera, config.near_m, config.far_m, config.sgbm_scale,
-                      config.sgbm_block_size, bands)
+                      config.sgbm_block_size, bands, config.sgbm_far_factor, config.sgbm_uniqueness)
 
 
 class _Timer:

@@ -39,9 +39,14 @@ def find_circles(
 ) -> np.ndarray:
     """Circles (N, 3) as (u, v, r) in full-image pixels, found in the search space."""
     grey = cv2.cvtColor(bgr, cv2.COLOR_BGR2GRAY) if bgr.ndim == 3 else bgr.copy()
-    grey[~search_mask] = 0
+    mask = search_mask.astype(np.uint8) * 255
     if scale != 1.0:
         grey = cv2.resize(grey, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA)
+        mask = cv2.resize(mask, (grey.shape[1], grey.shape[0]), interpolation=cv2.INTER_AREA)
+    # a smooth search-space outline: speckle in a matched depth map would otherwise feed the
+    # transform with many short edges (slow, and false circles)
+    mask = cv2.medianBlur(mask, 5)
+    grey[mask < 128] = 0
     lo, hi = max(2, int(r_min * scale)), max(3, int(np.ceil(r_max * scale)))
     circles = cv2.HoughCircles(
         grey, cv2.HOUGH_GRADIENT_ALT, dp=1.5, minDist=max(4, lo), param1=edge_threshold,
