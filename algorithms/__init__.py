@@ -4,12 +4,29 @@ Algorithm modules import the core lazily inside ``processAlgorithm`` so the
 provider loads (and explains what to install) even when OpenCV is missing.
 """
 
+import importlib
 
-def algorithm_classes():
-    """Every algorithm class the provider registers."""
-    from .drive_trajectory import DriveTrajectoryAlgorithm
-    from .evaluate import EvaluateAlgorithm
-    from .map_signs import MapSignsAlgorithm
-    from .synthetic_drive import SyntheticDriveAlgorithm
+# module -> class, in the order the toolbox lists them
+ALGORITHMS = (
+    ("map_signs", "MapSignsAlgorithm"),
+    ("evaluate", "EvaluateAlgorithm"),
+    ("drive_trajectory", "DriveTrajectoryAlgorithm"),
+    ("synthetic_drive", "SyntheticDriveAlgorithm"),
+)
 
-    return [MapSignsAlgorithm, EvaluateAlgorithm, DriveTrajectoryAlgorithm, SyntheticDriveAlgorithm]
+
+def algorithm_classes(on_error=None):
+    """Every algorithm class that imports; ``on_error(module, exception)`` hears of those that do not.
+
+    An exception escaping QgsProcessingProvider.loadAlgorithms aborts QGIS, so
+    one broken module must cost only its own algorithm.
+    """
+    classes = []
+    for module, name in ALGORITHMS:
+        try:
+            classes.append(getattr(importlib.import_module(f".{module}", __name__), name))
+        except Exception as exc:  # noqa: BLE001 - reported, never fatal
+            if on_error is None:
+                raise
+            on_error(module, exc)
+    return classes

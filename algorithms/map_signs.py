@@ -20,6 +20,7 @@ from qgis.core import (
 from .base import Cancelled, SignMapperAlgorithm, core_progress
 from .drive_input import open_drive_or_raise
 from .gpkg_output import AtomicGeoPackage, layer_uri
+from .layer_styles import embed_default_styles
 from .sign_fields import DETECTION_LAYER_FIELDS, SIGN_FIELDS, detection_feature, make_fields, sign_feature
 
 COLOURS = ["red", "blue", "yellow"]
@@ -145,6 +146,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             signs = self.fuse(detections, feedback)
             self.write_layers(output, drive, detections, signs)
             output.write_run_table(self.run_record(drive, catalogue, config))
+            embed_default_styles(str(output.partial), catalogue)
             path = output.commit()
         except BaseException:
             output.discard()

@@ -3,11 +3,22 @@
 from __future__ import annotations
 
 from qgis.core import (
+    QgsCoordinateReferenceSystem,
+    QgsFeature,
+    QgsFeatureSink,
+    QgsField,
+    QgsFields,
+    QgsGeometry,
+    QgsPoint,
+    QgsProcessing,
     QgsProcessingException,
     QgsProcessingParameterBoolean,
+    QgsProcessingParameterFeatureSink,
     QgsProcessingParameterFolderDestination,
     QgsProcessingParameterNumber,
+    QgsWkbTypes,
 )
+from qgis.PyQt.QtCore import QVariant
 
 from .base import SignMapperAlgorithm
 
@@ -25,6 +36,7 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
     )
 
     OUTPUT = "OUTPUT"
+    TRUTH = "TRUTH"
     PAIRS = "PAIRS"
     SEED = "SEED"
     WRITE_DEPTH = "WRITE_DEPTH"
@@ -61,6 +73,10 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
                            "Standard deviation of the noise added to the recorded heading, pitch and roll.")
         self.add_parameter(QgsProcessingParameterFolderDestination(self.OUTPUT, self.tr("Drive folder")),
                            "Folder to write the drive into; it must not exist yet or be empty.")
+        self.add_parameter(QgsProcessingParameterFeatureSink(self.TRUTH, self.tr("Ground truth signs"),
+                                                             QgsProcessing.TypeVectorPoint, optional=True),
+                           "The signs of truth.csv as a PointZ layer (sign face centres), e.g. as the reference "
+                           "of Evaluate against reference.")
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         self.require_dependencies()
@@ -92,4 +108,24 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
             raise QgsProcessingException("Cancelled; no drive written.")
         feedback.pushInfo(f"{summary.pairs} pairs and {len(summary.signs)} signs written to {out_dir} "
                           f"in {summary.seconds:.1f} s")
-        return {self.OUTPUT: out_dir}
+        results = {self.OUTPUT: out_dir}
+        truth_id = self.write_truth(parameters, context, summary.signs, config.crs)
+        if truth_id is not None:
+            results[self.TRUTH] = truth_id
+        return results
+
+    def write_truth(self, parameters, context, signs, crs):
+        fields = QgsFields()
+        for name, kind in (("sign_id", QVariant.String), ("template_id", QVariant.String),
+                           ("width_m", QVariant.Double), ("height_m", QVariant.Double), ("facing", QVariant.Double)):
+            fields.append(QgsField(name, kind))
+        sink, dest = self.parameterAsSink(parameters, self.TRUTH, context, fields, QgsWkbTypes.PointZ,
+                                          QgsCoordinateReferenceSystem(crs))
+        if sink is None:
+            return None
+        for sign in signs:
+            feature = QgsFeature(fields)
+            feature.setGeometry(QgsGeometry(QgsPoint(sign.easting, sign.northing, sign.height)))
+            feature.setAttributes([sign.sign_id, sign.template_id, sign.width_m, sign.height_m, sign.facing])
+            sink.addFeature(feature, QgsFeatureSink.FastInsert)
+        return dest

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from qgis.core import QgsProcessingProvider
+from qgis.core import Qgis, QgsMessageLog, QgsProcessingProvider
 from qgis.PyQt.QtGui import QIcon
 
 from ..algorithms import algorithm_classes
@@ -29,5 +29,10 @@ class SignMapperProvider(QgsProcessingProvider):
         return QIcon(str(ICON_PATH))
 
     def loadAlgorithms(self):  # noqa: N802
-        for cls in algorithm_classes():
+        for cls in algorithm_classes(on_error=self.report_broken_algorithm):
             self.addAlgorithm(cls())
+
+    @staticmethod
+    def report_broken_algorithm(module: str, exc: Exception) -> None:
+        QgsMessageLog.logMessage(f"Algorithm module '{module}' failed to load: {exc!r}", "Sign Mapper",
+                                 Qgis.Critical)

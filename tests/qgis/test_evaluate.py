@@ -15,6 +15,8 @@ from qgis.core import (
     QgsVectorLayer,
 )
 
+from signmapper_core.drive import open_drive
+
 REF = [("s1", "2.01", 2600010.0, 1200004.0, 402.0), ("s2", "3.03", 2600020.0, 1199996.0, 402.5),
        ("s3", "2.30-50", 2600030.0, 1200004.0, 401.8), ("s4", "1.22", 2600040.0, 1199996.0, 402.2)]
 
@@ -127,18 +129,16 @@ def test_modeler_chain_synthetic_drive_map_signs_evaluate(run, tmp_path):
     sim = QgsProcessingModelChildAlgorithm("signmapper:syntheticdrive")
     sim.setChildId("sim")
     for name, value in {"PAIRS": 8, "SEED": 21, "WRITE_DEPTH": True, "WIDTH": 960, "HEIGHT": 540, "FX": 875.0,
-                        "OUTPUT": str(tmp_path / "drive")}.items():
+                        "OUTPUT": str(tmp_path / "drive"), "TRUTH": "memory:"}.items():
         sim.addParameterSources(name, [static(value)])
     mapper = QgsProcessingModelChildAlgorithm("signmapper:mapsigns")
     mapper.setChildId("map")
     mapper.addParameterSources("DRIVE", [QgsProcessingModelChildParameterSource.fromChildOutput("sim", "OUTPUT")])
     mapper.addParameterSources("OUTPUT", [static(str(tmp_path / "signs.gpkg"))])
-    truth_uri = (f"file://{tmp_path / 'drive' / 'truth.csv'}?delimiter=,&xField=easting&yField=northing"
-                 "&zField=height&crs=EPSG:2056")
     ev = QgsProcessingModelChildAlgorithm("signmapper:evaluate")
     ev.setChildId("eval")
     ev.addParameterSources("SIGNS", [QgsProcessingModelChildParameterSource.fromChildOutput("map", "SIGNS")])
-    ev.addParameterSources("REFERENCE", [static(truth_uri)])
+    ev.addParameterSources("REFERENCE", [QgsProcessingModelChildParameterSource.fromChildOutput("sim", "TRUTH")])
     ev.addParameterSources("REFERENCE_ID_FIELD", [static("template_id")])
     ev.addParameterSources("RADIUS", [static(0.5)])
     ev.addParameterSources("STATISTICS", [static("memory:")])
@@ -152,5 +152,6 @@ def test_modeler_chain_synthetic_drive_map_signs_evaluate(run, tmp_path):
     model.updateDestinationParameters()
     result = run(model, {"eval:report": str(tmp_path / "report.html")})
     html = Path(result["eval:report"]).read_text()
-    assert "Table 1" in html
-    assert "Detected signs" in html
+    assert "Table 1" in html and "Detected signs" in html
+    reference_row = html.split("Reference signs</td><td>")[1].split("<")[0]
+    assert int(reference_row) == len(open_drive(tmp_path / "drive").truth)

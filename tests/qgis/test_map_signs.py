@@ -96,6 +96,23 @@ def test_map_signs_writes_detections_with_the_right_ids_and_positions(run, small
     values = {f["key"]: f["value"] for f in run_table.getFeatures()}
     assert Path(values["drive"]) == small_drive.resolve()
     assert not list(tmp_path.glob(".*partial*"))
+    assert not list(tmp_path.glob("*-wal")) and not list(tmp_path.glob("*-journal"))
+
+
+def test_layers_open_with_the_embedded_pictogram_style(run, small_drive, tmp_path):
+    out = tmp_path / "styled.gpkg"
+    run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out)})
+    signs = QgsVectorLayer(f"{out}|layername=signs", "s", "ogr")
+    renderer = signs.renderer()
+    assert renderer.type() == "categorizedSymbol" and renderer.classAttribute() == "template_id"
+    categories = renderer.categories()  # keep the list alive: its symbols belong to it
+    values = {c.value() for c in categories}
+    assert {f["template_id"] for f in signs.getFeatures()} <= values
+    svg = categories[0].symbol().symbolLayer(0)
+    assert svg.layerType() == "SvgMarker" and svg.path().startswith("base64:")
+    assert signs.labelsEnabled()
+    detections = QgsVectorLayer(f"{out}|layername=detections", "d", "ogr")
+    assert detections.renderer().classAttribute() == "status"
 
 
 def test_excluded_type_is_never_assigned(run, small_drive, tmp_path):
