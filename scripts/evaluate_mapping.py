@@ -5,9 +5,12 @@
 
 ``--generate`` writes held-out synthetic drives (cached under build/drives/) and
 evaluates them. Seeds below 1000 are for tuning; report figures on seeds >= 1000.
-Per-pair detections are evaluated (several per sign); a sign is detected when at
-least one detection lies within the matching radius, correctly classified when
-the majority of its detections carry its template id.
+Two tables per drive: the per-pair detections (several per sign; a sign is
+detected when at least one detection lies within the matching radius, correctly
+classified when the majority of its detections carry its template id), and the
+fused signs (one feature per physical sign; duplicates = reference signs matched
+by more than one fused sign). Signs in status "review" count like accepted ones;
+the review step decides on them.
 """
 
 from __future__ import annotations
@@ -25,6 +28,7 @@ sys.path.insert(0, str(REPO))
 from signmapper_core.catalogue import load_catalogue  # noqa: E402
 from signmapper_core.drive import open_drive  # noqa: E402
 from signmapper_core.evaluation import combine_reports, evaluate, format_report  # noqa: E402
+from signmapper_core.fusion import Observation, fuse_observations  # noqa: E402
 from signmapper_core.mapping import map_drive  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.visibility import mappable_signs  # noqa: E402
@@ -41,14 +45,17 @@ def generated_drive(seed: int, pairs: int, depth: bool) -> Path:
 
 
 def map_and_collect(drive, catalogue, config):
-    xyz, ids, seconds, skipped = [], [], 0.0, 0
+    observations, seconds, skipped = [], 0.0, 0
     for result in map_drive(drive, catalogue, config):
         seconds += result.seconds
         skipped += result.error is not None
         for det in result.detections:
-            xyz.append(det.position)
-            ids.append(det.template_id)
-    return np.array(xyz).reshape(-1, 3), ids, seconds, skipped
+            observations.append(Observation.from_detection(det, result.record, len(observations)))
+    return observations, seconds, skipped
+
+
+def positions_ids(items):
+    return np.array([o.position for o in items]).reshape(-1, 3), [o.template_id for o in items]
 
 
 def main(argv=None) -> int:
@@ -68,23 +75,30 @@ def main(argv=None) -> int:
         parser.error("give drive folders or --generate SEEDS")
     catalogue = load_catalogue(args.catalogue)
     config = PipelineConfig(near_m=args.near, far_m=args.far)
-    reports, total_pairs, total_seconds = [], 0, 0.0
+    reports = {"detections": [], "signs": []}
+    total_pairs, total_seconds = 0, 0.0
     for folder in folders:
         drive = open_drive(folder)
         reference = mappable_signs(drive, args.near, args.far)
+        ref_xyz, ref_ids = [s.position for s in reference], [s.template_id for s in reference]
         traj = np.array([[r.pose.easting, r.pose.northing] for r in drive.pairs])
-        xyz, ids, seconds, skipped = map_and_collect(drive, catalogue, config)
-        report = evaluate(xyz, ids, [s.position for s in reference], [s.template_id for s in reference], traj,
-                          args.radius)
-        print(format_report(report, f"== {folder} ({len(drive.pairs)} pairs, {skipped} skipped, "
-                                    f"{len(drive.pairs) / max(seconds, 1e-9):.2f} pairs/s)"))
-        print()
-        reports.append(report)
+        observations, seconds, skipped = map_and_collect(drive, catalogue, config)
+        signs = fuse_observations(observations)
+        head = f"== {folder} ({len(drive.pairs)} pairs, {skipped} skipped, " \
+               f"{len(drive.pairs) / max(seconds, 1e-9):.2f} pairs/s)"
+        for kind, items in (("detections", observations), ("signs", signs)):
+            report = evaluate(*positions_ids(items), ref_xyz, ref_ids, traj, args.radius)
+            reports[kind].append(report)
+            print(format_report(report, f"{head}: {'per-pair detections' if kind == 'detections' else 'fused signs'}"))
+            print()
         total_pairs += len(drive.pairs)
         total_seconds += seconds
-    if len(reports) > 1:
-        print(format_report(combine_reports(reports), f"== all {len(folders)} drives, {total_pairs} pairs, "
-                                                      f"{total_pairs / max(total_seconds, 1e-9):.2f} pairs/s"))
+    if len(folders) > 1:
+        for kind in ("detections", "signs"):
+            print(format_report(combine_reports(reports[kind]),
+                                f"== all {len(folders)} drives, {total_pairs} pairs, "
+                                f"{total_pairs / max(total_seconds, 1e-9):.2f} pairs/s: {kind}"))
+            print()
     return 0
 
 
