@@ -115,6 +115,17 @@ def test_layers_open_with_the_embedded_pictogram_style(run, small_drive, tmp_pat
     assert detections.renderer().classAttribute() == "status"
 
 
+def test_sgbm_depth_without_depth_maps(run, small_drive, tmp_path):
+    """The same drive without depth/: depth comes from the stereo pair."""
+    import shutil
+
+    no_depth = tmp_path / "nodepth"
+    shutil.copytree(small_drive, no_depth, ignore=shutil.ignore_patterns("depth"))
+    out = tmp_path / "sgbm.gpkg"
+    run("signmapper:mapsigns", {"DRIVE": str(no_depth), "OUTPUT": str(out)})
+    assert_finds_truth(read_detections(out), no_depth, tolerance_m=0.4, min_signs=2)
+
+
 def test_excluded_type_is_never_assigned(run, small_drive, tmp_path):
     truth_ids = sorted({s.template_id for s in open_drive(small_drive).truth})
     out = tmp_path / "excl.gpkg"
