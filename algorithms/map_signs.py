@@ -195,13 +195,20 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         return signs
 
     def write_layers(self, output, drive, detections, signs) -> None:
+        import numpy as np
+
+        from ..signmapper_core.mounting import camera_height_above_road, mounting_height
+
         crs = QgsCoordinateReferenceSystem(drive.crs)
+        centres = np.array([r.pose.centre for r in drive.pairs])
+        camera_height = camera_height_above_road(drive.metadata)
         sign_of = {o.detection_id: s.sign_id for s in signs for o in s.observations}
         fields = make_fields(SIGN_FIELDS)
         writer = output.open_layer("signs", fields, QgsWkbTypes.PointZ, crs,
                                    abstract=f"Sign Mapper: traffic signs of drive {drive.root}")
         for sign in signs:
-            writer.addFeature(sign_feature(fields, sign), QgsFeatureSink.FastInsert)
+            mount = mounting_height(sign.position, sign.height_m, centres, camera_height)
+            writer.addFeature(sign_feature(fields, sign, mount), QgsFeatureSink.FastInsert)
         del writer
         fields = make_fields(DETECTION_LAYER_FIELDS)
         writer = output.open_layer("detections", fields, QgsWkbTypes.PointZ, crs,
