@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from qgis.core import QgsProcessingAlgorithm, QgsProcessingException
+from qgis.core import QgsProcessingAlgorithm, QgsProcessingException, QgsProcessingParameterFile
 from qgis.PyQt.QtCore import QCoreApplication
 
 from ..dependencies import install_hint, missing_modules
@@ -50,6 +50,13 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         param.setHelp(self.tr(help_text))
         self.addParameter(param)
         return param
+
+    def add_drive_parameter(self, name: str):
+        """The drive folder input every drive-reading algorithm starts with."""
+        return self.add_parameter(
+            QgsProcessingParameterFile(name, self.tr("Drive folder"), behavior=QgsProcessingParameterFile.Folder),
+            "Folder of one drive in the stereo-drive/1 layout: drive.json, poses.csv, left/ and right/ or depth/.",
+        )
 
     def require_dependencies(self):
         """Raise a clear QgsProcessingException naming what to install when OpenCV & co. are missing."""

@@ -14,7 +14,6 @@ from qgis.core import (
     QgsProcessing,
     QgsProcessingException,
     QgsProcessingParameterFeatureSink,
-    QgsProcessingParameterFile,
     QgsWkbTypes,
 )
 from qgis.PyQt.QtCore import QVariant
@@ -52,10 +51,7 @@ class DriveTrajectoryAlgorithm(SignMapperAlgorithm):
     TRACK = "TRACK"
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.add_parameter(
-            QgsProcessingParameterFile(self.DRIVE, self.tr("Drive folder"), behavior=QgsProcessingParameterFile.Folder),
-            "Folder of one drive in the stereo-drive/1 layout: drive.json, poses.csv, left/ and right/ or depth/.",
-        )
+        self.add_drive_parameter(self.DRIVE)
         self.add_parameter(
             QgsProcessingParameterFeatureSink(self.OUTPUT, self.tr("Trajectory points"), QgsProcessing.TypeVectorPoint),
             "PointZ layer (GeoPackage by default) with one feature per stereo pair, in the drive's CRS.",

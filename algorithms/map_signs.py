@@ -55,10 +55,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
     SIGNS = "SIGNS"
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.add_parameter(
-            QgsProcessingParameterFile(self.DRIVE, self.tr("Drive folder"), behavior=QgsProcessingParameterFile.Folder),
-            "Folder of one drive in the stereo-drive/1 layout: drive.json, poses.csv, left/ and right/ or depth/.",
-        )
+        self.add_drive_parameter(self.DRIVE)
         self.add_parameter(
             QgsProcessingParameterNumber(self.NEAR, self.tr("Near limit of the depth range [m]"),
                                          QgsProcessingParameterNumber.Double, 4.0, minValue=0.5, maxValue=100.0),
