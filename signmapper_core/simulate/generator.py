@@ -145,7 +145,8 @@ def generate_drive(out_dir, config: SimulationConfig | None = None,
         noisy = recorded_poses(config, poses)
         s_cam = _vehicle_positions(config)
         write_drive_json(tmp, config.crs, camera, software="Sign Mapper synthetic drive generator",
-                         seed=config.seed, vehicle={"speed_kmh": config.speed_kmh, "rate_hz": config.rate_hz})
+                         seed=config.seed, vehicle={"speed_kmh": config.speed_kmh, "rate_hz": config.rate_hz,
+                                  "camera_height_m": config.camera_height_m})
         cache = TextureCache()
         rasterizer = Rasterizer(camera, cache)
         ids = [f"{i:06d}" for i in range(config.pairs)]

@@ -92,6 +92,9 @@ def test_map_signs_writes_detections_with_the_right_ids_and_positions(run, small
     sign_ids = {f["sign_id"] for f in signs.getFeatures()}
     assert {f["sign_id"] for f in layer.getFeatures()} == sign_ids
     assert sum(f["n_obs"] for f in signs.getFeatures()) == layer.featureCount()
+    # the generator places lower edges 0.6-2.5 m above the road (SSV Art. 103) and states its camera height
+    mounts = [f["mount_height_m"] for f in signs.getFeatures()]
+    assert all(m is not None and 0.4 <= m <= 2.8 for m in mounts), mounts
     run_table = QgsVectorLayer(f"{out}|layername=signmapper_run", "run", "ogr")
     values = {f["key"]: f["value"] for f in run_table.getFeatures()}
     assert Path(values["drive"]) == small_drive.resolve()
