@@ -273,8 +273,8 @@ def _zone(kind: str, end: bool = False):
             _limit_disc(top, kind, ring, ink)
         elif kind == "20":  # meeting zone: smaller limit disc over a pedestrian and a car
             _limit_disc(p.sub(0, -0.56, 0.74, jitter=False), kind, ring, ink)
-            pg.pedestrian(p.sub(-0.45, 0.26, 0.26), ink)
-            pg.car_side(p.sub(0.3, 0.32, 0.36), ink)
+            pg.pedestrian(p.sub(-0.45, 0.33, 0.23), ink)
+            pg.car_side(p.sub(0.3, 0.37, 0.36), ink)
         else:
             top.circle(0, 0, 0.95, "grey" if end else "blue")
             pg.adult_and_child(top.sub(0, 0, 0.62, jitter=False), "white")
