@@ -38,6 +38,8 @@ class PipelineConfig:
     morph_close_px: int = 5  # bridges small gaps in a sign's ring
     min_segment_px: int = 150  # smaller segments cannot be sized or classified reliably
     min_bbox_px: int = 12
+    search_close_px: int = 15  # holes of a given depth's search space this small are closed before it cuts colours
+    search_grow_px: int = 31  # with SGBM depth the search space is grown by this much instead
     border_margin_px: int = 2  # segments this close to the image border are cut and rejected
 
     # shape

@@ -23,7 +23,7 @@ from .face_extent import FULL, candidate_entries, face_bbox
 from .hough import hough_segments, radius_range_px
 from .locate import bbox_centre, locate
 from .planarity import segment_planarity
-from .search_space import search_space_mask
+from .search_space import close_holes, grow, search_space_mask
 from .shape import catalogue_shapes, classify_shape
 from .sizing import measure_segment, metric_size, round_to_format
 
@@ -191,6 +191,7 @@ class _Timer:
 def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig, roi: Roi,
             timings: Optional[dict] = None) -> List[Detection]:
     timer = _Timer(timings)
+    matched = depth is None
     with timer("depth"):
         depth = _ensure_depth(left, depth, right, camera, config, roi)
     x0, y0, x1, y1 = roi
@@ -201,7 +202,8 @@ def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig,
         search &= inside
     detections = []
     with timer("colour"):
-        segments = colour_segments(left, search, config, roi)
+        cut = grow(search, config.search_grow_px) if matched else close_holes(search, config.search_close_px)
+        segments = colour_segments(left, cut, config, roi)
     with timer("segments"):
         for seg in segments:
             det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config)
