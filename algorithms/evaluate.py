@@ -51,6 +51,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
     REFERENCE = "REFERENCE"
     REFERENCE_ID_FIELD = "REFERENCE_ID_FIELD"
     REFERENCE_HEIGHT_FIELD = "REFERENCE_HEIGHT_FIELD"
+    REFERENCE_FACING_FIELD = "REFERENCE_FACING_FIELD"
     RADIUS = "RADIUS"
     TRAJECTORY = "TRAJECTORY"
     REPORT = "REPORT"
@@ -81,6 +82,13 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             QgsProcessingParameterField(self.REFERENCE_HEIGHT_FIELD, self.tr("Height field of the reference"),
                                         None, self.REFERENCE, QgsProcessingParameterField.Numeric, optional=True),
             "Only for a reference without Z values: the field holding the height of each sign centre.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterField(self.REFERENCE_FACING_FIELD, self.tr("Facing field of the reference"),
+                                        None, self.REFERENCE, QgsProcessingParameterField.Numeric, optional=True),
+            "Optional azimuth (degrees from grid north) the sign face looks towards. When given, reference signs "
+            "whose face never looks towards the vehicle within 20 m ahead (e.g. the far sign of a back-to-back "
+            "pair on a one-way drive) are left out, since no forward-looking camera could map them.",
         )
         self.add_parameter(
             QgsProcessingParameterDistance(self.RADIUS, self.tr("Matching radius"), 1.0, self.SIGNS, minValue=0.01),
@@ -126,10 +134,13 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
 
         mapped = self.read_points(signs, sign_field, None, None, context, skip_rejected=True)
         to_signs = QgsCoordinateTransform(reference.sourceCrs(), signs.sourceCrs(), context.transformContext())
-        refs = self.read_points(reference, ref_field, height_field, to_signs, context)
+        facing_field = self.parameterAsString(parameters, self.REFERENCE_FACING_FIELD, context)
+        refs = self.read_points(reference, ref_field, height_field, to_signs, context, facing_field=facing_field)
         if not refs["xyz"]:
             raise QgsProcessingException("The reference layer has no points.")
         trajectory = self.trajectory_xy(parameters, context, signs, to_signs)
+        if facing_field:
+            refs = self.keep_facing_trajectory(refs, trajectory, feedback)
         feedback.pushInfo(f"{len(mapped['xyz'])} mapped signs, {len(refs['xyz'])} reference signs, "
                           f"radius {radius} m, trajectory of {len(trajectory)} vertices")
         report = evaluate(np.array(mapped["xyz"]).reshape(-1, 3), mapped["ids"], np.array(refs["xyz"]),
@@ -153,12 +164,22 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         }
 
     @staticmethod
-    def read_points(source, id_field, height_field, transform, context, skip_rejected=False) -> dict:
+    def keep_facing_trajectory(refs: dict, trajectory, feedback) -> dict:
+        from ..signmapper_core.visibility import faces_trajectory
+
+        keep = [i for i, (xyz, facing) in enumerate(zip(refs["xyz"], refs["facing"]))
+                if faces_trajectory(xyz, facing, trajectory)]
+        feedback.pushInfo(f"{len(refs['xyz']) - len(keep)} reference signs never face the drive and are left out")
+        return {key: [values[i] for i in keep] for key, values in refs.items()}
+
+    @staticmethod
+    def read_points(source, id_field, height_field, transform, context, skip_rejected=False,
+                    facing_field=None) -> dict:
         names = source.fields().names()
         if id_field not in names:
             raise QgsProcessingException(f"{source.sourceName()}: no field '{id_field}'")
         has_status = skip_rejected and "status" in names
-        out = {"xyz": [], "ids": [], "fids": []}
+        out = {"xyz": [], "ids": [], "fids": [], "facing": []}
         for feature in source.getFeatures(QgsFeatureRequest()):
             if has_status and feature["status"] == "rejected":
                 continue
@@ -178,6 +199,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             out["xyz"].append((point.x(), point.y(), float(z)))
             out["ids"].append(str(feature[id_field]))
             out["fids"].append(feature.id())
+            out["facing"].append(float(feature[facing_field]) if facing_field else None)
         return out
 
     def trajectory_xy(self, parameters, context, signs, to_signs):

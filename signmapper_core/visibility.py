@@ -39,3 +39,38 @@ def mappable_signs(drive, near_m: float = 4.0, far_m: float = 14.0) -> list:
         sign for sign in drive.truth
         if any(visible_in_pair(drive.camera, rec.pose, sign, near_m, far_m) for rec in drive.pairs)
     ]
+
+
+def densify(polyline_xy, step_m: float) -> np.ndarray:
+    """Vertices every ``step_m`` metres along a polyline (a line layer may have only its ends)."""
+    pts = np.asarray(polyline_xy, float).reshape(-1, 2)
+    if len(pts) < 2:
+        return pts
+    seg = np.hypot(*np.diff(pts, axis=0).T)
+    chain = np.concatenate([[0.0], np.cumsum(seg)])
+    stations = np.arange(0.0, chain[-1] + 1e-9, step_m)
+    return np.column_stack([np.interp(stations, chain, pts[:, 0]), np.interp(stations, chain, pts[:, 1])])
+
+
+def faces_trajectory(position_xy, facing_deg: float, trajectory_xy: np.ndarray, max_distance_m: float = 20.0,
+                     max_face_angle_deg: float = 75.0) -> bool:
+    """True if from some trajectory vertex within ``max_distance_m`` the sign is ahead and its face looks back.
+
+    For references without a camera model (a surveyed inventory with a facing
+    azimuth), with a forward-looking camera: a sign whose face never looks
+    towards an approaching vehicle cannot be mapped from the drive, such as the
+    far sign of a back-to-back pair on a one-way drive.
+    """
+    traj = densify(trajectory_xy, step_m=1.0)
+    if len(traj) < 2:
+        return False
+    heading = np.gradient(traj, axis=0)
+    to_sign = np.asarray(position_xy, float)[:2] - traj
+    dist = np.hypot(to_sign[:, 0], to_sign[:, 1])
+    ahead = (to_sign * heading).sum(axis=1) > 0
+    near = (dist > 0) & (dist <= max_distance_m) & ahead
+    if not near.any():
+        return False
+    face = facing_vector(facing_deg)[:2]
+    cos_angle = (-to_sign[near] @ face) / dist[near]
+    return bool((cos_angle >= np.cos(np.radians(max_face_angle_deg))).any())

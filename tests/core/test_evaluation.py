@@ -67,3 +67,13 @@ def test_combined_reports_add_counts_and_pool_differences():
     assert both.table1.reference_signs == 6 and both.table1.detected_signs == 4
     assert both.table2["3d"].n == 4
     assert both.table2["3d"].max_abs == pytest.approx(0.1)
+
+
+def test_reference_sign_faces_trajectory():
+    from signmapper_core.visibility import faces_trajectory
+
+    traj = np.array([[float(x), 0.0] for x in range(0, 60, 2)])  # driving east along y = 0
+    sign = (30.0, 4.0)  # left of the road
+    assert faces_trajectory(sign, 250.0, traj)  # looking WSW, towards the approaching car
+    assert not faces_trajectory(sign, 70.0, traj)  # its back-to-back twin looks ENE, away from the road
+    assert not faces_trajectory((30.0, 40.0), 180.0, traj)  # too far from the drive

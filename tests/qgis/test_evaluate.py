@@ -95,6 +95,25 @@ def test_false_positive_duplicate_misclassified_and_rejected(run, tmp_path):
     assert "3.03 → 3.04" in Path(result["REPORT"]).read_text()
 
 
+def test_reference_signs_facing_away_from_the_drive_are_left_out(run, tmp_path):
+    reference = QgsVectorLayer("PointZ?crs=EPSG:2056&field=template_id:string&field=facing:double", "ref", "memory")
+    features = []
+    for tid, north, facing in (("2.01", 1200004.0, 250.0), ("2.02", 1200004.0, 70.0)):  # back to back on one pole
+        f = QgsFeature(reference.fields())
+        f.setGeometry(QgsGeometry(QgsPoint(2600030.0, north, 402.0)))
+        f.setAttributes([tid, facing])
+        features.append(f)
+    reference.dataProvider().addFeatures(features)
+    mapped = point_layer([("a", "2.01", 2600030.0, 1200004.0, 402.0)], "mapped")
+    common = {"SIGNS": mapped, "REFERENCE": reference, "REFERENCE_ID_FIELD": "template_id", "RADIUS": 0.5,
+              "TRAJECTORY": eastward_trajectory(), "REPORT": str(tmp_path / "r.html"), "STATISTICS": "memory:",
+              "MATCHES": "memory:"}
+    assert run("signmapper:evaluate", common)["DETECTION_RATE"] == pytest.approx(0.5)
+    result = run("signmapper:evaluate", {**common, "REFERENCE_FACING_FIELD": "facing"})
+    assert result["DETECTION_RATE"] == 1.0
+    assert stats_of(result)["reference_signs"] == 1
+
+
 def test_truth_csv_as_reference_and_trajectory_from_the_recorded_drive(run, tmp_path):
     from drive_fixtures import make_drive
 
