@@ -136,10 +136,6 @@ def trailer(p: Pen, c: str = "black"):
     p.line([(0.45, 0.05), (0.95, 0.1)], 0.09, c)
 
 
-def tractor_unit_with_box(p: Pen, c: str = "black"):
-    lorry_side(p, c)
-
-
 def tram(p: Pen, c: str = "black"):
     p.rect(-0.95, -0.45, 0.95, 0.35, c, 0.12)
     if p.detailed:
