@@ -24,7 +24,7 @@ DEMO_PAIRS := 20
 PLUGIN_NAME := sign_mapper
 QGIS_PROFILE_PLUGINS := $(HOME)/.local/share/QGIS/QGIS3/profiles/default/python/plugins
 
-.PHONY: setup apt venv test test-core demo lint zip deploy catalogue-sheet clean help
+.PHONY: setup apt venv test test-core demo lint zip deploy catalogue catalogue-sheet clean help
 
 help:
 	@echo "make setup     Debian packages (QGIS), venv with pinned requirements"
@@ -34,6 +34,7 @@ help:
 	@echo "make lint      ruff"
 	@echo "make zip       dist/sign_mapper.zip, installable in QGIS"
 	@echo "make deploy    link this checkout into the default QGIS profile"
+	@echo "make catalogue rebuild templates/ch from the Swiss sign definitions (deterministic)"
 
 setup: apt venv
 
@@ -72,6 +73,9 @@ demo: setup
 
 lint: venv
 	$(PY) -m ruff check .
+
+catalogue: venv
+	$(PY) -m signmapper_core.catalogue.build
 
 catalogue-sheet: venv
 	$(PY) -m signmapper_core.catalogue.sheet docs/catalogue-sheet.png
