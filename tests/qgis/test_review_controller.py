@@ -1,0 +1,393 @@
+"""The review controller on a synthetic drive: crops, decisions on disk, undo, review walk, added signs, moved drives."""
+
+import shutil
+import time
+from pathlib import Path
+
+import cv2
+import numpy as np
+import pytest
+from qgis.core import (
+    QgsCoordinateReferenceSystem,
+    QgsFeature,
+    QgsFeatureSink,
+    QgsGeometry,
+    QgsPoint,
+    QgsProject,
+    QgsSettings,
+    QgsVectorLayer,
+    QgsWkbTypes,
+)
+from qgis.PyQt.QtGui import QImage
+from qgis.PyQt.QtWidgets import QApplication
+
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.drive import open_drive
+from signmapper_core.geometry import world_to_pixel
+from signmapper_core.pipeline import PipelineConfig, detect_pair
+from signmapper_core.simulate import SimulationConfig, generate_drive
+
+SMALL = dict(width=960, height=540, fx=875.0)
+REVIEW_EVERY = 2  # every second detection gets status "review" so the walk has several stops
+
+
+@pytest.fixture(scope="module")
+def drive_dir(tmp_path_factory) -> Path:
+    out = tmp_path_factory.mktemp("review") / "drive"
+    generate_drive(out, SimulationConfig(pairs=8, seed=11, write_depth=True, **SMALL))
+    return out
+
+
+@pytest.fixture(scope="module")
+def detections(drive_dir):
+    """(pair record, Detection) of every detection of the drive, in driving order."""
+    drive, catalogue = open_drive(drive_dir), load_catalogue()
+    found = []
+    for record in drive.pairs:
+        for det in detect_pair(drive.load_left(record), drive.load_depth(record), None, drive.camera, record.pose,
+                               catalogue, PipelineConfig()):
+            found.append((record, det))
+    assert len(found) >= 4
+    return found
+
+
+def _attrs(det, record, status):
+    x, y, w, h = det.bbox
+    return {
+        "template_id": det.template_id, "name": det.name, "colour": det.colour, "shape": det.shape,
+        "width_m": det.width_m, "height_m": det.height_m, "format": det.format,
+        "detection_indicator": det.detection_indicator, "classification_indicator": det.classification_indicator,
+        "status": status, "reviewed": 0, "source": det.source, "pair_id": record.id, "time": record.time,
+        "u": det.u, "v": det.v, "bbox_x": x, "bbox_y": y, "bbox_w": w, "bbox_h": h, "depth_m": det.depth_m,
+    }
+
+
+def _write_layer(gpkg, name, spec, rows, crs):
+    from sign_mapper.algorithms.sign_fields import make_fields
+
+    fields = make_fields(spec)
+    writer = gpkg.open_layer(name, fields, QgsWkbTypes.PointZ, crs)
+    for values, position in rows:
+        feature = QgsFeature(fields)
+        for key, value in values.items():
+            if fields.indexOf(key) >= 0:  # signs name their pair best_pair_id
+                feature[key] = value.item() if isinstance(value, np.generic) else value
+        feature.setGeometry(QgsGeometry(QgsPoint(*(float(c) for c in position))))
+        writer.addFeature(feature, QgsFeatureSink.FastInsert)
+    del writer
+
+
+def build_gpkg(path: Path, drive_dir: Path, detections, recorded_drive=None, skip=()) -> Path:
+    """A GeoPackage like mapsigns writes: detections, signs fused by template, and the run table."""
+    from sign_mapper.algorithms.gpkg_output import AtomicGeoPackage
+    from sign_mapper.algorithms.sign_fields import DETECTION_LAYER_FIELDS, SIGN_FIELDS
+
+    crs = QgsCoordinateReferenceSystem("EPSG:2056")
+    sign_ids = {t: i + 1 for i, t in enumerate(sorted({d.template_id for _, d in detections}))}
+    rows = []
+    for i, (record, det) in enumerate(detections):
+        if i in skip:
+            continue
+        values = _attrs(det, record, "review" if i % REVIEW_EVERY == 0 else "accepted")
+        values["sign_id"] = sign_ids[det.template_id]
+        rows.append((values, det.position))
+    signs = []
+    for template_id, sign_id in sign_ids.items():
+        obs = [(r, d) for r, d in detections if d.template_id == template_id]
+        record, best = max(obs, key=lambda rd: rd[1].classification_indicator)
+        values = _attrs(best, record, "review")
+        values.update(sign_id=sign_id, n_obs=len(obs), vote_share=1.0, sigma_m=0.02, best_pair_id=record.id)
+        signs.append((values, np.mean([d.position for _, d in obs], axis=0)))
+    gpkg = AtomicGeoPackage(str(path))
+    _write_layer(gpkg, "detections", DETECTION_LAYER_FIELDS, rows, crs)
+    _write_layer(gpkg, "signs", SIGN_FIELDS, signs, crs)
+    gpkg.write_run_table({"drive": str(recorded_drive or drive_dir), "crs": "EPSG:2056", "near_m": 4.0,
+                          "far_m": 14.0, "colours": ["red", "blue", "yellow"]})
+    return Path(gpkg.commit())
+
+
+def wait_idle(controller, timeout_s=30.0):
+    deadline = time.monotonic() + timeout_s
+    while controller.busy() and time.monotonic() < deadline:
+        QApplication.processEvents()
+        time.sleep(0.005)
+    QApplication.processEvents()
+    assert not controller.busy(), "background work did not finish"
+
+
+def on_disk(gpkg, layer_name="detections"):
+    """Features as a fresh reader sees them in the file: fid -> attribute dict (+ geometry)."""
+    layer = QgsVectorLayer(f"{gpkg}|layername={layer_name}", "check", "ogr")
+    assert layer.isValid()
+    out = {}
+    for f in layer.getFeatures():
+        values = dict(zip(layer.fields().names(), f.attributes()))
+        p = f.geometry().constGet()
+        values["xyz"] = np.array([p.x(), p.y(), p.z()])
+        out[f.id()] = values
+    return out
+
+
+class Asker:
+    def __init__(self, answer):
+        self.answer, self.calls = answer, []
+
+    def __call__(self, old_path):
+        self.calls.append(old_path)
+        return self.answer
+
+
+@pytest.fixture
+def review(sign_mapper, qgis_iface, tmp_path):
+    """Returns open(gpkg, layer_name, ask=None) -> (controller, dock, layer); everything is torn down after."""
+    from sign_mapper.review.controller import ReviewController
+    from sign_mapper.ui.review_dock import ReviewDock
+
+    made = []
+
+    def open_layer(gpkg, layer_name="detections", ask=None, settings=None):
+        layer = QgsVectorLayer(f"{gpkg}|layername={layer_name}", layer_name, "ogr")
+        assert layer.isValid()
+        QgsProject.instance().addMapLayer(layer)
+        dock = ReviewDock()
+        dock.resize(440, 900)
+        dock.advance_box.setChecked(False)
+        controller = ReviewController(qgis_iface, dock, ask_drive_folder=ask or Asker(None),
+                                      settings=settings or QgsSettings())
+        qgis_iface.setActiveLayer(layer)
+        controller.activate()
+        made.append((controller, dock))
+        return controller, dock, layer
+
+    yield open_layer
+    for controller, dock in made:
+        controller.shutdown()
+        dock.deleteLater()
+    QgsProject.instance().removeAllMapLayers()
+    QApplication.processEvents()
+
+
+@pytest.fixture
+def gpkg(tmp_path, drive_dir, detections):
+    return build_gpkg(tmp_path / "run.gpkg", drive_dir, detections)
+
+
+def qimage_rgb(image: QImage) -> np.ndarray:
+    image = image.convertToFormat(QImage.Format_RGB888)
+    ptr = image.constBits()
+    ptr.setsize(image.bytesPerLine() * image.height())
+    rows = np.frombuffer(ptr, np.uint8).reshape(image.height(), image.bytesPerLine())
+    return rows[:, : image.width() * 3].reshape(image.height(), image.width(), 3).copy()
+
+
+def select(controller, layer, fid):
+    layer.selectByIds([fid])
+    wait_idle(controller)
+
+
+def test_selecting_a_detection_loads_its_crop_from_the_left_image(review, gpkg, drive_dir):
+    controller, dock, layer = review(gpkg)
+    feature = sorted(layer.getFeatures(), key=lambda f: f.id())[1]
+    select(controller, layer, feature.id())
+    item = dock.item
+    assert item.fid == feature.id() and item.pair_id == feature["pair_id"]
+    assert item.template_id == feature["template_id"] and item.status == feature["status"]
+    bbox = (feature["bbox_x"], feature["bbox_y"], feature["bbox_w"], feature["bbox_h"])
+    assert item.bbox == bbox
+    x, y, w, h = item.crop
+    assert x <= bbox[0] and y <= bbox[1] and x + w >= bbox[0] + bbox[2] and y + h >= bbox[1] + bbox[3]
+    left = cv2.imread(str(open_drive(drive_dir).pair(feature["pair_id"]).left_path))
+    expected = left[y:y + h, x:x + w, ::-1]
+    assert np.array_equal(qimage_rgb(item.crop_image()), expected)
+    # the view shows that crop with the feature's bbox drawn
+    rect = dock.image_view.bbox_rect()
+    assert (rect.x(), rect.y(), rect.width(), rect.height()) == bbox
+    assert dock.image_view.visible_image_rect().contains(dock.image_view.bbox_rect())
+
+
+def test_a_fused_sign_shows_its_observations(review, gpkg):
+    controller, dock, layer = review(gpkg, "signs")
+    sign = next(iter(layer.getFeatures()))
+    select(controller, layer, sign.id())
+    detections = on_disk(gpkg)
+    expected = sorted((d["time"], d["pair_id"]) for d in detections.values() if d["sign_id"] == sign["sign_id"])
+    assert [o.pair_id for o in dock.item.observations] == [p for _, p in expected]
+    assert all(o.thumbnail is not None and not o.thumbnail.isNull() for o in dock.item.observations)
+    assert dock.strip.count() == len(expected)
+    assert dock.item.pair_id == sign["best_pair_id"]
+
+
+@pytest.mark.parametrize("decision", ["accept", "reject"])
+def test_accept_and_reject_are_saved_and_undone_on_disk(review, gpkg, decision):
+    controller, dock, layer = review(gpkg)
+    fid = next(f.id() for f in layer.getFeatures() if f["status"] == "review")
+    before = on_disk(gpkg)[fid]
+    select(controller, layer, fid)
+    getattr(dock, f"{decision}Requested").emit()
+    wait_idle(controller)
+    after = on_disk(gpkg)[fid]
+    assert after["status"] == {"accept": "accepted", "reject": "rejected"}[decision]
+    assert after["reviewed"] == 1
+    assert not layer.isEditable()  # committed, not left in an edit session
+    assert dock.buttons["undo"].isEnabled()
+    dock.undoRequested.emit()
+    wait_idle(controller)
+    restored = on_disk(gpkg)[fid]
+    assert (restored["status"], restored["reviewed"]) == (before["status"], before["reviewed"])
+    assert not dock.buttons["undo"].isEnabled()
+
+
+def test_reclassify_writes_the_catalogue_entry_and_format_and_undo_restores(review, gpkg):
+    catalogue = load_catalogue()
+    controller, dock, layer = review(gpkg)
+    feature = next(f for f in layer.getFeatures() if f["template_id"] == "3.07")  # a red triangle-down? any id
+    fid, old_format = feature.id(), feature["format"]
+    before = on_disk(gpkg)[fid]
+    target = next(e for e in catalogue if e.id != feature["template_id"] and old_format in e.formats)
+    select(controller, layer, fid)
+    dock.reclassifyRequested.emit(target.id)
+    wait_idle(controller)
+    after = on_disk(gpkg)[fid]
+    assert (after["template_id"], after["name"], after["format"]) == (target.id, target.name("de"), old_format)
+    assert (after["width_m"], after["height_m"]) == pytest.approx(target.formats[old_format])
+    assert (after["status"], after["reviewed"]) == ("accepted", 1)
+    # a template without the current format gets its "normal" one
+    odd = next((e for e in catalogue if old_format not in e.formats and "normal" in e.formats), None)
+    if odd is not None:
+        dock.reclassifyRequested.emit(odd.id)
+        wait_idle(controller)
+        assert on_disk(gpkg)[fid]["format"] == "normal"
+        dock.undoRequested.emit()
+        wait_idle(controller)
+    dock.undoRequested.emit()
+    wait_idle(controller)
+    restored = on_disk(gpkg)[fid]
+    for key in ("template_id", "name", "format", "width_m", "height_m", "status", "reviewed"):
+        assert restored[key] == before[key], key
+
+
+def test_decision_in_the_users_edit_session_goes_on_the_undo_stack(review, gpkg):
+    controller, dock, layer = review(gpkg)
+    fid = next(f.id() for f in layer.getFeatures() if f["status"] == "review")
+    select(controller, layer, fid)
+    layer.startEditing()
+    depth = layer.undoStack().count()
+    dock.acceptRequested.emit()
+    wait_idle(controller)
+    assert layer.isEditable() and layer.undoStack().count() == depth + 1
+    assert layer.getFeature(fid)["status"] == "accepted"
+    assert on_disk(gpkg)[fid]["status"] == "review"  # the user saves their session
+    layer.undoStack().undo()
+    assert layer.getFeature(fid)["status"] == "review"
+    layer.rollBack()
+
+
+def test_next_needing_review_walks_exactly_the_review_features(review, gpkg):
+    controller, dock, layer = review(gpkg)
+    review_fids = {f.id() for f in layer.getFeatures() if f["status"] == "review"}
+    assert len(review_fids) >= 2
+    visited = []
+    for _ in range(len(review_fids)):
+        dock.nextReviewRequested.emit()
+        wait_idle(controller)
+        visited.append(controller.fid)
+        assert layer.selectedFeatureIds() == [controller.fid]
+    assert sorted(visited) == sorted(review_fids)
+    # next / previous walk every feature in driving order
+    dock.nextRequested.emit()
+    dock.previousRequested.emit()
+    assert controller.fid == visited[-1]
+
+
+def test_accept_then_advance_leaves_no_review_features(review, gpkg):
+    controller, dock, layer = review(gpkg)
+    dock.advance_box.setChecked(True)
+    dock.nextReviewRequested.emit()
+    for _ in range(20):
+        if controller.fid is None or layer.getFeature(controller.fid)["status"] != "review":
+            break
+        dock.acceptRequested.emit()
+        wait_idle(controller)
+    assert {d["status"] for d in on_disk(gpkg).values()} == {"accepted"}
+
+
+def test_zoom_centres_the_canvas_on_the_feature(review, gpkg, qgis_iface):
+    controller, dock, layer = review(gpkg)
+    feature = next(iter(layer.getFeatures()))
+    canvas = qgis_iface.mapCanvas()
+    canvas.setDestinationCrs(layer.crs())
+    select(controller, layer, feature.id())
+    dock.zoomRequested.emit()
+    point = feature.geometry().asPoint()
+    extent = canvas.extent()
+    assert extent.contains(point) and extent.width() < 100
+
+
+def _truth_click(drive, record, sign):
+    u, v, _ = (float(np.ravel(a)[0]) for a in world_to_pixel(drive.camera, record.pose, sign.position))
+    return u + 1.5, v - 1.0  # a person clicks near, not exactly on, the centre
+
+
+@pytest.mark.parametrize("layer_name", ["detections", "signs"])
+def test_add_missed_sign_places_it_within_10_cm_of_the_truth(review, tmp_path, drive_dir, detections, layer_name):
+    drive = open_drive(drive_dir)
+    target = next(i for i, (_, d) in enumerate(detections) if d.template_id == "3.07" and 7 < d.depth_m < 12)
+    record, missed = detections[target]
+    gpkg = build_gpkg(tmp_path / "missed.gpkg", drive_dir, detections, skip={target})
+    controller, dock, layer = review(gpkg, layer_name)
+    count = layer.featureCount()
+    truth = min(drive.truth, key=lambda s: np.linalg.norm(s.position - missed.position))
+    u, v = _truth_click(drive, record, truth)
+    dock.addSignClicked.emit(record.id, u, v)
+    wait_idle(controller)
+    features = on_disk(gpkg, layer_name)
+    assert len(features) == count + 1
+    added = features[controller.fid]
+    assert added["status"] == "manual" and added["reviewed"] == 1
+    assert added["template_id"] == truth.template_id and added["pair_id"] == record.id
+    assert np.linalg.norm(added["xyz"] - truth.position) < 0.10
+    if layer_name == "signs":
+        assert added["sign_id"] == max(f["sign_id"] for f in features.values() if f is not added) + 1
+        assert added["best_pair_id"] == record.id and added["n_obs"] == 1
+    # undo deletes it from the file again
+    dock.undoRequested.emit()
+    wait_idle(controller)
+    assert len(on_disk(gpkg, layer_name)) == count
+
+
+def test_click_on_nothing_adds_nothing(review, gpkg, detections):
+    controller, dock, layer = review(gpkg)
+    count = layer.featureCount()
+    dock.addSignClicked.emit(detections[0][0].id, 20.0, 520.0)  # road surface, bottom left
+    wait_idle(controller)
+    assert layer.featureCount() == count and "No sign found" in dock.message.text()
+
+
+def test_moved_drive_is_asked_for_once_and_remembered(review, tmp_path, drive_dir, detections):
+    moved = tmp_path / "moved-drive"
+    shutil.copytree(drive_dir, moved)
+    gone = tmp_path / "old-disk" / "drive"  # recorded, no longer there
+    gpkg = build_gpkg(tmp_path / "moved.gpkg", drive_dir, detections, recorded_drive=gone)
+    settings = QgsSettings()
+    ask = Asker(str(moved))
+    controller, dock, layer = review(gpkg, ask=ask, settings=settings)
+    assert ask.calls == [str(gone)]
+    fid = next(iter(layer.getFeatures())).id()
+    select(controller, layer, fid)
+    assert dock.item.image is not None
+    assert Path(controller.drive.root) == moved
+    controller.set_layer(None)
+    controller.set_layer(layer)
+    assert ask.calls == [str(gone)]  # not asked a second time
+    # a new session (new controller) finds the answer in the settings
+    ask_again = Asker(None)
+    review(gpkg, ask=ask_again, settings=settings)
+    assert ask_again.calls == []
+
+
+def test_non_sign_mapper_layer_shows_nothing_to_review(review, gpkg, tmp_path):
+    controller, dock, layer = review(gpkg)
+    other = QgsVectorLayer("Point?crs=EPSG:2056&field=name:string", "other", "memory")
+    controller.set_layer(other)
+    assert dock.item is None and not dock.buttons["accept"].isEnabled()
+    assert "Sign Mapper" in dock.title.text()
