@@ -84,8 +84,11 @@ def segment_candidates(seg: Segment, shape: str, catalogue, config: PipelineConf
 
 
 def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, catalogue,
-                     config: PipelineConfig) -> Optional[Detection]:
-    """Steps 4-8 for one segment; None when it is rejected (cut, no shape, no format, not planar)."""
+                     config: PipelineConfig, matched: bool = False) -> Optional[Detection]:
+    """Steps 4-8 for one segment; None when it is rejected (cut, no shape, no format, not planar).
+
+    ``matched``: the depth comes from SGBM, so planarity allows for its noise.
+    """
     if seg.touches_border:
         return None
     shape = "circle" if seg.source == "hough" else classify_shape(seg.mask, config.min_shape_fit).shape
@@ -101,8 +104,9 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     if sized is None:
         return None
     match, face, ids = sized
+    tolerance = config.sgbm_planarity_tolerance_px if matched else config.planarity_tolerance_px
     planarity = segment_planarity(camera, depth, seg.bbox, seg.mask, config.planarity_window_px,
-                                  config.planarity_tolerance_px, config.max_slant_deg, config.min_depth_coverage)
+                                  tolerance, config.max_slant_deg, config.min_depth_coverage)
     if planarity.indicator < config.detection_threshold:
         return None
     cls = classify_segment(left, face, catalogue, ids, config.scales, config.shift_fraction, config.max_template_px)
@@ -206,16 +210,17 @@ def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig,
         segments = colour_segments(left, cut, config, roi)
     with timer("segments"):
         for seg in segments:
-            det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config)
+            det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config, matched)
             if det is not None:
                 detections.append(det)
     with timer("hough"):
-        detections += _hough_detections(left, depth, search, camera, pose, catalogue, config, roi, detections)
+        detections += _hough_detections(left, depth, search, camera, pose, catalogue, config, roi, detections,
+                                        matched)
     return suppress_overlaps(detections)
 
 
 def _hough_detections(left, depth, search, camera, pose, catalogue, config: PipelineConfig, roi: Roi,
-                      found: Sequence[Detection]) -> List[Detection]:
+                      found: Sequence[Detection], matched: bool) -> List[Detection]:
     """Round signs from Hough circles whose centre is not inside an already found sign."""
     x0, y0, x1, y1 = roi
     detections: List[Detection] = []
@@ -229,7 +234,7 @@ def _hough_detections(left, depth, search, camera, pose, catalogue, config: Pipe
             cu, cv = bbox_centre(seg.bbox)
             if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken):
                 continue
-            det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config)
+            det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config, matched)
             if det is not None:
                 detections.append(det)
     return detections
