@@ -9,7 +9,7 @@ from qgis.core import QgsExpression, QgsFeatureRequest, QgsProject, QgsProviderR
 
 RUN_TABLE = "signmapper_run"  # written by algorithms/gpkg_output.py
 KINDS = ("signs", "detections")
-_DETECTION_CORE = {"template_id", "status", "reviewed", "pair_id", "u", "v", "bbox_x", "bbox_y", "bbox_w", "bbox_h"}
+_COMMON = {"template_id", "status", "reviewed", "u", "v", "bbox_x", "bbox_y", "bbox_w", "bbox_h"}
 _SIGN_ONLY = {"sign_id", "n_obs", "best_pair_id"}
 
 
@@ -36,7 +36,7 @@ def layer_kind(layer) -> Optional[str]:
     if not isinstance(layer, QgsVectorLayer) or not layer.isValid():
         return None
     names = set(layer.fields().names())
-    if not _DETECTION_CORE <= names:
+    if not _COMMON <= names or not ({"pair_id", "best_pair_id"} & names):
         return None
     path, name = gpkg_source(layer)
     if name in KINDS and has_run_table(path):

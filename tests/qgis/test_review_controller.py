@@ -1,4 +1,4 @@
-"""The review controller on a synthetic drive: crops, decisions on disk, undo, review walk, added signs, moved drives."""
+"""Review controller on a synthetic drive: crops, decisions on disk, undo, review walk, added signs, moved drives."""
 
 import shutil
 import time
@@ -320,7 +320,8 @@ def test_zoom_centres_the_canvas_on_the_feature(review, gpkg, qgis_iface):
     dock.zoomRequested.emit()
     point = feature.geometry().asPoint()
     extent = canvas.extent()
-    assert extent.contains(point) and extent.width() < 100
+    assert extent.center().distance(point) < 0.5
+    assert min(extent.width(), extent.height()) == pytest.approx(40.0, abs=1.0)  # +-20 m; the canvas sets the aspect
 
 
 def _truth_click(drive, record, sign):
@@ -344,7 +345,8 @@ def test_add_missed_sign_places_it_within_10_cm_of_the_truth(review, tmp_path, d
     assert len(features) == count + 1
     added = features[controller.fid]
     assert added["status"] == "manual" and added["reviewed"] == 1
-    assert added["template_id"] == truth.template_id and added["pair_id"] == record.id
+    assert added["template_id"] == truth.template_id
+    assert added.get("pair_id", added.get("best_pair_id")) == record.id
     assert np.linalg.norm(added["xyz"] - truth.position) < 0.10
     if layer_name == "signs":
         assert added["sign_id"] == max(f["sign_id"] for f in features.values() if f is not added) + 1
