@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import time
 from contextlib import contextmanager
+from dataclasses import replace
 from typing import List, Optional, Sequence, Tuple
 
 import numpy as np
@@ -138,12 +139,19 @@ def _iou(a, b) -> float:
     return inter / float(aw * ah + bw * bh - inter) if inter else 0.0
 
 
+def _centre_inside(a, b) -> bool:
+    x, y, w, h = b
+    cu, cv = bbox_centre(a)
+    return x <= cu < x + w and y <= cv < y + h
+
+
 def suppress_overlaps(detections: Sequence[Detection], max_iou: float = 0.3) -> List[Detection]:
-    """Keep the best of overlapping detections (one sign found twice)."""
+    """Keep the best of overlapping detections (one sign found twice, or a part of it found as a sign)."""
     ranked = sorted(detections, key=lambda d: d.detection_indicator * d.classification_indicator, reverse=True)
     kept: List[Detection] = []
     for det in ranked:
-        if all(_iou(det.bbox, k.bbox) <= max_iou for k in kept):
+        if all(_iou(det.bbox, k.bbox) <= max_iou and not _centre_inside(det.bbox, k.bbox)
+               and not _centre_inside(k.bbox, det.bbox) for k in kept):
             kept.append(det)
     return kept
 
@@ -260,7 +268,8 @@ def detect_in_window(left, depth, right, camera: Camera, pose: Pose, catalogue, 
     A sign cut by the window is rejected like one cut by the image border, so the
     window should be larger than the sign. Returns None when nothing is found.
     """
-    config = config or PipelineConfig()
+    # depth by SGBM over the whole window's rows: a clicked sign may have no colour candidate
+    config = replace(config or PipelineConfig(), sgbm_rows_only=False)
     height, width = left.shape[:2]
     cu, cv = float(click_uv[0]), float(click_uv[1])
     roi = (max(0, int(cu - half_size_px)), max(0, int(cv - half_size_px)),

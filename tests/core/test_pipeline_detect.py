@@ -109,3 +109,46 @@ def test_detect_in_window_finds_the_sign_near_a_click(catalogue):
     assert abs(det.u - (x + (w - 1) / 2)) <= 1
     # a click far from any sign finds nothing
     assert detect_in_window(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig(), (40, 40), 30) is None
+
+
+def _faded(bgr, saturation=0.3):
+    hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV).astype(np.float32)
+    hsv[..., 1] *= saturation
+    return cv2.cvtColor(hsv.astype(np.uint8), cv2.COLOR_HSV2BGR)
+
+
+def test_faded_round_sign_is_found_by_the_hough_fallback_for_review(catalogue):
+    sign = _world(7.0, 1.5, 0.4)
+    left, depth, bbox = sign_scene(catalogue, "2.30-50", "normal", sign, background_depth=30.0)
+    x, y, w, h = bbox
+    left[y : y + h, x : x + w] = _faded(left[y : y + h, x : x + w])
+    assert _detect(catalogue, left, depth, hough_enabled=False) == []  # too pale for the colour step
+    (det,) = _detect(catalogue, left, depth)
+    assert det.source == "hough" and det.status == "review"
+    assert det.template_id == "2.30-50" and det.format == "normal"
+    assert np.linalg.norm(det.position - sign) < 0.05
+
+
+def test_detect_in_window_with_depth_from_sgbm(catalogue):
+    z = 6.0
+    d = int(round(CAMERA.fx * CAMERA.baseline_m / z))
+    wide = noisy_background(CAMERA.height, CAMERA.width + d, seed=8)
+    bgr, alpha = catalogue.render("1.23", (90, 78))  # 0.9 m triangle at 6 m
+    paste(wide, bgr, alpha, 380, 120)
+    left, right = wide[:, : CAMERA.width].copy(), wide[:, d : d + CAMERA.width].copy()
+    det = detect_in_window(left, None, right, CAMERA, POSE, catalogue, None, (425, 160), 90)
+    assert det is not None and det.template_id == "1.23"
+    assert det.depth_m == pytest.approx(z, rel=0.03)
+
+
+def test_overlapping_detections_keep_the_best():
+    from signmapper_core.pipeline.detect import suppress_overlaps
+
+    def det(bbox, score):
+        return Detection("x", "x", "red", "circle", 0.6, 0.6, "normal", 1.0, score, "accepted", 0, 0, bbox, 8.0,
+                         np.zeros(3))
+
+    whole, part, other = det((100, 100, 60, 60), 0.9), det((110, 110, 20, 20), 0.6), det((300, 100, 60, 60), 0.8)
+    same = det((102, 101, 60, 58), 0.7)
+    kept = suppress_overlaps([part, same, whole, other])
+    assert kept == [whole, other]  # a part inside a sign and the same sign found twice go
