@@ -1,4 +1,4 @@
-"""The plugin object QGIS holds: registers the provider, later the review dock."""
+"""The plugin object QGIS holds: registers the provider and the review dock."""
 
 from __future__ import annotations
 
@@ -15,6 +15,7 @@ class SignMapperPlugin:
     def __init__(self, iface):
         self.iface = iface
         self.provider = None
+        self.review_ui = None
 
     def initProcessing(self):  # noqa: N802 - called by QGIS and qgis_process
         """Register the Processing provider once; a second call does nothing."""
@@ -33,8 +34,15 @@ class SignMapperPlugin:
         missing = missing_modules()
         if missing and self.iface is not None:
             self.iface.messageBar().pushMessage(LOG_TAG, install_hint(missing), Qgis.Warning, 0)
+        if self.iface is not None and self.review_ui is None:
+            from .review.plugin_ui import ReviewUi
+
+            self.review_ui = ReviewUi(self.iface)
 
     def unload(self):
+        if self.review_ui is not None:
+            self.review_ui.unload()
+            self.review_ui = None
         if self.provider is not None:
             QgsApplication.processingRegistry().removeProvider(self.provider)
             self.provider = None

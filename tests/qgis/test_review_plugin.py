@@ -1,0 +1,88 @@
+"""The review dock's wiring into QGIS: toolbar and menu action, lazy dock, clean unload."""
+
+import pytest
+from qgis.core import QgsApplication, QgsProject, QgsVectorLayer
+from qgis.PyQt.QtWidgets import QApplication
+
+
+class RecordingIface:
+    """The pytest-qgis stub iface plus the removal calls it lacks, recording what the plugin adds and removes."""
+
+    def __init__(self, iface):
+        self._iface = iface
+        self.added, self.removed = [], []
+
+    def __getattr__(self, name):
+        return getattr(self._iface, name)
+
+    def addToolBarIcon(self, action):  # noqa: N802
+        self.added.append(("toolbar", action))
+
+    def removeToolBarIcon(self, action):  # noqa: N802
+        self.removed.append(("toolbar", action))
+
+    def addPluginToMenu(self, menu, action):  # noqa: N802
+        self.added.append(("menu", menu, action))
+
+    def removePluginMenu(self, menu, action):  # noqa: N802
+        self.removed.append(("menu", menu, action))
+
+    def addDockWidget(self, area, dock):  # noqa: N802
+        self.added.append(("dock", dock))
+
+    def removeDockWidget(self, dock):  # noqa: N802
+        self.removed.append(("dock", dock))
+
+
+@pytest.fixture
+def iface(qgis_iface):
+    window = qgis_iface.mainWindow()
+    window.show()  # as in QGIS: a dock only becomes visible inside a shown main window
+    yield RecordingIface(qgis_iface)
+    window.hide()
+
+
+def test_init_gui_after_init_processing_adds_one_action_and_unload_removes_everything(sign_mapper, qgis_processing,
+                                                                                         iface):
+    plugin = sign_mapper.classFactory(iface)
+    plugin.initProcessing()
+    plugin.initGui()
+    plugin.initGui()  # a second call adds nothing
+    assert QgsApplication.processingRegistry().providerById("signmapper") is not None
+    action = plugin.review_ui.action
+    assert iface.added == [("toolbar", action), ("menu", "&Sign Mapper", action)]
+    assert action.text() == "Review signs" and action.isCheckable()
+    assert plugin.review_ui.dock is None  # built on first use
+
+    action.setChecked(True)
+    QApplication.processEvents()
+    dock = plugin.review_ui.dock
+    assert dock is not None and dock.isVisible() and ("dock", dock) in iface.added
+    assert plugin.review_ui.controller._active
+    dock.close()  # the dock's own close button unchecks the action and stops following layers
+    QApplication.processEvents()
+    assert not action.isChecked() and not plugin.review_ui.controller._active
+    action.setChecked(True)
+    QApplication.processEvents()
+    assert dock.isVisible()
+
+    plugin.unload()
+    assert ("toolbar", action) in iface.removed and ("menu", "&Sign Mapper", action) in iface.removed
+    assert ("dock", dock) in iface.removed
+    assert plugin.review_ui is None
+    assert QgsApplication.processingRegistry().providerById("signmapper") is None
+
+
+def test_visible_dock_follows_the_current_layer_and_unload_disconnects(sign_mapper, qgis_processing, iface):
+    plugin = sign_mapper.classFactory(iface)
+    plugin.initGui()
+    plugin.review_ui.action.setChecked(True)
+    QApplication.processEvents()
+    controller = plugin.review_ui.controller
+    layer = QgsVectorLayer("Point?crs=EPSG:2056&field=name:string", "other", "memory")
+    QgsProject.instance().addMapLayer(layer)
+    controller.set_layer(layer)  # what iface.currentLayerChanged calls
+    assert controller.layer is None and "Sign Mapper" in plugin.review_ui.dock.title.text()
+    plugin.unload()
+    assert not controller._active and not controller.busy()
+    QgsProject.instance().removeAllMapLayers()
