@@ -162,7 +162,7 @@ def _round_diameters(catalogue, config: PipelineConfig) -> List[float]:
     return diam or [0.4, 0.6]
 
 
-def _ensure_depth(left, depth, right, camera, config: PipelineConfig, roi: Roi) -> np.ndarray:
+def _ensure_depth(left, depth, right, camera, catalogue, config: PipelineConfig, roi: Roi) -> np.ndarray:
     """The given depth, or SGBM depth over the rows that can hold a sign in ``roi``."""
     if depth is not None:
         return np.asarray(depth, dtype=np.float32)
@@ -172,9 +172,13 @@ def _ensure_depth(left, depth, right, camera, config: PipelineConfig, roi: Roi) 
     bands = [(y0, y1)]
     if config.sgbm_rows_only:
         # Colour candidates before depth: match only their rows (the Hough fallback then sees only these).
+        # Segments that cannot be a face (or half of one, a coloured part of a panel) anywhere in the
+        # search space are left out.
         segs = colour_segments(left, None, config, roi)
-        max_px = 1.3 * 1.0 * camera.fy / config.near_m  # no sign face is taller than ~1 m
-        bands = [(s.bbox[1], s.bbox[1] + s.bbox[3]) for s in segs if s.bbox[3] <= max_px]
+        heights = [h for e in catalogue for (_, h) in e.formats.values()] or [0.4, 1.5]
+        max_px = 1.3 * max(heights) * camera.fy / config.near_m
+        min_px = 0.5 * min(heights) * camera.fy / config.far_m
+        bands = [(s.bbox[1], s.bbox[1] + s.bbox[3]) for s in segs if min_px <= s.bbox[3] <= max_px]
         bands = merge_row_bands(bands, left.shape[0], config.sgbm_row_margin_px)
     if not bands:
         return np.full(left.shape[:2], np.nan, dtype=np.float32)
@@ -205,7 +209,7 @@ def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig,
     timer = _Timer(timings)
     matched = depth is None
     with timer("depth"):
-        depth = _ensure_depth(left, depth, right, camera, config, roi)
+        depth = _ensure_depth(left, depth, right, camera, catalogue, config, roi)
     x0, y0, x1, y1 = roi
     search = search_space_mask(depth, config.near_m, config.far_m)
     if (x0, y0, x1, y1) != (0, 0, left.shape[1], left.shape[0]):
