@@ -205,8 +205,9 @@ class ReviewController(QObject):
         if item.template_id and self.catalogue is not None and item.template_id in self.catalogue:
             item.pictogram_path = str(self.catalogue.pictogram_path(item.template_id, "png"))
         if self.kind == "signs":
-            item.extra = [(k, f"{get(k):.2f}" if isinstance(get(k), float) else str(get(k)))
-                          for k in ("n_obs", "vote_share", "sigma_m") if get(k) is not None]
+            shown = (("n_obs", "observations", "{}"), ("vote_share", "vote share", "{:.2f}"),
+                     ("sigma_m", "σ", "{:.2f} m"))
+            item.extra = [(label, fmt.format(get(key))) for key, label, fmt in shown if get(key) is not None]
             item.observations = self._observations_of(get("sign_id"))
         if bbox is not None and self.drive is not None:
             item.crop = crop_rect(bbox, self.drive.image_size)
@@ -223,8 +224,8 @@ class ReviewController(QObject):
             bbox = tuple(int(_value(f, k) or 0) for k in ("bbox_x", "bbox_y", "bbox_w", "bbox_h"))
             self._observations.append((str(_value(f, "pair_id")), bbox))
             score = _value(f, "classification_indicator")
-            label = f"{_value(f, 'pair_id')}\n{_value(f, 'template_id')}" + (f" {score:.2f}" if score else "")
-            observations.append(Observation(str(_value(f, "pair_id")), label))
+            label = f"{_value(f, 'pair_id')}\n{score:.2f}" if score is not None else str(_value(f, "pair_id"))
+            observations.append(Observation(str(_value(f, "pair_id")), label, None, _value(f, "template_id") or ""))
         return observations
 
     # images (worker threads) ------------------------------------------------------------------------

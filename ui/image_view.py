@@ -31,7 +31,7 @@ class ImageView(QGraphicsView):
         self.setTransformationAnchor(QGraphicsView.AnchorUnderMouse)
         self.setDragMode(QGraphicsView.ScrollHandDrag)
         self.setBackgroundBrush(QBrush(QColor(40, 40, 40)))
-        self.setMinimumHeight(220)
+        self.setMinimumHeight(260)
         self._pixmap_item = None
         self._overlay = []
         self._crop: Optional[QRectF] = None

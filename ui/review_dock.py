@@ -87,7 +87,7 @@ class ReviewDock(QDockWidget):
 
         self.image_view = ImageView()
         self.image_view.imageClicked.connect(self._image_clicked)
-        layout.addWidget(self.image_view, 3)
+        layout.addWidget(self.image_view, 4)
 
         layout.addLayout(self._build_info())
 
@@ -97,7 +97,10 @@ class ReviewDock(QDockWidget):
         self.strip.setFlow(QListView.LeftToRight)
         self.strip.setWrapping(False)
         self.strip.setIconSize(QSize(72, 72))
-        self.strip.setFixedHeight(112)
+        self.strip.setFixedHeight(140)
+        self.strip.setGridSize(QSize(96, 120))
+        self.strip.setTextElideMode(Qt.ElideNone)
+        self.strip.setWordWrap(True)
         self.strip.setMovement(QListView.Static)
         self.strip.itemClicked.connect(lambda item: self.observationRequested.emit(self.strip.row(item)))
         strip_layout = QVBoxLayout(self.strip_box)
@@ -134,7 +137,7 @@ class ReviewDock(QDockWidget):
         form.setVerticalSpacing(1)
         self.info = {}
         for key, label in (("template", "Template"), ("status", "Status"), ("format", "Format"),
-                           ("indicators", "Indicators"), ("pair", "Pair"), ("extra", "")):
+                           ("indicators", "Indicators"), ("pair", "Pair"), ("extra", "Fusion")):
             value = QLabel("–")
             value.setTextInteractionFlags(Qt.TextSelectableByMouse)
             value.setWordWrap(True)
@@ -295,7 +298,7 @@ class ReviewDock(QDockWidget):
         for obs in observations:
             icon = QIcon(QPixmap.fromImage(obs.thumbnail)) if obs.thumbnail is not None else QIcon()
             entry = QListWidgetItem(icon, obs.label)
-            entry.setToolTip(f"pair {obs.pair_id}: {obs.label}")
+            entry.setToolTip(f"pair {obs.pair_id}: {obs.template_id} (classification indicator)")
             self.strip.addItem(entry)
 
     def show_picker(self, visible: bool) -> None:

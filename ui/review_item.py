@@ -20,6 +20,7 @@ class Observation:
     pair_id: str
     label: str
     thumbnail: Optional[QImage] = None
+    template_id: str = ""
 
 
 @dataclass

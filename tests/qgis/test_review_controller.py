@@ -393,3 +393,18 @@ def test_non_sign_mapper_layer_shows_nothing_to_review(review, gpkg, tmp_path):
     controller.set_layer(other)
     assert dock.item is None and not dock.buttons["accept"].isEnabled()
     assert "Sign Mapper" in dock.title.text()
+
+
+def test_dock_screenshot(review, gpkg, tmp_path):
+    """Renders the dock on a fused sign; REVIEW_DOCK_SCREENSHOT=docs/review-dock.png keeps the picture."""
+    import os
+
+    controller, dock, layer = review(gpkg, "signs")
+    dock.resize(460, 1000)
+    dock.show()
+    select(controller, layer, next(iter(layer.getFeatures())).id())
+    dock.show_picker(True)
+    QApplication.processEvents()
+    out = Path(os.environ.get("REVIEW_DOCK_SCREENSHOT", tmp_path / "review-dock.png"))
+    assert dock.grab().save(str(out))
+    assert 10_000 < out.stat().st_size < 600_000
