@@ -408,3 +408,21 @@ def test_dock_screenshot(review, gpkg, tmp_path):
     out = Path(os.environ.get("REVIEW_DOCK_SCREENSHOT", tmp_path / "review-dock.png"))
     assert dock.grab().save(str(out))
     assert 10_000 < out.stat().st_size < 600_000
+
+
+def test_pair_box_and_observation_strip_show_their_images(review, gpkg, drive_dir):
+    controller, dock, layer = review(gpkg, "signs")
+    drive = open_drive(drive_dir)
+    assert [dock.pair_box.itemText(i) for i in range(dock.pair_box.count())] == [r.id for r in drive.pairs]
+    dock.pairRequested.emit(drive.pairs[0].id)  # a pair no feature points to, to add a sign there
+    wait_idle(controller)
+    assert dock.pair_id == drive.pairs[0].id
+    assert dock.image_view.image().size().width() == drive.camera.width
+    sign = next(iter(layer.getFeatures()))
+    select(controller, layer, sign.id())
+    last = dock.item.observations[-1]
+    dock.strip.itemClicked.emit(dock.strip.item(len(dock.item.observations) - 1))
+    wait_idle(controller)
+    assert dock.pair_id == last.pair_id
+    expected = cv2.imread(str(drive.pair(last.pair_id).left_path))[:, :, ::-1]
+    assert np.array_equal(qimage_rgb(dock.image_view.image()), expected)

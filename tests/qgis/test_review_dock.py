@@ -157,3 +157,22 @@ def test_wheel_zooms(dock):
                         Qt.NoButton, Qt.NoModifier, Qt.NoScrollPhase, False)
     QApplication.sendEvent(view.viewport(), event)
     assert view.transform().m11() == pytest.approx(before * 1.25 ** 2)
+
+
+def test_pair_box_and_observation_clicks_emit_requests(dock, ui):
+    _, review_item, _, _ = ui
+    pairs, observations = [], []
+    dock.pairRequested.connect(pairs.append)
+    dock.observationRequested.connect(observations.append)
+    dock.set_pairs(["000003", "000004", "000005"])
+    assert dock.pair_box.currentText() == "000004"  # the shown item's pair
+    dock.pair_box.activated.emit(2)
+    assert pairs == ["000005"]
+    dock.set_observations([review_item.Observation("000003", "000003\n0.81"),
+                           review_item.Observation("000004", "000004\n0.90")])
+    assert dock.strip_box.isVisibleTo(dock) and dock.strip.count() == 2
+    rect = dock.strip.visualItemRect(dock.strip.item(1))
+    QTest.mouseClick(dock.strip.viewport(), Qt.LeftButton, Qt.NoModifier, rect.center())
+    assert observations == [1]
+    dock.set_observations(None)  # a detection has no strip
+    assert not dock.strip_box.isVisibleTo(dock)
