@@ -118,18 +118,3 @@ def segments_from_mask(
         out.append(Segment(colour, (x, y, w, h), filled, contour, area, touches, source, solidity))
     return out
 
-
-def segment_from_window_mask(mask: np.ndarray, colour: str, offset: Tuple[int, int], image_shape, source: str,
-                             border_margin_px: int = 2) -> Optional[Segment]:
-    """The largest segment of a window-sized mask, in full-image coordinates."""
-    segs = segments_from_mask(mask, colour, min_area_px=1, min_bbox_px=1, border_margin_px=-1, source=source)
-    if not segs:
-        return None
-    seg = max(segs, key=lambda s: s.area_px)
-    ox, oy = offset
-    x, y, w, h = seg.bbox
-    x, y = x + ox, y + oy
-    height, width = image_shape[:2]
-    m = border_margin_px
-    touches = x <= m or y <= m or x + w >= width - m or y + h >= height - m
-    return Segment(colour, (x, y, w, h), seg.mask, seg.contour + np.array([ox, oy]), seg.area_px, touches, source)

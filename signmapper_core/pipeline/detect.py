@@ -38,8 +38,7 @@ def _entry_name(entry) -> str:
 
 def _shift_segment(seg: Segment, dx: int, dy: int) -> Segment:
     x, y, w, h = seg.bbox
-    return Segment(seg.colour, (x + dx, y + dy, w, h), seg.mask, seg.contour + np.array([dx, dy]),
-                   seg.area_px, seg.touches_border, seg.source)
+    return replace(seg, bbox=(x + dx, y + dy, w, h), contour=seg.contour + np.array([dx, dy]))
 
 
 def colour_segments(left: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig, roi: Roi) -> List[Segment]:
