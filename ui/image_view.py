@@ -73,6 +73,11 @@ class ImageView(QGraphicsView):
             self._overlay.append(self.scene().addLine(cx - r, cy, cx + r, cy, cross))
             self._overlay.append(self.scene().addLine(cx, cy - r, cx, cy + r, cross))
 
+    def set_picking(self, picking: bool) -> None:
+        """While picking a point the cursor is a cross and dragging does not pan."""
+        self.setDragMode(QGraphicsView.NoDrag if picking else QGraphicsView.ScrollHandDrag)
+        self.viewport().setCursor(Qt.CrossCursor if picking else Qt.OpenHandCursor)
+
     def has_image(self) -> bool:
         return self._pixmap_item is not None
 

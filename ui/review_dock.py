@@ -169,6 +169,7 @@ class ReviewDock(QDockWidget):
         add = self._button("add_sign")
         add.setCheckable(True)
         add.setToolTip("Then click the centre of a missed sign in the image (M)")
+        add.toggled.connect(self.image_view.set_picking)
         grid.addWidget(add, 2, 0, 1, 2)
         self.pair_box = QComboBox()
         self.pair_box.setToolTip("Show another pair of the drive, e.g. to add a sign no detection points to")
