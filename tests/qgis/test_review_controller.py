@@ -426,3 +426,18 @@ def test_pair_box_and_observation_strip_show_their_images(review, gpkg, drive_di
     assert dock.pair_id == last.pair_id
     expected = cv2.imread(str(drive.pair(last.pair_id).left_path))[:, :, ::-1]
     assert np.array_equal(qimage_rgb(dock.image_view.image()), expected)
+
+
+def test_mapsigns_output_is_reviewable(review, registered_plugin, drive_dir, tmp_path):
+    """The contract with the Processing algorithm: its GeoPackage is recognised and its drive found."""
+    import processing
+
+    out = processing.run("signmapper:mapsigns", {"DRIVE": str(drive_dir), "OUTPUT": str(tmp_path / "m.gpkg")})
+    controller, dock, layer = review(out["OUTPUT"])
+    assert controller.kind == "detections" and Path(controller.drive.root) == drive_dir.resolve()
+    fid = next(iter(layer.getFeatures())).id()
+    select(controller, layer, fid)
+    assert dock.item.image is not None
+    dock.rejectRequested.emit()
+    wait_idle(controller)
+    assert on_disk(out["OUTPUT"])[fid]["status"] == "rejected"
