@@ -33,6 +33,12 @@ class Segment:
     touches_border: bool
     source: str = "colour"
     solidity: float = 1.0  # filled outline area / convex hull area, before any hull filling
+    depth_mask: Optional[np.ndarray] = None  # pixels for depth and planarity if not all of ``mask``
+
+    @property
+    def surface_mask(self) -> np.ndarray:
+        """The pixels known to lie on the face: ``depth_mask`` if set, else ``mask``."""
+        return self.mask if self.depth_mask is None else self.depth_mask
 
     @property
     def centroid(self) -> Tuple[float, float]:
@@ -118,3 +124,51 @@ def segments_from_mask(
         out.append(Segment(colour, (x, y, w, h), filled, contour, area, touches, source, solidity))
     return out
 
+
+
+def box_gap(a, b) -> float:
+    """Pixels between two boxes (x, y, w, h); 0 when they touch or overlap."""
+    ax, ay, aw, ah = a
+    bx, by, bw, bh = b
+    dx = max(0, max(ax, bx) - min(ax + aw, bx + bw))
+    dy = max(0, max(ay, by) - min(ay + ah, by + bh))
+    return float(max(dx, dy))
+
+
+def merge_segments(a: Segment, b: Segment) -> Segment:
+    """One segment from two pieces of the same face (a pole or branch cut it): the hull of both.
+
+    Depth and planarity are taken on the pieces only, not on the occluder between them.
+    """
+    points = np.vstack([a.contour.reshape(-1, 2), b.contour.reshape(-1, 2)])
+    hull = cv2.convexHull(points)
+    x, y, w, h = cv2.boundingRect(hull)
+    mask = np.zeros((h, w), np.uint8)
+    cv2.drawContours(mask, [hull], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
+    pieces = np.zeros((h, w), np.uint8)
+    for seg in (a, b):
+        sx, sy, sw, sh = seg.bbox
+        pieces[sy - y : sy - y + sh, sx - x : sx - x + sw] |= seg.surface_mask
+    return Segment(a.colour, (x, y, w, h), mask, hull, int(np.count_nonzero(mask)),
+                   a.touches_border or b.touches_border, a.source, 1.0, pieces)
+
+
+def merge_candidates(segments: Sequence[Segment], max_gap_fraction: float = 0.35) -> List[Segment]:
+    """Merged segments of same-coloured pieces close to each other, for faces split by an occluder.
+
+    Two pieces qualify when the gap between their boxes is at most ``max_gap_fraction``
+    of the merged box's size and the merged box is not elongated beyond 2:1.
+    """
+    out = []
+    for i, a in enumerate(segments):
+        for b in segments[i + 1 :]:
+            if a.colour != b.colour:
+                continue
+            x0, y0 = min(a.bbox[0], b.bbox[0]), min(a.bbox[1], b.bbox[1])
+            x1 = max(a.bbox[0] + a.bbox[2], b.bbox[0] + b.bbox[2])
+            y1 = max(a.bbox[1] + a.bbox[3], b.bbox[1] + b.bbox[3])
+            w, h = x1 - x0, y1 - y0
+            if box_gap(a.bbox, b.bbox) > max_gap_fraction * max(w, h) or max(w, h) > 2 * min(w, h):
+                continue
+            out.append(merge_segments(a, b))
+    return out

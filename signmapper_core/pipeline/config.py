@@ -41,6 +41,7 @@ class PipelineConfig:
     search_close_px: int = 15  # holes of a given depth's search space this small are closed before it cuts colours
     search_grow_px: int = 31  # with SGBM depth the search space is grown by this much instead
     border_margin_px: int = 2  # segments this close to the image border are cut and rejected
+    max_merge_pieces: int = 40  # rejected segments tried in pairs (faces split by an occluder)
 
     # shape
     min_shape_fit: float = 0.72  # IoU with the best ideal outline

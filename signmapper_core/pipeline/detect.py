@@ -16,7 +16,7 @@ import numpy as np
 
 from ..geometry import Camera, Pose
 from .classify import classify_segment
-from .colour import Segment, colour_masks, segments_from_mask
+from .colour import Segment, colour_masks, merge_candidates, segments_from_mask
 from .config import PipelineConfig
 from .depth import merge_row_bands, sgbm_depth
 from .detection import Detection
@@ -97,7 +97,7 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     candidates = segment_candidates(seg, shape, catalogue, config)
     if not candidates:
         return None
-    size = measure_segment(camera, depth, seg.bbox, seg.mask, config.near_m, config.far_m)
+    size = measure_segment(camera, depth, seg.bbox, seg.surface_mask, config.near_m, config.far_m)
     if size is None:
         return None
     sized = size_to_format(seg, candidates, size.depth_m, camera, catalogue, config)
@@ -105,7 +105,7 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
         return None
     match, face, ids = sized
     tolerance = config.sgbm_planarity_tolerance_px if matched else config.planarity_tolerance_px
-    planarity = segment_planarity(camera, depth, seg.bbox, seg.mask, config.planarity_window_px,
+    planarity = segment_planarity(camera, depth, seg.bbox, seg.surface_mask, config.planarity_window_px,
                                   tolerance, config.max_slant_deg, config.min_depth_coverage)
     if planarity.indicator < config.detection_threshold:
         return None
@@ -220,7 +220,15 @@ def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig,
         cut = grow(search, config.search_grow_px) if matched else close_holes(search, config.search_close_px)
         segments = colour_segments(left, cut, config, roi)
     with timer("segments"):
+        rejected = []
         for seg in segments:
+            det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config, matched)
+            if det is not None:
+                detections.append(det)
+            elif not seg.touches_border:
+                rejected.append(seg)
+        # faces split by a pole or branch: pieces that fail alone are tried together
+        for seg in merge_candidates(rejected[: config.max_merge_pieces]):
             det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config, matched)
             if det is not None:
                 detections.append(det)

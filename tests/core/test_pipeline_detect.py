@@ -152,3 +152,14 @@ def test_overlapping_detections_keep_the_best():
     same = det((102, 101, 60, 58), 0.7)
     kept = suppress_overlaps([part, same, whole, other])
     assert kept == [whole, other]  # a part inside a sign and the same sign found twice go
+
+
+def test_sign_split_by_a_pole_in_front_is_found(catalogue):
+    sign = _world(8.0, 0.5, 0.3)
+    left, depth, (x, y, w, h) = sign_scene(catalogue, "2.32", "normal", sign, background_depth=30.0)
+    pole = slice(x + w // 2 - 6, x + w // 2 + 6)  # a 0.16 m pole 2 m in front of the sign's middle
+    left[:, pole] = (110, 110, 110)
+    depth[:, pole] = 6.0
+    (det,) = _detect(catalogue, left, depth, hough_enabled=False)
+    assert det.template_id == "2.32" and det.format == "normal"
+    assert np.linalg.norm(det.position - sign) < 0.05
