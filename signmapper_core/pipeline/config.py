@@ -73,7 +73,7 @@ class PipelineConfig:
     hough_scale: float = 0.5
     hough_circularity: float = 0.85  # param2 of HOUGH_GRADIENT_ALT
     hough_edge_threshold: float = 150.0  # param1 of HOUGH_GRADIENT_ALT
-    hough_max_status: str = "review"  # Hough finds are never accepted without a look
+    hough_max_status: str = "review"  # status cap of Hough finds whose ring is not in full colour
     hough_max_diameter_m: float = 0.6  # larger round formats only by colour: the radius range sets the cost
 
     def __post_init__(self):

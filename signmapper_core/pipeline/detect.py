@@ -21,7 +21,7 @@ from .config import PipelineConfig
 from .depth import merge_row_bands, sgbm_depth
 from .detection import Detection
 from .face_extent import FULL, candidate_entries, face_bbox
-from .hough import hough_segments, radius_range_px
+from .hough import hough_segments, radius_range_px, ring_colour_share
 from .locate import bbox_centre, locate
 from .planarity import segment_planarity
 from .search_space import close_holes, grow, search_space_mask
@@ -113,8 +113,13 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     if cls.template_id is None or cls.score < config.min_classification_score:
         return None
     status = "accepted" if cls.score >= config.classification_threshold else "review"
-    if seg.source == "hough":
-        status = config.hough_max_status if status == "accepted" else status
+    if seg.source == "hough" and status == "accepted":
+        # a circle with a full-colour ring is a colour find the colour step lost (an attachment
+        # spoiled its outline); faded or white ones stay for review
+        x, y, w, h = seg.bbox
+        ranges = config.hsv_ranges.get(seg.colour)
+        strong = ranges is not None and ring_colour_share(left[y : y + h, x : x + w], seg.mask, ranges) >= 0.5
+        status = status if strong else config.hough_max_status
     u, v = bbox_centre(face)
     z = planarity.depth_at(camera, u, v)
     if not (np.isfinite(z) and config.near_m * 0.8 <= z <= config.far_m * 1.2):

@@ -15,7 +15,7 @@ from typing import List, Optional, Sequence
 import cv2
 import numpy as np
 
-from .colour import Segment
+from .colour import Segment, hsv_mask
 
 # Hue bins (OpenCV 0-179) for naming the weak colour of a Hough circle's ring.
 WEAK_HUES = {"red": ((0, 10), (165, 179)), "yellow": ((16, 35),), "blue": ((95, 135),)}
@@ -57,9 +57,22 @@ def find_circles(
     return circles.reshape(-1, 3) / scale
 
 
+def outer_ring(mask: np.ndarray) -> np.ndarray:
+    """The outer tenth of a disc mask, where a round sign carries its colour."""
+    return cv2.subtract(mask, cv2.erode(mask, np.ones((3, 3), np.uint8), iterations=max(1, mask.shape[0] // 10)))
+
+
+def ring_colour_share(bgr: np.ndarray, mask: np.ndarray, ranges) -> float:
+    """Share of the outer ring's pixels inside the colour step's HSV ranges (a full-colour ring: ~1)."""
+    ring = outer_ring(mask) > 0
+    if not ring.any():
+        return 0.0
+    return float(np.count_nonzero(hsv_mask(cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV), ranges)[ring])) / ring.sum()
+
+
 def weak_colour(bgr: np.ndarray, mask: np.ndarray, min_saturation: int = 40, min_share: float = 0.25) -> str:
     """Dominant weak colour of the outer ring of a disc mask: red/blue/yellow, else white."""
-    ring = cv2.subtract(mask, cv2.erode(mask, np.ones((3, 3), np.uint8), iterations=max(1, mask.shape[0] // 10)))
+    ring = outer_ring(mask)
     hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
     pixels = hsv[ring > 0]
     if pixels.size == 0:

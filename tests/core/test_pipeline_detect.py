@@ -163,3 +163,16 @@ def test_sign_split_by_a_pole_in_front_is_found(catalogue):
     (det,) = _detect(catalogue, left, depth, hough_enabled=False)
     assert det.template_id == "2.32" and det.format == "normal"
     assert np.linalg.norm(det.position - sign) < 0.05
+
+
+def test_red_ring_with_a_brown_attachment_is_still_accepted(catalogue):
+    # a brown window frame touching the ring merges into the red segment and spoils its box;
+    # the Hough circle recovers the face, and its full-colour ring lets it be accepted
+    sign = _world(7.0, 1.5, 0.4)
+    left, depth, (x, y, w, h) = sign_scene(catalogue, "2.30-50", "normal", sign, background_depth=30.0)
+    frame = (slice(y - 40, y + h + 40), slice(x + w - 2, x + w + 4))
+    left[frame] = (40, 60, 120)
+    depth[frame] = 7.0
+    (det,) = _detect(catalogue, left, depth)
+    assert det.template_id == "2.30-50" and det.status == "accepted" and det.format == "normal"
+    assert np.linalg.norm(det.position - sign) < 0.05
