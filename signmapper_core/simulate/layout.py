@@ -376,24 +376,34 @@ class _Builder:
         pole_base = st.point(s, l_c, ground) - n_h * 0.04
         self.crossed(pole_base, 0.06, top + 0.1, None, None, s, (140, 145, 145))
         if self.realism["occlusion"] and rng.random() < 0.2:
-            self.occluder(s, l_c, side, ground + lower + h_m / 2, rng)
+            self.occluder(s, l_c, max(w_m, h_m), ground + lower + h_m / 2, rng)
 
-    def occluder(self, s, l_sign, side, h_sign, rng):
-        """A branch or a pole between the sign and the approaching vehicle, covering part of it."""
+    def occluder(self, s, l_sign, size_m, h_sign, rng):
+        """A branch or a pole between the sign and the approaching vehicle, covering part of it.
+
+        Placed next to the line of sight from about 9 m, offset so that it hides
+        roughly a quarter to a half of the face rather than all of it.
+        """
         d_before = rng.uniform(1.0, 2.5)
         l_cam = CARRIAGEWAY[1] / 2
         frac = d_before / 9.0  # where the line of sight from ~9 m crosses
-        l_o = l_sign + (l_cam - l_sign) * frac + rng.uniform(-0.25, 0.25)
+        l_sight = l_sign + (l_cam - l_sign) * frac
+        h_sight = h_sign + (2.4 - h_sign) * frac
+        apparent = size_m * (1 - frac)  # the face's size where the occluder stands
         if rng.random() < 0.5:
+            l_o = l_sight + rng.choice([-1.0, 1.0]) * rng.uniform(0.1, 0.35) * apparent
             base = self.street.point(s - d_before, l_o, KERB_H)
             self.crossed(base, 0.1, h_sign + 2.0, None, None, s - d_before, (95, 100, 100))
         else:
             key, trng = self.key("branch")
-            n = 40
+            n = 64
             dark = bool(rng.random() < 0.5)
+            size = rng.uniform(0.5, 0.8)
             src = TextureSource(key, n, n, lambda: tx.foliage(trng, n, n, dark=dark))
-            centre = self.street.point(s - d_before, l_o, h_sign + rng.uniform(-0.3, 0.5))
-            self.crossed(centre - UP * 0.6, 1.2, 1.2, src, src, s - d_before)
+            ang = rng.uniform(0, 2 * np.pi)
+            shift = (size / 2 + apparent / 2) * rng.uniform(0.55, 0.8)
+            centre = self.street.point(s - d_before, l_sight + shift * np.cos(ang), h_sight + shift * np.sin(ang))
+            self.crossed(centre - UP * size / 2, size, size, src, src, s - d_before)
 
     # --- distractors ----------------------------------------------------------------------
 
@@ -434,7 +444,7 @@ class _Builder:
     def distractors(self, s_lo, s_hi, density, rng, sign_spots):
         """Colour distractors spread along the drive: cars, cones, shop signs, patches, sign backs."""
         n = rng.poisson(density * (s_hi - s_lo) / 100.0)
-        kinds = ["car", "car", "oncoming", "cones", "shop", "patch", "back"]
+        kinds = ["car", "car", "oncoming", "cones", "shop", "patch", "logo", "back"]
         spots = np.sort(rng.uniform(s_lo, s_hi, n))
         for s in spots:
             what = kinds[int(rng.integers(len(kinds)))]
@@ -450,7 +460,7 @@ class _Builder:
                     key, trng = self.key("cone")
                     src = TextureSource(key, 30, 50, lambda trng=trng: tx.cone(trng, 50))
                     self.crossed(base, 0.45, 0.75, src, src, s + 1.2 * k)
-            elif what in ("shop", "patch"):
+            elif what in ("shop", "patch", "logo"):
                 self.facade_distractor(s, colour, what, rng)
             elif all(abs(s - x) > 3 for x in sign_spots):
                 self.sign_pole(s, self.kinds_of(colour), rng, side=-1, away=True)
@@ -464,15 +474,22 @@ class _Builder:
         if span is None:
             return
         s0, _s1, l_f, side, bottom, _h = span
-        length = rng.uniform(1.5, 3.0) if what == "shop" else rng.uniform(1.0, 2.5)
-        height = rng.uniform(0.5, 0.9) if what == "shop" else rng.uniform(1.2, 2.5)
-        lift = rng.uniform(2.6, 3.6) if what == "shop" else rng.uniform(0.0, 1.5)
+        if what == "logo":  # sign-like emblem of a shop, in sign colours and shapes, any size
+            length = height = rng.uniform(0.25, 1.1)
+            lift = rng.uniform(1.8, 3.4)
+        else:
+            length = rng.uniform(1.5, 3.0) if what == "shop" else rng.uniform(1.0, 2.5)
+            height = rng.uniform(0.5, 0.9) if what == "shop" else rng.uniform(1.2, 2.5)
+            lift = rng.uniform(2.6, 3.6) if what == "shop" else rng.uniform(0.0, 1.5)
         lat = l_f - side * 0.05
         a, b = self.street.point(s, lat), self.street.point(s + length, lat)
         left, right = (b, a) if side > 0 else (a, b)
         key, trng = self.key(what)
         w, h = int(length / 0.02), int(height / 0.02)
-        if what == "shop":
+        if what == "logo":
+            src = TextureSource(key, w, w, lambda: tx.emblem(trng, w, colour))
+            h = w
+        elif what == "shop":
             src = TextureSource(key, w, h, lambda: _fit(
                 Texture(tx.shop_sign(trng, length, height, 0.02, colour)), w, h))
         else:

@@ -143,6 +143,29 @@ def shop_sign(rng, width_m, height_m, px_m, colour_name: str) -> np.ndarray:
     return img
 
 
+def emblem(rng, n: int, colour_name: str) -> Texture:
+    """Round, triangular or square shop emblem in a sign colour with white marks: a shape distractor."""
+    img = tint(SIGNAL_COLOURS[colour_name], grain(rng, n, n, ((1.0, 0.3), (4.0, 0.3))), 8.0)
+    alpha = np.zeros((n, n), np.uint8)
+    shape = int(rng.integers(3))
+    c = n // 2
+    if shape == 0:
+        cv2.circle(alpha, (c, c), c - 1, 255, -1, cv2.LINE_AA)
+    elif shape == 1:
+        tri = np.array([[c, 1], [n - 2, n - 2], [1, n - 2]], np.int32)
+        cv2.fillConvexPoly(alpha, tri, 255, cv2.LINE_AA)
+    else:
+        alpha[:] = 255
+    white = (240, 240, 240)
+    for _ in range(int(rng.integers(1, 4))):
+        x, y = (int(v) for v in rng.uniform(0.3, 0.6, 2) * n)
+        cv2.rectangle(img, (x, y), (x + int(rng.uniform(0.1, 0.3) * n), y + int(rng.uniform(0.05, 0.2) * n)),
+                      white, -1)
+    if rng.random() < 0.5:
+        cv2.circle(img, (c, c), int(0.3 * n), white, max(1, n // 14), cv2.LINE_AA)
+    return Texture(img, alpha)
+
+
 def car_side(rng, length_m, height_m, px_m, body_bgr) -> Texture:
     """Side of a car: body colour, windows, wheels; alpha cuts the rounded outline."""
     w, h = max(8, int(length_m / px_m)), max(6, int(height_m / px_m))
