@@ -7,6 +7,7 @@ stereo geometry is kept; sensor noise is independent per image.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import cv2
@@ -25,6 +26,7 @@ class PairEffects:
     noise_sigma: float
     glare: tuple[float, float, float] | None   # (u, v, strength)
     noise_seed: int
+    vignette: bool = True
 
 
 def draw_effects(rng: np.random.Generator, width: int, height: int, switches: dict) -> PairEffects:
@@ -39,7 +41,7 @@ def draw_effects(rng: np.random.Generator, width: int, height: int, switches: di
     if switches.get("glare", True) and rng.random() < 0.12:
         glare = (float(rng.uniform(0.1, 0.9) * width), float(rng.uniform(-0.2, 0.25) * height),
                  float(rng.uniform(0.4, 0.9)))
-    return PairEffects(gain, wb, right_gain, blur, angle, sigma, glare, int(rng.integers(2**63)))
+    return PairEffects(gain, wb, right_gain, blur, angle, sigma, glare, int(rng.integers(2**63)), exposure)
 
 
 def _motion_kernel(length: float, angle_deg: float) -> np.ndarray:
@@ -65,6 +67,15 @@ def _glare_layer(width: int, height: int, glare) -> np.ndarray:
     return layer[..., None] * np.array([0.85, 0.95, 1.0], np.float32)
 
 
+@functools.lru_cache(maxsize=4)
+def _vignette(width: int, height: int) -> np.ndarray:
+    """Mild lens fall-off towards the corners (about 20 % darker there)."""
+    xx = (np.arange(width, dtype=np.float32) - (width - 1) / 2) / (width / 2)
+    yy = (np.arange(height, dtype=np.float32) - (height - 1) / 2) / (width / 2)
+    r2 = yy[:, None] ** 2 + xx[None, :] ** 2
+    return (1.0 - 0.2 * r2 / r2.max()).astype(np.float32)
+
+
 def apply_effects(image: np.ndarray, fx: PairEffects, right: bool) -> np.ndarray:
     """Recorded image from a rendered one (BGR uint8 in, BGR uint8 out)."""
     img = image.astype(np.float32)
@@ -72,7 +83,11 @@ def apply_effects(image: np.ndarray, fx: PairEffects, right: bool) -> np.ndarray
         img = cv2.filter2D(img, -1, _motion_kernel(fx.blur_px, fx.blur_angle_deg))
     gains = np.array(fx.white_balance, np.float32) * fx.gain * (fx.right_gain if right else 1.0)
     img *= gains
+    if fx.vignette:
+        img *= _vignette(img.shape[1], img.shape[0])[..., None]
     if fx.glare is not None:
+        veil = 0.18 * fx.glare[2]  # scattered light lowers contrast over the whole frame
+        img = img * (1.0 - veil) + 255.0 * veil
         img += _glare_layer(img.shape[1], img.shape[0], fx.glare)
     if fx.noise_sigma > 0:
         # OpenCV's generator is fast and thread-local: seeding it right before use is deterministic
