@@ -2,12 +2,10 @@
 
 Everything in the scene is laid out in street coordinates (s along the
 centreline, l to the right of it, h above the road), so this module is the only
-place that knows how the street bends. Lateral cross-sections are level.
+place that knows how the street bends. Lateral cross-sections are level; the cross-section itself is in ``layout``.
 """
 
 from __future__ import annotations
-
-from dataclasses import dataclass
 
 import numpy as np
 
@@ -15,30 +13,10 @@ STEP_M = 0.25  # tabulation step of the centreline
 MARGIN_M = 60.0
 
 
-@dataclass(frozen=True)
-class StreetProfile:
-    """Cross-section of the street (metres, l measured from the centreline, right positive)."""
-
-    lane_width: float = 3.3
-    kerb_height: float = 0.12
-    sidewalk_right: float = 3.0
-    sidewalk_left: float = 2.6
-
-    @property
-    def half_width(self) -> float:
-        return self.lane_width
-
-    @property
-    def right_lane_centre(self) -> float:
-        return self.lane_width / 2.0
-
-
 class Street:
     """Tabulated centreline; ``frame(s)`` gives position, forward and right unit vectors."""
 
-    def __init__(self, length_m: float, start: tuple[float, float, float], rng: np.random.Generator,
-                 profile: StreetProfile | None = None):
-        self.profile = profile or StreetProfile()
+    def __init__(self, length_m: float, start: tuple[float, float, float], rng: np.random.Generator):
         self.length = float(length_m)
         # tabulated with margins so objects laid out a little beyond either end still have a place
         n = int(np.ceil((self.length + 2 * MARGIN_M) / STEP_M)) + 2
