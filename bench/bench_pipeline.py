@@ -79,7 +79,7 @@ def main() -> int:
     if args.mode == "sgbm-full":
         config = replace(config, sgbm_rows_only=False)
     steps, total = defaultdict(float), 0.0
-    n_expected = n_found = n_right = n_false = n_det = 0
+    n_expected = n_found = n_right = n_false = n_det = n_accepted_right = 0
     errors = []
     for record in drive.pairs:
         left = drive.load_left(record)
@@ -109,6 +109,7 @@ def main() -> int:
             det = detections[best]
             n_found += 1
             n_right += det.template_id == sign.template_id
+            n_accepted_right += det.template_id == sign.template_id and det.status == "accepted"
             errors.append(float(np.linalg.norm(det.position - sign.position)))
             if args.verbose:
                 print(f"  {record.id}: {sign.template_id} -> {det.template_id} ({det.status}, "
@@ -126,8 +127,8 @@ def main() -> int:
     print(f"drive {folder} ({n} pairs, {drive.camera.width}x{drive.camera.height}), mode {args.mode}")
     print(f"time per pair {total / n:.3f} s ({n / total:.1f} pairs/s); per step: "
           + ", ".join(f"{k} {v / n:.3f}" for k, v in steps.items()))
-    print(f"expected sign views {n_expected}, found {n_found}, right id {n_right}, "
-          f"detections {n_det}, unmatched {n_false}")
+    print(f"expected sign views {n_expected}, found {n_found}, right id {n_right} "
+          f"(accepted {n_accepted_right}), detections {n_det}, unmatched {n_false}")
     if errors:
         print(f"position error median {np.median(errors):.3f} m, 90% {np.percentile(errors, 90):.3f} m")
     return 0

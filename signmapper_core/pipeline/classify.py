@@ -146,3 +146,24 @@ def classify_segment(
     centre = ((region.shape[1] - tw) / 2.0, (region.shape[0] - th) / 2.0)
     shift = (int(round((loc[0] - centre[0]) / factor)), int(round((loc[1] - centre[1]) / factor)))
     return ClassificationResult(best_id, float(np.clip(score, 0.0, 1.0)), scores, scale, shift)
+
+
+def surround_score(image: np.ndarray, face, catalogue, template_id: str, extent) -> float:
+    """NCC of a template's face outside its coloured part, at the face box without search.
+
+    Tells a zone panel (white field and text around the red ring) from a round
+    sign on a wall: only the pixels outside the (slightly grown) colour part count.
+    """
+    x, y, w, h = face
+    height, width = image.shape[:2]
+    if w < 4 or h < 4 or x < 0 or y < 0 or x + w > width or y + h > height:
+        return -1.0
+    tmpl, alpha = template_at(catalogue, template_id, w, h)
+    fx0, fy0, fx1, fy1 = extent
+    grow = 0.04
+    alpha[max(0, int((fy0 - grow) * h)) : int(np.ceil((fy1 + grow) * h)),
+          max(0, int((fx0 - grow) * w)) : int(np.ceil((fx1 + grow) * w))] = 0
+    if np.count_nonzero(alpha) < 16:
+        return -1.0
+    score, _ = match_score(image[y : y + h, x : x + w], tmpl, alpha)
+    return score

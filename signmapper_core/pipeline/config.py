@@ -63,6 +63,7 @@ class PipelineConfig:
     min_depth_coverage: float = 0.3  # share of a segment's pixels needing a valid depth
 
     # classification
+    min_surround_score: float = 0.5  # a panel reading needs its part outside the colour segment to match
     min_classification_score: float = 0.35  # below this no template resembles the segment: not reported
     scales: Tuple[float, ...] = (0.92, 1.0, 1.08)
     shift_fraction: float = 0.08  # shift search, as a fraction of the segment size

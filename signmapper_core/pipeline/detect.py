@@ -15,7 +15,7 @@ from typing import List, Optional, Sequence, Tuple
 import numpy as np
 
 from ..geometry import Camera, Pose
-from .classify import classify_segment
+from .classify import classify_segment, surround_score
 from .colour import Segment, colour_masks, merge_candidates, segments_from_mask
 from .config import PipelineConfig
 from .depth import merge_row_bands, sgbm_depth
@@ -55,23 +55,26 @@ def colour_segments(left: np.ndarray, search: Optional[np.ndarray], config: Pipe
 
 
 def size_to_format(seg: Segment, candidates, depth_m: float, camera: Camera, catalogue, config: PipelineConfig):
-    """(SizeMatch, face bbox, candidate ids) of the best-fitting standard format, or None.
+    """[(SizeMatch, face bbox, candidate ids, extent)] of every face reading whose size fits a format.
 
     ``candidates``: (entry, colour extent) pairs, grouped by extent so that a
-    coloured part inside a white rim or panel is sized as the whole face.
+    coloured part inside a white rim or panel is sized as the whole face. Each
+    group is a different reading of where the face is; classification decides.
     """
     groups = {}
     for entry, ext in candidates:
         groups.setdefault(tuple(round(v, 2) for v in ext), (ext, []))[1].append(entry)
-    best = None
+    fits = []
     for ext, group in groups.values():
         face = face_bbox(seg.bbox, ext)
         width_m, height_m = metric_size(camera, face, depth_m)
         match = round_to_format(catalogue, group, width_m, height_m, config.size_tolerance)
-        if match is not None and (best is None or match.rel_error < best[0].rel_error):
+        if match is not None:
             allowed = {e.id for e in group}
-            best = (match, face, [t for t in match.template_ids if t in allowed])
-    return best if best is not None and best[2] else None
+            ids = [t for t in match.template_ids if t in allowed]
+            if ids:
+                fits.append((match, face, ids, ext))
+    return fits
 
 
 def segment_candidates(seg: Segment, shape: str, catalogue, config: PipelineConfig):
@@ -100,18 +103,34 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     size = measure_segment(camera, depth, seg.bbox, seg.surface_mask, config.near_m, config.far_m)
     if size is None:
         return None
-    sized = size_to_format(seg, candidates, size.depth_m, camera, catalogue, config)
-    if sized is None:
+    fits = size_to_format(seg, candidates, size.depth_m, camera, catalogue, config)
+    if not fits:
         return None
-    match, face, ids = sized
     tolerance = config.sgbm_planarity_tolerance_px if matched else config.planarity_tolerance_px
     planarity = segment_planarity(camera, depth, seg.bbox, seg.surface_mask, config.planarity_window_px,
                                   tolerance, config.max_slant_deg, config.min_depth_coverage)
     if planarity.indicator < config.detection_threshold:
         return None
-    cls = classify_segment(left, face, catalogue, ids, config.scales, config.shift_fraction, config.max_template_px)
-    if cls.template_id is None or cls.score < config.min_classification_score:
+    # A reading that grows the segment into a larger face (a zone panel around its red ring) wins
+    # when the face's part outside the segment matches too: the bare ring alone would always score
+    # higher, and the panel reading alone scores ~0.65 on any round sign.
+    readings, panels = [], []
+    same_shapes = catalogue_shapes(shape, seg.bbox[2], seg.bbox[3])
+    for match, face, ids, ext in fits:
+        cls = classify_segment(left, face, catalogue, ids, config.scales, config.shift_fraction,
+                               config.max_template_px)
+        if cls.template_id is None:
+            continue
+        if catalogue[cls.template_id].shape in same_shapes:  # the face is the segment (maybe with a rim)
+            readings.append((match, face, cls))
+        elif surround_score(left, face, catalogue, cls.template_id, ext) >= config.min_surround_score:
+            panels.append((match, face, cls))
+    good_panels = [r for r in panels if r[2].score >= config.classification_threshold]
+    pool = good_panels or readings or panels
+    best = max(pool, key=lambda r: r[2].score, default=None)
+    if best is None or best[2].score < config.min_classification_score:
         return None
+    match, face, cls = best
     status = "accepted" if cls.score >= config.classification_threshold else "review"
     if seg.source == "hough" and status == "accepted":
         # a circle with a full-colour ring is a colour find the colour step lost (an attachment
