@@ -92,3 +92,17 @@ def test_colour_extent_of_rimmed_and_panel_faces(catalogue):
     assert y1 < 0.8
     assert colour_extent(catalogue, "2.30-50", "red", DEFAULT_HSV_RANGES) == (0.0, 0.0, 1.0, 1.0)
     assert colour_extent(catalogue, "2.30-50", "blue", DEFAULT_HSV_RANGES) is None
+
+
+def test_surround_tells_a_zone_panel_from_a_round_sign_on_a_wall(catalogue):
+    from signmapper_core.pipeline.classify import surround_score
+
+    extent = colour_extent(catalogue, "2.59.1", "red", DEFAULT_HSV_RANGES)
+    panel_bgr, panel_alpha = catalogue.render("2.59.1", (60, 90))
+    panel = noisy_background(200, 200, seed=1)
+    paste(panel, panel_bgr, panel_alpha, 50, 40)
+    assert surround_score(panel, (50, 40, 60, 90), catalogue, "2.59.1", extent) > 0.8
+    disc_bgr, disc_alpha = catalogue.render("2.30-30", 52)  # where the panel's ring would be
+    wall = noisy_background(200, 200, seed=1)
+    paste(wall, disc_bgr, disc_alpha, 50 + int(extent[0] * 60), 40 + int(extent[1] * 90))
+    assert surround_score(wall, (50, 40, 60, 90), catalogue, "2.59.1", extent) < 0.3
