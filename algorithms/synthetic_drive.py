@@ -80,7 +80,7 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         self.require_dependencies()
-        from ..signmapper_core.simulate import SimulationConfig, generate_drive
+        from ..signmapper_core.simulate import Cancelled, SimulationConfig, generate_drive
 
         out_dir = self.parameterAsString(parameters, self.OUTPUT, context)
         config = SimulationConfig(
@@ -102,10 +102,10 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
 
         try:
             summary = generate_drive(out_dir, config, progress=progress, is_cancelled=feedback.isCanceled)
+        except Cancelled:
+            raise QgsProcessingException("Cancelled; no drive written.") from None
         except (ValueError, OSError) as exc:
             raise QgsProcessingException(f"Synthetic drive: {exc}") from exc
-        if feedback.isCanceled():
-            raise QgsProcessingException("Cancelled; no drive written.")
         feedback.pushInfo(f"{summary.pairs} pairs and {len(summary.signs)} signs written to {out_dir} "
                           f"in {summary.seconds:.1f} s")
         results = {self.OUTPUT: out_dir}
