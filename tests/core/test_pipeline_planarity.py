@@ -82,3 +82,11 @@ def test_segment_without_enough_depth_has_indicator_zero():
 def test_empty_mask_has_indicator_zero():
     result = segment_planarity(CAMERA, np.full((H, W), 8.0, np.float32), BBOX, np.zeros((60, 60), np.uint8))
     assert result.indicator == 0.0
+
+
+def test_background_depth_on_the_signs_edge_is_ignored():
+    # SGBM gives a sign's left edge the depth of the background behind it
+    depth = np.full((H, W), 8.0, np.float32)
+    depth[150:210, 300:315] = 30.0
+    assert segment_planarity(CAMERA, depth, BBOX, _disc()).indicator > 0.95
+    assert segment_planarity(CAMERA, depth, BBOX, _disc(), max_depth_deviation=None).indicator < 0.9
