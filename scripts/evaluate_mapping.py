@@ -54,6 +54,15 @@ def map_and_collect(drive, catalogue, config):
     return observations, seconds, skipped
 
 
+def azimuth_errors(signs, reference, report) -> list:
+    """Signed face-azimuth differences (fused - truth facing) in degrees, of matched fused signs."""
+    errors = []
+    for sign, ref in zip(signs, report.match):
+        if ref >= 0 and sign.azimuth is not None:
+            errors.append((sign.azimuth - reference[ref].facing + 180.0) % 360.0 - 180.0)
+    return errors
+
+
 def positions_ids(items):
     return np.array([o.position for o in items]).reshape(-1, 3), [o.template_id for o in items]
 
@@ -76,6 +85,7 @@ def main(argv=None) -> int:
     catalogue = load_catalogue(args.catalogue)
     config = PipelineConfig(near_m=args.near, far_m=args.far)
     reports = {"detections": [], "signs": []}
+    all_azimuth_errors = []
     total_pairs, total_seconds = 0, 0.0
     for folder in folders:
         drive = open_drive(folder)
@@ -89,10 +99,17 @@ def main(argv=None) -> int:
         for kind, items in (("detections", observations), ("signs", signs)):
             report = evaluate(*positions_ids(items), ref_xyz, ref_ids, traj, args.radius)
             reports[kind].append(report)
+            if kind == "signs":
+                all_azimuth_errors += azimuth_errors(signs, reference, report)
             print(format_report(report, f"{head}: {'per-pair detections' if kind == 'detections' else 'fused signs'}"))
             print()
         total_pairs += len(drive.pairs)
         total_seconds += seconds
+    if all_azimuth_errors:
+        err = np.abs(all_azimuth_errors)
+        print(f"Face azimuth of fused signs vs truth facing: n={len(err)}, median |d| {np.median(err):.1f} deg, "
+              f"90% {np.percentile(err, 90):.1f} deg, max {err.max():.1f} deg")
+        print()
     if len(folders) > 1:
         for kind in ("detections", "signs"):
             print(format_report(combine_reports(reports[kind]),

@@ -14,6 +14,7 @@ from typing import List, Optional, Sequence, Tuple
 
 import numpy as np
 
+from ..face_normal import world_face_normal
 from ..geometry import Camera, Pose
 from .classify import classify_segment, surround_score
 from .colour import Segment, colour_masks, merge_candidates, segments_from_mask
@@ -150,6 +151,7 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
         detection_indicator=planarity.indicator, classification_indicator=cls.score, status=status,
         u=u, v=v, bbox=face, depth_m=float(z),
         position=locate(camera, pose, u, v, z), source=seg.source, scores=cls.scores,
+        normal_world=world_face_normal(camera, pose, planarity.plane),
     )
 
 

@@ -35,3 +35,4 @@ class Detection:
     position: np.ndarray
     source: str = "colour"  # "colour" segmentation or "hough" fallback
     scores: Dict[str, float] = field(default_factory=dict)  # NCC per candidate template
+    normal_world: Optional[np.ndarray] = None  # unit face normal (E, N, H) from the fitted plane, towards the camera
