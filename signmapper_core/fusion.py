@@ -103,6 +103,15 @@ def _compatible_shape(a: str, b: str) -> bool:
     return a == b or (a in squareish and b in squareish)
 
 
+def _compatible(a: Observation, b: Observation) -> bool:
+    """Same template (whichever of its colours was segmented), or same colour and a compatible shape.
+
+    A two-coloured sign (4.09: blue square, red bar) is found by its red part in
+    one pair and by its blue part in the next.
+    """
+    return a.template_id == b.template_id or (a.colour == b.colour and _compatible_shape(a.shape, b.shape))
+
+
 def _angle_deg(a: Optional[np.ndarray], b: Optional[np.ndarray]) -> float:
     if a is None or b is None:
         return 0.0
@@ -110,14 +119,26 @@ def _angle_deg(a: Optional[np.ndarray], b: Optional[np.ndarray]) -> float:
     return float(np.degrees(np.arccos(np.clip(cos, -1.0, 1.0))))
 
 
+def _horizontal_unit(v: np.ndarray) -> Optional[np.ndarray]:
+    h = np.array([v[0], v[1], 0.0], float)
+    n = np.linalg.norm(h)
+    return h / n if n > 1e-9 else None
+
+
 def _face_direction(obs: Observation) -> np.ndarray:
-    """The face normal if measured, else the horizontal direction from the sign to the camera."""
+    """Horizontal unit direction the face looks to: the measured normal's, else from the sign to the camera.
+
+    Only the horizontal part counts: a face direction is an azimuth, and the
+    vertical tilt of a plane fitted to stereo depth is its noisiest part
+    (overhead signs especially). A normal that is mostly vertical is not used.
+    """
     if obs.normal is not None:
-        return np.asarray(obs.normal, float)
-    v = obs.camera_centre - obs.position
-    v[2] = 0.0
-    n = np.linalg.norm(v)
-    return v / n if n > 0 else np.array([0.0, 1.0, 0.0])
+        normal = np.asarray(obs.normal, float)
+        horizontal = _horizontal_unit(normal)
+        if horizontal is not None and np.hypot(normal[0], normal[1]) >= 0.2 * np.linalg.norm(normal):
+            return horizontal
+    towards_camera = _horizontal_unit(obs.camera_centre - obs.position)
+    return towards_camera if towards_camera is not None else np.array([0.0, 1.0, 0.0])
 
 
 def mean_face(observations: Sequence[Observation]) -> np.ndarray:
@@ -145,8 +166,7 @@ class _Track:
 
     def cost(self, obs: Observation, config: FusionConfig) -> Optional[float]:
         """Distance to ``obs`` if it may continue this track, else None."""
-        head = self.observations[-1]
-        if obs.colour != head.colour or not _compatible_shape(obs.shape, head.shape):
+        if not _compatible(obs, self.observations[-1]):
             return None
         if obs.pair_index - self.last_pair > config.max_gap_pairs or obs.pair_index == self.last_pair:
             return None
@@ -200,7 +220,14 @@ def _vote(observations: Sequence[Observation]) -> tuple[str, float]:
 
 
 def _merge_tracks(tracks: list[list[Observation]], config: FusionConfig) -> list[list[Observation]]:
-    """Join tracks of the same sign seen in separate passes (or split by a long occlusion)."""
+    """Join tracks of one sign: separate passes, a long occlusion, or a sign read two ways.
+
+    Two tracks never seen in the same pair, of one colour, within ``merge_gate_m``
+    and facing the same way are one sign even when their classes differ (a zone
+    panel read as its inner speed ring in some pairs); the weighted vote then
+    decides its class. Distinct signs this close are back-to-back (face gate) or
+    stacked (vertical gate).
+    """
     merged = True
     tracks = [list(t) for t in tracks]
     while merged:
@@ -214,7 +241,7 @@ def _merge_tracks(tracks: list[list[Observation]], config: FusionConfig) -> list
                 pa = np.median([o.position for o in a], axis=0)
                 pb = np.median([o.position for o in b], axis=0)
                 if (np.linalg.norm(pa - pb) <= config.merge_gate_m and abs(pa[2] - pb[2]) <= config.vertical_gate_m
-                        and _vote(a)[0] == _vote(b)[0]
+                        and ({o.colour for o in a} & {o.colour for o in b} or _vote(a)[0] == _vote(b)[0])
                         and _angle_deg(mean_face(a), mean_face(b)) <= config.face_gate_deg):
                     tracks[i] = sorted(a + b, key=lambda o: o.pair_index)
                     del tracks[j]

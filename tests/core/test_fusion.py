@@ -111,3 +111,38 @@ def test_long_gap_without_merge_gate_gives_two_tracks():
     signs = fuse_observations(seen_from(truth, range(3, 6), noise=0.02) + seen_from(truth, range(30, 33), noise=0.02),
                               config)
     assert len(signs) == 2
+
+
+def test_sign_read_as_two_shapes_is_one_sign_with_the_majority_class():
+    """A zone panel read as its inner speed ring in some pairs: one sign, classed by the vote."""
+    panel_centre = np.array([20.0, 3.0, 2.5])
+    ring_centre = panel_centre + [0.0, 0.0, 0.12]
+    panel = seen_from(panel_centre, [3, 4, 6], template_id="2.59.1", shape="rectangle", noise=0.01,
+                      fmt=("normal", 0.5, 0.7))
+    ring = seen_from(ring_centre, [5, 7], template_id="2.30-80", noise=0.01)
+    signs = fuse_observations(panel + ring)
+    assert len(signs) == 1
+    assert signs[0].template_id == "2.59.1" and signs[0].n_obs == 5
+    assert signs[0].vote_share == pytest.approx(0.6)
+    assert np.linalg.norm(signs[0].position - panel_centre) < 0.03
+
+
+def test_noisy_vertical_tilt_of_the_normals_does_not_split_a_sign():
+    """An overhead sign whose fitted planes tilt up and down by 40 degrees from pair to pair."""
+    truth = np.array([20.0, 3.0, 5.2])
+    obs = seen_from(truth, range(3, 8), noise=0.01)
+    for k, o in enumerate(obs):
+        tilt = np.radians(40.0 if k % 2 else -40.0)
+        o.normal = np.array([-np.cos(tilt), 0.0, np.sin(tilt)])  # looking west, tilted
+    signs = fuse_observations(obs)
+    assert len(signs) == 1 and signs[0].n_obs == 5
+    assert signs[0].azimuth == pytest.approx(270.0)
+
+
+def test_two_coloured_sign_found_by_either_colour_is_one_sign():
+    truth = np.array([20.0, 3.0, 5.2])
+    obs = seen_from(truth, range(3, 8), template_id="4.09", shape="square", noise=0.01, fmt=("normal", 0.6, 0.6))
+    for k, o in enumerate(obs):
+        o.colour = "red" if k % 2 else "blue"
+    signs = fuse_observations(obs)
+    assert len(signs) == 1 and signs[0].n_obs == 5 and signs[0].template_id == "4.09"
