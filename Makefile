@@ -68,8 +68,15 @@ demo: setup
 	$(QGIS_PROCESS) run signmapper:mapsigns -- DRIVE=$(CURDIR)/$(DEMO_DRIVE) \
 		OUTPUT=$(CURDIR)/$(DEMO_DIR)/signs.gpkg && \
 	$(QGIS_PROCESS) run signmapper:drivetrajectory -- DRIVE=$(CURDIR)/$(DEMO_DRIVE) \
-		OUTPUT=$(CURDIR)/$(DEMO_DIR)/trajectory.gpkg TRACK=$(CURDIR)/$(DEMO_DIR)/track.gpkg >/dev/null
-	@echo "Demo output: $(DEMO_DIR)/signs.gpkg (layers signs, detections), $(DEMO_DIR)/trajectory.gpkg, track.gpkg"
+		OUTPUT=$(CURDIR)/$(DEMO_DIR)/trajectory.gpkg TRACK=$(CURDIR)/$(DEMO_DIR)/track.gpkg >/dev/null && \
+	$(QGIS_PROCESS) run native:createpointslayerfromtable -- INPUT=$(CURDIR)/$(DEMO_DRIVE)/truth.csv \
+		XFIELD=easting YFIELD=northing ZFIELD=height TARGET_CRS=EPSG:2056 \
+		OUTPUT=$(CURDIR)/$(DEMO_DIR)/truth.gpkg >/dev/null && \
+	$(QGIS_PROCESS) run signmapper:evaluate -- "SIGNS=$(CURDIR)/$(DEMO_DIR)/signs.gpkg|layername=signs" \
+		REFERENCE=$(CURDIR)/$(DEMO_DIR)/truth.gpkg REFERENCE_ID_FIELD=template_id REFERENCE_FACING_FIELD=facing \
+		RADIUS=0.75 REPORT=$(CURDIR)/$(DEMO_DIR)/evaluation.html STATISTICS=$(CURDIR)/$(DEMO_DIR)/statistics.gpkg \
+		MATCHES=$(CURDIR)/$(DEMO_DIR)/matches.gpkg 2>/dev/null | sed -n '/^Table 1/,/^  3d/p'
+	@echo "Demo output in $(DEMO_DIR)/: signs.gpkg (layers signs, detections), evaluation.html, trajectory.gpkg"
 
 lint: venv
 	$(PY) -m ruff check .
