@@ -88,6 +88,33 @@ def _inner_mask(alpha: np.ndarray, fraction: float) -> np.ndarray:
     return cv2.erode(alpha, cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * k + 1, 2 * k + 1)))
 
 
+def inner_field_distance(region: np.ndarray, catalogue, template_id: str, size, loc, inner_fraction: float) -> float:
+    """Mean squared difference of the pictogram fields, both normalised over the whole face.
+
+    Decides close calls. Unlike NCC on the inner field alone it is defined for a
+    flat field (3.03's plain yellow against 3.04's stripes), and an occluder (a
+    pole across the face) costs every candidate alike instead of looking like
+    the stripes of one of them.
+    """
+    tw, th = size
+    x, y = loc
+    patch = region[y : y + th, x : x + tw].astype(np.float32)
+    tmpl, alpha = template_at(catalogue, template_id, tw, th)
+    if patch.shape[:2] != tmpl.shape[:2]:
+        return float("inf")
+    face = alpha > 0
+    inner = _inner_mask(alpha, inner_fraction) > 0
+    if not inner.any():
+        return float("inf")
+
+    def normalised(img):
+        img = img.astype(np.float32)
+        mean, std = img[face].mean(axis=0), img[face].std(axis=0) + 1e-3
+        return (img - mean) / std
+
+    return float(np.mean((normalised(patch)[inner] - normalised(tmpl)[inner]) ** 2))
+
+
 def _best_over_scales(region, w, h, catalogue, tid, scales, inner_fraction=0.0):
     """(score, scale, location) of one template's best masked match in ``region``."""
     best = (-1.0, 1.0, (0, 0), (w, h))
@@ -122,7 +149,8 @@ def classify_segment(
     search, the best ``keep`` at up to ``max_px`` with the scale and shift search.
     Candidates within ``tie_margin`` of the best (speed limits differing in one
     digit: the rim dominates the whole-face score) are decided on the pictogram
-    field alone, the face without its outer ``inner_fraction``.
+    field alone, the face without its outer ``inner_fraction``
+    (:func:`inner_field_distance`).
     """
     if not template_ids:
         return ClassificationResult(None, 0.0)
@@ -140,8 +168,9 @@ def classify_segment(
     best_id = ranked[0]
     close = [t for t in ranked if scores[t] >= scores[best_id] - tie_margin]
     if len(close) > 1:
-        inner = {t: _best_over_scales(region, w, h, catalogue, t, (fine[t][1],), inner_fraction)[0] for t in close}
-        best_id = max(close, key=inner.get)
+        distance = {t: inner_field_distance(region, catalogue, t, fine[t][3], fine[t][2], inner_fraction)
+                    for t in close}
+        best_id = min(close, key=distance.get)
     score, scale, loc, (tw, th) = fine[best_id]
     centre = ((region.shape[1] - tw) / 2.0, (region.shape[0] - th) / 2.0)
     shift = (int(round((loc[0] - centre[0]) / factor)), int(round((loc[1] - centre[1]) / factor)))

@@ -106,3 +106,18 @@ def test_surround_tells_a_zone_panel_from_a_round_sign_on_a_wall(catalogue):
     wall = noisy_background(200, 200, seed=1)
     paste(wall, disc_bgr, disc_alpha, 50 + int(extent[0] * 60), 40 + int(extent[1] * 90))
     assert surround_score(wall, (50, 40, 60, 90), catalogue, "2.59.1", extent) < 0.3
+
+
+def test_pole_across_a_flat_field_sign_does_not_read_as_stripes():
+    """3.03 (plain yellow field) behind a grey pole must not become 3.04 (black stripes) in a close call."""
+    catalogue = load_catalogue()
+    face, alpha = catalogue.render("3.03", 110)
+    scene = np.full((160, 160, 3), 120, np.uint8)
+    inside = alpha > 127
+    scene[25:25 + face.shape[0], 25:25 + face.shape[1]][inside] = face[inside]
+    scene[:, 62:72] = (128, 128, 128)  # the sign's own pole, in front of the face
+    scene = cv2.GaussianBlur(scene, (3, 3), 0)
+    # tie_margin=1 hands every decision to the close-call rule, which is what this test is about
+    result = classify_segment(scene, (25, 25, face.shape[1], face.shape[0]), catalogue, ["3.03", "3.04"],
+                              tie_margin=1.0)
+    assert result.template_id == "3.03", result.scores
