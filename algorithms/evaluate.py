@@ -153,7 +153,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         Path(html_path).write_text(report_html(report, "Sign Mapper: evaluation against reference", notes),
                                    encoding="utf-8")
 
-        stats_sink, stats_id = self.statistics_sink(parameters, context, report, COMPONENTS)
+        stats_id = self.write_statistics(parameters, context, report, COMPONENTS)
         matches_id = self.write_matches(parameters, context, signs, report, mapped, refs)
         t1 = report.table1
         return {
@@ -242,7 +242,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         except DriveFormatError as exc:
             raise QgsProcessingException(f"Drive recorded in {path}: {exc}") from exc
 
-    def statistics_sink(self, parameters, context, report, components):
+    def write_statistics(self, parameters, context, report, components):
         fields = QgsFields()
         for name, kind in (("table", QVariant.String), ("figure", QVariant.String), ("value", QVariant.Double)):
             fields.append(QgsField(name, kind))
@@ -261,7 +261,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             feature = QgsFeature(fields)
             feature.setAttributes([table, figure, float(value)])
             sink.addFeature(feature, QgsFeatureSink.FastInsert)
-        return sink, dest
+        return dest
 
     def write_matches(self, parameters, context, signs, report, mapped, refs):
         fields = QgsFields()

@@ -73,7 +73,7 @@ def _sign_attributes(item) -> list:
         item.template_id, item.name, item.colour, item.shape,
         float(item.width_m), float(item.height_m), item.format,
         round(float(item.detection_indicator), 4), round(float(item.classification_indicator), 4),
-        item.status, 0, getattr(item, "source", "colour"),
+        item.status, 0, item.source,
     ]
 
 
@@ -94,9 +94,7 @@ def detection_feature(fields: QgsFields, detection, record, sign_id=None) -> Qgs
 def sign_feature(fields: QgsFields, sign, mount_height_m=None) -> QgsFeature:
     """A PointZ feature for one fused sign; the pixel fields describe its best observation."""
     best = sign.best
-    shared = _sign_attributes(sign)
-    shared[11] = best.source
-    attributes = [sign.sign_id] + shared + [
+    attributes = [sign.sign_id] + _sign_attributes(sign) + [
         sign.n_obs, round(float(sign.vote_share), 3), round(float(sign.sigma_m), 4),
         None if sign.azimuth is None else round(float(sign.azimuth), 1),
         None if mount_height_m is None else round(float(mount_height_m), 2),

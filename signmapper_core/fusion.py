@@ -49,7 +49,7 @@ class Observation:
     source: str = "colour"
 
     @classmethod
-    def from_detection(cls, detection, record, detection_id=None, normal=None) -> Observation:
+    def from_detection(cls, detection, record, detection_id=None) -> Observation:
         return cls(
             template_id=detection.template_id, colour=detection.colour, shape=detection.shape,
             width_m=detection.width_m, height_m=detection.height_m, format=detection.format,
@@ -57,9 +57,9 @@ class Observation:
             classification_indicator=detection.classification_indicator,
             position=np.asarray(detection.position, float), depth_m=detection.depth_m, pair_index=record.index,
             pair_id=record.id, camera_centre=record.pose.centre, bbox=tuple(detection.bbox),
-            normal=normal if normal is not None else getattr(detection, "normal_world", None),
+            normal=detection.normal_world,
             status=detection.status, detection_id=detection_id, time=record.time, u=float(detection.u),
-            v=float(detection.v), name=detection.name, source=getattr(detection, "source", "colour"),
+            v=float(detection.v), name=detection.name, source=detection.source,
         )
 
 
@@ -96,6 +96,7 @@ class FusedSign:
     best: Observation
     observations: list = field(default_factory=list)
     name: str = ""
+    source: str = "colour"  # of the best observation: "colour" segmentation or "hough" fallback
 
 
 def _compatible_shape(a: str, b: str) -> bool:
@@ -297,7 +298,7 @@ def fuse_track(sign_id: int, observations: Sequence[Observation], config: Fusion
         height_m=height, format=fmt, position=position, n_obs=len(observations), vote_share=share,
         sigma_m=sigma, azimuth=azimuth_deg(mean_face(voters)), detection_indicator=det_ind,
         classification_indicator=cls_ind, status="accepted" if accepted else "review", best=best,
-        observations=list(observations), name=best.name,
+        observations=list(observations), name=best.name, source=best.source,
     )
 
 

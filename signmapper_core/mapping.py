@@ -26,9 +26,9 @@ class PairResult:
     seconds: float = 0.0
 
 
-def map_drive(drive: Drive, catalogue, config, is_cancelled: Optional[Callable[[], bool]] = None,
-              pair_ids: Optional[set] = None) -> Iterator[PairResult]:
-    """Yield a :class:`PairResult` per pair in driving order (only ``pair_ids`` if given).
+def map_drive(drive: Drive, catalogue, config,
+              is_cancelled: Optional[Callable[[], bool]] = None) -> Iterator[PairResult]:
+    """Yield a :class:`PairResult` per pair in driving order.
 
     Stops quietly when ``is_cancelled()`` turns true; the caller decides what a
     cancelled run leaves behind.
@@ -38,18 +38,13 @@ def map_drive(drive: Drive, catalogue, config, is_cancelled: Optional[Callable[[
     for record in drive.pairs:
         if is_cancelled is not None and is_cancelled():
             return
-        if pair_ids is not None and record.id not in pair_ids:
-            continue
         start = _time.perf_counter()
         try:
             left = drive.load_left(record)
             depth = drive.load_depth(record)
             right = drive.load_right(record) if depth is None else None
-        except DriveFormatError as exc:
+        except DriveFormatError as exc:  # the readers report unreadable files as ImageReadError
             yield PairResult(record, error=str(exc), seconds=_time.perf_counter() - start)
-            continue
-        except OSError as exc:  # vanished or unreadable file after validation
-            yield PairResult(record, error=f"{record.left_path.parent.parent}: pair {record.id}: {exc}")
             continue
         detections = detect_pair(left, depth, right, drive.camera, record.pose, catalogue, config)
         yield PairResult(record, detections, seconds=_time.perf_counter() - start)
