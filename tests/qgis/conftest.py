@@ -35,3 +35,15 @@ def registered_plugin(sign_mapper, qgis_processing):
     plugin.initProcessing()
     yield plugin
     plugin.unload()
+
+
+@pytest.fixture(scope="session")
+def small_drive(tmp_path_factory) -> Path:
+    """12 half-HD pairs with true depth maps (seed 11): the drive mapsigns tests and the golden file use."""
+    from drive_fixtures import SMALL_SYNTHETIC
+
+    from signmapper_core.simulate import SimulationConfig, generate_drive
+
+    out = tmp_path_factory.mktemp("drives") / "drive"
+    generate_drive(out, SimulationConfig(pairs=12, seed=11, write_depth=True, **SMALL_SYNTHETIC))
+    return out

@@ -4,6 +4,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from drive_fixtures import SMALL_SYNTHETIC as SMALL
 from qgis.core import (
     QgsProcessingException,
     QgsProcessingFeedback,
@@ -17,18 +18,6 @@ from qgis.core import (
 from qgis_process_runner import enable_plugin, qgis_process_env, run_algorithm
 
 from signmapper_core.drive import open_drive
-from signmapper_core.simulate import SimulationConfig, generate_drive
-
-# Half-HD with half the focal length keeps the angular resolution of the real camera's 4-14 m range
-# at a quarter of the pixels, so the tests stay quick.
-SMALL = dict(width=960, height=540, fx=875.0)
-
-
-@pytest.fixture(scope="module")
-def small_drive(tmp_path_factory) -> Path:
-    out = tmp_path_factory.mktemp("drives") / "drive"
-    generate_drive(out, SimulationConfig(pairs=12, seed=11, write_depth=True, **SMALL))
-    return out
 
 
 @pytest.fixture
