@@ -1,0 +1,276 @@
+"""Recognition figures on real photographs (GTSRB crops, GTSDB scenes) mapped to SSV ids.
+
+    python scripts/evaluate_real_photos.py classify --data DIR [--split report] [--limit N] [--seed 0]
+    python scripts/evaluate_real_photos.py detect --data DIR [--split report] [--limit N] [--seed 0]
+
+``DIR`` holds crops.csv, scenes.csv, scenes_images.csv and the photographs (see
+scripts/realset/README.md); default: $SIGNMAPPER_REAL_DATA, else the committed-subset
+location ../shared/real-signs next to the repo. Tune on ``--split tune``; report ``--split report``.
+
+classify: the face box is given (the ground-truth box, "perfect box"); the candidates are the
+catalogue entries with the true entry's colour and shape. Prints the correct-id rate and, among
+the signs scored >= the classification threshold (0.6, status "accepted"), the share with a wrong id.
+
+detect: the colour step on the whole photograph without depth (colour segments -> shape ->
+candidate templates with their face boxes, as in ``evaluate_segment`` before sizing). A sign's
+face is found when a segment's face box has IoU >= 0.5 with the truth box and the true id is among
+that reading's candidates; a segment is on the sign when IoU >= 0.3 or its centre lies in the box.
+The merge of split pieces and the Hough fallback of ``detect_pair`` are not run.
+
+Every table is split by group (``same``: the Swiss pictogram; ``differs``: same meaning, other
+drawing) and by the sign's size in the photograph (longer side < 30 px, >= 30 px).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import random
+import statistics
+import sys
+import time
+from collections import Counter, defaultdict
+from pathlib import Path
+from typing import Callable, Dict, List, Sequence, Tuple
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+
+from signmapper_core.catalogue import load_catalogue  # noqa: E402
+from signmapper_core.pipeline import PipelineConfig  # noqa: E402
+from signmapper_core.validation import load_manifest, load_scene_list, read_bgr  # noqa: E402
+
+SMALL_PX = 30
+SUBSET_DIR = REPO.parent / "shared" / "real-signs"
+
+# (image, bbox, catalogue, candidate ids) -> (template id or None, score 0..1)
+Classifier = Callable[[object, Tuple[int, int, int, int], object, Sequence[str]], Tuple[object, float]]
+
+
+def classify_ncc(image, bbox, catalogue, candidate_ids):
+    """Today's classifier: hierarchical masked NCC (``pipeline.classify.classify_segment``)."""
+    from signmapper_core.pipeline.classify import classify_segment
+
+    result = classify_segment(image, bbox, catalogue, candidate_ids)
+    return result.template_id, result.score
+
+
+CLASSIFIERS: Dict[str, Classifier] = {"ncc": classify_ncc}
+
+
+def classifier(name: str) -> Classifier:
+    """The classification function called ``name`` (the one place to plug in others)."""
+    try:
+        return CLASSIFIERS[name]
+    except KeyError:
+        raise SystemExit(f"unknown classifier {name!r}; known: {', '.join(sorted(CLASSIFIERS))}") from None
+
+
+def default_data() -> Path:
+    env = os.environ.get("SIGNMAPPER_REAL_DATA")
+    return Path(env) if env else SUBSET_DIR
+
+
+def select(signs: list, split: str, limit: int, seed: int) -> list:
+    """Signs of ``split`` ('all' = both), a seeded random ``limit`` of them if given, in manifest order."""
+    chosen = [s for s in signs if split == "all" or s.split == split]
+    if limit and limit < len(chosen):
+        keep = set(random.Random(seed).sample(range(len(chosen)), limit))
+        chosen = [s for i, s in enumerate(chosen) if i in keep]
+    return chosen
+
+
+def size_bin(size_px: int) -> str:
+    return f"<{SMALL_PX}px" if size_px < SMALL_PX else f">={SMALL_PX}px"
+
+
+def pct(k: int, n: int) -> str:
+    return f"{100.0 * k / n:5.1f}%" if n else "    -"
+
+
+def _median(values) -> str:
+    return f"{statistics.median(values):5.0f}" if values else "    -"
+
+
+def print_table(title: str, header: Sequence[str], rows: List[Sequence[str]]):
+    widths = [max(len(str(c)) for c in col) for col in zip(header, *rows)] if rows else [len(h) for h in header]
+    print(f"\n{title}")
+    print("  " + "  ".join(str(h).rjust(w) for h, w in zip(header, widths)))
+    for row in rows:
+        print("  " + "  ".join(str(c).rjust(w) for c, w in zip(row, widths)))
+
+
+def breakdowns(records: list, columns: Callable[[list], List[str]], header: Sequence[str], what: str):
+    """Tables per group x size bin, per split, per SSV id of ``records`` (dicts with sign, ...)."""
+    rows = []
+    for group in ("same", "differs", "all"):
+        for bin_name in (f"<{SMALL_PX}px", f">={SMALL_PX}px", "all"):
+            sel = [r for r in records if (group == "all" or r["sign"].group == group)
+                   and (bin_name == "all" or size_bin(r["sign"].size_px) == bin_name)]
+            rows.append([group, bin_name, len(sel), _median([r["sign"].size_px for r in sel])] + columns(sel))
+    print_table(f"{what} by group and size (longer side of the face box)",
+                ["group", "size", "n", "median px"] + list(header), rows)
+    rows = []
+    for split in ("tune", "report"):
+        for group in ("same", "differs"):
+            sel = [r for r in records if r["sign"].split == split and r["sign"].group == group]
+            if sel:
+                rows.append([split, group, len(sel), _median([r["sign"].size_px for r in sel])] + columns(sel))
+    print_table(f"{what} by split", ["split", "group", "n", "median px"] + list(header), rows)
+
+
+def run_classify(args, catalogue, config: PipelineConfig) -> int:
+    signs = select(load_manifest(args.data / "crops.csv", known_ids={e.id for e in catalogue}),
+                   args.split, args.limit, args.seed)
+    classify = classifier(args.classifier)
+    threshold = config.classification_threshold
+    records = []
+    start = time.perf_counter()
+    for sign in signs:
+        entry = catalogue[sign.ssv_id]
+        candidates = [e.id for e in catalogue.filter(colours=[entry.colour], shapes=[entry.shape])]
+        predicted, score = classify(sign.load_image(), sign.bbox, catalogue, candidates)
+        records.append({"sign": sign, "id": predicted, "score": score, "n_cand": len(candidates)})
+    seconds = time.perf_counter() - start
+    print(f"classify ({args.classifier}) on {args.data / 'crops.csv'}: split={args.split}, {len(records)} signs, "
+          f"{seconds:.0f} s ({1000 * seconds / max(1, len(records)):.0f} ms/sign); perfect box, candidates = "
+          f"catalogue entries of the true colour and shape; accepted = score >= {threshold}")
+
+    def columns(sel):
+        correct = sum(r["id"] == r["sign"].ssv_id for r in sel)
+        accepted = [r for r in sel if r["score"] >= threshold]
+        wrong_acc = sum(r["id"] != r["sign"].ssv_id for r in accepted)
+        return [pct(correct, len(sel)), pct(len(accepted), len(sel)), pct(wrong_acc, len(accepted)),
+                f"{statistics.mean(r['score'] for r in sel):.2f}" if sel else "-"]
+
+    header = ["correct", "accepted", "wrong|acc", "mean score"]
+    breakdowns(records, columns, header, "Classification")
+    by_id = defaultdict(list)
+    for r in records:
+        by_id[r["sign"].ssv_id].append(r)
+    rows = []
+    for sid in sorted(by_id, key=lambda s: (by_id[s][0]["sign"].group, s)):
+        sel = by_id[sid]
+        wrong = Counter(r["id"] for r in sel if r["id"] != sid)
+        rows.append([sid, sel[0]["sign"].group, len(sel), sel[0]["n_cand"]] + columns(sel)[:3]
+                    + [", ".join(f"{k} {v}" for k, v in wrong.most_common(3)) or "-"])
+    print_table("Classification per SSV id (confusions: most frequent wrong ids)",
+                ["ssv_id", "group", "n", "cands", "correct", "accepted", "wrong|acc", "confused with"], rows)
+    return 0
+
+
+def _iou(a, b) -> float:
+    ax, ay, aw, ah = a
+    bx, by, bw, bh = b
+    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
+    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
+    inter = iw * ih
+    return inter / float(aw * ah + bw * bh - inter) if inter else 0.0
+
+
+def _centre_in(a, b) -> bool:
+    cx, cy = a[0] + a[2] / 2.0, a[1] + a[3] / 2.0
+    return b[0] <= cx < b[0] + b[2] and b[1] <= cy < b[1] + b[3]
+
+
+def segment_readings(image, catalogue, config: PipelineConfig):
+    """[(segment bbox, [(face box, candidate ids)])] of the colour step on a whole photograph."""
+    from signmapper_core.pipeline.detect import colour_segments, segment_candidates
+    from signmapper_core.pipeline.face_extent import face_bbox
+    from signmapper_core.pipeline.shape import classify_shape
+
+    height, width = image.shape[:2]
+    out = []
+    for seg in colour_segments(image, None, config, (0, 0, width, height)):
+        readings = []
+        shape = None if seg.touches_border else classify_shape(seg.mask, config.min_shape_fit).shape
+        if shape is not None:
+            groups = {}
+            for entry, ext in segment_candidates(seg, shape, catalogue, config):
+                groups.setdefault(tuple(ext), []).append(entry.id)
+            readings = [(face_bbox(seg.bbox, ext), ids) for ext, ids in groups.items()]
+        out.append((seg.bbox, readings))
+    return out
+
+
+def _read_other(path: Path) -> Dict[str, list]:
+    """Boxes of labelled signs left out of scenes.csv (no SSV counterpart), by image."""
+    import csv
+
+    other = defaultdict(list)
+    if path.is_file():
+        with path.open(newline="", encoding="utf-8") as f:
+            for row in csv.DictReader(f):
+                x0, y0, x1, y1 = (int(row[k]) for k in ("x0", "y0", "x1", "y1"))
+                other[row["image"]].append((x0, y0, x1 - x0, y1 - y0))
+    return other
+
+
+def run_detect(args, catalogue, config: PipelineConfig) -> int:
+    scenes = select(load_scene_list(args.data / "scenes_images.csv"), args.split, args.limit, args.seed)
+    signs = load_manifest(args.data / "scenes.csv", known_ids={e.id for e in catalogue})
+    other = _read_other(args.data / "scenes_other.csv")
+    by_image = defaultdict(list)
+    for s in signs:
+        by_image[s.image].append(s)
+    records, per_image = [], []
+    start = time.perf_counter()
+    for scene in scenes:
+        segments = segment_readings(read_bgr(scene.image), catalogue, config)
+        truth = by_image.get(scene.image, [])
+        labelled = [s.bbox for s in truth] + other.get(scene.image.relative_to(args.data).as_posix(), [])
+        for sign in truth:
+            on = any(_iou(b, sign.bbox) >= 0.3 or _centre_in(b, sign.bbox) for b, _ in segments)
+            found = any(_iou(face, sign.bbox) >= 0.5 and sign.ssv_id in ids
+                        for _, readings in segments for face, ids in readings)
+            records.append({"sign": sign, "on": on, "found": found})
+        with_cands = [b for b, readings in segments if readings]
+        away = [b for b in with_cands if not any(_iou(b, t) > 0 for t in labelled)]
+        per_image.append((scene, len(segments), len(with_cands), len(away)))
+    seconds = time.perf_counter() - start
+    print(f"detect (colour step, no depth) on {args.data / 'scenes_images.csv'}: split={args.split}, "
+          f"{len(per_image)} images, {len(records)} signs, {seconds:.0f} s "
+          f"({seconds / max(1, len(per_image)):.2f} s/image)")
+
+    def columns(sel):
+        return [pct(sum(r["found"] for r in sel), len(sel)), pct(sum(r["on"] for r in sel), len(sel))]
+
+    breakdowns(records, columns, ["face found", "segment on sign"], "Detection")
+    by_id = defaultdict(list)
+    for r in records:
+        by_id[r["sign"].ssv_id].append(r)
+    rows = [[sid, by_id[sid][0]["sign"].group, len(by_id[sid]), _median([r["sign"].size_px for r in by_id[sid]])]
+            + columns(by_id[sid]) for sid in sorted(by_id, key=lambda s: (by_id[s][0]["sign"].group, s))]
+    print_table("Detection per SSV id", ["ssv_id", "group", "n", "median px", "face found", "segment on sign"], rows)
+    rows = []
+    for label, sel in (("with signs", [p for p in per_image if p[0].signs]),
+                       ("without signs", [p for p in per_image if not p[0].signs]), ("all", per_image)):
+        if sel:
+            rows.append([label, len(sel)] + [f"{statistics.mean(p[i] for p in sel):.1f}" for i in (1, 2, 3)])
+    print_table("Segments per image (mean); 'away' = with candidates and touching no labelled sign "
+                "(GTSDB labels only its 43 classes, so not all of these are false)",
+                ["images", "n", "segments", "with candidates", "away"], rows)
+    return 0
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("mode", choices=("classify", "detect"))
+    parser.add_argument("--data", type=Path, default=None,
+                        help="folder with the manifests (default $SIGNMAPPER_REAL_DATA or ../shared/real-signs)")
+    parser.add_argument("--split", choices=("tune", "report", "all"), default="tune")
+    parser.add_argument("--limit", type=int, default=0, help="a seeded random sample of this many signs/images")
+    parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--classifier", default="ncc", help=f"one of {', '.join(sorted(CLASSIFIERS))}")
+    args = parser.parse_args(argv)
+    args.data = (args.data or default_data()).resolve()
+    if not (args.data / "crops.csv").is_file():
+        raise SystemExit(f"{args.data}: no crops.csv; pass --data or set SIGNMAPPER_REAL_DATA")
+    catalogue = load_catalogue()
+    config = PipelineConfig()
+    run = run_classify if args.mode == "classify" else run_detect
+    return run(args, catalogue, config)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
