@@ -189,7 +189,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         from ..signmapper_core.fusion import Observation, fuse_observations
 
         feedback.setProgressText(f"Fusing {len(detections)} detections into signs")
-        signs = fuse_observations([Observation.from_detection(d, r, i) for i, (d, r) in enumerate(detections)])
+        signs = fuse_observations([Observation(d, r, i) for i, (d, r) in enumerate(detections)])
         feedback.setProgress(97)
         return signs
 
@@ -201,7 +201,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         crs = QgsCoordinateReferenceSystem(drive.crs)
         centres = np.array([r.pose.centre for r in drive.pairs])
         camera_height = camera_height_above_road(drive.metadata)
-        sign_of = {o.detection_id: s.sign_id for s in signs for o in s.observations}
+        sign_of = {o.id: s.sign_id for s in signs for o in s.observations}
         fields = make_fields(SIGN_FIELDS)
         writer = output.open_layer("signs", fields, QgsWkbTypes.PointZ, crs,
                                    abstract=f"Sign Mapper: traffic signs of drive {drive.root}")

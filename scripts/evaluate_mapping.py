@@ -50,7 +50,7 @@ def map_and_collect(drive, catalogue, config):
         seconds += result.seconds
         skipped += result.error is not None
         for det in result.detections:
-            observations.append(Observation.from_detection(det, result.record, len(observations)))
+            observations.append(Observation(det, result.record, len(observations)))
     return observations, seconds, skipped
 
 

@@ -21,46 +21,58 @@ from typing import Optional, Sequence
 import numpy as np
 
 
-@dataclass
+def _of_detection(name: str, doc: str) -> property:
+    return property(lambda self: getattr(self.detection, name), doc=doc)
+
+
+@dataclass(eq=False)
 class Observation:
-    """One detection of a sign in one pair, with what fusion needs of its pair."""
+    """One detection of a sign in one pair: the pipeline's :class:`Detection` with its pair, not a copy of it.
 
-    template_id: str
-    colour: str
-    shape: str
-    width_m: float
-    height_m: float
-    format: str
-    detection_indicator: float
-    classification_indicator: float
-    position: np.ndarray  # (3,) world
-    depth_m: float
-    pair_index: int
-    pair_id: str
-    camera_centre: np.ndarray  # (3,) world position of the left camera of the pair
-    bbox: tuple = (0, 0, 0, 0)
-    normal: Optional[np.ndarray] = None  # (3,) world unit normal of the face, towards the camera
-    status: str = "accepted"
-    detection_id: Optional[int] = None  # the feature id of the detection, to link back
-    time: float = 0.0
-    u: float = 0.0
-    v: float = 0.0
-    name: str = ""
-    source: str = "colour"
+    ``id`` numbers the detections of a run from 1 in driving order (their feature
+    ids in the ``detections`` layer); ``sign_id`` is the fused sign the detection
+    belongs to, set by :func:`fuse_observations`.
+    """
 
-    @classmethod
-    def from_detection(cls, detection, record, detection_id=None) -> Observation:
-        return cls(
-            template_id=detection.template_id, colour=detection.colour, shape=detection.shape,
-            width_m=detection.width_m, height_m=detection.height_m, format=detection.format,
-            detection_indicator=detection.detection_indicator,
-            classification_indicator=detection.classification_indicator,
-            position=np.asarray(detection.position, float), depth_m=detection.depth_m, pair_index=record.index,
-            pair_id=record.id, camera_centre=record.pose.centre, bbox=tuple(detection.bbox),
-            normal=detection.normal_world,
-            status=detection.status, detection_id=detection_id, time=record.time, u=float(detection.u),
-            v=float(detection.v), name=detection.name, source=detection.source,
-        )
+    detection: object  # pipeline.Detection
+    record: object  # drive.PairRecord
+    id: Optional[int] = None
+    sign_id: Optional[int] = None
+
+    template_id = _of_detection("template_id", "catalogue id assigned in this pair")
+    name = _of_detection("name", "template name")
+    colour = _of_detection("colour", "segmented colour")
+    shape = _of_detection("shape", "shape of the segment")
+    width_m = _of_detection("width_m", "standard width of the format")
+    height_m = _of_detection("height_m", "standard height of the format")
+    format = _of_detection("format", "standard format name")
+    detection_indicator = _of_detection("detection_indicator", "planar share, 0..1")
+    classification_indicator = _of_detection("classification_indicator", "template score, 0..1")
+    status = _of_detection("status", "accepted, review or manual")
+    source = _of_detection("source", "colour segmentation or hough fallback")
+    u = _of_detection("u", "column of the face centre in the left image")
+    v = _of_detection("v", "row of the face centre in the left image")
+    bbox = _of_detection("bbox", "(x, y, w, h) in the left image")
+    depth_m = _of_detection("depth_m", "depth of the face centre")
+    position = _of_detection("position", "(E, N, H) of the face centre")
+    normal = _of_detection("normal_world", "unit face normal (E, N, H) towards the camera, or None")
+
+    @property
+    def pair_index(self) -> int:
+        return self.record.index
+
+    @property
+    def pair_id(self) -> str:
+        return self.record.id
+
+    @property
+    def time(self) -> float:
+        return self.record.time
+
+    @property
+    def camera_centre(self) -> np.ndarray:
+        """World position of the left camera of the pair."""
+        return self.record.pose.centre
 
 
 @dataclass(frozen=True)
@@ -78,10 +90,10 @@ class FusionConfig:
 
 @dataclass
 class FusedSign:
+    """One physical sign: class by weighted vote, robust position, the observations it was fused from."""
+
     sign_id: int
     template_id: str
-    colour: str
-    shape: str
     width_m: float
     height_m: float
     format: str
@@ -93,10 +105,26 @@ class FusedSign:
     detection_indicator: float
     classification_indicator: float
     status: str
-    best: Observation
+    best: Observation  # the voter with the highest indicators: what the review shows first
     observations: list = field(default_factory=list)
-    name: str = ""
-    source: str = "colour"  # of the best observation: "colour" segmentation or "hough" fallback
+    mount_height_m: Optional[float] = None  # lower edge above the road, set when mapping a drive
+
+    @property
+    def name(self) -> str:
+        return self.best.name
+
+    @property
+    def colour(self) -> str:
+        return self.best.colour
+
+    @property
+    def shape(self) -> str:
+        return self.best.shape
+
+    @property
+    def source(self) -> str:
+        """How the best observation was found: "colour" segmentation or "hough" fallback."""
+        return self.best.source
 
 
 def _compatible_shape(a: str, b: str) -> bool:
@@ -294,17 +322,23 @@ def fuse_track(sign_id: int, observations: Sequence[Observation], config: Fusion
     if len(voters) == 1 and best.status == "accepted" and cls_ind >= config.accept_classification + 0.15:
         accepted = True  # a single, very clear observation
     return FusedSign(
-        sign_id=sign_id, template_id=template_id, colour=best.colour, shape=best.shape, width_m=width,
-        height_m=height, format=fmt, position=position, n_obs=len(observations), vote_share=share,
-        sigma_m=sigma, azimuth=azimuth_deg(mean_face(voters)), detection_indicator=det_ind,
-        classification_indicator=cls_ind, status="accepted" if accepted else "review", best=best,
-        observations=list(observations), name=best.name, source=best.source,
+        sign_id=sign_id, template_id=template_id, width_m=width, height_m=height, format=fmt, position=position,
+        n_obs=len(observations), vote_share=share, sigma_m=sigma, azimuth=azimuth_deg(mean_face(voters)),
+        detection_indicator=det_ind, classification_indicator=cls_ind, status="accepted" if accepted else "review",
+        best=best, observations=list(observations),
     )
 
 
 def fuse_observations(observations: Sequence[Observation], config: Optional[FusionConfig] = None) -> list[FusedSign]:
-    """One :class:`FusedSign` per physical sign, numbered from 1 in order of first sight."""
+    """One :class:`FusedSign` per physical sign, numbered from 1 in order of first sight.
+
+    Each observation's ``sign_id`` is set to the sign it was fused into.
+    """
     config = config or FusionConfig()
     tracks = _merge_tracks(build_tracks(observations, config), config)
     tracks.sort(key=lambda t: (t[0].pair_index, t[0].position[0], t[0].position[1]))
-    return [fuse_track(i, t, config) for i, t in enumerate(tracks, start=1)]
+    signs = [fuse_track(i, t, config) for i, t in enumerate(tracks, start=1)]
+    for sign in signs:
+        for obs in sign.observations:
+            obs.sign_id = sign.sign_id
+    return signs

@@ -3,7 +3,10 @@
 import numpy as np
 import pytest
 
+from signmapper_core.drive import PairRecord
 from signmapper_core.fusion import FusionConfig, Observation, fuse_observations
+from signmapper_core.geometry import Pose
+from signmapper_core.pipeline.detection import Detection
 
 WEST = np.array([-1.0, 0.0, 0.0])  # face looking west, towards a vehicle driving east
 EAST = np.array([1.0, 0.0, 0.0])
@@ -19,8 +22,11 @@ def observe(pos, pair_index, template_id="2.30-50", colour="red", shape="circle"
     if noise and rng is not None:
         pos = pos + rng.normal(0, noise, 3)
     depth = float(np.linalg.norm(pos[:2] - camera_at(pair_index)[:2]))
-    return Observation(template_id, colour, shape, fmt[1], fmt[2], fmt[0], det, cls, pos, depth, pair_index,
-                       f"{pair_index:06d}", camera_at(pair_index), (10, 10, 40, 40), normal)
+    detection = Detection(template_id, "", colour, shape, fmt[1], fmt[2], fmt[0], det, cls, "accepted", 500.0, 400.0,
+                          (10, 10, 40, 40), depth, pos, normal_world=normal)
+    record = PairRecord(pair_index, f"{pair_index:06d}", 0.2 * pair_index, Pose(*camera_at(pair_index), 90.0, 0.0, 0.0),
+                        None, None, None)
+    return Observation(detection, record)
 
 
 def seen_from(pos, pairs, **kwargs):
@@ -77,7 +83,7 @@ def test_identical_signs_a_few_metres_apart_stay_apart():
 def test_outlier_observation_does_not_pull_the_position():
     truth = np.array([20.0, 3.0, 2.5])
     obs = seen_from(truth, range(3, 8), noise=0.01)
-    obs[2].position = truth + [0.25, 0.0, 0.1]  # a bad depth in one pair, still inside the gate
+    obs[2].detection.position = truth + [0.25, 0.0, 0.1]  # a bad depth in one pair, still inside the gate
     sign = fuse_observations(obs)[0]
     assert sign.n_obs == 5
     assert np.linalg.norm(sign.position - truth) < 0.02
@@ -86,7 +92,7 @@ def test_outlier_observation_does_not_pull_the_position():
 def test_weighted_vote_and_share():
     truth = np.array([20.0, 3.0, 2.5])
     obs = seen_from(truth, range(3, 8), noise=0.01)
-    obs[1].template_id = "2.30-60"
+    obs[1].detection.template_id = "2.30-60"
     sign = fuse_observations(obs)[0]
     assert sign.template_id == "2.30-50"
     assert sign.vote_share == pytest.approx(0.8)
@@ -133,7 +139,7 @@ def test_noisy_vertical_tilt_of_the_normals_does_not_split_a_sign():
     obs = seen_from(truth, range(3, 8), noise=0.01)
     for k, o in enumerate(obs):
         tilt = np.radians(40.0 if k % 2 else -40.0)
-        o.normal = np.array([-np.cos(tilt), 0.0, np.sin(tilt)])  # looking west, tilted
+        o.detection.normal_world = np.array([-np.cos(tilt), 0.0, np.sin(tilt)])  # looking west, tilted
     signs = fuse_observations(obs)
     assert len(signs) == 1 and signs[0].n_obs == 5
     assert signs[0].azimuth == pytest.approx(270.0)
@@ -143,6 +149,21 @@ def test_two_coloured_sign_found_by_either_colour_is_one_sign():
     truth = np.array([20.0, 3.0, 5.2])
     obs = seen_from(truth, range(3, 8), template_id="4.09", shape="square", noise=0.01, fmt=("normal", 0.6, 0.6))
     for k, o in enumerate(obs):
-        o.colour = "red" if k % 2 else "blue"
+        o.detection.colour = "red" if k % 2 else "blue"
     signs = fuse_observations(obs)
     assert len(signs) == 1 and signs[0].n_obs == 5 and signs[0].template_id == "4.09"
+
+
+def test_observations_wrap_their_detection_and_are_linked_to_their_sign_by_id():
+    truth = np.array([20.0, 3.0, 2.5])
+    obs = seen_from(truth, range(3, 8), noise=0.01) + [observe([60.0, 3.0, 2.5], 25, template_id="1.01",
+                                                               shape="triangle")]
+    for i, o in enumerate(obs, start=1):
+        o.id = i
+    obs[0].detection.template_id = "2.30-60"  # the observation reads its detection, it keeps no copy
+    assert obs[0].template_id == "2.30-60" and obs[0].pair_id == "000003" and obs[0].time == pytest.approx(0.6)
+    signs = fuse_observations(obs)
+    assert [s.sign_id for s in signs] == [1, 2]
+    assert [o.sign_id for o in obs] == [1] * 5 + [2]
+    assert {o.id for o in signs[0].observations} == {1, 2, 3, 4, 5}
+    assert signs[1].colour == "red" and signs[1].shape == "triangle" and signs[1].best is obs[5]
