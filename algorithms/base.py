@@ -65,16 +65,24 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
             raise QgsProcessingException(install_hint(missing))
 
 
-class Cancelled(Exception):
-    """Raised from progress callbacks of the core when the user cancels."""
+class CoreFeedback:
+    """The core's progress protocol (``signmapper_core.progress``) on a QgsProcessingFeedback.
 
+    The core reports fractions 0..1 of its operation; they fill ``span`` percent
+    of the algorithm's bar from ``start``. Cancel is the feedback's; warnings are
+    logged as non-fatal errors.
+    """
 
-def core_progress(feedback, start: float = 0.0, span: float = 100.0):
-    """A ``progress(done, total)`` callback for the core that drives ``feedback`` and honours cancel."""
+    def __init__(self, feedback, start: float = 0.0, span: float = 100.0):
+        self.feedback, self.start, self.span = feedback, start, span
 
-    def progress(done: int, total: int) -> None:
-        if feedback.isCanceled():
-            raise Cancelled()
-        feedback.setProgress(start + span * done / max(total, 1))
+    def progress(self, fraction: float, message: str = "") -> None:
+        self.feedback.setProgress(self.start + self.span * fraction)
+        if message:
+            self.feedback.setProgressText(message)
 
-    return progress
+    def is_cancelled(self) -> bool:
+        return self.feedback.isCanceled()
+
+    def warn(self, message: str) -> None:
+        self.feedback.reportError(message, fatalError=False)

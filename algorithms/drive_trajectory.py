@@ -18,7 +18,8 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QVariant
 
-from .base import Cancelled, SignMapperAlgorithm, core_progress
+from ..signmapper_core.progress import Cancelled
+from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise
 
 
@@ -69,7 +70,7 @@ class DriveTrajectoryAlgorithm(SignMapperAlgorithm):
         folder = self.parameterAsFile(parameters, self.DRIVE, context)
         feedback.pushInfo(self.tr(f"Validating drive {folder}"))
         try:
-            drive = open_drive_or_raise(folder, core_progress(feedback, 0, 50))
+            drive = open_drive_or_raise(folder, CoreFeedback(feedback, 0, 50))
         except Cancelled:
             raise QgsProcessingException(self.tr("Cancelled while validating the drive; nothing written.")) from None
         crs = QgsCoordinateReferenceSystem(drive.crs)

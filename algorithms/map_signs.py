@@ -17,7 +17,8 @@ from qgis.core import (
     QgsWkbTypes,
 )
 
-from .base import Cancelled, SignMapperAlgorithm, core_progress
+from ..signmapper_core.progress import Cancelled
+from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise
 from .gpkg_output import AtomicGeoPackage, layer_uri
 from .layer_styles import embed_default_styles
@@ -131,7 +132,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
 
         feedback.pushInfo(f"Validating drive {folder}")
         try:
-            drive = open_drive_or_raise(folder, core_progress(feedback, 0, 5))
+            drive = open_drive_or_raise(folder, CoreFeedback(feedback, 0, 5))
         except Cancelled:
             raise QgsProcessingException("Cancelled while validating the drive; nothing written.") from None
         feedback.pushInfo(f"{len(drive.pairs)} pairs, CRS {drive.crs}, catalogue {catalogue.folder} "
@@ -139,18 +140,16 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
 
         output = AtomicGeoPackage(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
         try:
-            detections = self.detect(drive, catalogue, config, feedback)
-            if feedback.isCanceled():
-                raise QgsProcessingException("Cancelled; no output written.")
-            signs = self.fuse(detections, feedback)
-            self.write_layers(output, drive, detections, signs)
-            output.write_run_table(self.run_record(drive, catalogue, config))
+            result = self.map(drive, catalogue, config, feedback)
+            self.write_layers(output, result)
+            output.write_run_table(result.run_record())
             embed_default_styles(str(output.partial), catalogue)
             path = output.commit()
         except BaseException:
             output.discard()
             raise
-        feedback.pushInfo(f"{len(detections)} detections fused into {len(signs)} signs, written to {path}")
+        feedback.pushInfo(f"{len(result.detections)} detections fused into {len(result.signs)} signs, "
+                          f"written to {path}")
         results = {self.OUTPUT: path}
         for key, layer, title in ((self.SIGNS, "signs", "Signs"), (self.DETECTIONS, "detections", "Sign detections")):
             results[key] = layer_uri(path, layer)
@@ -167,68 +166,32 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             raise QgsProcessingException(f"Sign types to exclude: {', '.join(unknown)} not in the catalogue")
         return ids
 
-    def detect(self, drive, catalogue, config, feedback) -> list:
-        """Run the pipeline pair by pair; returns (detection, pair record) in driving order."""
+    @staticmethod
+    def map(drive, catalogue, config, feedback):
+        """The core's map_drive with the algorithm's progress bar, cancel button and log."""
         from ..signmapper_core.mapping import map_drive
 
-        detections, skipped, total = [], 0, len(drive.pairs)
-        for done, result in enumerate(map_drive(drive, catalogue, config, feedback.isCanceled), start=1):
-            if result.error:
-                skipped += 1
-                feedback.reportError(f"Skipped pair {result.record.id}: {result.error}", fatalError=False)
-            detections.extend((detection, result.record) for detection in result.detections)
-            feedback.setProgress(5 + 90 * done / total)
-            feedback.setProgressText(
-                f"Pair {result.record.id}: {len(result.detections)} signs ({result.seconds:.2f} s)"
-            )
-        if skipped:
-            feedback.pushWarning(f"{skipped} of {total} pairs skipped, see the messages above")
-        return detections
+        steps = CoreFeedback(feedback, 5, 92)
+        try:
+            result = map_drive(drive, catalogue, config, steps.progress, steps.is_cancelled, steps.warn)
+        except Cancelled:
+            raise QgsProcessingException("Cancelled; no output written.") from None
+        if result.skipped:
+            feedback.pushWarning(f"{len(result.skipped)} of {len(drive.pairs)} pairs skipped, see the messages above")
+        return result
 
-    def fuse(self, detections, feedback) -> list:
-        from ..signmapper_core.fusion import Observation, fuse_observations
-
-        feedback.setProgressText(f"Fusing {len(detections)} detections into signs")
-        signs = fuse_observations([Observation(d, r, i) for i, (d, r) in enumerate(detections)])
-        feedback.setProgress(97)
-        return signs
-
-    def write_layers(self, output, drive, detections, signs) -> None:
-        import numpy as np
-
-        from ..signmapper_core.mounting import camera_height_above_road, mounting_height
-
-        crs = QgsCoordinateReferenceSystem(drive.crs)
-        centres = np.array([r.pose.centre for r in drive.pairs])
-        camera_height = camera_height_above_road(drive.metadata)
-        sign_of = {o.id: s.sign_id for s in signs for o in s.observations}
+    @staticmethod
+    def write_layers(output, result) -> None:
+        crs = QgsCoordinateReferenceSystem(result.drive.crs)
         fields = make_fields(SIGN_FIELDS)
         writer = output.open_layer("signs", fields, QgsWkbTypes.PointZ, crs,
-                                   abstract=f"Sign Mapper: traffic signs of drive {drive.root}")
-        for sign in signs:
-            mount = mounting_height(sign.position, sign.height_m, centres, camera_height)
-            writer.addFeature(sign_feature(fields, sign, mount), QgsFeatureSink.FastInsert)
+                                   abstract=f"Sign Mapper: traffic signs of drive {result.drive.root}")
+        for sign in result.signs:
+            writer.addFeature(sign_feature(fields, sign), QgsFeatureSink.FastInsert)
         del writer
         fields = make_fields(DETECTION_LAYER_FIELDS)
         writer = output.open_layer("detections", fields, QgsWkbTypes.PointZ, crs,
-                                   abstract=f"Sign Mapper: per-pair sign detections of drive {drive.root}")
-        for i, (detection, record) in enumerate(detections):
-            writer.addFeature(detection_feature(fields, detection, record, sign_of.get(i)), QgsFeatureSink.FastInsert)
+                                   abstract=f"Sign Mapper: per-pair sign detections of drive {result.drive.root}")
+        for observation in result.detections:
+            writer.addFeature(detection_feature(fields, observation), QgsFeatureSink.FastInsert)
         del writer
-
-    @staticmethod
-    def run_record(drive, catalogue, config) -> dict:
-        from ..signmapper_core import __version__
-
-        return {
-            "software": f"Sign Mapper {__version__}",
-            "drive": str(drive.root.resolve()),
-            "crs": drive.crs,
-            "catalogue": str(catalogue.folder),
-            "near_m": config.near_m,
-            "far_m": config.far_m,
-            "colours": list(config.colours),
-            "exclude": list(config.exclude),
-            "detection_threshold": config.detection_threshold,
-            "classification_threshold": config.classification_threshold,
-        }

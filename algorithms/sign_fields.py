@@ -83,21 +83,21 @@ def _pixel_attributes(pair_id, time, obs) -> list:
             round(float(obs.depth_m), 3)]
 
 
-def detection_feature(fields: QgsFields, detection, record, sign_id=None) -> QgsFeature:
-    """A PointZ feature for one core ``Detection`` seen in pair ``record``; ``sign_id`` links it to its sign."""
-    attributes = _sign_attributes(detection) + _pixel_attributes(record.id, record.time, detection)
+def detection_feature(fields: QgsFields, observation) -> QgsFeature:
+    """A PointZ feature for one observation (a detection in its pair), linked to its sign by ``sign_id``."""
+    attributes = _sign_attributes(observation) + _pixel_attributes(observation.pair_id, observation.time, observation)
     if fields.indexOf("sign_id") >= 0:
-        attributes.append(sign_id)
-    return _point_feature(fields, detection.position, attributes)
+        attributes.append(observation.sign_id)
+    return _point_feature(fields, observation.position, attributes)
 
 
-def sign_feature(fields: QgsFields, sign, mount_height_m=None) -> QgsFeature:
+def sign_feature(fields: QgsFields, sign) -> QgsFeature:
     """A PointZ feature for one fused sign; the pixel fields describe its best observation."""
     best = sign.best
     attributes = [sign.sign_id] + _sign_attributes(sign) + [
         sign.n_obs, round(float(sign.vote_share), 3), round(float(sign.sigma_m), 4),
         None if sign.azimuth is None else round(float(sign.azimuth), 1),
-        None if mount_height_m is None else round(float(mount_height_m), 2),
+        None if sign.mount_height_m is None else round(float(sign.mount_height_m), 2),
         best.pair_id,
     ] + _pixel_attributes(best.pair_id, best.time, best)[1:]
     return _point_feature(fields, sign.position, attributes)

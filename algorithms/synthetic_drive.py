@@ -20,7 +20,8 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QVariant
 
-from .base import SignMapperAlgorithm
+from ..signmapper_core.progress import Cancelled
+from .base import CoreFeedback, SignMapperAlgorithm
 
 
 class SyntheticDriveAlgorithm(SignMapperAlgorithm):
@@ -80,7 +81,7 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         self.require_dependencies()
-        from ..signmapper_core.simulate import Cancelled, SimulationConfig, generate_drive
+        from ..signmapper_core.simulate import SimulationConfig, generate_drive
 
         out_dir = self.parameterAsString(parameters, self.OUTPUT, context)
         config = SimulationConfig(
@@ -95,13 +96,9 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
             angle_sigma_deg=self.parameterAsDouble(parameters, self.ANGLE_SIGMA, context),
         )
 
-        def progress(fraction, message=""):
-            feedback.setProgress(100.0 * fraction)
-            if message:
-                feedback.setProgressText(message)
-
+        steps = CoreFeedback(feedback)
         try:
-            summary = generate_drive(out_dir, config, progress=progress, is_cancelled=feedback.isCanceled)
+            summary = generate_drive(out_dir, config, progress=steps.progress, is_cancelled=steps.is_cancelled)
         except Cancelled:
             raise QgsProcessingException("Cancelled; no drive written.") from None
         except (ValueError, OSError) as exc:

@@ -25,7 +25,6 @@ from .layers import detections_layer_for, features_where, gpkg_source, layer_kin
 from .values import REVIEW, accept_values, manual_feature, reclassify_values, reject_values
 
 ZOOM_HALF_SIZE_M = 20.0
-LARGEST_FACE_M = 1.5  # the click is the sign's centre; the window must hold half the largest face
 
 
 def _value(feature, name):
@@ -468,43 +467,37 @@ class ReviewController(QObject):
         if self.layer is None or record is None or self.catalogue is None:
             self.dock.show_message("Adding a sign needs a Sign Mapper layer and its drive's images", error=True)
             return
-        from ..signmapper_core.pipeline import detect_in_window
+        from ..signmapper_core.mapping import detect_at
 
         drive, catalogue, config, layer = self.drive, self.catalogue, self.pipeline_config(), self.layer
-        half = int(min(max(drive.camera.fx * LARGEST_FACE_M / 2.0 / config.near_m, 64.0),
-                       max(drive.image_size)))
 
-        def work():
-            left = drive.load_left(record)
-            depth = drive.load_depth(record)
-            right = drive.load_right(record) if depth is None else None
-            return detect_in_window(left, depth, right, drive.camera, record.pose, catalogue, config, (u, v), half)
-
-        def found(detection):
+        def found(observation):
             if isdeleted(layer) or layer is not self.layer:
                 return
-            if detection is None:
+            if observation is None:
                 self.dock.show_message(f"No sign found around ({u:.0f}, {v:.0f}) in pair {pair_id}: click the "
                                        "centre of a sign face inside the search range", error=True)
                 return
-            self._add_detection(detection, record)
+            self._add_observation(observation)
 
         self.dock.show_message(f"Looking for a sign around ({u:.0f}, {v:.0f}) in pair {pair_id}…")
-        self._submit("add", work, found)
+        self._submit("add", lambda: detect_at(drive, record, catalogue, config, u, v), found)
 
-    def _add_detection(self, detection, record) -> None:
-        sign_id = None
+    def _add_observation(self, observation) -> None:
+        from ..signmapper_core.mapping import manual_sign
+
+        item = observation
         if self.kind == "signs":
             ids = [_value(f, "sign_id") for f in self.layer.getFeatures()]
-            sign_id = max([i for i in ids if i is not None], default=0) + 1
-        feature = manual_feature(self.layer, detection, record, sign_id)
-        label = f"Sign Mapper: add {detection.template_id} in pair {record.id}"
+            item = manual_sign(observation, max([i for i in ids if i is not None], default=0) + 1)
+        feature = manual_feature(self.layer, item)
+        label = f"Sign Mapper: add {observation.template_id} in pair {observation.pair_id}"
         try:
             decision = add_feature(self.layer, feature, label)
         except EditError as exc:
             self.dock.show_message(str(exc), error=True)
             return
         self._after_decision(decision)
-        self.dock.show_message(f"Added {detection.template_id} {detection.name} at {detection.depth_m:.1f} m "
-                               f"(pair {record.id})")
+        self.dock.show_message(f"Added {observation.template_id} {observation.name} at {observation.depth_m:.1f} m "
+                               f"(pair {observation.pair_id})")
         self.select(decision.fid)

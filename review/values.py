@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from typing import Optional
 
 from qgis.core import NULL, QgsFeature, QgsGeometry, QgsPoint
@@ -38,27 +37,27 @@ def reclassify_values(entry, current_format: Optional[str], current_status: str)
     }
 
 
-def _facing_camera(east: float, north: float, pose) -> float:
-    """Azimuth (degrees from grid north) from the sign towards the camera: a face seen face-on looks that way."""
-    return math.degrees(math.atan2(pose.easting - east, pose.northing - north)) % 360.0
+def manual_feature(layer, item) -> QgsFeature:
+    """A PointZ feature for a sign a person clicked: an Observation (detections) or its manual FusedSign (signs).
 
-
-def manual_feature(layer, detection, record, next_sign_id: Optional[int] = None) -> QgsFeature:
-    """A PointZ feature for a sign a person clicked; fields are matched by name so both layer kinds work."""
-    east, north, up = (float(c) for c in detection.position)
-    x, y, w, h = (int(c) for c in detection.bbox)
+    Fields are matched by name so both layer kinds work.
+    """
+    east, north, up = (float(c) for c in item.position)
+    best = getattr(item, "best", item)
+    x, y, w, h = (int(c) for c in best.bbox)
+    is_sign = best is not item
     values = {
-        "template_id": detection.template_id, "name": detection.name, "colour": detection.colour,
-        "shape": detection.shape, "width_m": float(detection.width_m), "height_m": float(detection.height_m),
-        "format": detection.format, "detection_indicator": round(float(detection.detection_indicator), 4),
-        "classification_indicator": round(float(detection.classification_indicator), 4),
-        "status": MANUAL, "reviewed": 1, "source": detection.source,
-        "pair_id": record.id, "best_pair_id": record.id, "time": float(record.time),
-        "u": round(float(detection.u), 2), "v": round(float(detection.v), 2),
-        "bbox_x": x, "bbox_y": y, "bbox_w": w, "bbox_h": h, "depth_m": round(float(detection.depth_m), 3),
-        "sign_id": next_sign_id, "n_obs": 1 if next_sign_id is not None else None,
-        "vote_share": 1.0 if next_sign_id is not None else None,
-        "azimuth": _facing_camera(east, north, record.pose) if next_sign_id is not None else None,
+        "template_id": item.template_id, "name": item.name, "colour": item.colour,
+        "shape": item.shape, "width_m": float(item.width_m), "height_m": float(item.height_m),
+        "format": item.format, "detection_indicator": round(float(item.detection_indicator), 4),
+        "classification_indicator": round(float(item.classification_indicator), 4),
+        "status": MANUAL, "reviewed": 1, "source": item.source,
+        "pair_id": best.pair_id, "best_pair_id": best.pair_id, "time": float(best.time),
+        "u": round(float(best.u), 2), "v": round(float(best.v), 2),
+        "bbox_x": x, "bbox_y": y, "bbox_w": w, "bbox_h": h, "depth_m": round(float(best.depth_m), 3),
+        "sign_id": item.sign_id, "n_obs": item.n_obs if is_sign else None,
+        "vote_share": item.vote_share if is_sign else None,
+        "azimuth": item.azimuth if is_sign else None,
     }
     fields = layer.fields()
     feature = QgsFeature(fields)

@@ -28,7 +28,6 @@ sys.path.insert(0, str(REPO))
 from signmapper_core.catalogue import load_catalogue  # noqa: E402
 from signmapper_core.drive import open_drive  # noqa: E402
 from signmapper_core.evaluation import combine_reports, evaluate, format_report  # noqa: E402
-from signmapper_core.fusion import Observation, fuse_observations  # noqa: E402
 from signmapper_core.mapping import map_drive  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.visibility import mappable_signs  # noqa: E402
@@ -42,16 +41,6 @@ def generated_drive(seed: int, pairs: int, depth: bool) -> Path:
         print(f"generating {out} ...", flush=True)
         generate_drive(out, SimulationConfig(pairs=pairs, seed=seed, write_depth=depth))
     return out
-
-
-def map_and_collect(drive, catalogue, config):
-    observations, seconds, skipped = [], 0.0, 0
-    for result in map_drive(drive, catalogue, config):
-        seconds += result.seconds
-        skipped += result.error is not None
-        for det in result.detections:
-            observations.append(Observation(det, result.record, len(observations)))
-    return observations, seconds, skipped
 
 
 def azimuth_errors(signs, reference, report) -> list:
@@ -92,11 +81,11 @@ def main(argv=None) -> int:
         reference = mappable_signs(drive, args.near, args.far)
         ref_xyz, ref_ids = [s.position for s in reference], [s.template_id for s in reference]
         traj = np.array([[r.pose.easting, r.pose.northing] for r in drive.pairs])
-        observations, seconds, skipped = map_and_collect(drive, catalogue, config)
-        signs = fuse_observations(observations)
-        head = f"== {folder} ({len(drive.pairs)} pairs, {skipped} skipped, " \
+        result = map_drive(drive, catalogue, config)
+        signs, seconds = result.signs, result.seconds
+        head = f"== {folder} ({len(drive.pairs)} pairs, {len(result.skipped)} skipped, " \
                f"{len(drive.pairs) / max(seconds, 1e-9):.2f} pairs/s)"
-        for kind, items in (("detections", observations), ("signs", signs)):
+        for kind, items in (("detections", result.detections), ("signs", signs)):
             report = evaluate(*positions_ids(items), ref_xyz, ref_ids, traj, args.radius)
             reports[kind].append(report)
             if kind == "signs":

@@ -13,18 +13,18 @@ import json
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable, Iterator
+from typing import Iterator
 
 import numpy as np
 
 from .errors import DriveFormatError
 from .geometry import Camera, Pose
+from .progress import CancelCheck, ProgressCallback, check_cancelled, report
 from .rasterio import DEPTH_SUFFIXES, IMAGE_SUFFIXES, image_size, read_depth, read_image
 
 FORMAT_ID = "stereo-drive/1"
 POSE_COLUMNS = ("id", "time", "easting", "northing", "height", "heading", "pitch", "roll")
 TRUTH_COLUMNS = ("sign_id", "template_id", "easting", "northing", "height", "width_m", "height_m", "facing")
-ProgressCallback = Callable[[int, int], None]
 CAMERA_KEYS = ("width", "height", "fx", "fy", "cx", "cy", "baseline_m")
 
 
@@ -99,12 +99,14 @@ class Drive:
         return iter(self.pairs)
 
 
-def open_drive(path, check_images: bool = True, progress: ProgressCallback | None = None) -> Drive:
+def open_drive(path, check_images: bool = True, progress: ProgressCallback | None = None,
+               is_cancelled: CancelCheck | None = None) -> Drive:
     """Validate and open a drive folder.
 
     ``check_images`` reads the header of every image and depth map to check it
     decodes and has the camera's size; leave it on unless the caller checks.
-    ``progress(done, total)`` is called per pair; it may raise to cancel.
+    ``progress`` and ``is_cancelled`` follow :mod:`signmapper_core.progress`
+    (reported per pair; :class:`~signmapper_core.progress.Cancelled` when cancelled).
     """
     root = Path(path)
     if not root.is_dir():
@@ -113,7 +115,7 @@ def open_drive(path, check_images: bool = True, progress: ProgressCallback | Non
     crs = _validate_crs(root / "drive.json", metadata["crs"])
     camera = _read_camera(root / "drive.json", metadata["camera"])
     rows = _read_poses(root / "poses.csv")
-    pairs = _attach_files(root, rows, camera, check_images, progress)
+    pairs = _attach_files(root, rows, camera, check_images, progress, is_cancelled)
     truth_path = root / "truth.csv"
     truth = read_truth(truth_path) if truth_path.exists() else None
     return Drive(root=root, crs=crs, camera=camera, pairs=pairs, truth=truth, metadata=metadata)
@@ -265,7 +267,8 @@ def _find_file(folder: Path, stem: str, suffixes: tuple[str, ...], poses_path: P
     return found[0] if found else None
 
 
-def _attach_files(root: Path, rows, camera: Camera, check_images: bool, progress=None) -> list[PairRecord]:
+def _attach_files(root: Path, rows, camera: Camera, check_images: bool, progress=None,
+                  is_cancelled=None) -> list[PairRecord]:
     poses_path = root / "poses.csv"
     left_dir, right_dir, depth_dir = root / "left", root / "right", root / "depth"
     if not left_dir.is_dir():
@@ -273,6 +276,7 @@ def _attach_files(root: Path, rows, camera: Camera, check_images: bool, progress
     expected = (camera.width, camera.height)
     pairs = []
     for index, (line, pair_id, time, pose) in enumerate(rows):
+        check_cancelled(is_cancelled, f"opening drive {root}")
         left = _find_file(left_dir, pair_id, IMAGE_SUFFIXES, poses_path, line)
         if left is None:
             raise DriveFormatError(
@@ -295,8 +299,7 @@ def _attach_files(root: Path, rows, camera: Camera, check_images: bool, progress
                         path, f"size {size[0]}x{size[1]} differs from the camera's {expected[0]}x{expected[1]}"
                     )
         pairs.append(PairRecord(index, pair_id, time, pose, left, right, depth))
-        if progress is not None:
-            progress(index + 1, len(rows))
+        report(progress, (index + 1) / len(rows), f"checked pair {pair_id} ({index + 1} of {len(rows)})")
     return pairs
 
 

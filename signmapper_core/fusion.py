@@ -100,7 +100,7 @@ class FusedSign:
     position: np.ndarray
     n_obs: int
     vote_share: float
-    sigma_m: float  # RMS 3D distance of the contributing positions from the fused one
+    sigma_m: Optional[float]  # RMS 3D distance of the contributing positions from the fused one
     azimuth: Optional[float]  # direction the face looks towards, degrees from grid north
     detection_indicator: float
     classification_indicator: float

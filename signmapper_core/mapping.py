@@ -1,19 +1,29 @@
-"""Running the detection pipeline over a whole drive, one pair at a time.
+"""Mapping a drive: every pair through the pipeline, the detections fused into signs, their mounting heights.
 
-This is the loop every front end shares (Processing algorithm, command line,
-a distributed engine later): pairs are decoded lazily, a pair whose files are
-corrupt is reported and skipped rather than ending the run, and cancellation is
-checked between pairs.
+This is the one capability every front end uses (the ``mapsigns`` algorithm,
+``scripts/evaluate_mapping.py``, the benchmarks, the review's "add missed sign").
+Pairs are decoded lazily, one at a time; a pair whose files are corrupt is
+reported and skipped rather than ending the run; cancellation is checked
+between pairs (:mod:`signmapper_core.progress`).
 """
 
 from __future__ import annotations
 
 import time as _time
-from dataclasses import dataclass, field
-from typing import Callable, Iterator, Optional
+from dataclasses import dataclass, field, replace
+from typing import Iterator, Optional
+
+import numpy as np
 
 from .drive import Drive, PairRecord
 from .errors import DriveFormatError
+from .fusion import FusedSign, FusionConfig, Observation, azimuth_deg, fuse_observations
+from .mounting import camera_height_above_road, mounting_height
+from .progress import CancelCheck, ProgressCallback, WarnCallback, check_cancelled, report, warn
+
+PAIRS_SHARE = 0.95  # of the progress: the pairs; fusion and mounting heights take the rest
+LARGEST_FACE_M = 1.5  # a click is the sign's centre: the search window must hold half the largest face
+MANUAL = "manual"  # status of what a person added; output_schema lists all statuses
 
 
 @dataclass
@@ -21,30 +31,133 @@ class PairResult:
     """The detections of one pair, or why the pair was skipped."""
 
     record: PairRecord
-    detections: list = field(default_factory=list)
+    detections: list = field(default_factory=list)  # pipeline.Detection
     error: Optional[str] = None
-    seconds: float = 0.0
+    seconds: float = 0.0  # loading and detecting
+    load_seconds: float = 0.0  # of which decoding the files
 
 
-def map_drive(drive: Drive, catalogue, config,
-              is_cancelled: Optional[Callable[[], bool]] = None) -> Iterator[PairResult]:
-    """Yield a :class:`PairResult` per pair in driving order.
+@dataclass
+class MappingResult:
+    """Everything a run produced: detections with their pairs, fused signs and what the run was."""
 
-    Stops quietly when ``is_cancelled()`` turns true; the caller decides what a
-    cancelled run leaves behind.
-    """
+    drive: Drive
+    catalogue: object
+    config: object  # pipeline.PipelineConfig
+    detections: list[Observation]  # ids from 1 in driving order; each names its sign (sign_id)
+    signs: list[FusedSign]  # ids from 1 in order of first sight; mount_height_m set where known
+    skipped: list[PairResult]  # pairs that could not be read, with the reason
+    seconds: float  # time spent on the pairs (loading and detecting)
+    load_seconds: float = 0.0  # of which decoding the files
+
+    def detections_of(self, sign: FusedSign) -> list[Observation]:
+        return [o for o in self.detections if o.sign_id == sign.sign_id]
+
+    def run_record(self) -> dict:
+        """What the run table records: software, drive folder, CRS, catalogue and settings."""
+        from . import __version__
+
+        return {
+            "software": f"Sign Mapper {__version__}",
+            "drive": str(self.drive.root.resolve()),
+            "crs": self.drive.crs,
+            "catalogue": str(self.catalogue.folder),
+            "near_m": self.config.near_m,
+            "far_m": self.config.far_m,
+            "colours": list(self.config.colours),
+            "exclude": list(self.config.exclude),
+            "detection_threshold": self.config.detection_threshold,
+            "classification_threshold": self.config.classification_threshold,
+        }
+
+
+def load_pair(drive: Drive, record: PairRecord):
+    """(left, depth, right) of one pair as the pipeline takes them: right is only read where no depth is given."""
+    left = drive.load_left(record)
+    depth = drive.load_depth(record)
+    right = drive.load_right(record) if depth is None else None
+    return left, depth, right
+
+
+def map_pairs(drive: Drive, catalogue, config, is_cancelled: Optional[CancelCheck] = None) -> Iterator[PairResult]:
+    """Yield a :class:`PairResult` per pair in driving order; raises ``Cancelled`` between pairs."""
     from .pipeline import detect_pair  # OpenCV is imported only when mapping actually runs
 
     for record in drive.pairs:
-        if is_cancelled is not None and is_cancelled():
-            return
+        check_cancelled(is_cancelled, f"mapping drive {drive.root}")
         start = _time.perf_counter()
         try:
-            left = drive.load_left(record)
-            depth = drive.load_depth(record)
-            right = drive.load_right(record) if depth is None else None
+            left, depth, right = load_pair(drive, record)
         except DriveFormatError as exc:  # the readers report unreadable files as ImageReadError
             yield PairResult(record, error=str(exc), seconds=_time.perf_counter() - start)
             continue
+        loaded = _time.perf_counter()
         detections = detect_pair(left, depth, right, drive.camera, record.pose, catalogue, config)
-        yield PairResult(record, detections, seconds=_time.perf_counter() - start)
+        yield PairResult(record, detections, seconds=_time.perf_counter() - start, load_seconds=loaded - start)
+
+
+def set_mounting_heights(drive: Drive, signs: list[FusedSign]) -> None:
+    """Each sign's lower edge above the road where the drive states its camera height (``mounting``)."""
+    centres = np.array([r.pose.centre for r in drive.pairs])
+    camera_height = camera_height_above_road(drive.metadata)
+    for sign in signs:
+        sign.mount_height_m = mounting_height(sign.position, sign.height_m, centres, camera_height)
+
+
+def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallback] = None,
+              is_cancelled: Optional[CancelCheck] = None, warn_skipped: Optional[WarnCallback] = None,
+              fusion: Optional[FusionConfig] = None) -> MappingResult:
+    """Detect the signs of every pair, fuse them into physical signs and give each its mounting height.
+
+    Skipped pairs are passed to ``warn_skipped`` as they happen and listed in
+    the result; ``Cancelled`` is raised when ``is_cancelled()`` turns true.
+    """
+    detections, skipped, seconds, load_seconds, total = [], [], 0.0, 0.0, len(drive.pairs)
+    for done, result in enumerate(map_pairs(drive, catalogue, config, is_cancelled), start=1):
+        seconds += result.seconds
+        load_seconds += result.load_seconds
+        if result.error:
+            skipped.append(result)
+            warn(warn_skipped, f"Skipped pair {result.record.id}: {result.error}")
+        for detection in result.detections:
+            detections.append(Observation(detection, result.record, id=len(detections) + 1))
+        report(progress, PAIRS_SHARE * done / max(total, 1),
+               f"Pair {result.record.id}: {len(result.detections)} signs ({result.seconds:.2f} s)")
+    check_cancelled(is_cancelled, f"mapping drive {drive.root}")
+    report(progress, PAIRS_SHARE, f"Fusing {len(detections)} detections into signs")
+    signs = fuse_observations(detections, fusion)
+    set_mounting_heights(drive, signs)
+    report(progress, 1.0, f"{len(detections)} detections fused into {len(signs)} signs")
+    return MappingResult(drive, catalogue, config, detections, signs, skipped, seconds, load_seconds)
+
+
+def search_half_size(drive: Drive, config) -> int:
+    """Half the side of the window searched around a click: the largest face at the near limit, in pixels."""
+    return int(min(max(drive.camera.fx * LARGEST_FACE_M / 2.0 / config.near_m, 64.0), max(drive.image_size)))
+
+
+def detect_at(drive: Drive, record: PairRecord, catalogue, config, u: float, v: float) -> Optional[Observation]:
+    """The sign a person clicked at (u, v) in the left image of ``record``, with status "manual", or None.
+
+    The same detection steps run in a window around the click (``detect_in_window``).
+    """
+    from .pipeline import detect_in_window
+
+    left, depth, right = load_pair(drive, record)
+    detection = detect_in_window(left, depth, right, drive.camera, record.pose, catalogue, config, (u, v),
+                                 search_half_size(drive, config))
+    return None if detection is None else Observation(replace(detection, status=MANUAL), record)
+
+
+def manual_sign(observation: Observation, sign_id: int) -> FusedSign:
+    """A sign a person added from one clicked observation: its own class and size, facing the camera."""
+    observation.sign_id = sign_id
+    return FusedSign(
+        sign_id=sign_id, template_id=observation.template_id, width_m=float(observation.width_m),
+        height_m=float(observation.height_m), format=observation.format,
+        position=np.asarray(observation.position, float), n_obs=1, vote_share=1.0, sigma_m=None,
+        azimuth=azimuth_deg(observation.camera_centre - observation.position),
+        detection_indicator=observation.detection_indicator,
+        classification_indicator=observation.classification_indicator, status=MANUAL, best=observation,
+        observations=[observation],
+    )

@@ -17,6 +17,7 @@ import numpy as np
 
 from ..drive_writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
 from ..geometry import Pose
+from ..progress import Cancelled
 from . import textures as tx
 from .config import SimulationConfig, SimulationSummary
 from .faces import sign_kinds
@@ -28,10 +29,6 @@ from .street import Street
 S_FIRST = 10.0          # street position of the first pair (objects exist behind it)
 LOOK_AHEAD_M = 160.0
 LOOK_BEHIND_M = 5.0
-
-
-class Cancelled(Exception):
-    """Raised inside the generator when ``is_cancelled()`` says so."""
 
 
 def _vehicle_positions(config: SimulationConfig) -> np.ndarray:

@@ -40,8 +40,18 @@ def test_valid_drive_opens_with_everything(drive_dir):
 
 def test_progress_is_reported_per_pair(drive_dir):
     calls = []
-    open_drive(drive_dir, progress=lambda done, total: calls.append((done, total)))
-    assert calls == [(1, 4), (2, 4), (3, 4), (4, 4)]
+    open_drive(drive_dir, progress=lambda fraction, message: calls.append((fraction, message)))
+    assert [f for f, _ in calls] == [0.25, 0.5, 0.75, 1.0]
+    assert calls[1][1] == "checked pair 000001 (2 of 4)"
+
+
+def test_cancel_stops_opening_with_cancelled(drive_dir):
+    from signmapper_core.progress import Cancelled
+
+    seen = []
+    with pytest.raises(Cancelled, match="opening drive"):
+        open_drive(drive_dir, progress=lambda f, m: seen.append(f), is_cancelled=lambda: len(seen) >= 2)
+    assert seen == [0.25, 0.5]
 
 
 def test_missing_folder_and_files(tmp_path, drive_dir):

@@ -1,0 +1,42 @@
+"""How long operations report progress and learn they are cancelled: one protocol for the whole core.
+
+``open_drive``, ``map_drive`` and ``generate_drive`` each take
+
+- ``progress(fraction, message)``: ``fraction`` of the whole operation done (0..1)
+  and what it is doing, in words;
+- ``is_cancelled() -> bool``: asked between steps; when it turns true the
+  operation raises :class:`Cancelled` and leaves nothing half-done behind;
+- where input can be skipped (``map_drive``), ``warn(message)``: something was
+  skipped and the operation goes on.
+
+All are optional. Front ends adapt their own feedback to it once
+(``algorithms/base.py`` for QGIS Processing).
+"""
+
+from __future__ import annotations
+
+from typing import Callable, Optional
+
+ProgressCallback = Callable[[float, str], None]
+CancelCheck = Callable[[], bool]
+WarnCallback = Callable[[str], None]
+
+
+class Cancelled(Exception):
+    """A long operation stopped because ``is_cancelled()`` said so; it left nothing behind."""
+
+
+def report(progress: Optional[ProgressCallback], fraction: float, message: str = "") -> None:
+    if progress is not None:
+        progress(min(max(fraction, 0.0), 1.0), message)
+
+
+def check_cancelled(is_cancelled: Optional[CancelCheck], what: str) -> None:
+    """Raise :class:`Cancelled` (naming ``what`` was cancelled) when ``is_cancelled()`` is true."""
+    if is_cancelled is not None and is_cancelled():
+        raise Cancelled(f"{what} cancelled")
+
+
+def warn(callback: Optional[WarnCallback], message: str) -> None:
+    if callback is not None:
+        callback(message)

@@ -1,0 +1,116 @@
+"""Mapping a whole drive with the core: one result with detections, signs, id links, heights; skip and cancel."""
+
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+from drive_fixtures import SMALL_SYNTHETIC
+
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.drive import open_drive
+from signmapper_core.geometry import world_to_pixel
+from signmapper_core.mapping import detect_at, load_pair, manual_sign, map_drive
+from signmapper_core.pipeline import PipelineConfig
+from signmapper_core.progress import Cancelled
+from signmapper_core.simulate import SimulationConfig, generate_drive
+
+
+@pytest.fixture(scope="module")
+def drive_dir(tmp_path_factory) -> Path:
+    out = tmp_path_factory.mktemp("mapping") / "drive"
+    generate_drive(out, SimulationConfig(pairs=10, seed=11, write_depth=True, **SMALL_SYNTHETIC))
+    return out
+
+
+@pytest.fixture(scope="module")
+def catalogue():
+    return load_catalogue()
+
+
+@pytest.fixture(scope="module")
+def mapped(drive_dir, catalogue):
+    progress = []
+    result = map_drive(open_drive(drive_dir), catalogue, PipelineConfig(),
+                       progress=lambda f, m: progress.append((f, m)))
+    return result, progress
+
+
+def test_one_result_with_detections_signs_and_links_by_id(mapped, drive_dir):
+    result, _ = mapped
+    truth = open_drive(drive_dir).truth
+    assert len(result.signs) >= 2 and len(result.detections) > len(result.signs)
+    assert [o.id for o in result.detections] == list(range(1, len(result.detections) + 1))
+    assert [o.pair_index for o in result.detections] == sorted(o.pair_index for o in result.detections)
+    assert [s.sign_id for s in result.signs] == list(range(1, len(result.signs) + 1))
+    for sign in result.signs:
+        linked = result.detections_of(sign)
+        assert len(linked) == sign.n_obs and {o.id for o in linked} == {o.id for o in sign.observations}
+        nearest = min(truth, key=lambda t: np.linalg.norm(t.position - sign.position))
+        assert np.linalg.norm(nearest.position - sign.position) < 0.1 and nearest.template_id == sign.template_id
+        # the generator states its camera height and puts lower edges 0.6-2.5 m above the road (SSV Art. 103)
+        assert 0.4 <= sign.mount_height_m <= 2.8
+    assert not result.skipped and result.seconds > result.load_seconds > 0
+
+
+def test_progress_rises_to_one_with_a_message_per_pair(mapped, drive_dir):
+    _, progress = mapped
+    fractions = [f for f, _ in progress]
+    assert fractions == sorted(fractions) and fractions[-1] == 1.0
+    pair_messages = [m for _, m in progress if m.startswith("Pair ")]
+    assert len(pair_messages) == len(open_drive(drive_dir).pairs)
+    assert any(m.startswith("Fusing ") for _, m in progress)
+
+
+def test_run_record_names_drive_catalogue_and_settings(mapped, drive_dir):
+    record = mapped[0].run_record()
+    assert Path(record["drive"]) == drive_dir.resolve() and record["crs"] == "EPSG:2056"
+    assert (record["near_m"], record["far_m"], record["colours"]) == (4.0, 14.0, ["red", "blue", "yellow"])
+
+
+def test_corrupt_pair_is_skipped_with_a_warning_naming_it(drive_dir, catalogue, tmp_path):
+    drive = tmp_path / "corrupt"
+    shutil.copytree(drive_dir, drive)
+    broken = sorted((drive / "left").iterdir())[3]
+    broken.write_bytes(broken.read_bytes()[:2000])  # header readable, pixels truncated
+    warnings = []
+    result = map_drive(open_drive(drive), catalogue, PipelineConfig(), warn_skipped=warnings.append)
+    assert [r.record.id for r in result.skipped] == [broken.stem]
+    assert len(warnings) == 1 and broken.stem in warnings[0] and broken.name in warnings[0]
+    assert result.detections and all(o.pair_id != broken.stem for o in result.detections)
+
+
+def test_cancel_raises_cancelled_between_pairs(drive_dir, catalogue):
+    seen = []
+    with pytest.raises(Cancelled, match="mapping drive"):
+        map_drive(open_drive(drive_dir), catalogue, PipelineConfig(), progress=lambda f, m: seen.append(m),
+                  is_cancelled=lambda: len(seen) >= 3)
+    assert len([m for m in seen if m.startswith("Pair ")]) == 3
+
+
+def test_load_pair_reads_the_right_image_only_without_depth(drive_dir, tmp_path):
+    drive = open_drive(drive_dir)
+    left, depth, right = load_pair(drive, drive.pairs[0])
+    assert left.shape == (540, 960, 3) and depth.shape == (540, 960) and right is None
+    no_depth = tmp_path / "nodepth"
+    shutil.copytree(drive_dir, no_depth, ignore=shutil.ignore_patterns("depth"))
+    left, depth, right = load_pair(open_drive(no_depth), open_drive(no_depth).pairs[0])
+    assert depth is None and right.shape == left.shape
+
+
+def test_a_click_on_a_sign_gives_a_manual_observation_and_sign(mapped, drive_dir, catalogue):
+    result, _ = mapped
+    drive = open_drive(drive_dir)
+    seen = next(o for o in result.detections if 7 < o.depth_m < 12)
+    truth = min(drive.truth, key=lambda t: np.linalg.norm(t.position - seen.position))
+    record = drive.pair(seen.pair_id)
+    u, v, _ = (float(np.ravel(a)[0]) for a in world_to_pixel(drive.camera, record.pose, truth.position))
+    observation = detect_at(drive, record, catalogue, PipelineConfig(), u + 1.5, v - 1.0)
+    assert observation.status == "manual" and observation.template_id == truth.template_id
+    assert observation.pair_id == record.id and np.linalg.norm(observation.position - truth.position) < 0.1
+    sign = manual_sign(observation, 42)
+    assert (sign.sign_id, sign.n_obs, sign.vote_share, sign.status) == (42, 1, 1.0, "manual")
+    assert sign.best is observation and observation.sign_id == 42 and sign.sigma_m is None
+    towards_camera = np.degrees(np.arctan2(*(record.pose.centre - observation.position)[:2])) % 360
+    assert sign.azimuth == pytest.approx(towards_camera)
+    assert detect_at(drive, record, catalogue, PipelineConfig(), 20.0, 520.0) is None  # road surface
