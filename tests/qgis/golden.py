@@ -85,6 +85,9 @@ def dump_gpkg(path: Path, drive_dir: Path) -> dict:
         has_metadata = db.execute("SELECT 1 FROM sqlite_master WHERE name = 'gpkg_metadata'").fetchone()
         metadata = db.execute("SELECT metadata FROM gpkg_metadata").fetchall() if has_metadata else []
         abstracts = [_placeholders(m, drive_dir) for (m,) in metadata]
+        sqlite_tables = sorted(name for (name,) in db.execute("SELECT name FROM sqlite_master WHERE type = 'table'"))
+        extensions = sorted(list(r) for r in db.execute("SELECT table_name, column_name, extension_name "
+                                                        "FROM gpkg_extensions"))
         styles_table = [list(r) for r in db.execute(
             "SELECT f_table_name, styleName, useAsDefault, description FROM layer_styles ORDER BY f_table_name")]
         for name, table in tables.items():
@@ -104,7 +107,8 @@ def dump_gpkg(path: Path, drive_dir: Path) -> dict:
         else:
             table["features"] = rows
     abstracts = sorted(a[a.index("<abstract>"):a.index("</abstract>") + 11] for a in abstracts if "<abstract>" in a)
-    return {"tables": tables, "abstracts": abstracts, "layer_styles": styles_table, "styles": _styles(path)}
+    return {"sqlite_tables": sqlite_tables, "extensions": extensions, "tables": tables, "abstracts": abstracts,
+            "layer_styles": styles_table, "styles": _styles(path)}
 
 
 def differences(expected, actual, where="") -> list[str]:
