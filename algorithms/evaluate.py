@@ -22,13 +22,13 @@ from qgis.core import (
     QgsProcessingParameterFeatureSource,
     QgsProcessingParameterField,
     QgsProcessingParameterFileDestination,
-    QgsVectorLayer,
     QgsWkbTypes,
 )
 from qgis.PyQt.QtCore import QVariant
 
+from ..signmapper_core.output_schema import REJECTED
 from .base import SignMapperAlgorithm
-from .gpkg_output import RUN_TABLE
+from .gpkg_output import read_run_table
 
 
 class EvaluateAlgorithm(SignMapperAlgorithm):
@@ -181,7 +181,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         has_status = skip_rejected and "status" in names
         out = {"xyz": [], "ids": [], "fids": [], "facing": []}
         for feature in source.getFeatures(QgsFeatureRequest()):
-            if has_status and feature["status"] == "rejected":
+            if has_status and feature["status"] == REJECTED:
                 continue
             geom = QgsGeometry(feature.geometry())
             if geom.isNull():
@@ -231,10 +231,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         if layer is None:
             return None
         path = layer.source().split("|")[0]
-        table = QgsVectorLayer(f"{path}|layername={RUN_TABLE}", "run", "ogr")
-        if not table.isValid():
-            return None
-        values = {f["key"]: f["value"] for f in table.getFeatures()}
+        values = read_run_table(path)
         if "drive" not in values:
             return None
         try:

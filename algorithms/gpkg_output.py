@@ -8,7 +8,6 @@ output untouched.
 
 from __future__ import annotations
 
-import json
 import os
 from pathlib import Path
 
@@ -22,11 +21,12 @@ from qgis.core import (
     QgsLayerMetadata,
     QgsProcessingException,
     QgsVectorFileWriter,
+    QgsVectorLayer,
     QgsWkbTypes,
 )
 from qgis.PyQt.QtCore import QVariant
 
-RUN_TABLE = "signmapper_run"
+from ..signmapper_core.output_schema import RUN_TABLE, decode_run_value, encode_run_value
 
 
 class AtomicGeoPackage:
@@ -74,7 +74,7 @@ class AtomicGeoPackage:
         writer = self.open_layer(RUN_TABLE, fields, QgsWkbTypes.NoGeometry, QgsCoordinateReferenceSystem())
         for key, value in values.items():
             feature = QgsFeature(fields)
-            feature.setAttributes([key, value if isinstance(value, str) else json.dumps(value)])
+            feature.setAttributes([key, encode_run_value(value)])
             writer.addFeature(feature, QgsFeatureSink.FastInsert)
         del writer
 
@@ -91,3 +91,18 @@ class AtomicGeoPackage:
 
 def layer_uri(path: str, layer: str) -> str:
     return f"{path}|layername={layer}"
+
+
+def read_run_table(path: str) -> dict:
+    """The run table of the GeoPackage ``path`` as written (``output_schema.RUN_KEYS``); {} where there is none."""
+    if not path:
+        return {}
+    table = QgsVectorLayer(layer_uri(path, RUN_TABLE), RUN_TABLE, "ogr")
+    if not table.isValid():
+        return {}
+    values = {}
+    for feature in table.getFeatures():
+        key, text = feature["key"], feature["value"]
+        if isinstance(key, str) and isinstance(text, str):
+            values[key] = decode_run_value(key, text)
+    return values

@@ -27,7 +27,8 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QPointF
 from qgis.PyQt.QtGui import QColor
 
-STATUS_COLOURS = {"accepted": "#2e7d32", "review": "#f57c00", "rejected": "#9e9e9e", "manual": "#1565c0"}
+from ..signmapper_core.output_schema import DETECTIONS, REVIEW, SIGNS, STATUS_COLOURS
+
 PICTOGRAM_MM = 7.0
 
 
@@ -95,12 +96,12 @@ def id_labels(expression: str) -> QgsVectorLayerSimpleLabeling:
 
 def embed_default_styles(gpkg_path: str, catalogue) -> None:
     """Save the default styles into the GeoPackage's layer_styles table, used when the layers are opened."""
-    signs = QgsVectorLayer(f"{gpkg_path}|layername=signs", "signs", "ogr")
+    signs = QgsVectorLayer(f"{gpkg_path}|layername={SIGNS}", SIGNS, "ogr")
     signs.setRenderer(signs_renderer(catalogue))
-    signs.setLabeling(id_labels("\"template_id\" || if(\"status\" = 'review', ' ?', '')"))
+    signs.setLabeling(id_labels(f"\"template_id\" || if(\"status\" = '{REVIEW}', ' ?', '')"))
     signs.setLabelsEnabled(True)
     _save(signs, "Sign Mapper: pictograms, face direction and ids")
-    detections = QgsVectorLayer(f"{gpkg_path}|layername=detections", "detections", "ogr")
+    detections = QgsVectorLayer(f"{gpkg_path}|layername={DETECTIONS}", DETECTIONS, "ogr")
     detections.setRenderer(detections_renderer())
     _save(detections, "Sign Mapper: detections by status")
 

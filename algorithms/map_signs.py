@@ -17,12 +17,14 @@ from qgis.core import (
     QgsWkbTypes,
 )
 
+from ..signmapper_core import output_schema as schema
+from ..signmapper_core.output_schema import DETECTIONS, SIGNS
 from ..signmapper_core.progress import Cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise
 from .gpkg_output import AtomicGeoPackage, layer_uri
 from .layer_styles import embed_default_styles
-from .sign_fields import DETECTION_LAYER_FIELDS, SIGN_FIELDS, detection_feature, make_fields, sign_feature
+from .sign_fields import layer_feature, layer_fields
 
 COLOURS = ["red", "blue", "yellow"]
 
@@ -54,6 +56,15 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
     OUTPUT = "OUTPUT"
     DETECTIONS = "DETECTIONS"
     SIGNS = "SIGNS"
+
+    def shortHelpString(self):  # noqa: N802
+        """The help, the parameters, and every output field with its layers (from output_schema)."""
+        lines = [super().shortHelpString(), "<b>Output fields</b>", "<ul>"]
+        for field in schema.FIELDS:
+            layers = " and ".join(layer for layer in schema.LAYERS if field.reader(layer) is not None)
+            lines.append(f"<li><b>{field.name}</b> ({layers}): {self.tr(field.help)}</li>")
+        lines.append("</ul>")
+        return "\n".join(lines)
 
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_drive_parameter(self.DRIVE)
@@ -151,7 +162,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         feedback.pushInfo(f"{len(result.detections)} detections fused into {len(result.signs)} signs, "
                           f"written to {path}")
         results = {self.OUTPUT: path}
-        for key, layer, title in ((self.SIGNS, "signs", "Signs"), (self.DETECTIONS, "detections", "Sign detections")):
+        for key, layer, title in ((self.SIGNS, SIGNS, "Signs"), (self.DETECTIONS, DETECTIONS, "Sign detections")):
             results[key] = layer_uri(path, layer)
             context.addLayerToLoadOnCompletion(
                 results[key], QgsProcessingContext.LayerDetails(title, context.project(), key)
@@ -182,16 +193,13 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
 
     @staticmethod
     def write_layers(output, result) -> None:
+        """The layers signs (fused signs) and detections (observations), fields as output_schema declares."""
         crs = QgsCoordinateReferenceSystem(result.drive.crs)
-        fields = make_fields(SIGN_FIELDS)
-        writer = output.open_layer("signs", fields, QgsWkbTypes.PointZ, crs,
-                                   abstract=f"Sign Mapper: traffic signs of drive {result.drive.root}")
-        for sign in result.signs:
-            writer.addFeature(sign_feature(fields, sign), QgsFeatureSink.FastInsert)
-        del writer
-        fields = make_fields(DETECTION_LAYER_FIELDS)
-        writer = output.open_layer("detections", fields, QgsWkbTypes.PointZ, crs,
-                                   abstract=f"Sign Mapper: per-pair sign detections of drive {result.drive.root}")
-        for observation in result.detections:
-            writer.addFeature(detection_feature(fields, observation), QgsFeatureSink.FastInsert)
-        del writer
+        for layer, items, what in ((SIGNS, result.signs, "traffic signs"),
+                                   (DETECTIONS, result.detections, "per-pair sign detections")):
+            fields = layer_fields(layer)
+            writer = output.open_layer(layer, fields, QgsWkbTypes.PointZ, crs,
+                                       abstract=f"Sign Mapper: {what} of drive {result.drive.root}")
+            for item in items:
+                writer.addFeature(layer_feature(fields, layer, item), QgsFeatureSink.FastInsert)
+            del writer

@@ -15,14 +15,17 @@ from qgis.core import NULL, QgsCoordinateTransform, QgsFeatureRequest, QgsProjec
 from qgis.PyQt.QtCore import QObject
 from qgis.PyQt.sip import isdeleted
 
+from ..algorithms.gpkg_output import read_run_table
+from ..algorithms.sign_fields import feature_values
+from ..signmapper_core.output_schema import REVIEW
 from ..ui.review_item import Observation, ReviewItem
 from ..ui.template_picker import TemplateChoice
 from .background import BackgroundRunner
 from .decisions import DecisionLog, EditError, add_feature, change_attributes
 from .drive_locator import DriveLocator
 from .imaging import bgr_to_qimage, crop_rect, thumbnail
-from .layers import detections_layer_for, features_where, gpkg_source, layer_kind, read_run_table
-from .values import REVIEW, accept_values, manual_feature, reclassify_values, reject_values
+from .layers import detections_layer_for, features_where, gpkg_source, layer_kind
+from .values import accept_values, manual_feature, reclassify_values, reject_values
 
 ZOOM_HALF_SIZE_M = 20.0
 
@@ -180,7 +183,7 @@ class ReviewController(QObject):
             self._load_thumbnails(item)
 
     def _item(self, feature) -> ReviewItem:
-        get = lambda name: _value(feature, name)  # noqa: E731
+        get = feature_values(feature, self.kind).get
         order = self._order()
         position = next((i for i, (fid, _) in enumerate(order) if fid == feature.id()), 0) + 1
         to_review = sum(status == REVIEW for _, status in order)
@@ -419,7 +422,7 @@ class ReviewController(QObject):
             self.dock.show_message(f"Template {template_id} is not in the catalogue", error=True)
             return
         feature = self.layer.getFeature(self.fid)
-        values = reclassify_values(self.catalogue[template_id], _value(feature, "format"),
+        values = reclassify_values(self.kind, self.catalogue[template_id], _value(feature, "format"),
                                    _value(feature, "status") or "")
         self.dock.show_picker(False)
         self._decide(values, "reclassify feature {fid} as " + template_id)
@@ -490,7 +493,7 @@ class ReviewController(QObject):
         if self.kind == "signs":
             ids = [_value(f, "sign_id") for f in self.layer.getFeatures()]
             item = manual_sign(observation, max([i for i in ids if i is not None], default=0) + 1)
-        feature = manual_feature(self.layer, item)
+        feature = manual_feature(self.layer, self.kind, item)
         label = f"Sign Mapper: add {observation.template_id} in pair {observation.pair_id}"
         try:
             decision = add_feature(self.layer, feature, label)

@@ -2,15 +2,12 @@
 
 from __future__ import annotations
 
-import json
 from typing import Optional, Tuple
 
 from qgis.core import QgsExpression, QgsFeatureRequest, QgsProject, QgsProviderRegistry, QgsVectorLayer
 
-RUN_TABLE = "signmapper_run"  # written by algorithms/gpkg_output.py
-KINDS = ("signs", "detections")
-_COMMON = {"template_id", "status", "reviewed", "u", "v", "bbox_x", "bbox_y", "bbox_w", "bbox_h"}
-_SIGN_ONLY = {"sign_id", "n_obs", "best_pair_id"}
+from ..algorithms.gpkg_output import layer_uri
+from ..signmapper_core.output_schema import DETECTIONS, LAYERS, RUN_TABLE, SIGNS, required_names
 
 
 def gpkg_source(layer) -> Tuple[str, str]:
@@ -23,44 +20,26 @@ def gpkg_source(layer) -> Tuple[str, str]:
 
 
 def has_run_table(path: str) -> bool:
-    table = QgsVectorLayer(f"{path}|layername={RUN_TABLE}", RUN_TABLE, "ogr")
-    return table.isValid()
+    return QgsVectorLayer(layer_uri(path, RUN_TABLE), RUN_TABLE, "ogr").isValid()
 
 
 def layer_kind(layer) -> Optional[str]:
     """'signs' or 'detections' for a Sign Mapper layer, else None.
 
-    Recognised by its GeoPackage's run table and layer name, or failing that by its fields
-    (a layer copied elsewhere or renamed keeps them).
+    A layer is ours when it has the fields the review needs (``output_schema``,
+    ``required``). Its kind is its name in a GeoPackage with our run table, or
+    failing that what its fields say (a layer copied elsewhere or renamed keeps them).
     """
     if not isinstance(layer, QgsVectorLayer) or not layer.isValid():
         return None
     names = set(layer.fields().names())
-    if not _COMMON <= names or not ({"pair_id", "best_pair_id"} & names):
+    kinds = [kind for kind in LAYERS if required_names(kind) <= names]
+    if not kinds:
         return None
     path, name = gpkg_source(layer)
-    if name in KINDS and has_run_table(path):
+    if name in kinds and has_run_table(path):
         return name
-    return "signs" if _SIGN_ONLY <= names else "detections"
-
-
-def read_run_table(path: str) -> dict:
-    """The key/value rows of ``signmapper_run``; JSON values decoded, strings kept as written."""
-    if not path:
-        return {}
-    table = QgsVectorLayer(f"{path}|layername={RUN_TABLE}", RUN_TABLE, "ogr")
-    if not table.isValid():
-        return {}
-    values = {}
-    for feature in table.getFeatures():
-        key, text = feature["key"], feature["value"]
-        if not isinstance(key, str) or not isinstance(text, str):
-            continue
-        try:
-            values[key] = json.loads(text) if key != "drive" else text
-        except ValueError:
-            values[key] = text
-    return values
+    return SIGNS if SIGNS in kinds else DETECTIONS
 
 
 def detections_layer_for(layer) -> Optional[QgsVectorLayer]:
@@ -69,9 +48,9 @@ def detections_layer_for(layer) -> Optional[QgsVectorLayer]:
     if not path:
         return None
     for candidate in QgsProject.instance().mapLayers().values():
-        if gpkg_source(candidate) == (path, "detections"):
+        if gpkg_source(candidate) == (path, DETECTIONS):
             return candidate
-    private = QgsVectorLayer(f"{path}|layername=detections", "detections", "ogr")
+    private = QgsVectorLayer(layer_uri(path, DETECTIONS), DETECTIONS, "ogr")
     return private if private.isValid() else None
 
 

@@ -20,6 +20,8 @@ from typing import Optional, Sequence
 
 import numpy as np
 
+from .output_schema import ACCEPTED, REVIEW
+
 
 def _of_detection(name: str, doc: str) -> property:
     return property(lambda self: getattr(self.detection, name), doc=doc)
@@ -319,12 +321,12 @@ def fuse_track(sign_id: int, observations: Sequence[Observation], config: Fusion
     cls_ind = float(np.mean([o.classification_indicator for o in voters]))
     accepted = (len(voters) >= config.min_obs_accepted and share >= config.accept_vote_share
                 and cls_ind >= config.accept_classification)
-    if len(voters) == 1 and best.status == "accepted" and cls_ind >= config.accept_classification + 0.15:
+    if len(voters) == 1 and best.status == ACCEPTED and cls_ind >= config.accept_classification + 0.15:
         accepted = True  # a single, very clear observation
     return FusedSign(
         sign_id=sign_id, template_id=template_id, width_m=width, height_m=height, format=fmt, position=position,
         n_obs=len(observations), vote_share=share, sigma_m=sigma, azimuth=azimuth_deg(mean_face(voters)),
-        detection_indicator=det_ind, classification_indicator=cls_ind, status="accepted" if accepted else "review",
+        detection_indicator=det_ind, classification_indicator=cls_ind, status=ACCEPTED if accepted else REVIEW,
         best=best, observations=list(observations),
     )
 

@@ -19,11 +19,11 @@ from .drive import Drive, PairRecord
 from .errors import DriveFormatError
 from .fusion import FusedSign, FusionConfig, Observation, azimuth_deg, fuse_observations
 from .mounting import camera_height_above_road, mounting_height
+from .output_schema import MANUAL, run_record
 from .progress import CancelCheck, ProgressCallback, WarnCallback, check_cancelled, report, warn
 
 PAIRS_SHARE = 0.95  # of the progress: the pairs; fusion and mounting heights take the rest
 LARGEST_FACE_M = 1.5  # a click is the sign's centre: the search window must hold half the largest face
-MANUAL = "manual"  # status of what a person added; output_schema lists all statuses
 
 
 @dataclass
@@ -54,21 +54,8 @@ class MappingResult:
         return [o for o in self.detections if o.sign_id == sign.sign_id]
 
     def run_record(self) -> dict:
-        """What the run table records: software, drive folder, CRS, catalogue and settings."""
-        from . import __version__
-
-        return {
-            "software": f"Sign Mapper {__version__}",
-            "drive": str(self.drive.root.resolve()),
-            "crs": self.drive.crs,
-            "catalogue": str(self.catalogue.folder),
-            "near_m": self.config.near_m,
-            "far_m": self.config.far_m,
-            "colours": list(self.config.colours),
-            "exclude": list(self.config.exclude),
-            "detection_threshold": self.config.detection_threshold,
-            "classification_threshold": self.config.classification_threshold,
-        }
+        """What the run table records (``output_schema.RUN_KEYS``): software, drive, catalogue and settings."""
+        return run_record(self)
 
 
 def load_pair(drive: Drive, record: PairRecord):

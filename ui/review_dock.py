@@ -30,11 +30,10 @@ from qgis.PyQt.QtWidgets import (
     QWidget,
 )
 
+from ..signmapper_core.output_schema import ACCEPTED, REJECTED, STATUS_COLOURS
 from .image_view import ImageView
 from .review_item import Observation, ReviewItem
 from .template_picker import TemplateChoice, TemplatePicker
-
-STATUS_COLOURS = {"accepted": "#2e7d32", "review": "#ef6c00", "rejected": "#c62828", "manual": "#1565c0"}
 
 # action name -> (button text, shortcut); the shortcuts act while the dock has the focus
 SHORTCUTS = {
@@ -163,8 +162,8 @@ class ReviewDock(QDockWidget):
             grid.addWidget(self._button(name), 0, col)
         for col, name in enumerate(("accept", "reject", "reclassify", "undo")):
             grid.addWidget(self._button(name), 1, col)
-        self.buttons["accept"].setStyleSheet(f"color: {STATUS_COLOURS['accepted']}; font-weight: bold")
-        self.buttons["reject"].setStyleSheet(f"color: {STATUS_COLOURS['rejected']}; font-weight: bold")
+        self.buttons["accept"].setStyleSheet(f"color: {STATUS_COLOURS[ACCEPTED]}; font-weight: bold")
+        self.buttons["reject"].setStyleSheet(f"color: {STATUS_COLOURS[REJECTED]}; font-weight: bold")
         self.buttons["reclassify"].setCheckable(True)
         add = self._button("add_sign")
         add.setCheckable(True)

@@ -69,3 +69,12 @@ def test_missing_opencv_gives_install_message_not_traceback(plugin_dir, tmp_path
     assert "MESSAGE QgsProcessingException" in result.stdout
     assert "OpenCV (cv2)" in result.stdout and "pip install" in result.stdout
     assert "Traceback" not in result.stdout
+
+
+def test_map_signs_help_lists_every_output_field(registered_plugin):
+    from sign_mapper.signmapper_core import output_schema
+
+    help_text = QgsApplication.processingRegistry().algorithmById("signmapper:mapsigns").shortHelpString()
+    for field in output_schema.FIELDS:
+        assert f"<b>{field.name}</b>" in help_text and field.help in help_text
+    assert "<b>mount_height_m</b> (signs):" in help_text and "<b>u</b> (signs and detections):" in help_text

@@ -62,10 +62,10 @@ def _attrs(det, record, status):
     }
 
 
-def _write_layer(gpkg, name, spec, rows, crs):
-    from sign_mapper.algorithms.sign_fields import make_fields
+def _write_layer(gpkg, name, rows, crs):
+    from sign_mapper.algorithms.sign_fields import layer_fields
 
-    fields = make_fields(spec)
+    fields = layer_fields(name)
     writer = gpkg.open_layer(name, fields, QgsWkbTypes.PointZ, crs)
     for values, position in rows:
         feature = QgsFeature(fields)
@@ -80,7 +80,6 @@ def _write_layer(gpkg, name, spec, rows, crs):
 def build_gpkg(path: Path, drive_dir: Path, detections, recorded_drive=None, skip=()) -> Path:
     """A GeoPackage like mapsigns writes: detections, signs fused by template, and the run table."""
     from sign_mapper.algorithms.gpkg_output import AtomicGeoPackage
-    from sign_mapper.algorithms.sign_fields import DETECTION_LAYER_FIELDS, SIGN_FIELDS
 
     crs = QgsCoordinateReferenceSystem("EPSG:2056")
     sign_ids = {t: i + 1 for i, t in enumerate(sorted({d.template_id for _, d in detections}))}
@@ -99,8 +98,8 @@ def build_gpkg(path: Path, drive_dir: Path, detections, recorded_drive=None, ski
         values.update(sign_id=sign_id, n_obs=len(obs), vote_share=1.0, sigma_m=0.02, best_pair_id=record.id)
         signs.append((values, np.mean([d.position for _, d in obs], axis=0)))
     gpkg = AtomicGeoPackage(str(path))
-    _write_layer(gpkg, "detections", DETECTION_LAYER_FIELDS, rows, crs)
-    _write_layer(gpkg, "signs", SIGN_FIELDS, signs, crs)
+    _write_layer(gpkg, "detections", rows, crs)
+    _write_layer(gpkg, "signs", signs, crs)
     gpkg.write_run_table({"drive": str(recorded_drive or drive_dir), "crs": "EPSG:2056", "near_m": 4.0,
                           "far_m": 14.0, "colours": ["red", "blue", "yellow"]})
     return Path(gpkg.commit())
