@@ -73,3 +73,32 @@ class BackgroundRunner(QObject):
         callbacks = self._callbacks.pop(token, None)
         if callbacks is not None and callbacks[1] is not None:
             callbacks[1](message)
+
+
+class Jobs:
+    """Background jobs by purpose ("image", "thumbnails", "add"): a new job replaces the pending one of its purpose.
+
+    The replaced job's result is dropped, so a slow decode never overwrites what
+    the user asked for since. Failures go to ``on_error(first line of the message)``.
+    """
+
+    def __init__(self, runner: BackgroundRunner, on_error: Callable[[str], None]):
+        self.runner, self.on_error = runner, on_error
+        self._pending: Dict[str, int] = {}  # purpose -> token of the job whose result is still wanted
+
+    def submit(self, purpose: str, work: Callable[[], object], on_done: Callable[[object], None]) -> None:
+        self.runner.forget(self._pending.pop(purpose, None))
+
+        def done(result):
+            self._pending.pop(purpose, None)
+            on_done(result)
+
+        def failed(message: str):
+            self._pending.pop(purpose, None)
+            self.on_error(message.splitlines()[0])
+
+        self._pending[purpose] = self.runner.submit(work, done, failed)
+
+    def forget_all(self) -> None:
+        for purpose in list(self._pending):
+            self.runner.forget(self._pending.pop(purpose))

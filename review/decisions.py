@@ -1,135 +1,129 @@
-"""Writing review decisions to a layer through QGIS's edit buffer, saving them, and undoing them.
+"""Decisions on the shown feature: accept, reject, reclassify, undo, and adding a sign a person clicked.
 
-Each decision is one edit command (so it is on ``layer.undoStack()`` while the
-layer is being edited). If the layer was not in edit mode, the decision is
-committed to the GeoPackage at once and undone later by a new edit restoring the
-recorded previous values. If the user already had the layer in edit mode, the
-decision joins that edit session uncommitted and is undone through the undo stack.
+Values follow the output schema (``values``); each decision is one undoable
+edit (``edits``). Finding a clicked sign runs the core's ``detect_at`` in a
+worker thread.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import List, Optional
-
-from qgis.core import QgsFeature
 from qgis.PyQt.sip import isdeleted
 
-
-class EditError(RuntimeError):
-    """A decision could not be written; the layer was left as it was."""
-
-
-@dataclass
-class Decision:
-    layer: object  # QgsVectorLayer
-    fid: int
-    label: str
-    old: dict = field(default_factory=dict)
-    new: dict = field(default_factory=dict)
-    added: bool = False  # a manual sign: undone by deleting the feature
-    committed: bool = True
+from ..algorithms.sign_fields import feature_values
+from ..signmapper_core.output_schema import SIGNS
+from .edits import DecisionLog, EditError, add_feature, change_attributes
+from .values import accept_values, manual_feature, reclassify_values, reject_values
 
 
-def _commit(layer) -> None:
-    if not layer.commitChanges():
-        errors = "; ".join(layer.commitErrors())
-        layer.rollBack()
-        raise EditError(f"{layer.name()}: could not save: {errors}")
+class DecisionTaker:
+    def __init__(self, session, dock, jobs, navigator, show_feature, show_selection):
+        self.session, self.dock, self.jobs, self.navigator = session, dock, jobs, navigator
+        self.show_feature, self.show_selection = show_feature, show_selection  # the controller's
+        self.log = DecisionLog()
 
+    def _decide(self, values: dict, what: str) -> None:
+        """Write ``values`` to the shown feature; ``what`` describes the decision, "{fid}" is the feature id."""
+        layer, fid = self.session.layer, self.session.fid
+        if layer is None or fid is None:
+            return
+        label = what.format(fid=fid)
+        try:
+            decision = change_attributes(layer, fid, values, f"Sign Mapper: {label}")
+        except EditError as exc:
+            self.dock.show_message(str(exc), error=True)
+            return
+        self._taken(decision)
+        saved = "saved" if decision.committed else "in your edit session, not saved yet"
+        self.dock.show_message(f"{label[0].upper()}{label[1:]} ({saved})")
+        if not (self.dock.advance_after_decision() and self.navigator.next_review()):
+            self.show_feature(fid)
 
-class _EditSession:
-    """Starts editing if needed; commits at the end only a session it started itself."""
+    def _taken(self, decision) -> None:
+        self.log.push(decision)
+        self.dock.set_undo_enabled(True, decision.label)
+        decision.layer.triggerRepaint()
 
-    def __init__(self, layer, label: str):
-        self.layer, self.label = layer, label
-        self.own = not layer.isEditable()
+    def accept(self) -> None:
+        self._decide(accept_values(), "accept feature {fid}")
 
-    def __enter__(self):
-        if self.own and not self.layer.startEditing():
-            raise EditError(f"{self.layer.name()}: the layer cannot be edited")
-        self.layer.beginEditCommand(self.label)
-        return self
+    def reject(self) -> None:
+        self._decide(reject_values(), "reject feature {fid}")
 
-    def __exit__(self, exc_type, exc, tb):
-        if exc_type is not None:
-            self.layer.destroyEditCommand()
-            if self.own:
-                self.layer.rollBack()
-            return False
-        self.layer.endEditCommand()
-        if self.own:
-            _commit(self.layer)
-        return False
+    def reclassify(self, template_id: str) -> None:
+        session = self.session
+        if session.layer is None or session.fid is None or session.catalogue is None:
+            return
+        if template_id not in session.catalogue:
+            self.dock.show_message(f"Template {template_id} is not in the catalogue", error=True)
+            return
+        current = feature_values(session.layer.getFeature(session.fid), session.kind)
+        values = reclassify_values(session.kind, session.catalogue[template_id], current["format"],
+                                   current["status"] or "")
+        self.dock.show_picker(False)
+        self._decide(values, "reclassify feature {fid} as " + template_id)
 
-
-def change_attributes(layer, fid: int, values: dict, label: str) -> Decision:
-    """Set ``values`` (field name -> value) of feature ``fid`` as one undoable edit; returns the decision."""
-    feature = layer.getFeature(fid)
-    if not feature.isValid():
-        raise EditError(f"{layer.name()}: feature {fid} no longer exists")
-    fields = layer.fields()
-    values = {name: value for name, value in values.items() if fields.indexOf(name) >= 0}
-    old = {name: feature[name] for name in values}
-    with _EditSession(layer, label) as session:
-        for name, value in values.items():
-            if not layer.changeAttributeValue(fid, fields.indexOf(name), value, old[name]):
-                raise EditError(f"{layer.name()}: cannot change {name} of feature {fid}")
-    return Decision(layer, fid, label, old, values, committed=session.own)
-
-
-def add_feature(layer, feature: QgsFeature, label: str) -> Decision:
-    """Add a feature as one undoable edit; the decision holds its id after saving."""
-    added: List[int] = []
-
-    def remember(_layer_id, features):
-        added.extend(f.id() for f in features)
-
-    layer.committedFeaturesAdded.connect(remember)
-    try:
-        with _EditSession(layer, label) as session:
-            if not layer.addFeature(feature):
-                raise EditError(f"{layer.name()}: cannot add the feature")
-            temporary = feature.id()
-    finally:
-        layer.committedFeaturesAdded.disconnect(remember)
-    fid = added[0] if session.own and added else temporary
-    return Decision(layer, fid, label, added=True, committed=session.own)
-
-
-class DecisionLog:
-    """The decisions of this session, newest last, for "Undo last decision"."""
-
-    def __init__(self):
-        self.decisions: List[Decision] = []
-
-    def push(self, decision: Decision) -> Decision:
-        self.decisions.append(decision)
-        return decision
-
-    def last(self) -> Optional[Decision]:
-        while self.decisions and isdeleted(self.decisions[-1].layer):
-            self.decisions.pop()  # its layer was removed from the project
-        return self.decisions[-1] if self.decisions else None
-
-    def undo(self) -> Optional[Decision]:
-        """Revert the newest decision on its layer (and on disk if it was saved); returns it."""
-        decision = self.last()
+    def undo_last(self) -> None:
+        try:
+            decision = self.log.undo()
+        except EditError as exc:
+            self.dock.show_message(str(exc), error=True)
+            return
+        last = self.log.last()
+        self.dock.set_undo_enabled(last is not None, last.label if last else "")
         if decision is None:
-            return None
-        layer = decision.layer
-        if not decision.committed and layer.isEditable() and self._on_top_of_undo_stack(decision):
-            layer.undoStack().undo()
-        elif decision.added:
-            with _EditSession(layer, f"Undo: {decision.label}"):
-                if not layer.deleteFeature(decision.fid):
-                    raise EditError(f"{layer.name()}: cannot delete feature {decision.fid}")
+            return
+        self.dock.show_message(f"Undone: {decision.label}")
+        decision.layer.triggerRepaint()
+        layer = self.session.layer
+        if decision.layer is not layer:
+            return
+        if decision.added:
+            layer.removeSelection()
+            self.session.fid = None
+            self.show_selection()
         else:
-            change_attributes(layer, decision.fid, decision.old, f"Undo: {decision.label}")
-        self.decisions.pop()
-        return decision
+            self.navigator.select(decision.fid)
+            self.show_feature(decision.fid)
 
-    @staticmethod
-    def _on_top_of_undo_stack(decision: Decision) -> bool:
-        stack = decision.layer.undoStack()
-        return stack.index() > 0 and stack.command(stack.index() - 1).text() == decision.label
+    def add_sign(self, pair_id: str, u: float, v: float) -> None:
+        """Run the detection steps in a window around a click on the sign's centre; add what they find."""
+        session = self.session
+        record = session.record(pair_id)
+        if session.layer is None or record is None or session.catalogue is None:
+            self.dock.show_message("Adding a sign needs a Sign Mapper layer and its drive's images", error=True)
+            return
+        from ..signmapper_core.mapping import detect_at
+
+        drive, catalogue, config, layer = session.drive, session.catalogue, session.pipeline_config(), session.layer
+
+        def found(observation):
+            if isdeleted(layer) or layer is not session.layer:
+                return
+            if observation is None:
+                self.dock.show_message(f"No sign found around ({u:.0f}, {v:.0f}) in pair {pair_id}: click the "
+                                       "centre of a sign face inside the search range", error=True)
+                return
+            self._add(observation)
+
+        self.dock.show_message(f"Looking for a sign around ({u:.0f}, {v:.0f}) in pair {pair_id}…")
+        self.jobs.submit("add", lambda: detect_at(drive, record, catalogue, config, u, v), found)
+
+    def _add(self, observation) -> None:
+        """A feature for the clicked sign: the observation itself, or in a signs layer a new sign numbered last."""
+        from ..signmapper_core.mapping import manual_sign
+
+        layer, kind = self.session.layer, self.session.kind
+        item = observation
+        if kind == SIGNS:
+            ids = [feature_values(f, SIGNS)["sign_id"] for f in layer.getFeatures()]
+            item = manual_sign(observation, max([i for i in ids if i is not None], default=0) + 1)
+        label = f"Sign Mapper: add {observation.template_id} in pair {observation.pair_id}"
+        try:
+            decision = add_feature(layer, manual_feature(layer, kind, item), label)
+        except EditError as exc:
+            self.dock.show_message(str(exc), error=True)
+            return
+        self._taken(decision)
+        self.dock.show_message(f"Added {observation.template_id} {observation.name} at {observation.depth_m:.1f} m "
+                               f"(pair {observation.pair_id})")
+        self.navigator.select(decision.fid)

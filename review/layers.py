@@ -54,9 +54,7 @@ def detections_layer_for(layer) -> Optional[QgsVectorLayer]:
     return private if private.isValid() else None
 
 
-def features_where(layer, field: str, value, attributes=None):
-    """Features with ``field`` equal to ``value`` (no geometry unless asked), through the edit buffer."""
+def features_where(layer, field: str, value):
+    """Features with ``field`` equal to ``value``, through the edit buffer."""
     request = QgsFeatureRequest().setFilterExpression(QgsExpression.createFieldEqualityExpression(field, value))
-    if attributes is not None:
-        request.setSubsetOfAttributes(attributes, layer.fields())
     return list(layer.getFeatures(request))

@@ -95,9 +95,6 @@ class Drive:
         """Given depth map (float32 metres, NaN = no depth), or None where none is given."""
         return None if record.depth_path is None else read_depth(record.depth_path, self.image_size)
 
-    def iter_pairs(self) -> Iterator[PairRecord]:
-        return iter(self.pairs)
-
 
 def open_drive(path, check_images: bool = True, progress: ProgressCallback | None = None,
                is_cancelled: CancelCheck | None = None) -> Drive:

@@ -32,7 +32,7 @@ from qgis.PyQt.QtWidgets import (
 
 from ..signmapper_core.output_schema import ACCEPTED, REJECTED, STATUS_COLOURS
 from .image_view import ImageView
-from .review_item import Observation, ReviewItem
+from .review_item import ObservationView, ReviewItem
 from .template_picker import TemplateChoice, TemplatePicker
 
 # action name -> (button text, shortcut); the shortcuts act while the dock has the focus
@@ -73,7 +73,6 @@ class ReviewDock(QDockWidget):
         self.setObjectName("SignMapperReviewDock")
         self.item: Optional[ReviewItem] = None
         self.pair_id = ""
-        self.actions_by_name = {}
         body = QWidget()
         self.setWidget(body)
         layout = QVBoxLayout(body)
@@ -210,7 +209,6 @@ class ReviewDock(QDockWidget):
             action.setShortcutContext(Qt.WidgetWithChildrenShortcut)
             action.triggered.connect(handler)
             self.addAction(action)
-            self.actions_by_name[name] = action
 
     def _if_enabled(self, name: str) -> None:
         button = self.buttons[name]
@@ -220,6 +218,9 @@ class ReviewDock(QDockWidget):
     # slots the controller calls ----------------------------------------------------------------------
     def set_template_choices(self, choices: Sequence[TemplateChoice]) -> None:
         self.picker.set_choices(choices)
+
+    def has_template_choices(self) -> bool:
+        return bool(self.picker.choices())
 
     def set_pairs(self, pair_ids: Sequence[str]) -> None:
         self.pair_box.clear()
@@ -289,7 +290,10 @@ class ReviewDock(QDockWidget):
         self.pair_id = pair_id
         self.image_view.set_image(image, crop, bbox, centroid)
 
-    def set_observations(self, observations: Optional[List[Observation]]) -> None:
+    def clear_image(self) -> None:
+        self.image_view.clear_image()
+
+    def set_observations(self, observations: Optional[List[ObservationView]]) -> None:
         self.strip.clear()
         self.strip_box.setVisible(observations is not None)
         if observations is None:

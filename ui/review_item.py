@@ -14,13 +14,14 @@ from qgis.PyQt.QtGui import QImage
 
 
 @dataclass
-class Observation:
-    """One detection of a fused sign, shown as a thumbnail in the strip."""
+class ObservationView:
+    """One detection of a fused sign as the strip shows it: a thumbnail of its box and a label."""
 
     pair_id: str
     label: str
     thumbnail: Optional[QImage] = None
     template_id: str = ""
+    bbox: Tuple[int, int, int, int] = (0, 0, 0, 0)  # in the left image of pair_id
 
 
 @dataclass
@@ -49,7 +50,7 @@ class ReviewItem:
     centroid: Optional[Tuple[float, float]] = None
     crop: Optional[Tuple[int, int, int, int]] = None  # x, y, w, h of the region around the sign
     image: Optional[QImage] = None  # the whole left image of pair_id
-    observations: Optional[List[Observation]] = None  # None for a detection; list (maybe empty) for a sign
+    observations: Optional[List[ObservationView]] = None  # None for a detection; list (maybe empty) for a sign
     position: Optional[Tuple[float, float, float]] = None
 
     def crop_image(self) -> Optional[QImage]:

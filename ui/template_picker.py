@@ -101,6 +101,9 @@ class TemplatePicker(QWidget):
             box.blockSignals(False)
         self._refilter()
 
+    def choices(self) -> List[TemplateChoice]:
+        return list(self._choices)
+
     def set_filter(self, colour: str = ANY, shape: str = ANY, text: Optional[str] = None) -> None:
         """Preset the filters, e.g. to the colour and shape of the sign under review."""
         for box, value in ((self.colour_box, colour), (self.shape_box, shape)):

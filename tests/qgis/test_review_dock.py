@@ -168,8 +168,8 @@ def test_pair_box_and_observation_clicks_emit_requests(dock, ui):
     assert dock.pair_box.currentText() == "000004"  # the shown item's pair
     dock.pair_box.activated.emit(2)
     assert pairs == ["000005"]
-    dock.set_observations([review_item.Observation("000003", "000003\n0.81"),
-                           review_item.Observation("000004", "000004\n0.90")])
+    dock.set_observations([review_item.ObservationView("000003", "000003\n0.81"),
+                           review_item.ObservationView("000004", "000004\n0.90")])
     assert dock.strip_box.isVisibleTo(dock) and dock.strip.count() == 2
     rect = dock.strip.visualItemRect(dock.strip.item(1))
     QTest.mouseClick(dock.strip.viewport(), Qt.LeftButton, Qt.NoModifier, rect.center())

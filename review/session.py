@@ -1,0 +1,54 @@
+"""What the review is looking at: the followed layer, its run record, drive and catalogue, the shown feature.
+
+The controller fills it when it follows a layer; the parts that read items,
+load images, navigate and decide all read it, so none of them keeps its own copy.
+"""
+
+from __future__ import annotations
+
+from typing import Callable, Optional
+
+from ..ui.review_item import ReviewItem
+
+
+class ReviewSession:
+    def __init__(self, show_message: Callable[..., None]):
+        self.show_message = show_message  # the dock's show_message(text, error=False)
+        self.layer = None  # QgsVectorLayer of kind "signs" or "detections", or None
+        self.kind: Optional[str] = None
+        self.run: dict = {}  # the GeoPackage's run table
+        self.drive = None  # the opened Drive, None when its folder is not found
+        self.catalogue = None
+        self.fid: Optional[int] = None  # the shown feature
+        self.item: Optional[ReviewItem] = None  # what the dock shows of it
+
+    def clear(self) -> None:
+        self.layer, self.kind, self.fid, self.item, self.drive = None, None, None, None, None
+
+    def is_shown(self, item: ReviewItem) -> bool:
+        """Still the shown feature: results of background work for older items are dropped."""
+        return item is self.item and self.fid == item.fid
+
+    def record(self, pair_id: str):
+        """The PairRecord of ``pair_id`` in the drive, None (with a message if it is not there) otherwise."""
+        if self.drive is None or not pair_id:
+            return None
+        try:
+            return self.drive.pair(pair_id)
+        except KeyError:
+            self.show_message(f"Pair {pair_id} is not in drive {self.drive.root}", error=True)
+            return None
+
+    def pipeline_config(self):
+        """The run's recorded pipeline settings (defaults for anything missing or invalid)."""
+        from ..signmapper_core.pipeline import PipelineConfig
+
+        keys = ("near_m", "far_m", "detection_threshold", "classification_threshold")
+        kwargs = {k: float(self.run[k]) for k in keys if isinstance(self.run.get(k), (int, float))}
+        for key in ("colours", "exclude"):
+            if isinstance(self.run.get(key), list):
+                kwargs[key] = tuple(self.run[key])
+        try:
+            return PipelineConfig(**kwargs)
+        except (TypeError, ValueError):
+            return PipelineConfig()
