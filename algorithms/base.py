@@ -2,7 +2,12 @@
 
 from __future__ import annotations
 
-from qgis.core import QgsProcessingAlgorithm, QgsProcessingException, QgsProcessingParameterFile
+from qgis.core import (
+    QgsProcessingAlgorithm,
+    QgsProcessingException,
+    QgsProcessingParameterDefinition,
+    QgsProcessingParameterFile,
+)
 from qgis.PyQt.QtCore import QCoreApplication
 
 from ..dependencies import install_hint, missing_modules
@@ -45,9 +50,14 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         lines.append("</ul>")
         return "\n".join(lines)
 
-    def add_parameter(self, param, help_text: str):
-        """Add a parameter with its help text (shown in the dialog and in shortHelpString)."""
+    def add_parameter(self, param, help_text: str, advanced: bool = False):
+        """Add a parameter with its help text (shown in the dialog and in shortHelpString).
+
+        ``advanced`` parameters are folded under "Advanced Parameters" in the dialog.
+        """
         param.setHelp(self.tr(help_text))
+        if advanced:
+            param.setFlags(param.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
         self.addParameter(param)
         return param
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from qgis.core import (
     QgsCoordinateReferenceSystem,
     QgsFeatureSink,
@@ -89,21 +91,25 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         self.add_parameter(
             QgsProcessingParameterString(self.EXCLUDE, self.tr("Sign types to exclude"), optional=True),
             "Comma-separated template ids of the catalogue that are never assigned, e.g. '2.30-120, 4.17'.",
+            advanced=True,
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.DETECTION_THRESHOLD, self.tr("Detection indicator threshold"),
                                          QgsProcessingParameterNumber.Double, 0.5, minValue=0.0, maxValue=1.0),
             "Minimum planar share (0-1) of a colour segment for it to count as a sign face.",
+            advanced=True,
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.CLASSIFICATION_THRESHOLD, self.tr("Classification indicator threshold"),
                                          QgsProcessingParameterNumber.Double, 0.6, minValue=0.0, maxValue=1.0),
             "Minimum template-matching score (0-1) for status 'accepted'; lower scores get status 'review'.",
+            advanced=True,
         )
         self.add_parameter(
             QgsProcessingParameterFile(self.CATALOGUE, self.tr("Template catalogue folder"),
                                        behavior=QgsProcessingParameterFile.Folder, optional=True),
             "Folder with catalogue.json and template images; empty = the bundled Swiss (SSV) catalogue.",
+            advanced=True,
         )
         self.add_parameter(
             QgsProcessingParameterFileDestination(self.OUTPUT, self.tr("Output GeoPackage"),
@@ -114,33 +120,55 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         self.addOutput(QgsProcessingOutputVectorLayer(self.DETECTIONS, self.tr("Detections"),
                                                       QgsProcessing.TypeVectorPoint))
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+    def checkParameterValues(self, parameters, context):  # noqa: N802
+        """Catch wrong inputs before the run: drive folder, output name, depth range, colours, catalogue, exclusions."""
+        ok, message = super().checkParameterValues(parameters, context)
+        if not ok:
+            return ok, message
+        try:
+            self.settings(parameters, context)
+        except QgsProcessingException as exc:
+            return False, str(exc)
+        return True, ""
+
+    def settings(self, parameters, context):
+        """(drive folder, catalogue, PipelineConfig) of the parameters; QgsProcessingException says what is wrong."""
         self.require_dependencies()
         from ..signmapper_core.catalogue import load_catalogue
         from ..signmapper_core.pipeline import PipelineConfig
 
         folder = self.parameterAsFile(parameters, self.DRIVE, context)
+        if not folder or not (Path(folder) / "drive.json").is_file():
+            raise QgsProcessingException(f"Drive folder {folder or '(none)'}: no drive.json, not a stereo-drive/1 "
+                                         "folder")
+        output = self.parameterAsFileOutput(parameters, self.OUTPUT, context)
+        if not output.lower().endswith(".gpkg"):
+            raise QgsProcessingException(f"{output}: the output must be a GeoPackage file ending in .gpkg")
+        near = self.parameterAsDouble(parameters, self.NEAR, context)
+        far = self.parameterAsDouble(parameters, self.FAR, context)
+        if near >= far:
+            raise QgsProcessingException(f"Near limit {near:g} m must be less than the far limit {far:g} m.")
+        colours = [COLOURS[i] for i in self.parameterAsEnums(parameters, self.COLOURS, context)]
+        if not colours:
+            raise QgsProcessingException("Choose at least one sign colour to detect.")
         catalogue_dir = self.parameterAsFile(parameters, self.CATALOGUE, context) or None
         try:
             catalogue = load_catalogue(catalogue_dir)
         except Exception as exc:  # the catalogue's own errors name the file
             raise QgsProcessingException(f"Template catalogue: {exc}") from exc
-        exclude = self.excluded_ids(parameters, context, catalogue)
-        colours = [COLOURS[i] for i in self.parameterAsEnums(parameters, self.COLOURS, context)]
-        if not colours:
-            raise QgsProcessingException("Choose at least one sign colour to detect.")
         try:
             config = PipelineConfig(
-                near_m=self.parameterAsDouble(parameters, self.NEAR, context),
-                far_m=self.parameterAsDouble(parameters, self.FAR, context),
-                colours=tuple(colours),
-                exclude=tuple(exclude),
+                near_m=near, far_m=far, colours=tuple(colours),
+                exclude=tuple(self.excluded_ids(parameters, context, catalogue)),
                 detection_threshold=self.parameterAsDouble(parameters, self.DETECTION_THRESHOLD, context),
                 classification_threshold=self.parameterAsDouble(parameters, self.CLASSIFICATION_THRESHOLD, context),
             )
         except ValueError as exc:
             raise QgsProcessingException(str(exc)) from exc
+        return folder, catalogue, config
 
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        folder, catalogue, config = self.settings(parameters, context)
         feedback.pushInfo(f"Validating drive {folder}")
         try:
             drive = open_drive_or_raise(folder, CoreFeedback(feedback, 0, 5))

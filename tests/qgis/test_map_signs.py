@@ -131,6 +131,35 @@ def test_unknown_excluded_id_is_a_clear_error(run, small_drive, tmp_path):
         run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(tmp_path / "x.gpkg"), "EXCLUDE": "9.99"})
 
 
+@pytest.mark.parametrize("change, message", [
+    ({"NEAR": 14.0, "FAR": 4.0}, "Near limit 14 m must be less than the far limit 4 m"),
+    ({"COLOURS": []}, "COLOURS"),  # QGIS itself refuses an empty required choice
+    ({"OUTPUT": None}, "must be a GeoPackage file ending in .gpkg"),
+    ({"CATALOGUE": None}, "Template catalogue"),
+    ({"DRIVE": None}, "no drive.json, not a stereo-drive/1 folder"),
+])
+def test_wrong_inputs_are_refused_before_the_run(registered_plugin, small_drive, tmp_path, change, message):
+    from qgis.core import QgsApplication, QgsProcessingContext
+
+    alg = QgsApplication.processingRegistry().createAlgorithmById("signmapper:mapsigns")
+    paths = {"OUTPUT": tmp_path / "signs.shp", "CATALOGUE": tmp_path, "DRIVE": tmp_path}  # folders without files
+    parameters = {"DRIVE": str(small_drive), "OUTPUT": str(tmp_path / "x.gpkg")}
+    parameters.update({k: str(paths[k]) if k in paths else v for k, v in change.items()})
+    ok, text = alg.checkParameterValues(parameters, QgsProcessingContext())
+    assert not ok and message in text
+    assert alg.checkParameterValues({"DRIVE": str(small_drive), "OUTPUT": str(tmp_path / "x.gpkg")},
+                                    QgsProcessingContext()) == (True, "")
+
+
+def test_tuning_parameters_are_advanced(registered_plugin):
+    from qgis.core import QgsApplication, QgsProcessingParameterDefinition
+
+    alg = QgsApplication.processingRegistry().algorithmById("signmapper:mapsigns")
+    advanced = {p.name() for p in alg.parameterDefinitions()
+                if p.flags() & QgsProcessingParameterDefinition.FlagAdvanced}
+    assert advanced == {"EXCLUDE", "DETECTION_THRESHOLD", "CLASSIFICATION_THRESHOLD", "CATALOGUE"}
+
+
 def test_corrupt_pair_is_logged_and_skipped(run, small_drive, tmp_path):
     import shutil
 
