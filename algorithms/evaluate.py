@@ -26,9 +26,9 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QVariant
 
+from ..gpkg.output import read_run_table
 from ..signmapper_core.output_schema import REJECTED
 from .base import SignMapperAlgorithm
-from .gpkg_output import read_run_table
 
 
 class EvaluateAlgorithm(SignMapperAlgorithm):

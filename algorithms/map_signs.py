@@ -19,14 +19,14 @@ from qgis.core import (
     QgsWkbTypes,
 )
 
+from ..gpkg.fields import layer_feature, layer_fields
+from ..gpkg.output import AtomicGeoPackage, layer_uri
+from ..gpkg.styles import embed_default_styles
 from ..signmapper_core import output_schema as schema
 from ..signmapper_core.output_schema import DETECTIONS, SIGNS
 from ..signmapper_core.progress import Cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise
-from .gpkg_output import AtomicGeoPackage, layer_uri
-from .layer_styles import embed_default_styles
-from .sign_fields import layer_feature, layer_fields
 
 COLOURS = ["red", "blue", "yellow"]
 

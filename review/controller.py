@@ -14,7 +14,7 @@ from typing import Optional
 from qgis.PyQt.QtCore import QObject
 from qgis.PyQt.sip import isdeleted
 
-from ..algorithms.gpkg_output import read_run_table
+from ..gpkg.output import read_run_table
 from ..ui.template_picker import TemplateChoice
 from .background import BackgroundRunner, Jobs
 from .decisions import DecisionTaker

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from qgis.PyQt.sip import isdeleted
 
-from ..algorithms.sign_fields import feature_values
+from ..gpkg.fields import feature_values
 from ..signmapper_core.output_schema import SIGNS
 from .edits import DecisionLog, EditError, add_feature, change_attributes
 from .values import accept_values, manual_feature, reclassify_values, reject_values

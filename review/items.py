@@ -1,6 +1,6 @@
 """Reading features of our layers into what the dock shows (``ReviewItem``), and their driving order.
 
-Attributes are read through the output schema (``algorithms/sign_fields.feature_values``):
+Attributes are read through the output schema (``gpkg/fields.feature_values``):
 a name that is not a field of the layer kind fails here, not silently in the dock.
 """
 
@@ -11,7 +11,7 @@ from typing import List, Optional, Tuple
 
 from qgis.core import QgsFeatureRequest
 
-from ..algorithms.sign_fields import feature_values
+from ..gpkg.fields import feature_values
 from ..signmapper_core.output_schema import DETECTIONS, REVIEW, SIGNS
 from ..ui.review_item import ObservationView, ReviewItem
 from .imaging import crop_rect

@@ -6,7 +6,7 @@ from typing import Optional, Tuple
 
 from qgis.core import QgsExpression, QgsFeatureRequest, QgsProject, QgsProviderRegistry, QgsVectorLayer
 
-from ..algorithms.gpkg_output import layer_uri
+from ..gpkg.output import layer_uri
 from ..signmapper_core.output_schema import DETECTIONS, LAYERS, RUN_TABLE, SIGNS, required_names
 
 

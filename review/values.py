@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Optional
 
-from ..algorithms.sign_fields import layer_feature
+from ..gpkg.fields import layer_feature
 from ..signmapper_core.output_schema import ACCEPTED, MANUAL, REJECTED, template_values
 
 DEFAULT_FORMAT = "normal"

@@ -19,8 +19,8 @@ import numpy as np
 
 from .errors import DriveFormatError
 from .geometry import Camera, Pose
+from .image_files import DEPTH_SUFFIXES, IMAGE_SUFFIXES, image_size, read_depth, read_image
 from .progress import CancelCheck, ProgressCallback, check_cancelled, report
-from .rasterio import DEPTH_SUFFIXES, IMAGE_SUFFIXES, image_size, read_depth, read_image
 
 FORMAT_ID = "stereo-drive/1"
 POSE_COLUMNS = ("id", "time", "easting", "northing", "height", "heading", "pitch", "roll")

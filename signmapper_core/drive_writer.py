@@ -15,7 +15,7 @@ import numpy as np
 
 from .drive import FORMAT_ID, POSE_COLUMNS, TRUTH_COLUMNS, TruthSign
 from .geometry import Camera, Pose
-from .rasterio import write_depth
+from .image_files import write_depth
 
 
 def write_drive_json(root: Path, crs: str, camera: Camera, **extra) -> Path:

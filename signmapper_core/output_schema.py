@@ -1,6 +1,6 @@
 """The output of mapping a drive, declared once: layers, fields, status values, run table.
 
-Writing the GeoPackage (``algorithms/sign_fields.py``), recognising our layers,
+Writing the GeoPackage (``gpkg/fields.py``), recognising our layers,
 the review's reading and writing, the layer styles, the review dock and the run
 table all derive from the tables below. Adding an output field is one row in
 :data:`FIELDS` (and a test; the golden GeoPackage in ``tests/qgis/golden`` is

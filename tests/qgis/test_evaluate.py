@@ -124,7 +124,7 @@ def test_truth_csv_as_reference_and_trajectory_from_the_recorded_drive(run, tmp_
     assert truth.isValid() and truth.featureCount() == 1
     gpkg = tmp_path / "signs.gpkg"
     mapped = point_layer([("s", "2.30-50", 2600005.0, 1200003.0, 401.6)], "signs")
-    from sign_mapper.algorithms.gpkg_output import AtomicGeoPackage
+    from sign_mapper.gpkg.output import AtomicGeoPackage
 
     out = AtomicGeoPackage(str(gpkg))
     writer = out.open_layer("signs", mapped.fields(), mapped.wkbType(), mapped.crs())

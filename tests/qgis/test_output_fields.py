@@ -19,7 +19,7 @@ def an_observation():
 
 
 def test_layer_fields_have_the_schema_names_and_types(sign_mapper):
-    from sign_mapper.algorithms.sign_fields import layer_fields
+    from sign_mapper.gpkg.fields import layer_fields
 
     for layer in schema.LAYERS:
         fields = layer_fields(layer)
@@ -30,7 +30,7 @@ def test_layer_fields_have_the_schema_names_and_types(sign_mapper):
 
 
 def test_a_feature_fills_the_fields_a_layer_has_and_reads_back(sign_mapper):
-    from sign_mapper.algorithms.sign_fields import feature_values, layer_feature
+    from sign_mapper.gpkg.fields import feature_values, layer_feature
 
     fields = QgsFields()  # a layer a person trimmed: three of the fields, in another order
     for name, kind in (("depth_m", QVariant.Double), ("template_id", QVariant.String), ("sign_id", QVariant.Int)):

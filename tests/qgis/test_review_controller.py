@@ -63,7 +63,7 @@ def _attrs(det, record, status):
 
 
 def _write_layer(gpkg, name, rows, crs):
-    from sign_mapper.algorithms.sign_fields import layer_fields
+    from sign_mapper.gpkg.fields import layer_fields
 
     fields = layer_fields(name)
     writer = gpkg.open_layer(name, fields, QgsWkbTypes.PointZ, crs)
@@ -79,7 +79,7 @@ def _write_layer(gpkg, name, rows, crs):
 
 def build_gpkg(path: Path, drive_dir: Path, detections, recorded_drive=None, skip=()) -> Path:
     """A GeoPackage like mapsigns writes: detections, signs fused by template, and the run table."""
-    from sign_mapper.algorithms.gpkg_output import AtomicGeoPackage
+    from sign_mapper.gpkg.output import AtomicGeoPackage
 
     crs = QgsCoordinateReferenceSystem("EPSG:2056")
     sign_ids = {t: i + 1 for i, t in enumerate(sorted({d.template_id for _, d in detections}))}
