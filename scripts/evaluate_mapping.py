@@ -33,13 +33,15 @@ from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.visibility import mappable_signs  # noqa: E402
 
 
-def generated_drive(seed: int, pairs: int, depth: bool) -> Path:
-    from signmapper_core.simulate import SimulationConfig, generate_drive
+def generated_drive(seed: int, pairs: int, depth: bool, legacy_faces: bool = False) -> Path:
+    from signmapper_core.simulate import LEGACY_FACES, SimulationConfig, generate_drive
 
-    out = REPO / "build" / "drives" / f"seed{seed}-{pairs}{'-depth' if depth else ''}"
+    config = SimulationConfig(pairs=pairs, seed=seed, write_depth=depth, **(LEGACY_FACES if legacy_faces else {}))
+    faces = "legacy" if legacy_faces else f"{config.face_artwork}{config.master_share:g}"
+    out = REPO / "build" / "drives" / f"seed{seed}-{pairs}{'-depth' if depth else ''}-faces-{faces}"
     if not (out / "poses.csv").exists():
         print(f"generating {out} ...", flush=True)
-        generate_drive(out, SimulationConfig(pairs=pairs, seed=seed, write_depth=depth))
+        generate_drive(out, config)
     return out
 
 
@@ -62,13 +64,16 @@ def main(argv=None) -> int:
     parser.add_argument("--generate", nargs="*", type=int, default=[], help="seeds of synthetic drives to evaluate")
     parser.add_argument("--pairs", type=int, default=60, help="pairs per generated drive")
     parser.add_argument("--depth", action="store_true", help="generated drives carry true depth maps")
+    parser.add_argument("--legacy-faces", action="store_true",
+                        help="generated drives with the faces of before the artwork mix (procedural only)")
     parser.add_argument("--radius", type=float, default=0.75, help="matching radius in metres")
     parser.add_argument("--near", type=float, default=4.0)
     parser.add_argument("--far", type=float, default=14.0)
     parser.add_argument("--catalogue", type=Path, default=None)
     args = parser.parse_args(argv)
 
-    folders = list(args.drives) + [generated_drive(s, args.pairs, args.depth) for s in args.generate]
+    folders = list(args.drives) + [generated_drive(s, args.pairs, args.depth, args.legacy_faces)
+                                        for s in args.generate]
     if not folders:
         parser.error("give drive folders or --generate SEEDS")
     catalogue = load_catalogue(args.catalogue)

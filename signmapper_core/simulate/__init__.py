@@ -5,7 +5,8 @@
 poses the images were rendered from (poses.csv holds them with GNSS/INS noise).
 """
 
-from .config import SimulationConfig, SimulationSummary
+from .config import LEGACY_FACES, SimulationConfig, SimulationSummary
 from .generator import Cancelled, generate_drive, recorded_poses, true_poses
 
-__all__ = ["Cancelled", "SimulationConfig", "SimulationSummary", "generate_drive", "recorded_poses", "true_poses"]
+__all__ = ["LEGACY_FACES", "Cancelled", "SimulationConfig", "SimulationSummary", "generate_drive", "recorded_poses",
+           "true_poses"]

@@ -6,10 +6,11 @@ import argparse
 import sys
 from dataclasses import fields
 
-from .config import SimulationConfig
+from .config import LEGACY_FACES, SimulationConfig
 from .generator import generate_drive
 
-REALISM = ("noise", "motion_blur", "exposure_changes", "shadows", "weathering", "occlusion", "glare")
+REALISM = ("noise", "motion_blur", "exposure_changes", "shadows", "weathering", "occlusion", "glare", "face_print",
+           "face_sheeting", "face_wear", "face_dirt", "face_marks", "face_dents", "back_mounts")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -42,7 +43,14 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--crs", default=d.crs, help=f"CRS of the coordinates (default {d.crs})")
     p.add_argument("--start", type=float, nargs=3, metavar=("E", "N", "H"),
                    default=(d.start_easting, d.start_northing, d.start_height), help="start point of the street")
-    p.add_argument("--plain", action="store_true", help="switch off all camera and weathering effects")
+    p.add_argument("--face-artwork", choices=("mixed", "procedural"), default=d.face_artwork,
+                   help="sign faces from the catalogue master or the procedural drawer per sign ('mixed'), or "
+                        f"procedural only (default {d.face_artwork})")
+    p.add_argument("--master-share", type=float, default=d.master_share,
+                   help=f"with 'mixed': share of faces printed from the catalogue master (default {d.master_share})")
+    p.add_argument("--legacy-faces", action="store_true",
+                   help="the faces of before the artwork mix: procedural only, no physical face variation")
+    p.add_argument("--plain", action="store_true", help="switch off all camera, weathering and face effects")
     for name in REALISM:
         words = name.replace("_", " ")
         p.add_argument(f"--no-{name.replace('_', '-')}", action="store_true", help=f"switch off {words}")
@@ -58,7 +66,11 @@ def config_from_args(args: argparse.Namespace) -> SimulationConfig:
         baseline_m=args.baseline, speed_kmh=args.speed, rate_hz=args.rate, position_sigma_m=args.position_sigma,
         angle_sigma_deg=args.angle_sigma, sign_density=args.sign_density,
         distractor_density=args.distractor_density, jpeg_quality=args.jpeg_quality, crs=args.crs,
-        start_easting=args.start[0], start_northing=args.start[1], start_height=args.start[2])
+        start_easting=args.start[0], start_northing=args.start[1], start_height=args.start[2],
+        face_artwork=args.face_artwork, master_share=args.master_share)
+    if args.legacy_faces:
+        for name, value in LEGACY_FACES.items():
+            setattr(cfg, name, value)
     names = {f.name for f in fields(cfg)}
     for name in REALISM:
         if name in names and (args.plain or getattr(args, f"no_{name}")):

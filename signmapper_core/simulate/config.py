@@ -9,6 +9,11 @@ from pathlib import Path
 from ..drive import TruthSign
 from ..geometry import Camera, Pose
 
+# Face settings that reproduce the faces of before the artwork mix: procedural drawings only, no physical
+# variation (the older weathering still applies); e.g. ``SimulationConfig(**LEGACY_FACES)``.
+LEGACY_FACES = dict(face_artwork="procedural", face_print=False, face_sheeting=False, face_wear=False,
+                    face_dirt=False, face_marks=False, face_dents=False, back_mounts=False)
+
 
 @dataclass
 class SimulationConfig:
@@ -41,6 +46,17 @@ class SimulationConfig:
     occlusion: bool = True                # branches and poles in front of some signs
     glare: bool = True
     jpeg_quality: int = 90
+    # Sign faces (simulate/faces.py): the artwork each face is printed from, and physical variation of the
+    # sign in face texture space, each switchable and with a seeded random strength per sign.
+    face_artwork: str = "mixed"           # "mixed": master image or procedural variant per sign; "procedural"
+    master_share: float = 0.7             # share of faces printed from the catalogue master when "mixed"
+    face_print: bool = True               # print run: ink hue/saturation, line weight, black-layer register
+    face_sheeting: bool = True            # reflective film: seal cells, sparkle, sheen, specular hot spot
+    face_wear: bool = True                # UV ageing: red to orange/pink, chalky blue, contrast loss, peeling
+    face_dirt: bool = True                # grime from the bottom, spots, rain streaks
+    face_marks: bool = True               # stickers and graffiti tags
+    face_dents: bool = True               # dents and bends (mild non-planar warp)
+    back_mounts: bool = True              # mounting rails and pole clamps on the backs of panels
     # Georeference.
     crs: str = "EPSG:2056"
     start_easting: float = 2600000.0
@@ -67,6 +83,8 @@ class SimulationConfig:
             (self.position_sigma_m >= 0 and self.angle_sigma_deg >= 0, "pose noise sigmas must not be negative"),
             (self.sign_density >= 0 and self.distractor_density >= 0, "densities must not be negative"),
             (1 <= self.jpeg_quality <= 100, "jpeg_quality must be within 1..100"),
+            (self.face_artwork in ("mixed", "procedural"), "face_artwork must be 'mixed' or 'procedural'"),
+            (0.0 <= self.master_share <= 1.0, "master_share must be within 0..1"),
         ]
         for ok, message in checks:
             if not ok:

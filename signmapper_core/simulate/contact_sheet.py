@@ -3,6 +3,9 @@
 ``python -m signmapper_core.simulate.contact_sheet DRIVE OUT.png [--tiles 4] [--tile-width 640]``
 Boxes are projected from truth.csv with the poses of poses.csv; signs within the
 detection range (4-14 m) are boxed green and labelled, others thin orange.
+``--crops`` instead shows every truth sign cut out of the image where it is seen
+from nearest a given distance (``--distance``, default 7 m), to look at faces as
+the camera sees them.
 """
 
 from __future__ import annotations
@@ -95,6 +98,47 @@ def contact_sheet(drive_path, out_png, tiles: int = 4, tile_width: int = 640) ->
     return sheet
 
 
+def sign_crops(drive_path, out_png, distance_m: float = 7.0, tile: int = 128, columns: int = 8) -> np.ndarray:
+    """Each truth sign cut out (with a margin) of the left image that sees it nearest ``distance_m``."""
+    drive = open_drive(drive_path)
+    best: dict[str, tuple[float, int, np.ndarray]] = {}
+    for i in range(len(drive)):
+        for sign, uv, z in signs_in_view(drive, i):
+            inside = (uv[:, 0].min() >= 0 and uv[:, 1].min() >= 0 and uv[:, 0].max() < drive.camera.width
+                      and uv[:, 1].max() < drive.camera.height)
+            if inside and NEAR_M <= z <= FAR_M and abs(z - distance_m) < best.get(sign.sign_id, (np.inf,))[0]:
+                best[sign.sign_id] = (abs(z - distance_m), i, uv)
+    tiles = []
+    for sign in drive.truth or []:
+        if sign.sign_id not in best:
+            continue
+        _d, i, uv = best[sign.sign_id]
+        img = drive.load_left(drive.pairs[i])
+        x0, y0 = uv.min(axis=0)
+        x1, y1 = uv.max(axis=0)
+        m = 0.2 * max(x1 - x0, y1 - y0)
+        x0, y0 = int(max(0, x0 - m)), int(max(0, y0 - m))
+        x1, y1 = int(min(img.shape[1], x1 + m)), int(min(img.shape[0], y1 + m))
+        crop = img[y0:y1, x0:x1]
+        scale = tile / max(crop.shape[:2])
+        crop = cv2.resize(crop, (max(1, round(crop.shape[1] * scale)), max(1, round(crop.shape[0] * scale))),
+                          interpolation=cv2.INTER_AREA if scale < 1 else cv2.INTER_NEAREST)
+        cell = np.full((tile + 16, tile, 3), 40, np.uint8)
+        cell[:crop.shape[0], :crop.shape[1]] = crop
+        z = float(np.linalg.norm(sign.position - drive.pairs[i].pose.centre))
+        cv2.putText(cell, f"{sign.template_id} {z:.0f}m", (2, tile + 12), cv2.FONT_HERSHEY_SIMPLEX, 0.38,
+                    (255, 255, 255), 1, cv2.LINE_AA)
+        tiles.append(cell)
+    if not tiles:
+        raise ValueError(f"{drive_path}: no truth sign is fully in view within {NEAR_M:g}-{FAR_M:g} m")
+    while len(tiles) % columns:
+        tiles.append(np.full_like(tiles[0], 40))
+    sheet = np.vstack([np.hstack(tiles[r:r + columns]) for r in range(0, len(tiles), columns)])
+    if not cv2.imwrite(str(out_png), sheet, [cv2.IMWRITE_PNG_COMPRESSION, 9]):
+        raise OSError(f"{out_png}: could not write the PNG")
+    return sheet
+
+
 def main(argv=None) -> int:
     p = argparse.ArgumentParser(prog="python -m signmapper_core.simulate.contact_sheet",
                                 description="Draw the truth signs onto a few left images of a drive, as one PNG.")
@@ -102,8 +146,13 @@ def main(argv=None) -> int:
     p.add_argument("out", help="output PNG")
     p.add_argument("--tiles", type=int, default=4, help="number of pairs shown (default 4)")
     p.add_argument("--tile-width", type=int, default=640, help="width of each tile in pixels (default 640)")
+    p.add_argument("--crops", action="store_true", help="one crop per truth sign instead of whole images")
+    p.add_argument("--distance", type=float, default=7.0, help="with --crops: preferred viewing distance, m")
     args = p.parse_args(argv)
-    contact_sheet(args.drive, args.out, args.tiles, args.tile_width)
+    if args.crops:
+        sign_crops(args.drive, args.out, args.distance)
+    else:
+        contact_sheet(args.drive, args.out, args.tiles, args.tile_width)
     print(args.out)
     return 0
 

@@ -1,20 +1,33 @@
-"""Where sign faces come from: the template catalogue's procedural ``render_face``.
+"""Where sign faces come from: the one place the generator asks for a sign's pixels.
 
-The generator asks this module only, so the catalogue is consumed in one place.
-Faces are varied per sign (FaceStyle from the catalogue, then weathering and
-shadows here) and resampled, so no rendered sign is a pixel copy of a template.
+A face is printed from one of two artworks, chosen per sign by a seeded draw
+(``face_artwork.py``): the catalogue's master image, resampled (the official
+drawings once the catalogue carries them), or the catalogue's procedural drawer
+with a random style. The physical sign then gets its own print run, reflective
+sheeting, wear, dirt, stickers or a tag and dents, each switchable and each with
+a seeded random strength (``face_print.py`` ... ``face_dents.py``), and the
+older weathering here (fading, dirt blotches, cast shadow). All of it happens
+in the face's texture space; no rendered face is a pixel copy of a template.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import cv2
 import numpy as np
 
-from .textures import smooth_noise
+from . import face_dirt, face_marks, face_print, face_sheeting, face_wear
+from .face_artwork import MASTER, PROCEDURAL, choose_artwork, has_procedural, master_face, procedural_face
+from .face_dents import DentWarp, dent_warp
+from .face_layers import ink_layers
+from .textures import metal, smooth_noise
 
 SIGN_COLOURS = ("red", "blue", "yellow")
+ARTWORKS = ("mixed", "procedural")
+
+# seed streams of one face, one per variation, so switching one off leaves the others as they were
+_ARTWORK, _PRINT, _SHEETING, _WEAR, _DIRT, _MARKS, _DENTS, _BACK, _SHEEN = range(9)
 
 
 @dataclass(frozen=True)
@@ -52,24 +65,205 @@ def pick_format(kind: SignKind, rng: np.random.Generator) -> tuple[str, float, f
     return kind.formats[int(rng.integers(len(kind.formats)))]
 
 
-def random_face_style(rng: np.random.Generator):
-    """A random FaceStyle from the catalogue (pen widths, palette, font, details)."""
-    from ..catalogue import FaceStyle
+@dataclass(frozen=True)
+class FaceOptions:
+    """Which artworks and physical variations sign faces get (the face fields of SimulationConfig)."""
 
-    return FaceStyle.random(rng, strength=float(rng.uniform(0.5, 1.0)))
+    face_artwork: str = "mixed"
+    master_share: float = 0.7
+    face_print: bool = True
+    face_sheeting: bool = True
+    face_wear: bool = True
+    face_dirt: bool = True
+    face_marks: bool = True
+    face_dents: bool = True
+    back_mounts: bool = True
+
+    @classmethod
+    def from_config(cls, config) -> FaceOptions:
+        return cls(**{f.name: getattr(config, f.name) for f in fields(cls)})
+
+    def validate(self) -> None:
+        if self.face_artwork not in ARTWORKS:
+            raise ValueError(f"face_artwork must be one of {', '.join(ARTWORKS)}, got {self.face_artwork!r}")
+        if not 0.0 <= self.master_share <= 1.0:
+            raise ValueError("master_share must be within 0..1")
 
 
-def render_sign_face(template_id: str, size_wh: tuple[int, int], rng: np.random.Generator
-                     ) -> tuple[np.ndarray, np.ndarray]:
-    """Face (BGR, alpha) of one physical sign, (w, h) pixels, drawn by the catalogue with a random style."""
-    from ..catalogue import render_face
+PROCEDURAL_ONLY = FaceOptions(face_artwork="procedural", face_print=False, face_sheeting=False, face_wear=False,
+                              face_dirt=False, face_marks=False, face_dents=False, back_mounts=False)
 
-    w, h = int(size_wh[0]), int(size_wh[1])
-    bgr, alpha = render_face(template_id, (w, h), style=random_face_style(rng))
-    if bgr.shape[:2] != (h, w):
-        bgr = cv2.resize(bgr, (w, h), interpolation=cv2.INTER_AREA)
-        alpha = cv2.resize(alpha, (w, h), interpolation=cv2.INTER_AREA)
-    return np.ascontiguousarray(bgr), np.ascontiguousarray(alpha)
+
+@dataclass(frozen=True)
+class SignFace:
+    """Recipe of one physical sign's face: artwork, variations and their seeds; pixels on demand."""
+
+    template_id: str
+    size_wh: tuple[int, int]
+    width_m: float
+    style_seed: int
+    variation_seed: int
+    options: FaceOptions = PROCEDURAL_ONLY
+    # the older weathering: fading, dirt blotches, a cast shadow
+    effect_seed: int = 0
+    faded: float = 0.0
+    dirt: float = 0.0
+    shadow: bool = False
+
+    def rng(self, stream: int) -> np.random.Generator:
+        return np.random.default_rng([self.variation_seed, stream])
+
+    @property
+    def artwork(self) -> str:
+        """``master`` or ``procedural`` (the master when the procedural drawer does not know the sign)."""
+        if not has_procedural(self.template_id):
+            return MASTER
+        if self.options.face_artwork == "procedural":
+            return PROCEDURAL
+        return choose_artwork(self.rng(_ARTWORK), self.options.master_share)
+
+    def clean(self) -> tuple[np.ndarray, np.ndarray]:
+        """(bgr, alpha) of the artwork as printed, before any physical variation."""
+        if self.artwork == MASTER:
+            rng = self.rng(_ARTWORK)
+            rng.random()  # the artwork choice
+            return master_face(self.template_id, self.size_wh, rng)
+        return procedural_face(self.template_id, self.size_wh, np.random.default_rng(self.style_seed))
+
+    def dents(self) -> DentWarp | None:
+        if not self.options.face_dents:
+            return None
+        rng = self.rng(_DENTS)
+        if rng.random() >= 0.3:
+            return None
+        return dent_warp(self.size_wh, rng, float(rng.uniform(0.3, 1.0)), bend=rng.random() < 0.35)
+
+    def outline(self) -> np.ndarray:
+        """Alpha of the panel (for its back): the artwork's outline, dented like the face."""
+        alpha = self.clean()[1]
+        warp = self.dents()
+        return alpha if warp is None else warp.outline(alpha)
+
+    def pixels(self, notes: list | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """(bgr uint8, alpha uint8) of the face as the camera will see it in texture space.
+
+        ``notes`` (if given) receives the artwork and the variations applied, for contact sheets.
+        """
+        notes = [] if notes is None else notes
+        bgr, alpha = self.clean()
+        notes.append(self.artwork)
+        opt = self.options
+        if any((opt.face_print, opt.face_sheeting, opt.face_wear, opt.face_dirt, opt.face_marks)):
+            bgr = physical_variation(self, bgr, alpha, notes)
+        bgr = weather_face(bgr, alpha, np.random.default_rng(self.effect_seed), self.faded, self.dirt, self.shadow)
+        notes += [name for name, on in (("faded", self.faded > 0), ("blotches", self.dirt > 0),
+                                         ("shadow", self.shadow)) if on]
+        warp = self.dents()
+        if warp is not None:
+            notes.append("dents")
+            bgr = np.clip(warp.apply(bgr), 0, 255).astype(np.uint8)
+            alpha = warp.outline(alpha)
+        return np.ascontiguousarray(bgr), np.ascontiguousarray(alpha)
+
+    def back(self, base_rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
+        """(bgr, alpha) of the panel's back: galvanised metal, with mounting rails and clamp if switched on."""
+        w, h = self.size_wh
+        alpha = self.outline()
+        bgr = metal(base_rng, h, w)
+        if self.options.back_mounts:
+            bgr = back_mounts(bgr, alpha, self.rng(_BACK))
+        return bgr, alpha
+
+
+def draw_sign_face(template_id: str, size_wh: tuple[int, int], width_m: float, rng: np.random.Generator,
+                   options: FaceOptions, weathering: bool = True, shadows: bool = True) -> SignFace:
+    """A random physical sign face: its seeds and the older weathering, drawn from ``rng`` in a fixed order."""
+    style_seed = int(rng.integers(2**63))
+    faded = float(rng.uniform(0.15, 0.45)) if weathering and rng.random() < 0.2 else 0.0
+    dirt = float(rng.uniform(0.2, 0.5)) if weathering and rng.random() < 0.2 else 0.0
+    shadow = bool(shadows and rng.random() < 0.25)
+    effect_seed = int(rng.integers(2**63))
+    variation_seed = int(rng.integers(2**63))
+    return SignFace(template_id, (int(size_wh[0]), int(size_wh[1])), float(width_m), style_seed, variation_seed,
+                    options, effect_seed, faded, dirt, shadow)
+
+
+def physical_variation(face: SignFace, bgr: np.ndarray, alpha: np.ndarray, notes: list | None = None
+                       ) -> np.ndarray:
+    """The switched-on print, sheeting, wear, dirt and marks of one face, each with its own seeded strength.
+
+    ``notes`` (if given) receives a short name and strength of each variation applied.
+    """
+    opt = face.options
+    px_per_m = face.size_wh[0] / face.width_m
+    labels = ink_layers(bgr)
+    img = bgr.astype(np.float32)
+    notes = [] if notes is None else notes
+    if opt.face_print:
+        rng = face.rng(_PRINT)
+        strength = float(rng.uniform(0.3, 1.0))
+        img = face_print.print_variation(img, labels, rng, strength, px_per_m)
+        notes.append(f"print {strength:.1f}")
+    if opt.face_sheeting:
+        rng = face.rng(_SHEETING)
+        img = face_sheeting.prism_texture(img, rng, float(rng.uniform(0.5, 1.0)), px_per_m)
+    if opt.face_wear:
+        rng = face.rng(_WEAR)
+        strength = float(rng.beta(1.1, 4.0))  # mostly mild: mean 0.22, one sign in twelve beyond 0.5
+        img = face_wear.uv_ageing(img, labels, rng, strength)
+        notes.append(f"wear {strength:.1f}")
+        if rng.random() < 0.06 + 0.2 * strength:
+            img = face_wear.peel(img, alpha, rng, float(rng.uniform(0.5, 1.0)))
+            notes.append("peel")
+    if opt.face_dirt:
+        rng = face.rng(_DIRT)
+        strength = float(rng.beta(1.2, 3.0))
+        img = face_dirt.grime(img, rng, strength)
+        notes.append(f"grime {strength:.1f}")
+        if rng.random() < 0.5:
+            img = face_dirt.spots(img, alpha, rng, strength)
+            notes.append("spots")
+        if rng.random() < 0.4:
+            img = face_dirt.rain_streaks(img, rng, strength)
+            notes.append("streaks")
+    if opt.face_marks:
+        rng = face.rng(_MARKS)
+        if rng.random() < 0.08:
+            img = face_marks.sticker(img, alpha, rng)
+            notes.append("sticker")
+        if rng.random() < 0.05:
+            img = face_marks.graffiti_tag(img, alpha, rng)
+            notes.append("tag")
+    if opt.face_sheeting:  # light on the film comes last: it lies over dirt and stickers alike
+        rng = face.rng(_SHEEN)
+        hot_spot = rng.random() < 0.3
+        img = face_sheeting.sheen(img, alpha, rng, float(rng.uniform(0.3, 1.0)), hot_spot=hot_spot)
+        notes.append("hot spot" if hot_spot else "sheen")
+    return np.clip(img, 0, 255).astype(np.uint8)
+
+
+def back_mounts(bgr: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    """Two horizontal mounting rails and a pole clamp on the back of a panel (the face shows no bolts)."""
+    h, w = bgr.shape[:2]
+    img = bgr.astype(np.float32)
+    rail = np.array([150.0, 152.0, 150.0]) + rng.uniform(-10, 10)
+    thick = max(2, int(round(0.06 * h)))
+    inside = alpha > 128
+    for frac in (0.27, 0.73):
+        y = int(frac * h)
+        band = np.zeros((h, w), bool)
+        band[max(0, y - thick // 2):y + thick // 2 + 1] = True
+        band &= inside
+        img[band] = rail
+        img[np.roll(band, thick // 2 + 1, axis=0) & ~band & inside] *= 0.75  # shadow under the rail
+    clamp_w = max(2, int(round(0.12 * w)))
+    x0 = w // 2 - clamp_w // 2
+    for frac in (0.27, 0.73):
+        y = int(frac * h)
+        cv2.rectangle(img, (x0, y - thick), (x0 + clamp_w, y + thick), (120.0, 122.0, 122.0), -1)
+        cv2.circle(img, (x0 + clamp_w // 4, y), max(1, thick // 3), (90.0, 92.0, 92.0), -1)
+        cv2.circle(img, (x0 + 3 * clamp_w // 4, y), max(1, thick // 3), (90.0, 92.0, 92.0), -1)
+    return np.clip(img, 0, 255).astype(np.uint8)
 
 
 def weather_face(bgr: np.ndarray, alpha: np.ndarray, rng: np.random.Generator, faded: float, dirt: float,

@@ -20,7 +20,7 @@ from ..geometry import Pose
 from ..progress import Cancelled
 from . import textures as tx
 from .config import SimulationConfig, SimulationSummary
-from .faces import sign_kinds
+from .faces import FaceOptions, sign_kinds
 from .layout import CARRIAGEWAY, Scene, build_scene
 from .rasterizer import Rasterizer, TextureCache
 from .realism import apply_effects, draw_effects
@@ -83,7 +83,8 @@ def make_scene(config: SimulationConfig, street: Street | None = None) -> Scene:
     s_cam = _vehicle_positions(config)
     realism = {"weathering": config.weathering, "shadows": config.shadows, "occlusion": config.occlusion}
     return build_scene(street, config.seed, float(s_cam[0]), float(s_cam[-1]), config.fx, config.sign_density,
-                       config.distractor_density, sign_kinds(), realism)
+                       config.distractor_density, sign_kinds(), realism,
+                       FaceOptions.from_config(config))
 
 
 def right_pose(pose: Pose, baseline_m: float) -> Pose:

@@ -15,7 +15,7 @@ import numpy as np
 
 from ..drive import TruthSign
 from . import textures as tx
-from .faces import SIGN_COLOURS, SignKind, pick_format, render_sign_face, weather_face
+from .faces import SIGN_COLOURS, FaceOptions, SignKind, draw_sign_face, pick_format
 from .street import Street
 from .surfaces import Surface, Texture, TextureSource, rect_surface, triangle_surface
 
@@ -73,8 +73,9 @@ class Scene:
 
 
 class _Builder:
-    def __init__(self, street: Street, seed: int, fx: float, realism: dict):
+    def __init__(self, street: Street, seed: int, fx: float, realism: dict, face_options: FaceOptions):
         self.street = street
+        self.face_options = face_options
         self.seed = seed
         self.fx = fx
         self.realism = realism
@@ -292,20 +293,11 @@ class _Builder:
         size_px = int(np.clip(self.fx * max(w_m, h_m) / 3.0, 48, 640))
         fh, fw = _face_shape(size_px, w_m, h_m)
         key, rng = self.key("face")
-        style_seed = int(rng.integers(2**63))
-        real = self.realism
-        faded = float(rng.uniform(0.15, 0.45)) if real["weathering"] and rng.random() < 0.2 else 0.0
-        dirt = float(rng.uniform(0.2, 0.5)) if real["weathering"] and rng.random() < 0.2 else 0.0
-        shadow = bool(real["shadows"] and rng.random() < 0.25)
-        effect_seed = int(rng.integers(2**63))
-
-        def face_pixels():
-            return render_sign_face(kind.template_id, (fw, fh), np.random.default_rng(style_seed))
+        sign_face = draw_sign_face(kind.template_id, (fw, fh), float(w_m), rng, self.face_options,
+                                   self.realism["weathering"], self.realism["shadows"])
 
         def make_face():
-            bgr, alpha = face_pixels()
-            bgr = weather_face(bgr, alpha, np.random.default_rng(effect_seed), faded, dirt, shadow)
-            return Texture(bgr, alpha)
+            return Texture(*sign_face.pixels())
 
         face_src = TextureSource(key, fw, fh, make_face)
         corner = centre - right * w_m / 2 + up * h_m / 2
@@ -313,8 +305,7 @@ class _Builder:
         bkey, brng = self.key("back")
 
         def make_back():
-            _bgr, alpha = face_pixels()
-            return Texture(tx.metal(brng, fh, fw), alpha)
+            return Texture(*sign_face.back(brng))
 
         back_src = TextureSource(bkey, fw, fh, make_back)
         b_corner = centre - normal * 0.012 + right * w_m / 2 + up * h_m / 2
@@ -521,9 +512,10 @@ def _face_shape(size_px: int, w_m: float, h_m: float) -> tuple[int, int]:
 
 
 def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float, fx: float,
-                sign_density: float, distractor_density: float, kinds: list[SignKind], realism: dict) -> Scene:
+                sign_density: float, distractor_density: float, kinds: list[SignKind], realism: dict,
+                face_options: FaceOptions | None = None) -> Scene:
     """Lay out the whole street: road, buildings, signs (where the drive passes them), distractors."""
-    b = _Builder(street, seed, fx, realism)
+    b = _Builder(street, seed, fx, realism, face_options or FaceOptions())
     b.all_kinds = kinds
     b._facade_spans = []
     rng = b.rng(1, 1)

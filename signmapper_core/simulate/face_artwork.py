@@ -1,0 +1,80 @@
+"""The two artworks a synthetic sign face is printed from.
+
+* ``master``: the catalogue's master image (``templates/ch/png``; the official
+  drawings once the catalogue carries them), resampled to the face size with a
+  small random placement of the print on the blank (shift, scale, rotation), so
+  even a face at the master's own size is a resampling, never a pixel copy.
+* ``procedural``: the catalogue's procedural drawer with a random FaceStyle
+  (pen widths, palette, font, details), an independent drawing of the sign.
+
+Which of the two a sign gets is a seeded choice per sign (``choose_artwork``).
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import cv2
+import numpy as np
+
+MASTER, PROCEDURAL = "master", "procedural"
+MASTER_CACHE_PX = 800  # masters are kept at most this large: faces are at most 640 px
+
+
+def choose_artwork(rng: np.random.Generator, master_share: float) -> str:
+    """``master`` with probability ``master_share``, else ``procedural``."""
+    return MASTER if rng.random() < master_share else PROCEDURAL
+
+
+def has_procedural(template_id: str) -> bool:
+    """Whether the catalogue's procedural drawer knows the sign (a catalogue may carry others)."""
+    from ..catalogue.signs_ch import SIGNS
+
+    return template_id in SIGNS
+
+
+@cache
+def _master(template_id: str) -> tuple[np.ndarray, np.ndarray]:
+    """(bgr, alpha) of the bundled catalogue's master, reduced to MASTER_CACHE_PX on its longer side."""
+    from ..catalogue import load_catalogue
+
+    bgr, alpha = load_catalogue().master(template_id)  # a fresh catalogue: its full-size cache is dropped
+    scale = MASTER_CACHE_PX / max(bgr.shape[:2])
+    if scale < 1:
+        size = (max(1, round(bgr.shape[1] * scale)), max(1, round(bgr.shape[0] * scale)))
+        bgr = cv2.resize(bgr, size, interpolation=cv2.INTER_AREA)
+        alpha = cv2.resize(alpha, size, interpolation=cv2.INTER_AREA)
+    return bgr, alpha
+
+
+def master_face(template_id: str, size_wh: tuple[int, int], rng: np.random.Generator
+                ) -> tuple[np.ndarray, np.ndarray]:
+    """Master artwork at (w, h): outline from the master's alpha, print placed with a small random error."""
+    w, h = int(size_wh[0]), int(size_wh[1])
+    src_bgr, src_alpha = _master(template_id)
+    shrink = w <= src_bgr.shape[1] and h <= src_bgr.shape[0]
+    interp = cv2.INTER_AREA if shrink else cv2.INTER_LINEAR
+    bgr = cv2.resize(src_bgr, (w, h), interpolation=interp)
+    alpha = cv2.resize(src_alpha, (w, h), interpolation=interp)
+    # print placement tolerance on the blank: about +-0.4 % shift, +-0.5 % scale, +-0.4 degrees
+    scale = 1.0 + rng.uniform(-0.005, 0.005)
+    angle = rng.uniform(-0.4, 0.4)
+    shift = rng.uniform(-0.004, 0.004, 2) * (w, h)
+    matrix = cv2.getRotationMatrix2D(((w - 1) / 2.0, (h - 1) / 2.0), angle, scale)
+    matrix[:, 2] += shift
+    bgr = cv2.warpAffine(bgr, matrix, (w, h), flags=cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
+    return np.ascontiguousarray(bgr), np.ascontiguousarray(alpha)
+
+
+def procedural_face(template_id: str, size_wh: tuple[int, int], rng: np.random.Generator
+                    ) -> tuple[np.ndarray, np.ndarray]:
+    """The catalogue's procedural drawing at (w, h) with a random style drawn from ``rng``."""
+    from ..catalogue import FaceStyle, render_face
+
+    w, h = int(size_wh[0]), int(size_wh[1])
+    style = FaceStyle.random(rng, strength=float(rng.uniform(0.5, 1.0)))
+    bgr, alpha = render_face(template_id, (w, h), style=style)
+    if bgr.shape[:2] != (h, w):
+        bgr = cv2.resize(bgr, (w, h), interpolation=cv2.INTER_AREA)
+        alpha = cv2.resize(alpha, (w, h), interpolation=cv2.INTER_AREA)
+    return np.ascontiguousarray(bgr), np.ascontiguousarray(alpha)
