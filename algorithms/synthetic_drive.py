@@ -32,8 +32,10 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
         "Generates a synthetic stereo mobile-mapping drive in the stereo-drive/1 layout: a street with façades, "
         "vegetation, cars and other sign-coloured distractors, and poles carrying Swiss traffic signs, rendered "
         "as rectified stereo pairs with sensor noise, blur, JPEG compression, exposure changes, shadows and "
-        "occlusions. poses.csv holds the poses with GNSS/INS noise; truth.csv the true sign positions, ids and "
-        "sizes. The same seed always gives the same files. Use it to try the mapping or to measure its accuracy."
+        "occlusions. Each sign face is printed from the catalogue's master image or a procedural variant and "
+        "gets its own print, reflective sheeting, wear, dirt, stickers or dents. poses.csv holds the poses with "
+        "GNSS/INS noise; truth.csv the true sign positions, ids and sizes. The same seed always gives the same "
+        "files. Use it to try the mapping or to measure its accuracy."
     )
 
     OUTPUT = "OUTPUT"
