@@ -12,7 +12,7 @@ Which of the two a sign gets is a seeded choice per sign (``choose_artwork``).
 
 from __future__ import annotations
 
-from functools import cache
+from functools import lru_cache
 
 import cv2
 import numpy as np
@@ -33,7 +33,7 @@ def has_procedural(template_id: str) -> bool:
     return template_id in SIGNS
 
 
-@cache
+@lru_cache(maxsize=24)  # bounded: memory stays flat however many different signs a drive has
 def _master(template_id: str) -> tuple[np.ndarray, np.ndarray]:
     """(bgr, alpha) of the bundled catalogue's master, reduced to MASTER_CACHE_PX on its longer side."""
     from ..catalogue import load_catalogue

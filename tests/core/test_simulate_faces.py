@@ -17,6 +17,7 @@ from signmapper_core.simulate import (
     face_print,
     face_sheeting,
     face_wear,
+    generate_drive,
 )
 from signmapper_core.simulate.face_artwork import master_face, procedural_face
 from signmapper_core.simulate.face_dents import dent_warp
@@ -235,6 +236,17 @@ def test_legacy_faces_are_the_procedural_drawing_with_the_older_weathering_only(
                                 face.dirt, face.shadow)
     bgr, alpha = face.pixels()
     assert np.array_equal(bgr, expected_bgr) and np.array_equal(alpha, expected_alpha)
+
+
+def test_faces_do_not_move_signs_truth_and_poses_are_those_of_legacy_faces(tmp_path):
+    base = dict(pairs=3, seed=21, width=320, height=180, fx=1750.0 / 6, sign_density=25.0)
+    generate_drive(tmp_path / "new", SimulationConfig(**base))
+    generate_drive(tmp_path / "old", SimulationConfig(**base, **LEGACY_FACES))
+    for name in ("truth.csv", "poses.csv", "drive.json"):
+        assert (tmp_path / "new" / name).read_bytes() == (tmp_path / "old" / name).read_bytes(), name
+    assert len((tmp_path / "new" / "truth.csv").read_text().splitlines()) > 2
+    new_left = (tmp_path / "new" / "left" / "000000.jpg").read_bytes()
+    assert new_left != (tmp_path / "old" / "left" / "000000.jpg").read_bytes()
 
 
 @pytest.mark.parametrize("field, value, message", [("face_artwork", "official", "face_artwork"),
