@@ -24,7 +24,6 @@ from .face_layers import ink_layers
 from .textures import metal, smooth_noise
 
 SIGN_COLOURS = ("red", "blue", "yellow")
-ARTWORKS = ("mixed", "procedural")
 
 # seed streams of one face, one per variation, so switching one off leaves the others as they were
 _ARTWORK, _PRINT, _SHEETING, _WEAR, _DIRT, _MARKS, _DENTS, _BACK, _SHEEN = range(9)
@@ -82,12 +81,6 @@ class FaceOptions:
     @classmethod
     def from_config(cls, config) -> FaceOptions:
         return cls(**{f.name: getattr(config, f.name) for f in fields(cls)})
-
-    def validate(self) -> None:
-        if self.face_artwork not in ARTWORKS:
-            raise ValueError(f"face_artwork must be one of {', '.join(ARTWORKS)}, got {self.face_artwork!r}")
-        if not 0.0 <= self.master_share <= 1.0:
-            raise ValueError("master_share must be within 0..1")
 
 
 PROCEDURAL_ONLY = FaceOptions(face_artwork="procedural", face_print=False, face_sheeting=False, face_wear=False,
