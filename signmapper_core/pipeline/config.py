@@ -7,7 +7,7 @@ HSV thresholds for the three sign colours. Hue is OpenCV's 0-179 scale.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Dict, Tuple
+from typing import Dict, Optional, Tuple
 
 # (hue_lo, hue_hi, sat_lo, sat_hi, val_lo, val_hi); several ranges per colour are OR-ed.
 HsvRange = Tuple[int, int, int, int, int, int]
@@ -29,7 +29,9 @@ class PipelineConfig:
     colours: Tuple[str, ...] = ("red", "blue", "yellow")
     exclude: Tuple[str, ...] = ()
     detection_threshold: float = 0.5  # planar share of a segment needed to keep it
-    classification_threshold: float = 0.6  # NCC score needed for status "accepted"
+    classification_threshold: Optional[float] = None  # indicator needed for "accepted"; None = the classifier's own
+    classifier: str = "auto"  # "cnn" (learned network of the catalogue), "ncc" (template matching), "auto" (cnn if
+    # the catalogue has a network)
     size_tolerance: float = 0.15  # relative deviation from a standard format
 
     # colour segmentation
@@ -64,7 +66,7 @@ class PipelineConfig:
 
     # classification
     min_surround_score: float = 0.5  # a panel reading needs its part outside the colour segment to match
-    min_classification_score: float = 0.35  # below this no template resembles the segment: not reported
+    min_classification_score: Optional[float] = None  # below this the segment is not reported; None = classifier's
     scales: Tuple[float, ...] = (0.92, 1.0, 1.08)
     shift_fraction: float = 0.08  # shift search, as a fraction of the segment size
     max_template_px: int = 96  # larger segments are compared downscaled
@@ -80,6 +82,10 @@ class PipelineConfig:
     def __post_init__(self):
         if not 0 < self.near_m < self.far_m:
             raise ValueError(f"need 0 < near_m < far_m, got {self.near_m}, {self.far_m}")
+        from .classifiers import CLASSIFIERS
+
+        if self.classifier not in CLASSIFIERS:
+            raise ValueError(f"unknown classifier {self.classifier!r}; choose one of {', '.join(CLASSIFIERS)}")
         unknown = set(self.colours) - set(self.hsv_ranges)
         if unknown:
             raise ValueError(f"no HSV thresholds for colours {sorted(unknown)}")

@@ -16,7 +16,8 @@ import numpy as np
 
 from ..face_normal import world_face_normal
 from ..geometry import Camera, Pose
-from .classify import classify_segment, surround_score
+from .classifiers import accept_threshold, classifier_for, min_score
+from .classify import surround_score
 from .colour import Segment, colour_masks, merge_candidates, segments_from_mask
 from .config import PipelineConfig
 from .depth import merge_row_bands, sgbm_depth
@@ -117,22 +118,23 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     # higher, and the panel reading alone scores ~0.65 on any round sign.
     readings, panels = [], []
     same_shapes = catalogue_shapes(shape, seg.bbox[2], seg.bbox[3])
+    classifier = classifier_for(catalogue, config)
+    accept = accept_threshold(classifier, config)
     for match, face, ids, ext in fits:
-        cls = classify_segment(left, face, catalogue, ids, config.scales, config.shift_fraction,
-                               config.max_template_px)
+        cls = classifier.classify(left, face, ids)
         if cls.template_id is None:
             continue
         if catalogue[cls.template_id].shape in same_shapes:  # the face is the segment (maybe with a rim)
             readings.append((match, face, cls))
         elif surround_score(left, face, catalogue, cls.template_id, ext) >= config.min_surround_score:
             panels.append((match, face, cls))
-    good_panels = [r for r in panels if r[2].score >= config.classification_threshold]
+    good_panels = [r for r in panels if r[2].score >= accept]
     pool = good_panels or readings or panels
     best = max(pool, key=lambda r: r[2].score, default=None)
-    if best is None or best[2].score < config.min_classification_score:
+    if best is None or best[2].score < min_score(classifier, config):
         return None
     match, face, cls = best
-    status = "accepted" if cls.score >= config.classification_threshold else "review"
+    status = "accepted" if cls.score >= accept else "review"
     if seg.source == "hough" and status == "accepted":
         # a circle with a full-colour ring is a colour find the colour step lost (an attachment
         # spoiled its outline); faded or white ones stay for review

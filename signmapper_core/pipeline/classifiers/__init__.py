@@ -1,0 +1,71 @@
+"""Classification strategies: the paper's template matching and a learned network.
+
+Colour and shape cut the candidate ids before any classifier runs (the paper's
+hierarchy); a classifier only picks among them and says how sure it is. Every
+strategy has ``name``, ``accept_threshold``, ``min_score``, ``knows(ids)`` and
+``classify(image, bbox, candidate_ids) -> ClassificationResult``.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+
+from .learned import ClassifierError, LearnedClassifier, load_model_card, model_card_path
+from .ncc import NccClassifier
+
+CLASSIFIERS = ("auto", "cnn", "ncc")
+
+
+def make_classifier(name: str, catalogue, config=None):
+    """The classifier called ``name`` for ``catalogue``.
+
+    ``auto`` is the learned network where the catalogue carries one
+    (``classifier/model.json``), else template matching; ``cnn`` insists on the
+    network and raises :class:`ClassifierError` naming the missing file.
+    """
+    if name not in CLASSIFIERS:
+        raise ValueError(f"unknown classifier {name!r}; choose one of {', '.join(CLASSIFIERS)}")
+    if name == "auto":
+        name = "cnn" if model_card_path(catalogue.folder).is_file() else "ncc"
+    if name == "cnn":
+        return LearnedClassifier.for_catalogue(catalogue)
+    if config is None:
+        return NccClassifier(catalogue)
+    return NccClassifier(catalogue, config.scales, config.shift_fraction, config.max_template_px)
+
+
+@lru_cache(maxsize=4)
+def _learned(card_path: Path, stamp: float) -> LearnedClassifier:
+    """One loaded network per model file and modification time: loading costs ~10 ms, a pair has many segments."""
+    return LearnedClassifier(load_model_card(card_path))
+
+
+def classifier_for(catalogue, config):
+    """The classifier ``config.classifier`` names for ``catalogue``, networks loaded once per model file."""
+    name = config.classifier
+    card = model_card_path(catalogue.folder)
+    if name == "auto":
+        name = "cnn" if card.is_file() else "ncc"
+    if name == "cnn":
+        try:
+            stamp = card.stat().st_mtime
+        except OSError:
+            raise ClassifierError(card, "no learned classifier for this catalogue (choose the classifier 'ncc')") \
+                from None
+        return _learned(card, stamp)
+    return make_classifier(name, catalogue, config)
+
+
+def accept_threshold(classifier, config) -> float:
+    """The indicator needed for "accepted": the configured one, else the classifier's calibrated default."""
+    return classifier.accept_threshold if config.classification_threshold is None else config.classification_threshold
+
+
+def min_score(classifier, config) -> float:
+    """The indicator below which a segment is not reported at all."""
+    return classifier.min_score if config.min_classification_score is None else config.min_classification_score
+
+
+__all__ = ["accept_threshold", "classifier_for", "min_score", "CLASSIFIERS", "ClassifierError", "LearnedClassifier", "NccClassifier", "load_model_card",
+           "make_classifier", "model_card_path"]

@@ -1,0 +1,143 @@
+"""A small convolutional network, trained on synthetic faces of the official drawings, run by OpenCV's dnn.
+
+The catalogue folder carries the model as ``classifier/model.json`` (the card:
+classes, input size, margin, temperature, acceptance threshold) beside
+``classifier/model.onnx``. Colour and shape have already cut the candidates;
+the network's logits are restricted to them plus a background class and turned
+into probabilities with the calibrated temperature, so the classification
+indicator is an estimate of the probability that the id is right.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Sequence
+
+import cv2
+import numpy as np
+
+from ..classify import ClassificationResult
+from .face_patch import face_patch, standardise
+
+CARD_FORMAT = "signmapper-classifier/1"
+BACKGROUND = "__background__"
+MODEL_DIR = "classifier"
+
+
+class ClassifierError(ValueError):
+    """A classifier model folder is missing or malformed; the message names the file and the field."""
+
+    def __init__(self, path, message: str):
+        self.path = str(path)
+        super().__init__(f"{path}: {message}")
+
+
+@dataclass(frozen=True)
+class ModelCard:
+    """What the network needs around it: its classes and how patches are cut, and its calibration."""
+
+    path: Path
+    onnx: Path
+    classes: tuple[str, ...]
+    input_px: int
+    margin: float
+    temperature: float
+    accept_threshold: float  # calibrated probability above which a sign is "accepted"
+    min_score: float  # below this probability the segment is not reported as a sign
+
+    def index(self, template_id: str) -> int:
+        return self.classes.index(template_id)
+
+
+def model_card_path(catalogue_folder) -> Path:
+    return Path(catalogue_folder) / MODEL_DIR / "model.json"
+
+
+def load_model_card(path) -> ModelCard:
+    """Read and check a model card; every problem is a :class:`ClassifierError` naming the file."""
+    path = Path(path)
+    try:
+        raw = json.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise ClassifierError(path, "no such file") from None
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise ClassifierError(path, f"cannot be read as JSON ({exc})") from None
+    if not isinstance(raw, dict) or raw.get("format") != CARD_FORMAT:
+        raise ClassifierError(path, f"'format' must be {CARD_FORMAT!r}")
+
+    def field(name, kind, check, what):
+        value = raw.get(name)
+        if not isinstance(value, kind) or isinstance(value, bool) or not check(value):
+            raise ClassifierError(path, f"field '{name}' must be {what}, got {value!r}")
+        return value
+
+    classes = field("classes", list, lambda v: len(v) >= 2 and all(isinstance(c, str) and c for c in v),
+                    "a list of at least two template ids")
+    if len(set(classes)) != len(classes):
+        raise ClassifierError(path, "field 'classes' lists an id twice")
+    if BACKGROUND not in classes:
+        raise ClassifierError(path, f"field 'classes' needs the background class {BACKGROUND!r}")
+    onnx = path.parent / field("onnx", str, bool, "the model file name")
+    if not onnx.is_file():
+        raise ClassifierError(onnx, "model file missing (named by field 'onnx' of model.json)")
+    return ModelCard(
+        path=path, onnx=onnx, classes=tuple(classes),
+        input_px=field("input_px", int, lambda v: 8 <= v <= 512, "an integer 8..512"),
+        margin=float(field("margin", (int, float), lambda v: 0 <= v <= 1, "a number 0..1")),
+        temperature=float(field("temperature", (int, float), lambda v: 0.05 <= v <= 20, "a number 0.05..20")),
+        accept_threshold=float(field("accept_threshold", (int, float), lambda v: 0 < v < 1, "a number in (0, 1)")),
+        min_score=float(field("min_score", (int, float), lambda v: 0 <= v < 1, "a number in [0, 1)")),
+    )
+
+
+def _softmax(z: np.ndarray) -> np.ndarray:
+    e = np.exp(z - z.max())
+    return e / e.sum()
+
+
+class LearnedClassifier:
+    """Classifies a face box among candidate ids with the catalogue's ONNX network."""
+
+    name = "cnn"
+
+    def __init__(self, card: ModelCard):
+        self.card = card
+        self.accept_threshold = card.accept_threshold
+        self.min_score = card.min_score
+        self._index = {c: i for i, c in enumerate(card.classes)}
+        try:
+            self._net = cv2.dnn.readNetFromONNX(str(card.onnx))
+        except cv2.error as exc:
+            raise ClassifierError(card.onnx, f"OpenCV cannot load the model ({exc})") from None
+
+    @classmethod
+    def for_catalogue(cls, catalogue) -> "LearnedClassifier":
+        return cls(load_model_card(model_card_path(catalogue.folder)))
+
+    def knows(self, template_ids: Sequence[str]) -> bool:
+        return all(t in self._index for t in template_ids)
+
+    def logits(self, image: np.ndarray, bboxes: Sequence) -> np.ndarray:
+        """Raw network outputs (n, classes) for face boxes of one image."""
+        patches = np.stack([face_patch(image, b, self.card.input_px, self.card.margin) for b in bboxes])
+        self._net.setInput(standardise(patches))
+        return np.asarray(self._net.forward(), dtype=np.float64).reshape(len(bboxes), -1)
+
+    def probabilities(self, logits: np.ndarray, candidate_ids: Sequence[str]) -> np.ndarray:
+        """Calibrated probabilities of the candidates and, last, of the background."""
+        picked = [self._index[t] for t in candidate_ids] + [self._index[BACKGROUND]]
+        return _softmax(logits[picked] / self.card.temperature)
+
+    def classify(self, image: np.ndarray, bbox, candidate_ids: Sequence[str]) -> ClassificationResult:
+        ids = list(dict.fromkeys(candidate_ids))
+        if not ids:
+            return ClassificationResult(None, 0.0)
+        unknown = [t for t in ids if t not in self._index]
+        if unknown:
+            raise ClassifierError(self.card.path, f"the model does not know the template ids {unknown}")
+        p = self.probabilities(self.logits(image, [bbox])[0], ids)
+        best = int(np.argmax(p[:-1]))
+        scores = {t: float(p[i]) for i, t in enumerate(ids)}
+        return ClassificationResult(ids[best], float(p[best]), scores)
