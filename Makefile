@@ -24,7 +24,10 @@ DEMO_PAIRS := 20
 PLUGIN_NAME := sign_mapper
 QGIS_PROFILE_PLUGINS := $(HOME)/.local/share/QGIS/QGIS3/profiles/default/python/plugins
 
-.PHONY: setup apt venv test test-core demo lint zip deploy catalogue catalogue-sheet clean help
+TRAIN_VENV := .venv-train
+TRAIN_PY := $(TRAIN_VENV)/bin/python
+
+.PHONY: setup apt venv test test-core demo lint zip deploy catalogue catalogue-sheet train-classifier clean help
 
 help:
 	@echo "make setup     Debian packages (QGIS), venv with pinned requirements"
@@ -35,6 +38,7 @@ help:
 	@echo "make zip       dist/sign_mapper.zip, installable in QGIS"
 	@echo "make deploy    link this checkout into the default QGIS profile"
 	@echo "make catalogue rebuild templates/ch from the Swiss sign definitions (deterministic)"
+	@echo "make train-classifier  retrain templates/ch/classifier (own venv with PyTorch; ~1 h on 2 cores)"
 
 setup: apt venv
 
@@ -84,6 +88,15 @@ lint: venv
 catalogue: venv
 	$(PY) -m signmapper_core.catalogue.build
 
+$(TRAIN_VENV)/.installed: requirements.txt requirements-train.txt
+	$(SYSTEM_PYTHON) -m venv --system-site-packages $(TRAIN_VENV)
+	$(TRAIN_PY) -m pip install -q -r requirements-train.txt
+	touch $@
+
+# Reproducible: same catalogue and arguments, same model. Generated patches are cached in /tmp.
+train-classifier: apt $(TRAIN_VENV)/.installed
+	PYTHONPATH= $(TRAIN_PY) -m training.train --catalogue templates/ch $(TRAIN_ARGS)
+
 catalogue-sheet: venv
 	$(PY) -m signmapper_core.catalogue.sheet docs/catalogue-sheet.png
 
@@ -96,4 +109,4 @@ deploy:
 	@echo "Linked into $(QGIS_PROFILE_PLUGINS)/$(PLUGIN_NAME); start QGIS with PYTHONPATH=$(SITE_PACKAGES)"
 
 clean:
-	rm -rf build dist $(DEMO_DIR) .pytest_cache .ruff_cache
+	rm -rf build dist $(DEMO_DIR) .pytest_cache .ruff_cache $(TRAIN_VENV)

@@ -7,8 +7,8 @@ import sys
 import zipfile
 from pathlib import Path
 
-EXCLUDED_TOP = {"tests", ".ci", "bench", "scripts", "docs", ".gitignore", "requirements-dev.txt", "pytest.ini",
-                "ruff.toml", "Makefile", ".gitattributes"}
+EXCLUDED_TOP = {"tests", ".ci", "bench", "scripts", "training", "docs", ".gitignore", "requirements-dev.txt",
+                "requirements-train.txt", "pytest.ini", "ruff.toml", "Makefile", ".gitattributes"}
 
 
 def plugin_files(repo: Path) -> list[str]:

@@ -31,7 +31,7 @@ import sys
 import time
 from collections import Counter, defaultdict
 from pathlib import Path
-from typing import Callable, Dict, List, Sequence, Tuple
+from typing import Callable, Dict, List, Sequence
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
@@ -43,27 +43,16 @@ from signmapper_core.validation import load_manifest, load_scene_list, read_bgr 
 SMALL_PX = 30
 SUBSET_DIR = REPO.parent / "shared" / "real-signs"
 
-# (image, bbox, catalogue, candidate ids) -> (template id or None, score 0..1)
-Classifier = Callable[[object, Tuple[int, int, int, int], object, Sequence[str]], Tuple[object, float]]
+def make_classifier(name: str, catalogue, model: Path = None):
+    """The pipeline's classifier ``name`` (``signmapper_core.pipeline.classifiers``), or the network in ``model``."""
+    from signmapper_core.pipeline.classifiers import CLASSIFIERS, LearnedClassifier, load_model_card
+    from signmapper_core.pipeline.classifiers import make_classifier as make
 
-
-def classify_ncc(image, bbox, catalogue, candidate_ids):
-    """Today's classifier: hierarchical masked NCC (``pipeline.classify.classify_segment``)."""
-    from signmapper_core.pipeline.classify import classify_segment
-
-    result = classify_segment(image, bbox, catalogue, candidate_ids)
-    return result.template_id, result.score
-
-
-CLASSIFIERS: Dict[str, Classifier] = {"ncc": classify_ncc}
-
-
-def classifier(name: str) -> Classifier:
-    """The classification function called ``name`` (the one place to plug in others)."""
-    try:
-        return CLASSIFIERS[name]
-    except KeyError:
-        raise SystemExit(f"unknown classifier {name!r}; known: {', '.join(sorted(CLASSIFIERS))}") from None
+    if model is not None:
+        return LearnedClassifier(load_model_card(Path(model) / "model.json"))
+    if name not in CLASSIFIERS:
+        raise SystemExit(f"unknown classifier {name!r}; known: {', '.join(CLASSIFIERS)}")
+    return make(name, catalogue)
 
 
 def default_data() -> Path:
@@ -122,17 +111,20 @@ def breakdowns(records: list, columns: Callable[[list], List[str]], header: Sequ
 def run_classify(args, catalogue, config: PipelineConfig) -> int:
     signs = select(load_manifest(args.data / "crops.csv", known_ids={e.id for e in catalogue}),
                    args.split, args.limit, args.seed)
-    classify = classifier(args.classifier)
-    threshold = config.classification_threshold
+    clf = make_classifier(args.classifier, catalogue, args.model)
+    threshold = config.classification_threshold if config.classification_threshold is not None \
+        else clf.accept_threshold
     records = []
     start = time.perf_counter()
     for sign in signs:
         entry = catalogue[sign.ssv_id]
         candidates = [e.id for e in catalogue.filter(colours=[entry.colour], shapes=[entry.shape])]
-        predicted, score = classify(sign.load_image(), sign.bbox, catalogue, candidates)
+        result = clf.classify(sign.load_image(), sign.bbox, candidates)
+        predicted, score = result.template_id, result.score
         records.append({"sign": sign, "id": predicted, "score": score, "n_cand": len(candidates)})
     seconds = time.perf_counter() - start
-    print(f"classify ({args.classifier}) on {args.data / 'crops.csv'}: split={args.split}, {len(records)} signs, "
+    which = f"{clf.name} {args.model}" if args.model else clf.name
+    print(f"classify ({which}) on {args.data / 'crops.csv'}: split={args.split}, {len(records)} signs, "
           f"{seconds:.0f} s ({1000 * seconds / max(1, len(records)):.0f} ms/sign); perfect box, candidates = "
           f"catalogue entries of the true colour and shape; accepted = score >= {threshold}")
 
@@ -261,7 +253,8 @@ def main(argv=None) -> int:
     parser.add_argument("--split", choices=("tune", "report", "all"), default="tune")
     parser.add_argument("--limit", type=int, default=0, help="a seeded random sample of this many signs/images")
     parser.add_argument("--seed", type=int, default=0)
-    parser.add_argument("--classifier", default="ncc", help=f"one of {', '.join(sorted(CLASSIFIERS))}")
+    parser.add_argument("--classifier", default="auto", help="auto, cnn or ncc (the pipeline's classifiers)")
+    parser.add_argument("--model", type=Path, default=None, help="evaluate the network in this model folder instead")
     args = parser.parse_args(argv)
     args.data = (args.data or default_data()).resolve()
     if not (args.data / "crops.csv").is_file():

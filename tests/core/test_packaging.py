@@ -16,7 +16,8 @@ def test_plugin_zip_layout(tmp_path):
     assert all(n.startswith("sign_mapper/") for n in names)
     for required in ("metadata.txt", "__init__.py", "provider/provider.py", "signmapper_core/drive.py"):
         assert f"sign_mapper/{required}" in names
-    assert not any(n.startswith(("sign_mapper/tests/", "sign_mapper/.ci/", "sign_mapper/bench/")) for n in names)
+    assert not any(n.startswith(("sign_mapper/tests/", "sign_mapper/.ci/", "sign_mapper/bench/",
+                                 "sign_mapper/training/")) for n in names)
 
 
 def test_metadata_has_what_the_plugin_manager_needs():
