@@ -29,6 +29,9 @@ from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise
 
 COLOURS = ["red", "blue", "yellow"]
+CLASSIFIERS = [("auto", "Automatic: the learned network where the catalogue has one, else template matching"),
+               ("cnn", "Learned network (CNN trained on the official drawings)"),
+               ("ncc", "Template matching (normalised cross-correlation, Cavegn 2011)")]
 
 
 class MapSignsAlgorithm(SignMapperAlgorithm):
@@ -54,6 +57,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
     EXCLUDE = "EXCLUDE"
     DETECTION_THRESHOLD = "DETECTION_THRESHOLD"
     CLASSIFICATION_THRESHOLD = "CLASSIFICATION_THRESHOLD"
+    CLASSIFIER = "CLASSIFIER"
     CATALOGUE = "CATALOGUE"
     OUTPUT = "OUTPUT"
     DETECTIONS = "DETECTIONS"
@@ -100,9 +104,20 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             advanced=True,
         )
         self.add_parameter(
+            QgsProcessingParameterEnum(self.CLASSIFIER, self.tr("Classifier"), options=[c[1] for c in CLASSIFIERS],
+                                       defaultValue=0),
+            "How a face gets its sign type among the candidates its colour and shape leave. The learned network "
+            "is trained on synthetic faces of the official SSV drawings; its indicator is a calibrated probability "
+            "that the type is right. Template matching is the paper's method; its indicator is the correlation "
+            "score. A catalogue folder of your own has no network unless you train one (make train-classifier).",
+            advanced=True,
+        )
+        self.add_parameter(
             QgsProcessingParameterNumber(self.CLASSIFICATION_THRESHOLD, self.tr("Classification indicator threshold"),
-                                         QgsProcessingParameterNumber.Double, 0.6, minValue=0.0, maxValue=1.0),
-            "Minimum template-matching score (0-1) for status 'accepted'; lower scores get status 'review'.",
+                                         QgsProcessingParameterNumber.Double, None, optional=True, minValue=0.0,
+                                         maxValue=1.0),
+            "Minimum classification indicator (0-1) for status 'accepted'; lower ones get status 'review'. Empty = "
+            "the classifier's own: the network's calibrated threshold, 0.6 for template matching.",
             advanced=True,
         )
         self.add_parameter(
@@ -161,11 +176,33 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                 near_m=near, far_m=far, colours=tuple(colours),
                 exclude=tuple(self.excluded_ids(parameters, context, catalogue)),
                 detection_threshold=self.parameterAsDouble(parameters, self.DETECTION_THRESHOLD, context),
-                classification_threshold=self.parameterAsDouble(parameters, self.CLASSIFICATION_THRESHOLD, context),
+                classification_threshold=self.optional_number(parameters, self.CLASSIFICATION_THRESHOLD, context),
+                classifier=CLASSIFIERS[self.parameterAsEnum(parameters, self.CLASSIFIER, context)][0],
             )
         except ValueError as exc:
             raise QgsProcessingException(str(exc)) from exc
+        from ..signmapper_core.pipeline.classifiers import ClassifierError, classifier_for
+
+        try:
+            classifier_for(catalogue, config)  # a missing or broken model is said before any work
+        except ClassifierError as exc:
+            raise QgsProcessingException(f"Classifier: {exc}") from exc
         return folder, catalogue, config
+
+    @staticmethod
+    def report_classifier(catalogue, config, feedback) -> None:
+        from ..signmapper_core.pipeline.classifiers import accept_threshold, classifier_for
+
+        classifier = classifier_for(catalogue, config)
+        feedback.pushInfo(f"Classifier: {classifier.name}; status 'accepted' from a classification indicator of "
+                          f"{accept_threshold(classifier, config):.2f}")
+
+    def optional_number(self, parameters, name, context):
+        """The number given for an optional parameter, or None when it was left empty."""
+        value = parameters.get(name)
+        if value is None or (isinstance(value, str) and not value.strip()):
+            return None
+        return self.parameterAsDouble(parameters, name, context)
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         folder, catalogue, config = self.settings(parameters, context)
@@ -176,6 +213,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             raise QgsProcessingException("Cancelled while validating the drive; nothing written.") from None
         feedback.pushInfo(f"{len(drive.pairs)} pairs, CRS {drive.crs}, catalogue {catalogue.folder} "
                           f"({len(catalogue)} templates)")
+        self.report_classifier(catalogue, config, feedback)
 
         output = AtomicGeoPackage(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
         try:

@@ -48,6 +48,8 @@ class ReviewSession:
         for key in ("colours", "exclude"):
             if isinstance(self.run.get(key), list):
                 kwargs[key] = tuple(self.run[key])
+        if self.run.get("classifier") in ("cnn", "ncc"):
+            kwargs["classifier"] = self.run["classifier"]
         try:
             return PipelineConfig(**kwargs)
         except (TypeError, ValueError):

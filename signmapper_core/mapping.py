@@ -49,6 +49,8 @@ class MappingResult:
     skipped: list[PairResult]  # pairs that could not be read, with the reason
     seconds: float  # time spent on the pairs (loading and detecting)
     load_seconds: float = 0.0  # of which decoding the files
+    classifier_name: str = ""  # the strategy that ran ("cnn" or "ncc")
+    classification_threshold: Optional[float] = None  # the indicator "accepted" needed in this run
 
     def detections_of(self, sign: FusedSign) -> list[Observation]:
         return [o for o in self.detections if o.sign_id == sign.sign_id]
@@ -99,6 +101,12 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     Skipped pairs are passed to ``warn_skipped`` as they happen and listed in
     the result; ``Cancelled`` is raised when ``is_cancelled()`` turns true.
     """
+    from .pipeline.classifiers import accept_threshold, classifier_for
+
+    classifier = classifier_for(catalogue, config)  # a missing or broken model fails here, before any pair
+    accept = accept_threshold(classifier, config)
+    if fusion is None:
+        fusion = FusionConfig(accept_classification=accept)
     detections, skipped, seconds, load_seconds, total = [], [], 0.0, 0.0, len(drive.pairs)
     for done, result in enumerate(map_pairs(drive, catalogue, config, is_cancelled), start=1):
         seconds += result.seconds
@@ -115,7 +123,8 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     signs = fuse_observations(detections, fusion)
     set_mounting_heights(drive, signs)
     report(progress, 1.0, f"{len(detections)} detections fused into {len(signs)} signs")
-    return MappingResult(drive, catalogue, config, detections, signs, skipped, seconds, load_seconds)
+    return MappingResult(drive, catalogue, config, detections, signs, skipped, seconds, load_seconds,
+                         classifier.name, accept)
 
 
 def search_half_size(drive: Drive, config) -> int:

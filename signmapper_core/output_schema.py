@@ -185,8 +185,10 @@ RUN_KEYS = (
     RunKey("colours", "Sign colours segmented.", lambda r: list(r.config.colours)),
     RunKey("exclude", "Template ids never assigned.", lambda r: list(r.config.exclude)),
     RunKey("detection_threshold", "Minimum detection indicator.", lambda r: r.config.detection_threshold),
-    RunKey("classification_threshold", "Classification indicator for status accepted.",
-           lambda r: r.config.classification_threshold),
+    RunKey("classifier", "Classifier that ran: cnn (learned network) or ncc (template matching).",
+           lambda r: r.classifier_name, True),
+    RunKey("classification_threshold", "Classification indicator for status accepted (the classifier's own "
+           "calibrated one unless set).", lambda r: r.classification_threshold),
 )
 _TEXT_KEYS = {k.key for k in RUN_KEYS if k.text}
 

@@ -19,7 +19,7 @@ def lighting(img: np.ndarray, rng: np.random.Generator) -> np.ndarray:
         yy, xx = np.mgrid[0:h, 0:w].astype(np.float32)
         ang = rng.uniform(0, np.pi)
         d = (xx - w / 2) * np.cos(ang) + (yy - h / 2) * np.sin(ang) - rng.uniform(-0.3, 0.3) * w
-        soft = 1 / (1 + np.exp(-d / max(0.5, rng.uniform(0.01, 0.1) * w)))
+        soft = 1 / (1 + np.exp(np.clip(-d / max(0.5, rng.uniform(0.01, 0.1) * w), -50, 50)))
         x = x * (1 - rng.uniform(0.3, 0.7) * soft)[..., None]
     if rng.random() < 0.1:  # glare
         yy, xx = np.mgrid[0:h, 0:w].astype(np.float32)

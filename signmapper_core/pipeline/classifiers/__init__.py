@@ -67,5 +67,5 @@ def min_score(classifier, config) -> float:
     return classifier.min_score if config.min_classification_score is None else config.min_classification_score
 
 
-__all__ = ["accept_threshold", "classifier_for", "min_score", "CLASSIFIERS", "ClassifierError", "LearnedClassifier", "NccClassifier", "load_model_card",
-           "make_classifier", "model_card_path"]
+__all__ = ["CLASSIFIERS", "ClassifierError", "LearnedClassifier", "NccClassifier", "accept_threshold",
+           "classifier_for", "load_model_card", "make_classifier", "min_score", "model_card_path"]

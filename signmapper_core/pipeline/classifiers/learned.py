@@ -113,7 +113,7 @@ class LearnedClassifier:
             raise ClassifierError(card.onnx, f"OpenCV cannot load the model ({exc})") from None
 
     @classmethod
-    def for_catalogue(cls, catalogue) -> "LearnedClassifier":
+    def for_catalogue(cls, catalogue) -> LearnedClassifier:
         return cls(load_model_card(model_card_path(catalogue.folder)))
 
     def knows(self, template_ids: Sequence[str]) -> bool:
