@@ -120,8 +120,8 @@ def test_classify_with_ncc_gets_rendered_templates_right(tiny_set, capsys):
 
 
 def test_unknown_classifier_is_named():
-    with pytest.raises(SystemExit, match="unknown classifier 'cnn'; known: ncc"):
-        evaluate.classifier("cnn")
+    with pytest.raises(SystemExit, match="unknown classifier 'svm'; known: auto, cnn, ncc"):
+        evaluate.make_classifier("svm", None)
 
 
 def test_detect_finds_both_faces_and_counts_segments_per_image(tiny_set, capsys):
