@@ -14,6 +14,8 @@ QGIS_PROCESS := qgis_process.bin
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-pip python3-numpy python3-scipy \
                 python3-pyproj python3-shapely python3-pil python3-gdal git
+# rsvg-convert: only for make catalogue (rendering the official drawings)
+BUILD_APT_PACKAGES := librsvg2-bin
 
 export PYTHONPATH := $(SITE_PACKAGES)$(if $(PYTHONPATH),:$(PYTHONPATH))
 export QT_QPA_PLATFORM := offscreen
@@ -37,7 +39,7 @@ help:
 	@echo "make lint      ruff"
 	@echo "make zip       dist/sign_mapper.zip, installable in QGIS"
 	@echo "make deploy    link this checkout into the default QGIS profile"
-	@echo "make catalogue rebuild templates/ch from the Swiss sign definitions (deterministic)"
+	@echo "make catalogue SVG=DIR  rebuild templates/ch from the official drawings in DIR (deterministic)"
 	@echo "make train-classifier  retrain templates/ch/classifier (own venv with PyTorch; ~1 h on 2 cores)"
 
 setup: apt venv
@@ -86,7 +88,14 @@ lint: venv
 	$(PY) -m ruff check .
 
 catalogue: venv
-	$(PY) -m signmapper_core.catalogue.build
+	@if [ -z "$(SVG)" ]; then \
+		echo "usage: make catalogue SVG=<folder of the official drawings> (signalo project/images/official/original," \
+		     "see templates/README.md)"; exit 2; fi
+	@if ! command -v rsvg-convert >/dev/null; then \
+		echo "Installing the SVG renderer for the catalogue build: $(BUILD_APT_PACKAGES)"; \
+		$(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $(BUILD_APT_PACKAGES); \
+	fi
+	$(PY) -m signmapper_core.catalogue.build --svg "$(SVG)"
 
 $(TRAIN_VENV)/.installed: requirements.txt requirements-train.txt
 	$(SYSTEM_PYTHON) -m venv --system-site-packages $(TRAIN_VENV)

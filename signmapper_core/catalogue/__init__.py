@@ -1,5 +1,8 @@
 """Sign template catalogue: loader, renderer, size rounding and the procedural Swiss sign drawer.
 
+Building the Swiss masters from the official drawings (``build``, ``official``,
+``svg_compose``, ``svg_render``) is build-time only and not imported here.
+
 Public API (see docs/core-api.md, section "Catalogue")::
 
     load_catalogue(folder=None) -> Catalogue      # None -> bundled Swiss catalogue

@@ -1,9 +1,9 @@
-"""Procedural sign faces: the reference look of the templates and styled variants.
+"""Procedural sign faces: the project's own drawing of every Swiss sign, with styled variants.
 
 ``render_face`` draws a Swiss sign from its definition at any pixel size. The
-catalogue masters are ``render_face(id, 512)`` with the reference style; the
-synthetic generator passes a varied ``FaceStyle`` so its faces are never pixel
-copies of the templates.
+Swiss catalogue masters are the official ASTRA drawings; entries without one use
+``render_face(id, 512)`` with the reference style. The synthetic generator
+passes a varied ``FaceStyle``: its faces are other artwork than the templates.
 """
 
 from __future__ import annotations

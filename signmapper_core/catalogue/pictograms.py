@@ -285,7 +285,12 @@ def queue(p: Pen, c: str = "black"):
 
 
 def junction(p: Pen, c: str = "black", kind: str = "cross"):
-    """Intersection symbols: 'cross' (major road + side roads), 'right', 'left', 'x' (equal roads)."""
+    """Intersection symbols: 'cross' (major road + side roads), 'right', 'left', 'x' (equal roads),
+    'merge' (a road joining from the right)."""
+    if kind == "merge":
+        p.poly([(-0.42, 0.95), (-0.42, -0.55), (-0.16, -0.85), (0.1, -0.55), (0.1, 0.95)], c)
+        p.line([(0.75, 0.8), (0.05, -0.15)], 0.26, c)
+        return
     if kind == "x":
         p.line([(-0.75, -0.75), (0.75, 0.75)], 0.24, c)
         p.line([(-0.75, 0.75), (0.75, -0.75)], 0.24, c)

@@ -1,8 +1,9 @@
 """Swiss sign definitions (SSV, SR 741.21): ids, names de/fr/it, colour, shape, formats, drawing.
 
 Ids are SSV numbers; signs carrying a value get ``-<value>`` (``2.30-50``).
-The colour class is the dominant colour the detector segments on. Drawings are
-stylised, not the official artwork.
+The colour class is the dominant colour the detector segments on. The drawings
+are the project's own stylised ones (the catalogue masters come from the official
+artwork where it exists, see ``official_ch``).
 """
 
 from __future__ import annotations
@@ -144,7 +145,7 @@ prohibition("2.08", "Verbot für Gesellschaftswagen", "Circulation interdite aux
             "Divieto di circolazione per autobus", pg.bus_side)
 prohibition("2.09", "Verbot für Anhänger", "Circulation interdite aux remorques",
             "Divieto di circolazione per rimorchi", pg.trailer)
-prohibition("2.10", "Verbot für Fahrzeuge mit gefährlicher Ladung",
+prohibition("2.10.1", "Verbot für Fahrzeuge mit gefährlicher Ladung",
             "Circulation interdite aux véhicules transportant des marchandises dangereuses",
             "Divieto di circolazione per veicoli che trasportano merci pericolose",
             _all(pg.lorry_side, lambda p: p.rect(-0.45, -0.45, -0.05, -0.15, "orange", 0.02)))
@@ -181,18 +182,26 @@ for _v in (20, 30, 40, 50, 60, 70, 80, 100, 120):
                 _text(str(_v), 0, 1.3, mw=2.1))
 
 
-def _general_limit(st):
-    def content(p):
-        pg_disc = p.sub(0, -0.42, 0.95, jitter=False)
-        pg_disc.circle(0, 0, 0.92, "red")
-        pg_disc.circle(0, 0, 0.74, "white")
-        pg_disc.text("50", 0, 0, 0.62, "black", max_width=1.1)
-        p.text("GENERELL", 0, 0.72, 0.22, "black", max_width=1.7)
-    return frames.panel(st, content, aspect=0.70, fill="white", edge="black", content_box=(0.5, 0.714, 0.5))
+def _general_limit(end: bool):
+    """2.30.1 / 2.53.1: a 50 disc with GENERELL written in the (red or grey) rim; the end sign is striped."""
+    ring, ink = ("grey", "grey") if end else ("red", "black")
+
+    def content(p: Pen):
+        p.text("50", 0, 0.05, 1.2, ink, max_width=1.8)
+        p.text("GENERELL", 0, -1.45, 0.22, "white", max_width=1.05)
+
+    def draw(st):
+        d = frames.disc(st, content, rim_colour=ring, rim=0.17)
+        if end:
+            from . import shapes
+            frames.diagonal_stripes(d, shapes.regular_polygon(32, 0.5, 0.5, 0.33), "black", n=5, spacing=0.05,
+                                    width=0.016 * st.stroke_scale)
+        return d
+    return draw
 
 
 _add("2.30.1", "Höchstgeschwindigkeit 50 generell", "Vitesse maximale 50, limite générale",
-     "Velocità massima 50, limite generale", "red", "rectangle", F.GENERAL_LIMIT, False, _general_limit)
+     "Velocità massima 50, limite generale", "red", "circle", F.ROUND, True, _general_limit(False))
 mandatory("2.31-60", "Mindestgeschwindigkeit", "Vitesse minimale", "Velocità minima", _text("60", 0, 1.2, "white"))
 mandatory("2.32", "Vorgeschriebene Fahrtrichtung rechts", "Sens obligatoire à droite",
           "Direzione obbligatoria a destra", lambda p: p.arrow([(-0.9, 0), (0.95, 0)], 0.32, "white", 0.55, 0.5))
@@ -239,19 +248,18 @@ mandatory("2.48", "Schneeketten obligatorisch", "Chaînes à neige obligatoires"
 
 
 def _stopping(cross: bool):
-    """Blue disc with red rim and bar(s); proportions keep blue the dominant colour under any style."""
-    width = 0.2 if cross else 0.24
+    """Blue disc with the red rim and bar(s) of the SSV (rim 1/6, bars 1/12 of the diameter): red dominates."""
 
     def content(p: Pen):
-        p.line([(-0.96, -0.96), (0.96, 0.96)], width, "red", scaled=False)
+        p.line([(-1.3, -1.3), (1.3, 1.3)], 0.28, "red", scaled=False)
         if cross:
-            p.line([(-0.96, 0.96), (0.96, -0.96)], width, "red", scaled=False)
-    return lambda st: frames.disc(st, content, fill="blue", rim=0.085)
+            p.line([(-1.3, 1.3), (1.3, -1.3)], 0.28, "red", scaled=False)
+    return lambda st: frames.disc(st, content, fill="blue", rim=0.167)
 
 
-_add("2.49", "Halten verboten", "Interdiction de s'arrêter", "Divieto di fermata", "blue", "circle", F.ROUND, True,
+_add("2.49", "Halten verboten", "Interdiction de s'arrêter", "Divieto di fermata", "red", "circle", F.ROUND, True,
      _stopping(True))
-_add("2.50", "Parkieren verboten", "Interdiction de parquer", "Divieto di parcheggio", "blue", "circle", F.ROUND,
+_add("2.50", "Parkieren verboten", "Interdiction de parquer", "Divieto di parcheggio", "red", "circle", F.ROUND,
      True, _stopping(False))
 end_sign("2.53-50", "Ende der Höchstgeschwindigkeit", "Fin de la vitesse maximale", "Fine della velocità massima",
          _text("50", 0, 1.3, "grey"))
@@ -264,21 +272,17 @@ def _limit_disc(p: Pen, value: str, ring: str, ink: str):
 
 
 def _zone(kind: str, end: bool = False):
-    """Zone panel: symbol disc over 'ZONE'; the cancelling panel is grey with black stripes."""
+    """Upright zone panel: 'ZONE' over the symbol disc; the cancelling panel is grey with black stripes."""
     ring, ink = ("grey", "grey") if end else ("red", "black")
 
     def content(p: Pen):
-        top = p.sub(0, -0.38, 0.9, jitter=False)
+        top = p.sub(0, 0.2, 0.9, jitter=False)
         if kind == "30":
             _limit_disc(top, kind, ring, ink)
-        elif kind == "20":  # meeting zone: smaller limit disc over a pedestrian and a car
-            _limit_disc(p.sub(0, -0.56, 0.74, jitter=False), kind, ring, ink)
-            pg.pedestrian(p.sub(-0.45, 0.33, 0.23), ink)
-            pg.car_side(p.sub(0.3, 0.37, 0.36), ink)
         else:
             top.circle(0, 0, 0.95, "grey" if end else "blue")
             pg.adult_and_child(top.sub(0, 0, 0.62, jitter=False), "white")
-        p.text("ZONE", 0, 0.72, 0.3, ink, max_width=1.6)
+        p.text("ZONE", 0, -0.95, 0.3, ink, max_width=1.6)
 
     def draw(st):
         d = frames.panel(st, content, aspect=0.5 / 0.7, fill="white", edge="black", content_box=(0.5, 0.7, 0.5))
@@ -289,30 +293,42 @@ def _zone(kind: str, end: bool = False):
     return draw
 
 
-def _general_limit_end(st):
-    def content(p):
-        _limit_disc(p.sub(0, -0.42, 0.95, jitter=False), "50", "grey", "grey")
-        p.text("GENERELL", 0, 0.72, 0.22, "grey", max_width=1.7)
-    d = frames.panel(st, content, aspect=0.70, fill="white", edge="black", content_box=(0.5, 0.714, 0.5))
-    frames.diagonal_stripes(d, [(0.03, 0.03), (0.97, 0.03), (0.97, 1.40), (0.03, 1.40)], "black", n=5,
-                            spacing=0.05, width=0.016 * st.stroke_scale, angle_deg=-55, centre=(0.5, 0.714))
-    return d
+def _meeting_zone(end: bool = False):
+    """Landscape meeting-zone panel: 'ZONE' over a blue field with people, a car and a 20 disc."""
+    field, ink = ("grey", "grey") if end else ("blue", "black")
+
+    def content(p: Pen):
+        p.text("ZONE", 0, -0.6, 0.22, ink, max_width=0.9)
+        p.rect(-0.8, -0.3, 0.8, 0.75, field)
+        pg.pedestrian(p.sub(-0.55, 0.3, 0.26), "white")
+        pg.car_side(p.sub(-0.1, 0.05, 0.28), "white")
+        pg.adult_and_child(p.sub(0.35, 0.05, 0.26), "white")
+        _limit_disc(p.sub(0.72, 0.55, 0.3, jitter=False), "20", "grey" if end else "red", ink)
+
+    def draw(st):
+        d = frames.panel(st, content, aspect=0.7 / 0.5, fill="white", edge="black",
+                         content_box=(0.5, 0.357, 0.42))
+        if end:
+            frames.diagonal_stripes(d, [(0.03, 0.03), (0.97, 0.03), (0.97, 0.684), (0.03, 0.684)], "black", n=5,
+                                    spacing=0.04, width=0.012 * st.stroke_scale, angle_deg=-35,
+                                    centre=(0.5, 0.357))
+        return d
+    return draw
 
 
 _add("2.53.1", "Ende der Höchstgeschwindigkeit 50 generell", "Fin de la vitesse maximale 50, limite générale",
-     "Fine della velocità massima 50, limite generale", "white", "rectangle", F.GENERAL_LIMIT, False,
-     _general_limit_end)
-_add("2.59.1", "Tempo-30-Zone", "Zone 30", "Zona 30", "red", "rectangle", F.ZONE, False, _zone("30"))
+     "Fine della velocità massima 50, limite generale", "white", "circle", F.ROUND, True, _general_limit(True))
+_add("2.59.1", "Tempo-30-Zone", "Zone 30", "Zona 30", "red", "rectangle", F.ZONE, True, _zone("30"))
 _add("2.59.2", "Ende der Tempo-30-Zone", "Fin de la zone 30", "Fine della zona 30", "white", "rectangle", F.ZONE,
-     False, _zone("30", end=True))
-_add("2.59.3", "Fussgängerzone", "Zone piétonne", "Zona pedonale", "blue", "rectangle", F.ZONE, False,
+     True, _zone("30", end=True))
+_add("2.59.3", "Fussgängerzone", "Zone piétonne", "Zona pedonale", "blue", "rectangle", F.ZONE, True,
      _zone("pedestrian"))
 _add("2.59.4", "Ende der Fussgängerzone", "Fin de la zone piétonne", "Fine della zona pedonale", "white",
-     "rectangle", F.ZONE, False, _zone("pedestrian", end=True))
-_add("2.59.5", "Begegnungszone", "Zone de rencontre", "Zona d'incontro", "red", "rectangle", F.ZONE, False,
-     _zone("20"))
+     "rectangle", F.ZONE, True, _zone("pedestrian", end=True))
+_add("2.59.5", "Begegnungszone", "Zone de rencontre", "Zona d'incontro", "blue", "rectangle", F.ZONE_WIDE, True,
+     _meeting_zone())
 _add("2.59.6", "Ende der Begegnungszone", "Fin de la zone de rencontre", "Fine della zona d'incontro", "white",
-     "rectangle", F.ZONE, False, _zone("20", end=True))
+     "rectangle", F.ZONE_WIDE, True, _meeting_zone(end=True))
 mandatory("2.60", "Radweg", "Piste cyclable", "Ciclopista", lambda p: pg.bicycle(p, "white", 0.1))
 mandatory("2.61", "Fussweg", "Chemin pour piétons", "Strada pedonale", pg.adult_and_child)
 mandatory("2.62", "Reitweg", "Allée d'équitation", "Strada per cavalieri", pg.horse_rider)
@@ -325,8 +341,8 @@ mandatory("2.63", "Rad- und Fussweg mit getrennten Verkehrsflächen",
 mandatory("2.63.1", "Gemeinsamer Rad- und Fussweg",
           "Piste cyclable et chemin pour piétons, sans partage de l'aire de circulation",
           "Ciclopista e strada pedonale senza divisione dell'area di circolazione",
-          _all(lambda p: pg.bicycle(p.sub(0, -0.58, 0.62), "white", 0.13),
-               _at(pg.pedestrian, 0, 0.6, 0.58, False, "white")))
+          _all(lambda p: pg.bicycle(p.sub(0, 0.58, 0.62), "white", 0.13),
+               _at(pg.pedestrian, 0, -0.5, 0.58, False, "white")))
 mandatory("2.64", "Busfahrbahn", "Voie réservée aux bus", "Corsia riservata ai bus",
           lambda p: pg.bus_side(p.sub(0, 0, 0.95), "white", "blue"))
 
@@ -351,20 +367,20 @@ _add("3.04", "Ende der Hauptstrasse", "Fin de la route principale", "Fine della 
      "diamond", F.DIAMOND, False, _end_main_road)
 danger("3.05", "Verzweigung mit Strasse ohne Vortritt", "Intersection avec une route sans priorité",
        "Intersezione con una strada senza precedenza", pg.junction)
-danger("3.06", "Verzweigung mit Strasse ohne Vortritt von rechts", "Intersection avec une route sans priorité à droite",
-       "Intersezione con una strada senza precedenza a destra", lambda p: pg.junction(p, kind="right"))
-danger("3.07", "Verzweigung mit Strasse ohne Vortritt von links", "Intersection avec une route sans priorité à gauche",
-       "Intersezione con una strada senza precedenza a sinistra", lambda p: pg.junction(p, kind="left"))
-danger("3.08", "Verzweigung mit Rechtsvortritt", "Intersection avec priorité de droite",
+danger("3.06", "Verzweigung mit Rechtsvortritt", "Intersection comportant la priorité de droite",
        "Intersezione con precedenza da destra", lambda p: pg.junction(p, kind="x"))
-info("3.09", "Vortritt vor dem Gegenverkehr", "Priorité par rapport aux véhicules venant en sens inverse",
+danger("3.07", "Einfahrt von rechts", "Entrée par la droite", "Entrata da destra",
+       lambda p: pg.junction(p, kind="merge"))
+danger("3.08", "Einfahrt von links", "Entrée par la gauche", "Entrata da sinistra",
+       _mirror(pg.junction, kind="merge"))
+prohibition("3.09", "Dem Gegenverkehr Vortritt lassen", "Laissez passer les véhicules en sens inverse",
+            "Lasciar passare i veicoli provenienti in senso inverso",
+            _all(lambda p: p.arrow([(0.38, 0.9), (0.38, -0.9)], 0.2, "red", 0.42, 0.34),
+                 lambda p: p.arrow([(-0.38, -0.9), (-0.38, 0.9)], 0.28, "black", 0.5, 0.4)))
+info("3.10", "Vortritt vor dem Gegenverkehr", "Priorité par rapport aux véhicules venant en sens inverse",
      "Precedenza rispetto al traffico inverso",
      _all(lambda p: p.arrow([(0.35, 0.95), (0.35, -0.95)], 0.3, "white", 0.5, 0.42),
           lambda p: p.arrow([(-0.4, -0.8), (-0.4, 0.85)], 0.18, "red", 0.36, 0.28)))
-prohibition("3.10", "Vortritt für den Gegenverkehr", "Laisser passer les véhicules venant en sens inverse",
-            "Dare precedenza al traffico inverso",
-            _all(lambda p: p.arrow([(0.38, 0.9), (0.38, -0.9)], 0.2, "red", 0.42, 0.34),
-                 lambda p: p.arrow([(-0.38, -0.9), (-0.38, 0.9)], 0.28, "black", 0.5, 0.4)))
 
 # --------------------------------------------------------------------------- 4 information signs
 info("4.08", "Einbahnstrasse", "Sens unique", "Senso unico",
@@ -379,8 +395,9 @@ def _crossing_panel(p: Pen):
     pg.zebra(p.sub(0, 0.05, 0.55, jitter=False), "black", 4, 0.75, 1.2)
 
 
-info("4.11", "Standort eines Fussgängerstreifens", "Emplacement d'un passage pour piétons",
-     "Ubicazione di un passaggio pedonale", _crossing_panel)
+_add("4.11", "Standort eines Fussgängerstreifens", "Emplacement d'un passage pour piétons",
+     "Ubicazione di un passaggio pedonale", "blue", "rectangle", F.TALL_INFO, False,
+     lambda st: frames.panel(st, _crossing_panel, aspect=0.50 / 0.70, content_box=(0.5, 0.5, 0.4)))
 info("4.14", "Spital", "Hôpital", "Ospedale", _text("H", 0, 1.3, "white"))
 info("4.17", "Parkieren gestattet", "Parking autorisé", "Parcheggio autorizzato", _text("P", 0, 1.4, "white"))
 
@@ -389,8 +406,8 @@ def _tall_parking(sub):
     def content(p: Pen):
         p.text("P", 0, -0.72, 1.05, "white", max_width=1.4)
         sub(p.sub(0, 0.75, 0.85))
-    return lambda st: frames.panel(st, content, aspect=0.60 / 0.90, fill="blue", edge="white",
-                                   content_box=(0.5, 0.75, 0.38))
+    return lambda st: frames.panel(st, content, aspect=0.50 / 0.70, fill="blue", edge="white",
+                                   content_box=(0.5, 0.7, 0.36))
 
 
 _add("4.18", "Parkieren mit Parkscheibe", "Parcage avec disque de stationnement", "Parcheggio con disco",

@@ -79,9 +79,9 @@ def size_to_format(seg: Segment, candidates, depth_m: float, camera: Camera, cat
     return fits
 
 
-def segment_candidates(seg: Segment, shape: str, catalogue, config: PipelineConfig):
+def segment_candidates(seg: Segment, shape: str, catalogue, config: PipelineConfig, outline_fits=None):
     """(entry, extent) pairs the segment may be: colour and shape cut the catalogue."""
-    shapes = catalogue_shapes(shape, seg.bbox[2], seg.bbox[3])
+    shapes = catalogue_shapes(shape, seg.bbox[2], seg.bbox[3], outline_fits)
     if seg.source == "hough":  # the circle is the face's outline, whatever its weak colour
         return [(e, FULL) for e in catalogue.filter(colours=[seg.colour], shapes=shapes, exclude=config.exclude)]
     return candidate_entries(catalogue, seg.colour, shapes, config.hsv_ranges, tuple(config.colours) + ("white",),
@@ -96,10 +96,15 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     """
     if seg.touches_border:
         return None
-    shape = "circle" if seg.source == "hough" else classify_shape(seg.mask, config.min_shape_fit).shape
+    outline_fits = None
+    if seg.source == "hough":
+        shape = "circle"
+    else:
+        outline = classify_shape(seg.mask, config.min_shape_fit)
+        shape, outline_fits = outline.shape, outline.fits
     if shape is None:
         return None
-    candidates = segment_candidates(seg, shape, catalogue, config)
+    candidates = segment_candidates(seg, shape, catalogue, config, outline_fits)
     if not candidates:
         return None
     size = measure_segment(camera, depth, seg.bbox, seg.surface_mask, config.near_m, config.far_m)
@@ -117,7 +122,7 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     # when the face's part outside the segment matches too: the bare ring alone would always score
     # higher, and the panel reading alone scores ~0.65 on any round sign.
     readings, panels = [], []
-    same_shapes = catalogue_shapes(shape, seg.bbox[2], seg.bbox[3])
+    same_shapes = catalogue_shapes(shape, seg.bbox[2], seg.bbox[3], outline_fits)
     classifier = classifier_for(catalogue, config)
     accept = accept_threshold(classifier, config)
     for match, face, ids, ext in fits:

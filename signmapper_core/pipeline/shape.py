@@ -93,8 +93,13 @@ def classify_shape(mask: np.ndarray, min_fit: float = 0.72, fill_window: float =
     return ShapeResult(best, fits[best], fill, circularity, corners, fits)
 
 
-def catalogue_shapes(shape: str, width_px: int, height_px: int) -> tuple:
-    """Catalogue shape names a detected outline may be: a rectangle may be a square."""
-    if shape == "rectangle":
-        return ("square", "rectangle")
-    return (shape,)
+def catalogue_shapes(shape: str, width_px: int, height_px: int, fits: Optional[Dict[str, float]] = None,
+                     tie: float = 0.03) -> tuple:
+    """Catalogue shape names a detected outline may be: a rectangle may be a square; with the outline
+    ``fits``, a shape within ``tie`` of the best one too (a small Stop with rounded corners fits a circle
+    about as well as an octagon)."""
+    names = [shape] + [s for s, f in (fits or {}).items() if s != shape and f >= fits[shape] - tie]
+    out = []
+    for name in names:
+        out += ["square", "rectangle"] if name == "rectangle" else [name]
+    return tuple(dict.fromkeys(out))

@@ -2,7 +2,7 @@ import cv2
 import numpy as np
 import pytest
 
-from signmapper_core.pipeline.shape import classify_shape
+from signmapper_core.pipeline.shape import catalogue_shapes, classify_shape
 
 SIZE = 61
 
@@ -87,3 +87,12 @@ def test_blob_without_sign_shape_is_rejected():
 
 def test_empty_mask_has_no_shape():
     assert classify_shape(np.zeros((20, 20), np.uint8)).shape is None
+
+
+def test_near_tied_outlines_keep_both_catalogue_shapes():
+    # a small Stop with rounded corners fits a circle about as well as an octagon: both go to classification
+    assert catalogue_shapes("circle", 36, 36, {"circle": 0.966, "octagon": 0.950}) == ("circle", "octagon")
+    assert catalogue_shapes("circle", 60, 60, {"circle": 0.972, "octagon": 0.941}) == ("circle",)
+    assert catalogue_shapes("rectangle", 50, 70) == ("square", "rectangle")
+    assert catalogue_shapes("octagon", 40, 40, {"octagon": 0.95, "circle": 0.93, "rectangle": 0.8}) == \
+        ("octagon", "circle")
