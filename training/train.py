@@ -60,11 +60,9 @@ def shifted(batch: np.ndarray, rng: np.random.Generator, pad: int = 2) -> np.nda
     """Each patch moved by up to ``pad`` pixels: the network must not rely on the exact box."""
     n, s = batch.shape[0], batch.shape[1]
     padded = np.pad(batch, ((0, 0), (pad, pad), (pad, pad), (0, 0)), mode="edge")
-    out = np.empty_like(batch)
-    offsets = rng.integers(0, 2 * pad + 1, (n, 2))
-    for i, (dy, dx) in enumerate(offsets):
-        out[i] = padded[i, dy : dy + s, dx : dx + s]
-    return out
+    windows = np.lib.stride_tricks.sliding_window_view(padded, (s, s), axis=(1, 2))  # n, dy, dx, 3, s, s
+    dy, dx = rng.integers(0, 2 * pad + 1, (2, n))
+    return np.ascontiguousarray(windows[np.arange(n), dy, dx].transpose(0, 2, 3, 1))
 
 
 def to_tensor(batch: np.ndarray) -> torch.Tensor:
@@ -191,7 +189,7 @@ def train(args) -> dict:
             loss.backward()
             opt.step()
             sched.step()
-            total += float(loss)
+            total += float(loss.detach())
         logits = predict(model, x_val)
         acc = float((logits.argmax(1) == y_val).mean())
         _, correct = restricted_probabilities(logits, y_val, groups, background, 1.0, np.random.default_rng(0))
