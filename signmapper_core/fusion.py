@@ -86,7 +86,8 @@ class FusionConfig:
     merge_gate_m: float = 0.35  # tracks of one sign from separate passes
     outlier_min_m: float = 0.10  # observations beyond max(this, 3 robust σ) from the median are not averaged
     accept_vote_share: float = 0.6
-    accept_classification: float = 0.6
+    accept_classification: float = 0.6  # the classifier's threshold for "accepted" (mapping passes it)
+    single_margin: float = 0.4  # a sign seen once needs this share of the way from that threshold to 1 on top
     min_obs_accepted: int = 2
 
 
@@ -321,7 +322,8 @@ def fuse_track(sign_id: int, observations: Sequence[Observation], config: Fusion
     cls_ind = float(np.mean([o.classification_indicator for o in voters]))
     accepted = (len(voters) >= config.min_obs_accepted and share >= config.accept_vote_share
                 and cls_ind >= config.accept_classification)
-    if len(voters) == 1 and best.status == ACCEPTED and cls_ind >= config.accept_classification + 0.15:
+    single = config.accept_classification + config.single_margin * (1.0 - config.accept_classification)
+    if len(voters) == 1 and best.status == ACCEPTED and cls_ind >= single:
         accepted = True  # a single, very clear observation
     return FusedSign(
         sign_id=sign_id, template_id=template_id, width_m=width, height_m=height, format=fmt, position=position,

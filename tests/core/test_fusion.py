@@ -103,6 +103,14 @@ def test_single_weak_observation_goes_to_review_not_dropped():
     assert len(signs) == 1 and signs[0].status == "review" and signs[0].n_obs == 1
 
 
+@pytest.mark.parametrize("cls, status", [(0.93, "review"), (0.95, "accepted")])
+def test_a_sign_seen_once_needs_more_than_the_classifiers_threshold(cls, status):
+    """With a calibrated threshold of 0.9, one observation must close 40 % of the rest of the way to 1 (0.94)."""
+    config = FusionConfig(accept_classification=0.9)
+    signs = fuse_observations([observe([20.0, 3.0, 2.5], 4, cls=cls)], config)
+    assert [s.status for s in signs] == [status]
+
+
 def test_same_sign_on_a_second_pass_is_merged():
     truth = np.array([20.0, 3.0, 2.5])
     first = seen_from(truth, range(3, 8), noise=0.02)
