@@ -21,9 +21,9 @@ def smooth_field(rng: np.random.Generator, h: int, w: int, cell: float) -> np.nd
 def ink_variation(face: np.ndarray, rng: np.random.Generator) -> np.ndarray:
     """Another print run: hue, saturation and value of the inks shifted a little."""
     hsv = cv2.cvtColor(np.clip(face, 0, 255).astype(np.uint8), cv2.COLOR_BGR2HSV).astype(np.float32)
-    hsv[..., 0] = (hsv[..., 0] + rng.normal(0, 3.0)) % 180
-    hsv[..., 1] *= rng.uniform(0.75, 1.1)
-    hsv[..., 2] *= rng.uniform(0.85, 1.05)
+    hsv[..., 0] = (hsv[..., 0] + rng.normal(0, 4.0)) % 180
+    hsv[..., 1] *= rng.uniform(0.7, 1.1)
+    hsv[..., 2] *= rng.uniform(0.7, 1.05)  # darker inks too: a dark red rim must not mean one class
     return cv2.cvtColor(np.clip(hsv, 0, 255).astype(np.uint8), cv2.COLOR_HSV2BGR).astype(np.float32)
 
 
@@ -104,9 +104,52 @@ def peeling(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np
     return np.where(spots[..., None], metal, face)
 
 
+def _colour_masks(face: np.ndarray, alpha: np.ndarray):
+    """(red, white) masks of a face: the rim colour of prohibition and danger signs and the field inside."""
+    hsv = cv2.cvtColor(np.clip(face, 0, 255).astype(np.uint8), cv2.COLOR_BGR2HSV)
+    inside = alpha > 127
+    red = inside & ((hsv[..., 0] < 12) | (hsv[..., 0] > 165)) & (hsv[..., 1] > 90)
+    white = inside & (hsv[..., 1] < 50) & (hsv[..., 2] > 170)
+    return red, white
+
+
+def rim_width(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    """A thinner red rim, as other countries and older print runs have it: the white field grown into the rim.
+
+    Without this the width of the rim alone tells classes apart that differ in
+    their text (a Swiss speed limit's rim is wider than most), which no real
+    sign of another print run respects.
+    """
+    red, white = _colour_masks(face, alpha)
+    if red.sum() < 0.05 * alpha.size or white.sum() < 0.02 * alpha.size:
+        return face
+    k = max(1, int(round(rng.uniform(0.15, 0.5) * 0.08 * max(face.shape[:2]))))
+    grown = cv2.dilate(white.astype(np.uint8), cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * k + 1, 2 * k + 1)))
+    paint = (grown > 0) & red
+    field = np.median(face[white], axis=0)
+    out = face.copy()
+    out[paint] = field
+    return out
+
+
+def white_edge(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    """A white edge around the whole face (German and Austrian signs): the drawing shrunk inside its outline."""
+    h, w = face.shape[:2]
+    f = rng.uniform(0.9, 0.97)
+    m = cv2.getRotationMatrix2D((w / 2, h / 2), 0, f)
+    inner = cv2.warpAffine(face, m, (w, h), flags=cv2.INTER_LINEAR, borderMode=cv2.BORDER_REPLICATE)
+    inner_alpha = cv2.warpAffine(alpha, m, (w, h), flags=cv2.INTER_LINEAR).astype(np.float32)[..., None] / 255
+    edge = np.array([rng.uniform(215, 250)] * 3, np.float32)
+    return inner * inner_alpha + edge * (1 - inner_alpha)
+
+
 def wear_face(face_bgr: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.ndarray:
     """A randomly worn copy of a face (uint8 BGR), each effect switched on with its own probability."""
     face = face_bgr.astype(np.float32)
+    if rng.random() < 0.35:
+        face = rim_width(face, alpha, rng)
+    if rng.random() < 0.25:
+        face = white_edge(face, alpha, rng)
     if rng.random() < 0.7:
         face = ink_variation(face, rng)
     if rng.random() < 0.25:

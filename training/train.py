@@ -147,7 +147,9 @@ def train(args) -> dict:
     class_ids = sorted(e.id for e in catalogue) + [BACKGROUND]
     background = len(class_ids) - 1
     digest = catalogue_digest(catalogue)
-    tag = f"{digest[:12]}-{args.input_px}-{args.margin}-{args.seed}"
+    synthesis = hashlib.sha256(b"".join(f.read_bytes() for f in sorted(Path(__file__).parent.glob("*.py"))
+                                        if f.name not in ("train.py", "model.py"))).hexdigest()
+    tag = f"{digest[:12]}-{synthesis[:8]}-{args.input_px}-{args.margin}-{args.seed}"
     cache = Path(args.cache)
 
     def log(msg):

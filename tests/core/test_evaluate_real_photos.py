@@ -88,18 +88,20 @@ def _table_row(output: str, title: str, first: str, second: str) -> list:
     raise AssertionError(f"no row {first} {second} under {title!r}:\n{output}")
 
 
-def test_classify_runs_the_classifier_on_every_selected_crop(tiny_set, capsys):
+def test_classify_runs_the_classifier_on_every_selected_crop(tiny_set, capsys, monkeypatch):
+    from signmapper_core.pipeline.classify import ClassificationResult
+
     calls = []
 
-    def fake(image, bbox, catalogue, candidates):
-        calls.append((image.shape, tuple(bbox), set(candidates)))
-        return candidates[0] if len(candidates) == 1 else "2.30-50", 0.9
+    class Fake:
+        name, accept_threshold = "fake", 0.6
 
-    evaluate.CLASSIFIERS["fake"] = fake
-    try:
-        assert evaluate.main(["classify", "--data", str(tiny_set), "--split", "all", "--classifier", "fake"]) == 0
-    finally:
-        del evaluate.CLASSIFIERS["fake"]
+        def classify(self, image, bbox, candidates):
+            calls.append((image.shape, tuple(bbox), set(candidates)))
+            return ClassificationResult(candidates[0] if len(candidates) == 1 else "2.30-50", 0.9)
+
+    monkeypatch.setattr(evaluate, "make_classifier", lambda name, catalogue, model=None: Fake())
+    assert evaluate.main(["classify", "--data", str(tiny_set), "--split", "all", "--classifier", "fake"]) == 0
     out = capsys.readouterr().out
     assert len(calls) == 3
     # candidates: entries with the true entry's colour and shape (3.02 is the only inverted triangle)

@@ -157,7 +157,7 @@ def test_tuning_parameters_are_advanced(registered_plugin):
     alg = QgsApplication.processingRegistry().algorithmById("signmapper:mapsigns")
     advanced = {p.name() for p in alg.parameterDefinitions()
                 if p.flags() & QgsProcessingParameterDefinition.FlagAdvanced}
-    assert advanced == {"EXCLUDE", "DETECTION_THRESHOLD", "CLASSIFICATION_THRESHOLD", "CATALOGUE"}
+    assert advanced == {"EXCLUDE", "DETECTION_THRESHOLD", "CLASSIFIER", "CLASSIFICATION_THRESHOLD", "CATALOGUE"}
 
 
 def test_corrupt_pair_is_logged_and_skipped(run, small_drive, tmp_path):
