@@ -22,8 +22,8 @@ import numpy as np
 from .drawing import to_svg
 from .faces import face_drawing, pixel_size, render_face
 from .model import DEFAULT_CATALOGUE_DIR, FORMAT_ID
-from .official import ArtworkError, DrawingUnavailable, master_from_rendering, render_artwork
-from .official_ch import ARTWORK, ARTWORK_SOURCE, OWN_DRAWING
+from .official import ArtworkError, Drawing, DrawingUnavailable, framed_master, master_from_rendering, render_artwork
+from .official_ch import ARTWORK, ARTWORK_SOURCE, FRAMED, OWN_DRAWING
 from .signs_ch import SIGNS
 
 MASTER_PX = 512
@@ -93,6 +93,15 @@ def official_master(template_id: str, svg_dir: Path) -> np.ndarray:
                                  f"{template_id} ({spec.describe()})")
 
 
+def framed(template_id: str, content: np.ndarray, svg_dir: Path) -> np.ndarray:
+    """``content``'s field set into the official frame ``FRAMED`` names, at the entry's master size."""
+    sign = SIGNS[template_id]
+    bgra, outline_from_shape = render_artwork(Drawing(FRAMED[template_id]), svg_dir)
+    frame = master_from_rendering(bgra, outline_from_shape, sign.shape, master_size(template_id),
+                                  f"{template_id} (frame {FRAMED[template_id]})")
+    return framed_master(frame, content)
+
+
 def svg_text(template_id: str) -> str:
     sign = SIGNS[template_id]
     return to_svg(face_drawing(template_id), SVG_WIDTH_PX, f"{sign.id} {sign.names['de']}")
@@ -106,12 +115,22 @@ def masters(svg_dir: Path | None) -> tuple[dict, BuildReport]:
     for tid in SIGNS:
         if svg_dir is None:
             reason = "no official drawings given (--svg)"
+        elif tid in FRAMED and tid not in ARTWORK:
+            try:
+                out[tid] = framed(tid, master_rgba(tid), svg_dir)
+                report.own[tid] = f"{OWN_DRAWING[tid]}; own value in the official frame {FRAMED[tid]}"
+                continue
+            except DrawingUnavailable as exc:
+                reason = str(exc)
         elif tid not in ARTWORK:
             reason = OWN_DRAWING.get(tid, "no official drawing mapped")
         else:
             try:
                 out[tid] = official_master(tid, svg_dir)
                 report.official[tid] = f"ASTRA {ARTWORK[tid].describe()}"
+                if tid in FRAMED:
+                    out[tid] = framed(tid, out[tid], svg_dir)
+                    report.official[tid] += f", its field in the frame of {FRAMED[tid]}"
                 continue
             except DrawingUnavailable as exc:  # a drawing that does not fit its entry is an error, not this
                 reason = str(exc)

@@ -171,6 +171,37 @@ def render_artwork(spec, folder: Path) -> tuple[np.ndarray, bool]:
     raise TypeError(f"unknown artwork spec {spec!r}")  # pragma: no cover
 
 
+def _field(bgra: np.ndarray) -> tuple[np.ndarray, tuple]:
+    """Mask and box (x0, y0, x1, y1) of the white field around the face's centre."""
+    hsv = cv2.cvtColor(np.ascontiguousarray(bgra[:, :, :3]), cv2.COLOR_BGR2HSV)
+    white = ((bgra[:, :, 3] > 127) & (hsv[:, :, 1] < 60) & (hsv[:, :, 2] > 200)).astype(np.uint8)
+    # the content (digits, symbols) splits the field: close it before taking the component at the centre
+    k = max(3, int(0.15 * min(white.shape)) | 1)
+    closed = cv2.morphologyEx(white, cv2.MORPH_CLOSE, cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (k, k)))
+    n, labels = cv2.connectedComponents(closed)
+    centre = labels[labels.shape[0] // 2, labels.shape[1] // 2]
+    if centre == 0:
+        raise ArtworkError("no white field at the centre of the face")
+    mask = labels == centre
+    return mask, _crop_box(mask)
+
+
+def framed_master(frame: np.ndarray, own: np.ndarray) -> np.ndarray:
+    """The own drawing's field (its value and symbols) set into the white field of an official frame.
+
+    For entries whose value the official glyphs cannot write: the rim, its
+    colour and width, stay official, so no classifier can tell these entries
+    apart from the others by the style of their frame.
+    """
+    frame_mask, (fx0, fy0, fx1, fy1) = _field(frame)
+    _, (ox0, oy0, ox1, oy1) = _field(own)
+    content = cv2.resize(own[oy0:oy1, ox0:ox1, :3], (fx1 - fx0, fy1 - fy0), interpolation=cv2.INTER_AREA)
+    out = frame.copy()
+    inside = cv2.erode(frame_mask.astype(np.uint8), np.ones((3, 3), np.uint8))[fy0:fy1, fx0:fx1] > 0
+    out[fy0:fy1, fx0:fx1, :3][inside] = content[inside]
+    return out
+
+
 def rim_colour(bgr: np.ndarray, alpha: np.ndarray) -> tuple:
     """Median colour of the opaque band along the outline: what transparent pixels are filled with."""
     opaque = (alpha == 255).astype(np.uint8)

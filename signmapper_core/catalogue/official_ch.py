@@ -86,6 +86,12 @@ ARTWORK.update({
                            elements=_counts("216.svg", "219.svg")),
 })
 
+# Entries whose field (value, symbols) is set into the empty red ring of 2.01, so that every round
+# prohibition has the same official rim: the own drawings with a value the official glyphs cannot write,
+# and the 100 and 120 discs of 4.93, drawn there with a brighter red and a narrower rim.
+FRAMED = {tid: "201.svg" for tid in ("2.17-10", "2.18-2.3", "2.19-3.8", "2.30-40", "2.30-70", "2.47-70",
+                                     "2.30-100", "2.30-120")}
+
 OWN_DRAWING = {
     "2.17-10": "no official 1 or 0 in the type of 2.17 (only 2.17 \"2,4t\")",
     "2.18-2.3": "2.18 \"2m\" has no room for \"2,3m\" between its arrowheads; no official layout",

@@ -53,15 +53,61 @@ def test_template_under_blur_noise_and_perspective_is_recognised(catalogue, temp
     assert result.score > 0.8
 
 
-@pytest.mark.parametrize("template_id", ["2.30-60", "1.22", "2.44", "2.41"])
-def test_procedurally_varied_face_is_recognised(catalogue, template_id):
-    # the generator's faces differ from the templates: stroke widths, palette, fonts, details
+@pytest.fixture(scope="module")
+def network(catalogue):
+    from signmapper_core.pipeline.classifiers import make_classifier
+
+    return make_classifier("cnn", catalogue)
+
+
+@pytest.mark.parametrize("template_id", ["2.30-50", "2.30-80", "1.01", "1.23", "3.01", "3.02", "2.36", "4.17"])
+@pytest.mark.parametrize("size_px", [30, 56, 90])
+def test_network_reads_official_faces_under_blur_noise_and_perspective(catalogue, network, template_id, size_px):
+    bgr, alpha = catalogue.render(template_id, size_px)
+    bgr, alpha = _perspective(bgr, alpha)
+    image, bbox = _degraded_scene(bgr, alpha, seed=size_px)
+    result = network.classify(image, bbox, _candidates(catalogue, template_id))
+    assert result.template_id == template_id
+    assert result.score >= network.accept_threshold
+
+
+@pytest.mark.parametrize("template_id", ["2.30-60", "1.22", "2.44", "2.41", "1.14", "2.05"])
+def test_network_reads_faces_of_another_artwork(catalogue, network, template_id):
+    """Our procedural drawings (other strokes, palette, font) were never trained on: the network still reads them."""
     style = FaceStyle(stroke_scale=1.1, rim_scale=0.9, palette_jitter=0.5, font="duplex", detail_jitter=0.3, seed=3)
     bgr, alpha = render_face(template_id, 70, style)
     image, bbox = _degraded_scene(bgr, alpha, seed=7)
-    result = classify_segment(image, bbox, catalogue, _candidates(catalogue, template_id))
-    assert result.template_id == template_id
-    assert result.score > 0.7
+    assert network.classify(image, bbox, _candidates(catalogue, template_id)).template_id == template_id
+
+
+def test_network_gives_a_non_sign_a_low_indicator(catalogue, network):
+    image = noisy_background(200, 200, seed=5)
+    cv2.circle(image, (90, 80), 30, (40, 40, 200), -1)  # a plain red disc: no white field, no pictogram
+    result = network.classify(image, (60, 50, 61, 61), _candidates(catalogue, "2.30-50"))
+    assert result.score < network.accept_threshold
+
+
+def test_network_probabilities_of_the_candidates_and_background_sum_to_one(catalogue, network):
+    bgr, alpha = catalogue.render("2.30-50", 60)
+    image, bbox = _degraded_scene(bgr, alpha, seed=1)
+    result = network.classify(image, bbox, _candidates(catalogue, "2.30-50"))
+    assert 0.0 < sum(result.scores.values()) <= 1.0
+    assert max(result.scores, key=result.scores.get) == result.template_id
+
+
+def test_network_refuses_ids_it_was_not_trained_on(catalogue, network):
+    from signmapper_core.pipeline.classifiers import ClassifierError
+
+    image = noisy_background(100, 100)
+    with pytest.raises(ClassifierError, match="does not know the template ids"):
+        network.classify(image, (10, 10, 40, 40), ["2.30-50", "9.99"])
+
+
+@pytest.mark.parametrize("bbox", [(-20, 30, 60, 60), (160, 150, 60, 60), (-30, -30, 50, 50), (195, 0, 30, 30)])
+def test_network_classifies_boxes_past_the_image_edge(catalogue, network, bbox):
+    image = noisy_background(200, 200, seed=2)
+    result = network.classify(image, bbox, _candidates(catalogue, "2.30-50"))
+    assert result.template_id in _candidates(catalogue, "2.30-50")
 
 
 def test_a_non_sign_scores_low(catalogue):
