@@ -11,7 +11,7 @@ the bounding box, so mild perspective (ellipses, sheared boxes) still fits.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Dict, Optional
+from typing import Dict, Optional, Tuple
 
 import cv2
 import numpy as np
@@ -91,6 +91,21 @@ def classify_shape(mask: np.ndarray, min_fit: float = 0.72, fill_window: float =
     if best is None or fits[best] < min_fit:
         return ShapeResult(None, fits.get(best, 0.0) if best else 0.0, fill, circularity, corners, fits)
     return ShapeResult(best, fits[best], fill, circularity, corners, fits)
+
+
+def outline_shapes(result: ShapeResult, margin: float, min_fit: float = 0.72) -> Tuple[str, ...]:
+    """The best-fitting shape and every other one within ``margin`` of its fit (and >= ``min_fit``).
+
+    A small disc and a small octagon differ by a few pixels at their corners (their ideal
+    outlines overlap by IoU 0.95): where the fits are that close, both readings stay open
+    and the templates decide.
+    """
+    if result.shape is None:
+        return ()
+    best = result.fits[result.shape]
+    others = sorted((s for s, f in result.fits.items() if s != result.shape and f >= max(min_fit, best - margin)),
+                    key=result.fits.get, reverse=True)
+    return (result.shape, *others)
 
 
 def catalogue_shapes(shape: str, width_px: int, height_px: int) -> tuple:
