@@ -27,7 +27,7 @@ from .hough import hough_segments, radius_range_px, ring_colour_share
 from .locate import bbox_centre, locate
 from .planarity import segment_planarity
 from .search_space import close_holes, grow, search_space_mask
-from .shape import catalogue_shapes, classify_shape, outline_shapes
+from .shape import IDEAL_FILL, catalogue_shapes, classify_shape, outline_shapes
 from .sizing import measure_segment, metric_size, round_to_format
 
 Roi = Tuple[int, int, int, int]  # x0, y0, x1, y1 (exclusive)
@@ -122,12 +122,26 @@ def size_to_format(seg: Segment, candidates, depth_m: float, camera: Camera, cat
     return fits
 
 
+def segment_outline(seg: Segment, config: PipelineConfig) -> Tuple[Tuple[str, ...], bool]:
+    """(outline shapes the segment may have, best first; whether the outline is only a marginal fit).
+
+    Shapes are () when none fits (not a sign). Marginal: the best fit is below
+    ``confident_shape_fit`` or the fill ratio is outside the usual window of its shape;
+    such outlines (real signs with rounded corners, blur, perspective) need a clearer
+    template match to be reported.
+    """
+    if seg.source == "hough":
+        return ("circle",), False
+    result = classify_shape(seg.mask, config.min_shape_fit, config.shape_fill_window)
+    shapes = outline_shapes(result, config.shape_ambiguity, config.min_shape_fit)
+    marginal = bool(shapes) and (result.fit < config.confident_shape_fit
+                                 or abs(result.fill_ratio - IDEAL_FILL[shapes[0]]) > 0.15)
+    return shapes, marginal
+
+
 def segment_shapes(seg: Segment, config: PipelineConfig) -> Tuple[str, ...]:
     """Outline shapes a segment may have, best first; () when none fits (not a sign)."""
-    if seg.source == "hough":
-        return ("circle",)
-    return outline_shapes(classify_shape(seg.mask, config.min_shape_fit, config.shape_fill_window),
-                          config.shape_ambiguity, config.min_shape_fit)
+    return segment_outline(seg, config)[0]
 
 
 def segment_candidates(seg: Segment, shape, catalogue, config: PipelineConfig):
@@ -154,7 +168,7 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     """
     if seg.touches_border:
         return None
-    shapes = segment_shapes(seg, config)
+    shapes, marginal = segment_outline(seg, config)
     if not shapes:
         return None
     shape = shapes[0]
@@ -189,7 +203,12 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     good_panels = [r for r in panels if r[2].score >= config.classification_threshold]
     pool = good_panels or readings or panels
     best = max(pool, key=lambda r: r[2].score, default=None)
-    if best is None or best[2].score < config.min_classification_score:
+    # an outline that only fits loosely, or a round one sized as seen at an angle (its box alone fits no
+    # format), must resemble its template clearly: a cut of something else fits those readings too easily
+    w, h = seg.bbox[2], seg.bbox[3]
+    oblique = shape in ROUND_SHAPES and min(w, h) < (1.0 - config.size_tolerance) * max(w, h)
+    min_score = config.marginal_shape_min_score if marginal or oblique else config.min_classification_score
+    if best is None or best[2].score < min_score:
         return None
     match, face, cls = best
     status = "accepted" if cls.score >= config.classification_threshold else "review"
