@@ -191,37 +191,55 @@ def surround_share(mask: np.ndarray, bbox, grow: float = 0.3) -> float:
     return (outer - cv2.countNonZero(mask[y : y + h, x : x + w])) / float(band)
 
 
-def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
-                    small_face_px: Optional[float] = None) -> List[Segment]:
-    """Colour segments of ``image`` (limited to the bool ``search`` mask when given), all passes.
-
-    ``small_face_px``: the smallest face (pixels) worth finding; the ring of such a
-    face sets the opening of the small-ring pass. None: ``config.min_face_px``
-    (no depth, so no size limit from a search space).
+@dataclass
+class ColourFrame:
+    """What the colour passes read from one image, computed once per image and shared by its passes
+    (and by the two looks the pipeline takes: before depth for the stereo rows, then within the search space).
     """
-    hsv = cv2.cvtColor(image, cv2.COLOR_BGR2HSV)
-    hsv_weak, colourful, scene = hsv, None, None
-    if config.weak_colour:  # the scene pass reads the white-balanced image; the strong pass stays as it was
+
+    hsv: np.ndarray  # HSV of the image as it is: the strong pass
+    hsv_weak: np.ndarray  # HSV of the white-balanced image: the scene pass
+    colourful: Optional[np.ndarray]  # uint8 0/255: chroma high enough for the scene pass
+    weak_ranges: Dict[str, Tuple[HsvRange, ...]]
+
+    @classmethod
+    def of(cls, image: np.ndarray, config: PipelineConfig) -> ColourFrame:
+        hsv = cv2.cvtColor(image, cv2.COLOR_BGR2HSV)
+        if not config.weak_colour:
+            return cls(hsv, hsv, None, {})
         scene = scene_colour(image, config)
         balanced = apply_gains(image, scene.gains)
         hsv_weak = hsv if balanced is image else cv2.cvtColor(balanced, cv2.COLOR_BGR2HSV)
         colourful = chroma_at_least(hsv_weak, config.weak_min_chroma).view(np.uint8) * 255
+        return cls(hsv, hsv_weak, colourful, scene.weak_ranges)
+
+
+def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
+                         small_face_px: Optional[float] = None, frame: Optional[ColourFrame] = None) -> List[Segment]:
+    """Colour segments of ``image`` (limited to the bool ``search`` mask when given), all passes.
+
+    ``small_face_px``: the smallest face (pixels) worth finding; the ring of such a
+    face sets the opening of the small-ring pass. None: ``config.min_face_px``
+    (no depth, so no size limit from a search space). ``frame``: the image's
+    :class:`ColourFrame` if already computed.
+    """
+    frame = frame or ColourFrame.of(image, config)
     inside = None if search is None else search.astype(np.uint8) * 255
     small_open = ring_open_px(config.min_face_px if small_face_px is None else small_face_px, config)
     passes = [(config.hsv_ranges, config.morph_open_px, None, False)]
     if config.weak_colour:
-        passes.append((scene.weak_ranges, config.morph_open_px, None, True))
+        passes.append((frame.weak_ranges, config.morph_open_px, None, True))
     if small_open < config.morph_open_px:
-        passes.append((scene.weak_ranges if config.weak_colour else config.hsv_ranges, small_open,
+        passes.append((frame.weak_ranges if config.weak_colour else config.hsv_ranges, small_open,
                        _ring_safe_max_px(config), config.weak_colour))
     out: List[Segment] = []
     for ranges, open_px, max_side, weak in passes:
         for colour in config.colours:
             if weak and colour not in config.weak_colours:
                 continue
-            raw = hsv_mask(hsv_weak if weak else hsv, ranges[colour])
+            raw = hsv_mask(frame.hsv_weak if weak else frame.hsv, ranges[colour])
             if weak:
-                raw = cv2.bitwise_and(raw, colourful)
+                raw = cv2.bitwise_and(raw, frame.colourful)
             if inside is not None:
                 raw = cv2.bitwise_and(raw, inside)
             mask = clean_mask(raw, open_px, config.morph_close_px)

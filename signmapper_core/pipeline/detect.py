@@ -18,7 +18,7 @@ import numpy as np
 from ..face_normal import world_face_normal
 from ..geometry import Camera, Pose
 from .classify import classify_segment, surround_score
-from .colour import Segment, find_colour_segments, merge_candidates, split_face_merges
+from .colour import ColourFrame, Segment, find_colour_segments, merge_candidates, split_face_merges
 from .config import PipelineConfig
 from .depth import merge_row_bands, sgbm_depth
 from .detection import Detection
@@ -44,15 +44,16 @@ def _shift_segment(seg: Segment, dx: int, dy: int) -> Segment:
 
 
 def colour_segments(left: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig, roi: Roi,
-                    small_face_px: Optional[float] = None) -> List[Segment]:
+                    small_face_px: Optional[float] = None, frame: Optional[ColourFrame] = None) -> List[Segment]:
     """Colour segments inside ``roi`` in full-image coordinates; cut ones are flagged ``touches_border``.
 
     ``small_face_px``: the smallest face the search space can hold (sets the small-ring pass);
-    None without depth (``config.min_face_px``).
+    None without depth (``config.min_face_px``). ``frame``: the :class:`ColourFrame` of the roi.
     """
     x0, y0, x1, y1 = roi
     crop = left[y0:y1, x0:x1]
-    segs = find_colour_segments(crop, None if search is None else search[y0:y1, x0:x1], config, small_face_px)
+    segs = find_colour_segments(crop, None if search is None else search[y0:y1, x0:x1], config, small_face_px,
+                                frame)
     return [_shift_segment(seg, x0, y0) for seg in segs]
 
 
@@ -266,7 +267,8 @@ def _round_diameters(catalogue, config: PipelineConfig) -> List[float]:
     return diam or [0.4, 0.6]
 
 
-def _ensure_depth(left, depth, right, camera, catalogue, config: PipelineConfig, roi: Roi) -> np.ndarray:
+def _ensure_depth(left, depth, right, camera, catalogue, config: PipelineConfig, roi: Roi,
+                  frame: Optional[ColourFrame] = None) -> np.ndarray:
     """The given depth, or SGBM depth over the rows that can hold a sign in ``roi``."""
     if depth is not None:
         return np.asarray(depth, dtype=np.float32)
@@ -278,7 +280,7 @@ def _ensure_depth(left, depth, right, camera, catalogue, config: PipelineConfig,
         # Colour candidates before depth: match only their rows (the Hough fallback then sees only these).
         # Segments that cannot be a face (or half of one, a coloured part of a panel) anywhere in the
         # search space are left out.
-        segs = colour_segments(left, None, config, roi, smallest_face_px(camera, catalogue, config))
+        segs = colour_segments(left, None, config, roi, smallest_face_px(camera, catalogue, config), frame)
         heights = [h for e in catalogue for (_, h) in e.formats.values()] or [0.4, 1.5]
         max_px = 1.3 * max(heights) * camera.fy / config.near_m
         min_px = 0.5 * min(heights) * camera.fy / config.far_m
@@ -312,9 +314,11 @@ def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig,
             timings: Optional[dict] = None) -> List[Detection]:
     timer = _Timer(timings)
     matched = depth is None
-    with timer("depth"):
-        depth = _ensure_depth(left, depth, right, camera, catalogue, config, roi)
     x0, y0, x1, y1 = roi
+    with timer("colour"):
+        frame = ColourFrame.of(left[y0:y1, x0:x1], config)
+    with timer("depth"):
+        depth = _ensure_depth(left, depth, right, camera, catalogue, config, roi, frame)
     search = search_space_mask(depth, config.near_m, config.far_m)
     if (x0, y0, x1, y1) != (0, 0, left.shape[1], left.shape[0]):
         inside = np.zeros_like(search)
@@ -323,7 +327,7 @@ def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig,
     detections = []
     with timer("colour"):
         cut = grow(search, config.search_grow_px) if matched else close_holes(search, config.search_close_px)
-        segments = colour_segments(left, cut, config, roi, smallest_face_px(camera, catalogue, config))
+        segments = colour_segments(left, cut, config, roi, smallest_face_px(camera, catalogue, config), frame)
     with timer("segments"):
         # faces split by a bar (no entry) or a pole: the whole face is judged before its pieces
         taken = set()
