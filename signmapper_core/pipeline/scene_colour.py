@@ -63,7 +63,9 @@ def apply_gains(bgr: np.ndarray, gains: Tuple[float, float, float]) -> np.ndarra
     saves two full-frame passes."""
     if all(abs(g - 1.0) < 0.03 for g in gains):
         return bgr
-    return cv2.transform(bgr, np.diag(np.asarray(gains, np.float32)))
+    levels = np.arange(256, dtype=np.float32)[:, None] * np.asarray(gains, np.float32)[None, :]
+    lut = np.clip(np.round(levels), 0, 255).astype(np.uint8).reshape(256, 1, 3)
+    return cv2.LUT(bgr, lut)  # a table per channel: a fraction of the cost of a matrix transform
 
 
 def weak_ranges(config: PipelineConfig, saturation: float, brightness: float) -> Dict[str, Tuple[HsvRange, ...]]:
