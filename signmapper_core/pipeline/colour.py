@@ -10,7 +10,11 @@ opening (as in Cavegn 2011), the scene pass on the white-balanced image with
 this scene's lowered saturation floors (faded rings, dull light; see
 :mod:`.scene_colour`), and, where the smallest sign the search space can hold has a ring
 thinner than the opening, a pass with an opening scaled to that ring, kept to
-small segments. A later pass adds only segments no earlier one found.
+small segments. Only red faces have thin rings (blue and yellow faces are solid
+fields), so with the scene pass on, the small-ring pass reads the scene classes
+of ``config.weak_colours`` (red); without it, the strong classes of all colours.
+Passes after the first add only segments that stand out of their surroundings,
+have a sign's outline and were not found before.
 """
 
 from __future__ import annotations
