@@ -13,8 +13,8 @@ thinner than the opening, a pass with an opening scaled to that ring, kept to
 small segments. Only red faces have thin rings (blue and yellow faces are solid
 fields), so with the scene pass on, the small-ring pass reads the scene classes
 of ``config.weak_colours`` (red); without it, the strong classes of all colours.
-Passes after the first add only segments that stand out of their surroundings,
-have a sign's outline and were not found before.
+Segments of the scene classes must stand out of their surroundings and have a
+sign's outline; no pass adds a segment an earlier pass found.
 """
 
 from __future__ import annotations
