@@ -197,3 +197,19 @@ def test_wide_white_rim_of_a_priority_sign_is_measured_in_the_image(catalogue):
     template_face, *measured = [r for r in cand.readings if "3.03" in r.template_ids]
     assert _iou(template_face.bbox, (40, 40, n + 1, n + 1)) < 0.7
     assert len(measured) == 1 and _iou(measured[0].bbox, (40, 40, n + 1, n + 1)) > 0.85
+
+
+def test_scene_pass_reads_the_white_balanced_image_when_asked():
+    from signmapper_core.pipeline.colour import ColourFrame
+
+    image = _ring_image(60, 6)
+    image[120:181, 170:231] = _desaturate(image[120:181, 170:231], 0.3)
+    cast = np.clip(image.astype(np.float32) * (1.12, 1.0, 0.9), 0, 255).astype(np.uint8)  # cold light
+    balanced = ColourFrame.of(cast, PipelineConfig(white_balance=True))
+    assert not np.array_equal(balanced.hsv_weak, balanced.hsv)
+    plain = ColourFrame.of(cast, PipelineConfig())
+    assert plain.hsv_weak is plain.hsv  # off by default: no second conversion
+    grey = balanced.hsv_weak[20:100, 20:100, 1].astype(float).mean()
+    assert grey < plain.hsv[20:100, 20:100, 1].astype(float).mean() - 5  # the cast's false saturation is gone
+    (box,) = _red_boxes(find_colour_segments(cast, None, PipelineConfig(white_balance=True), 60))
+    assert _iou(box, (170, 120, 61, 61)) > 0.9
