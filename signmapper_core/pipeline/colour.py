@@ -19,7 +19,7 @@ sign's outline; no pass adds a segment an earlier pass found.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Dict, Iterable, List, Optional, Sequence, Tuple
 
 import cv2
@@ -202,9 +202,21 @@ class ColourFrame:
     """
 
     hsv: np.ndarray  # HSV of the image as it is: the strong pass
-    hsv_weak: np.ndarray  # HSV of the white-balanced image: the scene pass
+    hsv_weak: np.ndarray  # HSV of the white-balanced image (or ``hsv`` itself): the scene pass
     colourful: Optional[np.ndarray]  # uint8 0/255: chroma high enough for the scene pass
     weak_ranges: Dict[str, Tuple[HsvRange, ...]]
+    masks: Dict[Tuple[str, bool], np.ndarray] = field(default_factory=dict)  # filled by colour_mask
+
+    def colour_mask(self, colour: str, scene: bool, config: PipelineConfig) -> np.ndarray:
+        """uint8 0/255 mask of one colour class, strong or of the scene pass; computed once per image."""
+        key = (colour, scene)
+        if key not in self.masks:
+            if scene:
+                mask = cv2.bitwise_and(hsv_mask(self.hsv_weak, self.weak_ranges[colour]), self.colourful)
+            else:
+                mask = hsv_mask(self.hsv, config.hsv_ranges[colour])
+            self.masks[key] = mask
+        return self.masks[key]
 
     @classmethod
     def of(cls, image: np.ndarray, config: PipelineConfig) -> ColourFrame:
@@ -230,20 +242,17 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
     frame = frame or ColourFrame.of(image, config)
     inside = None if search is None else search.astype(np.uint8) * 255
     small_open = ring_open_px(config.min_face_px if small_face_px is None else small_face_px, config)
-    passes = [(config.hsv_ranges, config.morph_open_px, None, False)]
+    passes = [(config.morph_open_px, None, False)]  # (opening, largest side kept, scene classes)
     if config.weak_colour:
-        passes.append((frame.weak_ranges, config.morph_open_px, None, True))
+        passes.append((config.morph_open_px, None, True))
     if small_open < config.morph_open_px:
-        passes.append((frame.weak_ranges if config.weak_colour else config.hsv_ranges, small_open,
-                       _ring_safe_max_px(config), config.weak_colour))
+        passes.append((small_open, _ring_safe_max_px(config), config.weak_colour))
     out: List[Segment] = []
-    for ranges, open_px, max_side, weak in passes:
+    for open_px, max_side, weak in passes:
         for colour in config.colours:
             if weak and colour not in config.weak_colours:
                 continue
-            raw = hsv_mask(frame.hsv_weak if weak else frame.hsv, ranges[colour])
-            if weak:
-                raw = cv2.bitwise_and(raw, frame.colourful)
+            raw = frame.colour_mask(colour, weak, config)
             if inside is not None:
                 raw = cv2.bitwise_and(raw, inside)
             mask = clean_mask(raw, open_px, config.morph_close_px)

@@ -96,12 +96,21 @@ def chroma_at_least(hsv: np.ndarray, min_chroma: int) -> np.ndarray:
     return cv2.multiply(s, v, scale=1.0 / 255.0) >= min_chroma
 
 
+def _median_u8(values: np.ndarray) -> float:
+    """Median of uint8 values from their histogram: a tenth of the cost of sorting a frame's worth."""
+    counts = np.bincount(values.ravel(), minlength=256).cumsum()
+    if counts[-1] == 0:
+        return 0.0
+    lo = int(np.searchsorted(counts, (counts[-1] - 1) // 2 + 1))
+    hi = int(np.searchsorted(counts, counts[-1] // 2 + 1))
+    return (lo + hi) / 2.0
+
+
 def scene_colour(bgr: np.ndarray, config: PipelineConfig) -> SceneColour:
     """White balance and weak colour ranges of one image (or image window)."""
     gains = white_balance_gains(bgr, config.neutral_max_saturation, config.max_white_balance_gain) \
         if config.white_balance else (1.0, 1.0, 1.0)
     sample = apply_gains(np.ascontiguousarray(bgr[::_SAMPLE_STEP, ::_SAMPLE_STEP]), gains)
     hsv = cv2.cvtColor(sample, cv2.COLOR_BGR2HSV) if sample.size else np.zeros((1, 1, 3), np.uint8)
-    saturation = float(np.median(hsv[..., 1]))
-    brightness = float(np.median(hsv[..., 2]))
+    saturation, brightness = _median_u8(hsv[..., 1]), _median_u8(hsv[..., 2])
     return SceneColour(gains, saturation, brightness, weak_ranges(config, saturation, brightness))
