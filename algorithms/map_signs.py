@@ -254,7 +254,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         except Cancelled:
             raise QgsProcessingException("Cancelled; no output written.") from None
         if result.skipped:
-            feedback.pushWarning(f"{len(result.skipped)} of {len(drive.pairs)} pairs skipped, see the messages above")
+            feedback.pushWarning(f"{result.failure_summary()}; see the messages above")
         return result
 
     @staticmethod

@@ -86,7 +86,7 @@ def main(argv=None) -> int:
         reference = mappable_signs(drive, args.near, args.far)
         ref_xyz, ref_ids = [s.position for s in reference], [s.template_id for s in reference]
         traj = np.array([[r.pose.easting, r.pose.northing] for r in drive.pairs])
-        result = map_drive(drive, catalogue, config)
+        result = map_drive(drive, catalogue, config, warn_skipped=lambda message: print(message, file=sys.stderr))
         signs, seconds = result.signs, result.seconds
         head = f"== {folder} ({len(drive.pairs)} pairs, {len(result.skipped)} skipped, " \
                f"{len(drive.pairs) / max(seconds, 1e-9):.2f} pairs/s)"

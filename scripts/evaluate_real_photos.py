@@ -11,11 +11,11 @@ classify: the face box is given (the ground-truth box, "perfect box"); the candi
 catalogue entries with the true entry's colour and shape. Prints the correct-id rate and, among
 the signs scored >= the classification threshold (0.6, status "accepted"), the share with a wrong id.
 
-detect: the colour step on the whole photograph without depth (colour segments -> shape ->
+detect: the colour step on the whole photograph without depth (``pipeline.candidates.colour_step``:
+colour segments of all passes, split faces merged, Hough circles for weak rims -> shape ->
 candidate templates with their face boxes, as in ``evaluate_segment`` before sizing). A sign's
 face is found when a segment's face box has IoU >= 0.5 with the truth box and the true id is among
 that reading's candidates; a segment is on the sign when IoU >= 0.3 or its centre lies in the box.
-The merge of split pieces and the Hough fallback of ``detect_pair`` are not run.
 
 Every table is split by group (``same``: the Swiss pictogram; ``differs``: same meaning, other
 drawing) and by the sign's size in the photograph (longer side < 30 px, >= 30 px).
@@ -166,23 +166,17 @@ def _centre_in(a, b) -> bool:
 
 
 def segment_readings(image, catalogue, config: PipelineConfig):
-    """[(segment bbox, [(face box, candidate ids)])] of the colour step on a whole photograph."""
-    from signmapper_core.pipeline.detect import colour_segments, segment_candidates
-    from signmapper_core.pipeline.face_extent import face_bbox
-    from signmapper_core.pipeline.shape import classify_shape
+    """[(segment bbox, [(face box, candidate ids)])] of the colour step on a whole photograph.
 
-    height, width = image.shape[:2]
-    out = []
-    for seg in colour_segments(image, None, config, (0, 0, width, height)):
-        readings = []
-        shape = None if seg.touches_border else classify_shape(seg.mask, config.min_shape_fit).shape
-        if shape is not None:
-            groups = {}
-            for entry, ext in segment_candidates(seg, shape, catalogue, config):
-                groups.setdefault(tuple(ext), []).append(entry.id)
-            readings = [(face_bbox(seg.bbox, ext), ids) for ext, ids in groups.items()]
-        out.append((seg.bbox, readings))
-    return out
+    The colour step as ``pipeline.candidates.colour_step`` runs it without depth: all colour
+    passes, split faces merged, ring fields, measured rims, Hough circles for weak rims, shape;
+    segments that are no face candidate have no readings.
+    """
+    from signmapper_core.pipeline.candidates import colour_step
+
+    segments, candidates = colour_step(image, catalogue, config)
+    readings = {id(c.segment): [(r.bbox, list(r.template_ids)) for r in c.readings] for c in candidates}
+    return [(seg.bbox, readings.get(id(seg), [])) for seg in segments]
 
 
 def _read_other(path: Path) -> Dict[str, list]:

@@ -2,14 +2,16 @@
 
 This is the one capability every front end uses (the ``mapsigns`` algorithm,
 ``scripts/evaluate_mapping.py``, the benchmarks, the review's "add missed sign").
-Pairs are decoded lazily, one at a time; a pair whose files are corrupt is
-reported and skipped rather than ending the run; cancellation is checked
-between pairs (:mod:`signmapper_core.progress`).
+Pairs are decoded lazily, one at a time; a pair whose files are corrupt, or
+whose detection raises (a bug met by unusual image content), is reported with
+the reason (and the traceback) and skipped rather than ending the run;
+cancellation is checked between pairs (:mod:`signmapper_core.progress`).
 """
 
 from __future__ import annotations
 
 import time as _time
+import traceback as _traceback
 from dataclasses import dataclass, field, replace
 from typing import Iterator, Optional
 
@@ -26,15 +28,24 @@ PAIRS_SHARE = 0.95  # of the progress: the pairs; fusion and mounting heights ta
 LARGEST_FACE_M = 1.5  # a click is the sign's centre: the search window must hold half the largest face
 
 
+READ, DETECT = "read", "detect"  # where a skipped pair failed
+
+
 @dataclass
 class PairResult:
-    """The detections of one pair, or why the pair was skipped."""
+    """The detections of one pair, or why the pair was skipped.
+
+    ``stage`` says where an ``error`` arose: READ (the pair's files) or DETECT (the
+    pipeline raised; ``traceback`` then holds the formatted traceback for the log).
+    """
 
     record: PairRecord
     detections: list = field(default_factory=list)  # pipeline.Detection
     error: Optional[str] = None
     seconds: float = 0.0  # loading and detecting
     load_seconds: float = 0.0  # of which decoding the files
+    stage: Optional[str] = None
+    traceback: Optional[str] = None
 
 
 @dataclass
@@ -46,7 +57,7 @@ class MappingResult:
     config: object  # pipeline.PipelineConfig
     detections: list[Observation]  # ids from 1 in driving order; each names its sign (sign_id)
     signs: list[FusedSign]  # ids from 1 in order of first sight; mount_height_m set where known
-    skipped: list[PairResult]  # pairs that could not be read, with the reason
+    skipped: list[PairResult]  # pairs that could not be read or whose detection failed, with the reason
     seconds: float  # time spent on the pairs (loading and detecting)
     load_seconds: float = 0.0  # of which decoding the files
     classifier_name: str = ""  # the strategy that ran ("cnn" or "ncc")
@@ -54,6 +65,11 @@ class MappingResult:
 
     def detections_of(self, sign: FusedSign) -> list[Observation]:
         return [o for o in self.detections if o.sign_id == sign.sign_id]
+
+    def failure_summary(self) -> Optional[str]:
+        """One line for the run summary, e.g. "3 of 120 pairs skipped: 1 unreadable, 2 detection errors";
+        None when every pair went through."""
+        return failure_summary(self.skipped, len(self.drive.pairs))
 
     def run_record(self) -> dict:
         """What the run table records (``output_schema.RUN_KEYS``): software, drive, catalogue and settings."""
@@ -78,11 +94,28 @@ def map_pairs(drive: Drive, catalogue, config, is_cancelled: Optional[CancelChec
         try:
             left, depth, right = load_pair(drive, record)
         except DriveFormatError as exc:  # the readers report unreadable files as ImageReadError
-            yield PairResult(record, error=str(exc), seconds=_time.perf_counter() - start)
+            yield PairResult(record, error=str(exc), seconds=_time.perf_counter() - start, stage=READ)
             continue
         loaded = _time.perf_counter()
-        detections = detect_pair(left, depth, right, drive.camera, record.pose, catalogue, config)
+        try:
+            detections = detect_pair(left, depth, right, drive.camera, record.pose, catalogue, config)
+        except Exception as exc:  # noqa: BLE001 - one pair's failure is reported, the run goes on
+            yield PairResult(record, error=f"detection failed: {type(exc).__name__}: {exc}",
+                             seconds=_time.perf_counter() - start, load_seconds=loaded - start, stage=DETECT,
+                             traceback=_traceback.format_exc())
+            continue
         yield PairResult(record, detections, seconds=_time.perf_counter() - start, load_seconds=loaded - start)
+
+
+def failure_summary(skipped: list[PairResult], total: int) -> Optional[str]:
+    """"N of M pairs skipped: X unreadable, Y detection errors" for the run summary; None if none was."""
+    if not skipped:
+        return None
+    unreadable = sum(1 for r in skipped if r.stage != DETECT)
+    errors = len(skipped) - unreadable
+    parts = ([f"{unreadable} unreadable"] if unreadable else []) + \
+        ([f"{errors} detection error{'s' if errors > 1 else ''}"] if errors else [])
+    return f"{len(skipped)} of {total} pairs skipped: {', '.join(parts)}"
 
 
 def set_mounting_heights(drive: Drive, signs: list[FusedSign]) -> None:
@@ -113,7 +146,8 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
         load_seconds += result.load_seconds
         if result.error:
             skipped.append(result)
-            warn(warn_skipped, f"Skipped pair {result.record.id}: {result.error}")
+            trace = f"\n{result.traceback}" if result.traceback else ""
+            warn(warn_skipped, f"Skipped pair {result.record.id}: {result.error}{trace}")
         for detection in result.detections:
             detections.append(Observation(detection, result.record, id=len(detections) + 1))
         report(progress, PAIRS_SHARE * done / max(total, 1),

@@ -54,19 +54,33 @@ def template_at(catalogue, template_id: str, width: int, height: int) -> tuple:
     return bgr, np.where(alpha > 127, 255, 0).astype(np.uint8)
 
 
+def padded_crop(image: np.ndarray, x0: int, y0: int, x1: int, y1: int) -> np.ndarray:
+    """``image[y0:y1, x0:x1]`` with the part beyond the image border filled by replicating its edge.
+
+    Any box works, also one partly or wholly outside the image (a face grown from a
+    segment at the border): the result always has (y1 - y0, x1 - x0) pixels.
+    """
+    height, width = image.shape[:2]
+    x1, y1 = max(x1, x0 + 1), max(y1, y0 + 1)
+    if 0 <= x0 and 0 <= y0 and x1 <= width and y1 <= height:
+        return image[y0:y1, x0:x1]
+    rows = np.clip(np.arange(y0, y1), 0, height - 1)
+    cols = np.clip(np.arange(x0, x1), 0, width - 1)
+    return image[rows[:, None], cols[None, :]]
+
+
 def crop_for_matching(image: np.ndarray, bbox, scales: Sequence[float], shift_fraction: float, max_px: int):
     """Region around ``bbox`` big enough for the scale and shift search, downscaled to ``max_px``.
 
     Returns (region, factor, (w, h) of the bbox at that factor). Pixels beyond the
-    image border are replicated so the search never runs off the image.
+    image border are replicated so the search never runs off the image, wherever the box lies.
     """
-    x, y, w, h = bbox
+    x, y, w, h = (int(v) for v in bbox)
+    w, h = max(1, w), max(1, h)
     side = max(w, h)
     factor = min(1.0, max_px / float(side))
     margin = int(math.ceil((max(scales) - 1.0) / 2.0 * side + shift_fraction * side)) + 2
-    region = cv2.copyMakeBorder(image, margin, margin, margin, margin, cv2.BORDER_REPLICATE)[
-        y : y + h + 2 * margin, x : x + w + 2 * margin
-    ]
+    region = padded_crop(image, x - margin, y - margin, x + w + margin, y + h + margin)
     if factor < 1.0:
         region = cv2.resize(region, None, fx=factor, fy=factor, interpolation=cv2.INTER_AREA)
     return region, factor, (max(3, int(round(w * factor))), max(3, int(round(h * factor))))

@@ -4,17 +4,30 @@ Red signs are a red ring around a white field, so each segment is the filled
 outer contour of its colour component, not the coloured pixels alone. Where
 that outline is far from convex (a ring opened by an occluding pole or branch),
 the convex hull is used instead: every sign outline is convex.
+
+Segments come from up to three passes: the strong HSV classes with the speckle
+opening (as in Cavegn 2011), the scene pass on the white-balanced image with
+this scene's lowered saturation floors (faded rings, dull light; see
+:mod:`.scene_colour`), and, where the smallest sign the search space can hold has a ring
+thinner than the opening, a pass with an opening scaled to that ring, kept to
+small segments. Only red faces have thin rings (blue and yellow faces are solid
+fields), so with the scene pass on, the small-ring pass reads the scene classes
+of ``config.weak_colours`` (red); without it, the strong classes of all colours.
+Segments of the scene classes must stand out of their surroundings and have a
+sign's outline; no pass adds a segment an earlier pass found.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Dict, Iterable, List, Optional, Sequence, Tuple
 
 import cv2
 import numpy as np
 
-from .config import HsvRange
+from .config import HsvRange, PipelineConfig
+from .scene_colour import apply_gains, chroma_at_least, scene_colour
+from .shape import classify_shape
 
 
 @dataclass
@@ -88,6 +101,21 @@ def colour_masks(
     return masks
 
 
+def _filled_segment(contour, colour, width, height, border_margin_px, source, min_solidity):
+    """Segment of one contour: its filled outline (hull where far from convex) in its box."""
+    x, y, w, h = cv2.boundingRect(contour)
+    filled = np.zeros((h, w), dtype=np.uint8)
+    cv2.drawContours(filled, [contour], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
+    hull = cv2.convexHull(contour)
+    hull_area = max(1.0, cv2.contourArea(hull))
+    solidity = min(1.0, cv2.contourArea(contour) / hull_area)
+    if solidity < min_solidity:
+        cv2.drawContours(filled, [hull], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
+    m = border_margin_px
+    touches = x <= m or y <= m or x + w >= width - m or y + h >= height - m
+    return Segment(colour, (x, y, w, h), filled, contour, int(np.count_nonzero(filled)), touches, source, solidity)
+
+
 def segments_from_mask(
     mask: np.ndarray,
     colour: str,
@@ -96,34 +124,151 @@ def segments_from_mask(
     border_margin_px: int = 2,
     source: str = "colour",
     min_solidity: float = 0.85,
+    holes: bool = False,
+    min_hole_px: int = 60,
+    max_ring_ratio: float = 1.6,
 ) -> List[Segment]:
     """Connected segments of ``mask`` as filled outer contours with bounding boxes.
 
     Outlines with a solidity below ``min_solidity`` are replaced by their convex hull.
+    With ``holes``, the enclosed fields of a segment (the white field inside a red
+    ring or border) are segments too (source "hole"), unless the outer outline is
+    just a ring around the field (box at most ``max_ring_ratio`` times the field's
+    box): a ring that touches another red thing (a second sign, a roof) gives a
+    useless outer outline, but its field still has the face's shape.
     """
     height, width = mask.shape[:2]
-    contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
+    mode = cv2.RETR_CCOMP if holes else cv2.RETR_EXTERNAL
+    contours, hierarchy = cv2.findContours(mask, mode, cv2.CHAIN_APPROX_NONE)
     out = []
-    for contour in contours:
+    for k, contour in enumerate(contours):
+        parent = hierarchy[0][k][3] if hierarchy is not None else -1
         x, y, w, h = cv2.boundingRect(contour)
         if w < min_bbox_px or h < min_bbox_px:
             continue
-        filled = np.zeros((h, w), dtype=np.uint8)
-        cv2.drawContours(filled, [contour], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
-        area = int(np.count_nonzero(filled))
-        if area < min_area_px:
+        if parent < 0:
+            seg = _filled_segment(contour, colour, width, height, border_margin_px, source, min_solidity)
+            if seg.area_px >= min_area_px:
+                out.append(seg)
             continue
-        hull = cv2.convexHull(contour)
-        hull_area = max(1.0, cv2.contourArea(hull))
-        solidity = min(1.0, cv2.contourArea(contour) / hull_area)
-        if solidity < min_solidity:
-            cv2.drawContours(filled, [hull], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
-            area = int(np.count_nonzero(filled))
-        m = border_margin_px
-        touches = x <= m or y <= m or x + w >= width - m or y + h >= height - m
-        out.append(Segment(colour, (x, y, w, h), filled, contour, area, touches, source, solidity))
+        _, _, pw, ph = cv2.boundingRect(contours[parent])
+        if pw <= max_ring_ratio * w and ph <= max_ring_ratio * h or cv2.contourArea(contour) < min_hole_px:
+            continue
+        out.append(_filled_segment(contour, colour, width, height, border_margin_px, "hole", min_solidity))
     return out
 
+
+def _box_iou(a, b) -> float:
+    ax, ay, aw, ah = a
+    bx, by, bw, bh = b
+    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
+    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
+    inter = iw * ih
+    return inter / float(aw * ah + bw * bh - inter) if inter else 0.0
+
+
+def ring_open_px(face_px: float, config: PipelineConfig) -> int:
+    """Opening that keeps the ring of a ``face_px`` face: at most ring width - 1, at most the usual one."""
+    ring_px = config.ring_fraction * face_px
+    return int(np.clip(np.floor(ring_px) - 1, 1, config.morph_open_px))
+
+
+def _ring_safe_max_px(config: PipelineConfig) -> float:
+    """Faces larger than this keep their ring under the usual opening: the small-ring pass ignores them."""
+    return (config.morph_open_px + 1) / config.ring_fraction
+
+
+def surround_share(mask: np.ndarray, bbox, grow: float = 0.3) -> float:
+    """Share of ``mask`` pixels in the band around ``bbox`` (``grow`` x its size wide).
+
+    A sign stands out of its surroundings; a patch of sky between branches or of a
+    tinted façade has the same colour all around.
+    """
+    height, width = mask.shape[:2]
+    x, y, w, h = bbox
+    gx, gy = max(1, int(round(grow * w))), max(1, int(round(grow * h)))
+    x0, y0, x1, y1 = max(0, x - gx), max(0, y - gy), min(width, x + w + gx), min(height, y + h + gy)
+    band = (x1 - x0) * (y1 - y0) - w * h
+    if band <= 0:
+        return 0.0
+    outer = cv2.countNonZero(mask[y0:y1, x0:x1])
+    return (outer - cv2.countNonZero(mask[y : y + h, x : x + w])) / float(band)
+
+
+@dataclass
+class ColourFrame:
+    """What the colour passes read from one image, computed once per image and shared by its passes
+    (and by the two looks the pipeline takes: before depth for the stereo rows, then within the search space).
+    """
+
+    hsv: np.ndarray  # HSV of the image as it is: the strong pass
+    hsv_weak: np.ndarray  # HSV of the white-balanced image (or ``hsv`` itself): the scene pass
+    colourful: Optional[np.ndarray]  # uint8 0/255: chroma high enough for the scene pass
+    weak_ranges: Dict[str, Tuple[HsvRange, ...]]
+    masks: Dict[Tuple[str, bool], np.ndarray] = field(default_factory=dict)  # filled by colour_mask
+
+    def colour_mask(self, colour: str, scene: bool, config: PipelineConfig) -> np.ndarray:
+        """uint8 0/255 mask of one colour class, strong or of the scene pass; computed once per image."""
+        key = (colour, scene)
+        if key not in self.masks:
+            if scene:
+                mask = cv2.bitwise_and(hsv_mask(self.hsv_weak, self.weak_ranges[colour]), self.colourful)
+            else:
+                mask = hsv_mask(self.hsv, config.hsv_ranges[colour])
+            self.masks[key] = mask
+        return self.masks[key]
+
+    @classmethod
+    def of(cls, image: np.ndarray, config: PipelineConfig) -> ColourFrame:
+        hsv = cv2.cvtColor(image, cv2.COLOR_BGR2HSV)
+        if not config.weak_colour:
+            return cls(hsv, hsv, None, {})
+        scene = scene_colour(image, config)
+        balanced = apply_gains(image, scene.gains)
+        hsv_weak = hsv if balanced is image else cv2.cvtColor(balanced, cv2.COLOR_BGR2HSV)
+        colourful = chroma_at_least(hsv_weak, config.weak_min_chroma).view(np.uint8) * 255
+        return cls(hsv, hsv_weak, colourful, scene.weak_ranges)
+
+
+def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
+                         small_face_px: Optional[float] = None, frame: Optional[ColourFrame] = None) -> List[Segment]:
+    """Colour segments of ``image`` (limited to the bool ``search`` mask when given), all passes.
+
+    ``small_face_px``: the smallest face (pixels) worth finding; the ring of such a
+    face sets the opening of the small-ring pass. None: ``config.min_face_px``
+    (no depth, so no size limit from a search space). ``frame``: the image's
+    :class:`ColourFrame` if already computed.
+    """
+    frame = frame or ColourFrame.of(image, config)
+    inside = None if search is None else search.astype(np.uint8) * 255
+    small_open = ring_open_px(config.min_face_px if small_face_px is None else small_face_px, config)
+    passes = [(config.morph_open_px, None, False)]  # (opening, largest side kept, scene classes)
+    if config.weak_colour:
+        passes.append((config.morph_open_px, None, True))
+    if small_open < config.morph_open_px:
+        passes.append((small_open, _ring_safe_max_px(config), config.weak_colour))
+    out: List[Segment] = []
+    for open_px, max_side, weak in passes:
+        for colour in config.colours:
+            if weak and colour not in config.weak_colours:
+                continue
+            raw = frame.colour_mask(colour, weak, config)
+            if inside is not None:
+                raw = cv2.bitwise_and(raw, inside)
+            mask = clean_mask(raw, open_px, config.morph_close_px)
+            for seg in segments_from_mask(mask, colour, config.min_segment_px, config.min_bbox_px,
+                                          config.border_margin_px, holes=colour in config.hole_colours,
+                                          min_hole_px=config.min_hole_px):
+                if max_side is not None and max(seg.bbox[2], seg.bbox[3]) > max_side:
+                    continue
+                if weak and surround_share(raw, seg.bbox) > config.weak_max_surround:
+                    continue  # part of a larger coloured area (sky, hedge, façade), not a face of its own
+                if weak and classify_shape(seg.mask, config.min_shape_fit, config.shape_fill_window).shape is None:
+                    continue  # the scene pass's extra segments must look like a face to be worth depth
+                if any(o.colour == colour and _box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou for o in out):
+                    continue
+                out.append(seg)
+    return out
 
 
 def box_gap(a, b) -> float:
@@ -172,3 +317,55 @@ def merge_candidates(segments: Sequence[Segment], max_gap_fraction: float = 0.35
                 continue
             out.append(merge_segments(a, b))
     return out
+
+
+def _span_overlap(a0: int, a1: int, b0: int, b1: int) -> float:
+    """Overlap of two 1-D spans as a fraction of the shorter one."""
+    return max(0, min(a1, b1) - max(a0, b0)) / float(max(1, min(a1 - a0, b1 - b0)))
+
+
+def split_face_merges(segments: Sequence[Segment], min_fit: float, max_gap_fraction: float = 0.35,
+                      min_span_overlap: float = 0.6, min_gain: float = 0.05) -> List[Tuple[Segment, int, int]]:
+    """(merged, i, j) for pairs of pieces that together make a better sign outline than either alone.
+
+    A white bar (no entry, 2.02) or a pole in front cuts a face into two pieces
+    stacked along one axis: their boxes overlap along the other axis by at least
+    ``min_span_overlap`` and the gap between them is small. The hull of both is
+    kept when its outline fits an ideal shape (``min_fit``) better, by ``min_gain``,
+    than each piece does: the whole face is then judged before its pieces.
+    """
+    fits: dict = {}
+
+    def fit_of(k: int) -> float:
+        if k not in fits:
+            fits[k] = classify_shape(segments[k].mask, min_fit).fit
+        return fits[k]
+
+    out = []
+    for i, a in enumerate(segments):
+        ax, ay, aw, ah = a.bbox
+        for j in range(i + 1, len(segments)):
+            b = segments[j]
+            if a.colour != b.colour or a.touches_border or b.touches_border:
+                continue
+            bx, by, bw, bh = b.bbox
+            x0, y0 = min(ax, bx), min(ay, by)
+            w, h = max(ax + aw, bx + bw) - x0, max(ay + ah, by + bh) - y0
+            if box_gap(a.bbox, b.bbox) > max_gap_fraction * max(w, h) or max(w, h) > 2 * min(w, h):
+                continue
+            stacked = _span_overlap(ax, ax + aw, bx, bx + bw) >= min_span_overlap  # one above the other
+            beside = _span_overlap(ay, ay + ah, by, by + bh) >= min_span_overlap
+            if not (stacked or beside):
+                continue
+            merged = merge_segments(a, b)
+            result = classify_shape(merged.mask, min_fit)
+            if result.shape is not None and result.fit >= max(fit_of(i), fit_of(j)) + min_gain:
+                out.append((merged, i, j))
+    return out
+
+
+def faces_with_split_pieces_merged(segments: Sequence[Segment], min_fit: float) -> List[Segment]:
+    """The segments with each pair of pieces of one split face replaced by the merged face."""
+    merges = split_face_merges(segments, min_fit)
+    used = {k for _, i, j in merges for k in (i, j)}
+    return [m for m, _, _ in merges] + [s for k, s in enumerate(segments) if k not in used]

@@ -12,22 +12,23 @@ from contextlib import contextmanager
 from dataclasses import replace
 from typing import List, Optional, Sequence, Tuple
 
+import cv2
 import numpy as np
 
 from ..face_normal import world_face_normal
 from ..geometry import Camera, Pose
-from .classifiers import accept_threshold, classifier_for, min_score
+from .classifiers import accept_threshold, classifier_for, marginal_min_score, min_score
 from .classify import surround_score
-from .colour import Segment, colour_masks, merge_candidates, segments_from_mask
+from .colour import ColourFrame, Segment, find_colour_segments, merge_candidates, split_face_merges
 from .config import PipelineConfig
 from .depth import merge_row_bands, sgbm_depth
 from .detection import Detection
-from .face_extent import FULL, candidate_entries, face_bbox
+from .face_extent import FULL, candidate_entries, face_bbox, hole_candidates, measured_rim_bbox
 from .hough import hough_segments, radius_range_px, ring_colour_share
 from .locate import bbox_centre, locate
 from .planarity import segment_planarity
 from .search_space import close_holes, grow, search_space_mask
-from .shape import catalogue_shapes, classify_shape
+from .shape import IDEAL_FILL, catalogue_shapes, classify_shape, outline_shapes
 from .sizing import measure_segment, metric_size, round_to_format
 
 Roi = Tuple[int, int, int, int]  # x0, y0, x1, y1 (exclusive)
@@ -43,21 +44,52 @@ def _shift_segment(seg: Segment, dx: int, dy: int) -> Segment:
     return replace(seg, bbox=(x + dx, y + dy, w, h), contour=seg.contour + np.array([dx, dy]))
 
 
-def colour_segments(left: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig, roi: Roi) -> List[Segment]:
-    """Colour segments inside ``roi`` in full-image coordinates; cut ones are flagged ``touches_border``."""
+def colour_segments(left: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig, roi: Roi,
+                    small_face_px: Optional[float] = None, frame: Optional[ColourFrame] = None) -> List[Segment]:
+    """Colour segments inside ``roi`` in full-image coordinates; cut ones are flagged ``touches_border``.
+
+    ``small_face_px``: the smallest face the search space can hold (sets the small-ring pass);
+    None without depth (``config.min_face_px``). ``frame``: the :class:`ColourFrame` of the roi.
+    """
     x0, y0, x1, y1 = roi
     crop = left[y0:y1, x0:x1]
-    masks = colour_masks(crop, config.hsv_ranges, config.colours, None if search is None else search[y0:y1, x0:x1],
-                         config.morph_open_px, config.morph_close_px)
-    out = []
-    for colour, mask in masks.items():
-        for seg in segments_from_mask(mask, colour, config.min_segment_px, config.min_bbox_px, config.border_margin_px):
-            out.append(_shift_segment(seg, x0, y0))
-    return out
+    segs = find_colour_segments(crop, None if search is None else search[y0:y1, x0:x1], config, small_face_px,
+                                frame)
+    return [_shift_segment(seg, x0, y0) for seg in segs]
 
 
-def size_to_format(seg: Segment, candidates, depth_m: float, camera: Camera, catalogue, config: PipelineConfig):
+def smallest_face_px(camera: Camera, catalogue, config: PipelineConfig) -> float:
+    """Pixels of the smallest side of any format at the far limit: the smallest face worth finding."""
+    sides = [min(f) for e in catalogue.filter(exclude=tuple(config.exclude)) for f in e.formats.values()]
+    return (min(sides) if sides else 0.4) * min(camera.fx, camera.fy) / config.far_m
+
+
+def round_face_diameter_px(seg: Segment) -> float:
+    """Diameter of a round face from its outline: the larger axis of the fitted ellipse.
+
+    A disc seen at an angle is an ellipse whose larger axis is the true diameter.
+    Limited to 1.15 x the larger box side (an ellipse fitted to a cut outline overshoots)
+    and never below that side (a disc cut by an occluder keeps its full extent on one axis).
+    """
+    side = float(max(seg.bbox[2], seg.bbox[3]))
+    points = cv2.convexHull(seg.contour.reshape(-1, 1, 2).astype(np.int32))
+    if len(points) < 5:
+        return side
+    (_, _), axes, _ = cv2.fitEllipse(points)
+    return float(np.clip(max(axes), side, 1.15 * side))
+
+
+ROUND_SHAPES = ("circle", "octagon")
+
+
+def size_to_format(seg: Segment, candidates, depth_m: float, camera: Camera, catalogue, config: PipelineConfig,
+                   shape: Optional[str] = None, image: Optional[np.ndarray] = None):
     """[(SizeMatch, face bbox, candidate ids, extent)] of every face reading whose size fits a format.
+
+    A round ``shape`` is sized by its diameter (:func:`round_face_diameter_px`), so a disc
+    seen at an angle still fits its format. With ``image``, a face whose coloured part sits
+    inside a white rim is also read with the rim measured in the image
+    (:func:`.face_extent.measured_rim_bbox`).
 
     ``candidates``: (entry, colour extent) pairs, grouped by extent so that a
     coloured part inside a white rim or panel is sized as the whole face. Each
@@ -67,23 +99,65 @@ def size_to_format(seg: Segment, candidates, depth_m: float, camera: Camera, cat
     for entry, ext in candidates:
         groups.setdefault(tuple(round(v, 2) for v in ext), (ext, []))[1].append(entry)
     fits = []
+    x, y, w, h = seg.bbox
+    round_face = shape in ROUND_SHAPES and min(w, h) >= config.min_round_axis_ratio * max(w, h)
+    diameter = round_face_diameter_px(seg) if round_face else None
     for ext, group in groups.values():
-        face = face_bbox(seg.bbox, ext)
-        width_m, height_m = metric_size(camera, face, depth_m)
-        match = round_to_format(catalogue, group, width_m, height_m, config.size_tolerance)
-        if match is not None:
-            allowed = {e.id for e in group}
-            ids = [t for t in match.template_ids if t in allowed]
-            if ids:
-                fits.append((match, face, ids, ext))
+        faces = [face_bbox(seg.bbox, ext)]
+        rimmed = [e for e in group if e.shape == shape]
+        if image is not None and ext != FULL and rimmed and seg.source == "colour":
+            rim = measured_rim_bbox(image, seg.bbox, seg.mask, ext, config.min_shape_fit)
+            if rim is not None and _iou(rim, faces[0]) < 0.8:  # the rim drawn otherwise than the template's
+                faces.append(rim)
+        for face in faces:
+            entries = group if face is faces[0] else rimmed
+            if diameter is not None and ext == FULL:  # an oblique disc: both axes are its diameter
+                width_m, height_m = metric_size(camera, (x, y, diameter, diameter), depth_m)
+            else:
+                width_m, height_m = metric_size(camera, face, depth_m)
+            match = round_to_format(catalogue, entries, width_m, height_m, config.size_tolerance)
+            if match is not None:
+                allowed = {e.id for e in entries}
+                ids = [t for t in match.template_ids if t in allowed]
+                if ids:
+                    fits.append((match, face, ids, ext))
     return fits
 
 
-def segment_candidates(seg: Segment, shape: str, catalogue, config: PipelineConfig, outline_fits=None):
-    """(entry, extent) pairs the segment may be: colour and shape cut the catalogue."""
-    shapes = catalogue_shapes(shape, seg.bbox[2], seg.bbox[3], outline_fits)
+def segment_outline(seg: Segment, config: PipelineConfig) -> Tuple[Tuple[str, ...], bool]:
+    """(outline shapes the segment may have, best first; whether the outline is only a marginal fit).
+
+    Shapes are () when none fits (not a sign). Marginal: the best fit is below
+    ``confident_shape_fit`` or the fill ratio is outside the usual window of its shape;
+    such outlines (real signs with rounded corners, blur, perspective) need a clearer
+    template match to be reported.
+    """
+    if seg.source == "hough":
+        return ("circle",), False
+    result = classify_shape(seg.mask, config.min_shape_fit, config.shape_fill_window)
+    shapes = outline_shapes(result, config.shape_ambiguity, config.min_shape_fit)
+    marginal = bool(shapes) and (result.fit < config.confident_shape_fit
+                                 or abs(result.fill_ratio - IDEAL_FILL[shapes[0]]) > 0.15)
+    return shapes, marginal
+
+
+def segment_shapes(seg: Segment, config: PipelineConfig) -> Tuple[str, ...]:
+    """Outline shapes a segment may have, best first; () when none fits (not a sign)."""
+    return segment_outline(seg, config)[0]
+
+
+def segment_candidates(seg: Segment, shape, catalogue, config: PipelineConfig):
+    """(entry, extent) pairs the segment may be: colour and shape(s) cut the catalogue.
+
+    ``shape``: one outline shape or several (:func:`segment_shapes`).
+    """
+    outlines = (shape,) if isinstance(shape, str) else tuple(shape)
+    shapes = tuple(dict.fromkeys(c for s in outlines for c in catalogue_shapes(s, seg.bbox[2], seg.bbox[3])))
     if seg.source == "hough":  # the circle is the face's outline, whatever its weak colour
         return [(e, FULL) for e in catalogue.filter(colours=[seg.colour], shapes=shapes, exclude=config.exclude)]
+    if seg.source == "hole":  # the field inside a ring: the face is grown from it
+        return hole_candidates(catalogue, seg.colour, shapes, config.hsv_ranges, tuple(config.colours) + ("white",),
+                               config.exclude)
     return candidate_entries(catalogue, seg.colour, shapes, config.hsv_ranges, tuple(config.colours) + ("white",),
                              config.exclude)
 
@@ -96,21 +170,17 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     """
     if seg.touches_border:
         return None
-    outline_fits = None
-    if seg.source == "hough":
-        shape = "circle"
-    else:
-        outline = classify_shape(seg.mask, config.min_shape_fit)
-        shape, outline_fits = outline.shape, outline.fits
-    if shape is None:
+    shapes, marginal = segment_outline(seg, config)
+    if not shapes:
         return None
-    candidates = segment_candidates(seg, shape, catalogue, config, outline_fits)
+    shape = shapes[0]
+    candidates = segment_candidates(seg, shapes, catalogue, config)
     if not candidates:
         return None
     size = measure_segment(camera, depth, seg.bbox, seg.surface_mask, config.near_m, config.far_m)
     if size is None:
         return None
-    fits = size_to_format(seg, candidates, size.depth_m, camera, catalogue, config)
+    fits = size_to_format(seg, candidates, size.depth_m, camera, catalogue, config, shape, left)
     if not fits:
         return None
     tolerance = config.sgbm_planarity_tolerance_px if matched else config.planarity_tolerance_px
@@ -122,7 +192,7 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     # when the face's part outside the segment matches too: the bare ring alone would always score
     # higher, and the panel reading alone scores ~0.65 on any round sign.
     readings, panels = [], []
-    same_shapes = catalogue_shapes(shape, seg.bbox[2], seg.bbox[3], outline_fits)
+    same_shapes = {c for s in shapes for c in catalogue_shapes(s, seg.bbox[2], seg.bbox[3])}
     classifier = classifier_for(catalogue, config)
     accept = accept_threshold(classifier, config)
     for match, face, ids, ext in fits:
@@ -136,7 +206,12 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     good_panels = [r for r in panels if r[2].score >= accept]
     pool = good_panels or readings or panels
     best = max(pool, key=lambda r: r[2].score, default=None)
-    if best is None or best[2].score < min_score(classifier, config):
+    # an outline that only fits loosely, or a round one sized as seen at an angle (its box alone fits no
+    # format), must resemble its template clearly: a cut of something else fits those readings too easily
+    w, h = seg.bbox[2], seg.bbox[3]
+    oblique = shape in ROUND_SHAPES and min(w, h) < (1.0 - config.size_tolerance) * max(w, h)
+    floor = marginal_min_score(classifier, config) if marginal or oblique else min_score(classifier, config)
+    if best is None or best[2].score < floor:
         return None
     match, face, cls = best
     status = "accepted" if cls.score >= accept else "review"
@@ -194,7 +269,8 @@ def _round_diameters(catalogue, config: PipelineConfig) -> List[float]:
     return diam or [0.4, 0.6]
 
 
-def _ensure_depth(left, depth, right, camera, catalogue, config: PipelineConfig, roi: Roi) -> np.ndarray:
+def _ensure_depth(left, depth, right, camera, catalogue, config: PipelineConfig, roi: Roi,
+                  frame: Optional[ColourFrame] = None) -> np.ndarray:
     """The given depth, or SGBM depth over the rows that can hold a sign in ``roi``."""
     if depth is not None:
         return np.asarray(depth, dtype=np.float32)
@@ -206,7 +282,7 @@ def _ensure_depth(left, depth, right, camera, catalogue, config: PipelineConfig,
         # Colour candidates before depth: match only their rows (the Hough fallback then sees only these).
         # Segments that cannot be a face (or half of one, a coloured part of a panel) anywhere in the
         # search space are left out.
-        segs = colour_segments(left, None, config, roi)
+        segs = colour_segments(left, None, config, roi, smallest_face_px(camera, catalogue, config), frame)
         heights = [h for e in catalogue for (_, h) in e.formats.values()] or [0.4, 1.5]
         max_px = 1.3 * max(heights) * camera.fy / config.near_m
         min_px = 0.5 * min(heights) * camera.fy / config.far_m
@@ -240,9 +316,11 @@ def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig,
             timings: Optional[dict] = None) -> List[Detection]:
     timer = _Timer(timings)
     matched = depth is None
-    with timer("depth"):
-        depth = _ensure_depth(left, depth, right, camera, catalogue, config, roi)
     x0, y0, x1, y1 = roi
+    with timer("colour"):
+        frame = ColourFrame.of(left[y0:y1, x0:x1], config)
+    with timer("depth"):
+        depth = _ensure_depth(left, depth, right, camera, catalogue, config, roi, frame)
     search = search_space_mask(depth, config.near_m, config.far_m)
     if (x0, y0, x1, y1) != (0, 0, left.shape[1], left.shape[0]):
         inside = np.zeros_like(search)
@@ -251,16 +329,25 @@ def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig,
     detections = []
     with timer("colour"):
         cut = grow(search, config.search_grow_px) if matched else close_holes(search, config.search_close_px)
-        segments = colour_segments(left, cut, config, roi)
+        segments = colour_segments(left, cut, config, roi, smallest_face_px(camera, catalogue, config), frame)
     with timer("segments"):
+        # faces split by a bar (no entry) or a pole: the whole face is judged before its pieces
+        taken = set()
+        for seg, i, j in split_face_merges(segments, config.min_shape_fit):
+            det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config, matched)
+            if det is not None:
+                detections.append(det)
+                taken.update((i, j))
         rejected = []
-        for seg in segments:
+        for k, seg in enumerate(segments):
+            if k in taken:
+                continue
             det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config, matched)
             if det is not None:
                 detections.append(det)
             elif not seg.touches_border:
                 rejected.append(seg)
-        # faces split by a pole or branch: pieces that fail alone are tried together
+        # pieces that fail alone are also tried together when no whole outline formed (a branch cut them)
         for seg in merge_candidates(rejected[: config.max_merge_pieces]):
             det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config, matched)
             if det is not None:
@@ -281,7 +368,8 @@ def _hough_detections(left, depth, search, camera, pose, catalogue, config: Pipe
         taken = [d.bbox for d in found]
         sub = search[y0:y1, x0:x1]
         for seg in hough_segments(left[y0:y1, x0:x1], sub, r_min, r_max, (), config.hough_scale,
-                                  config.hough_circularity, config.hough_edge_threshold, config.border_margin_px):
+                                  config.hough_circularity, config.hough_edge_threshold, config.border_margin_px,
+                                  config.hough_tint_min_saturation):
             seg = _shift_segment(seg, x0, y0)
             cu, cv = bbox_centre(seg.bbox)
             if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken):

@@ -57,6 +57,47 @@ def colour_part(catalogue, template_id: str, colour: str, hsv_ranges) -> Tuple[O
     return extent, shape
 
 
+def hole_part(catalogue, template_id: str, colour: str, hsv_ranges) -> Tuple[Optional[Extent], Optional[str]]:
+    """(extent, shape) of the largest field the template's ``colour`` encloses (the white field inside a
+    red ring or border, the bar of no entry); (None, None) if it encloses none of at least 5 % of the face."""
+    key = (id(catalogue), template_id, "hole:" + colour)
+    hit = _cache.get(key)
+    if hit is not None and hit[0] is catalogue:
+        return hit[1]
+    extent, shape = None, None
+    if colour in hsv_ranges:
+        bgr, alpha = canonical_template(catalogue, template_id)
+        mask = hsv_mask(cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV), hsv_ranges[colour])
+        mask[alpha <= 127] = 0
+        contours, hierarchy = cv2.findContours(mask, cv2.RETR_CCOMP, cv2.CHAIN_APPROX_NONE)
+        holes = [c for c, h in zip(contours, hierarchy[0] if hierarchy is not None else []) if h[3] >= 0]
+        h, w = mask.shape
+        if holes:
+            hole = max(holes, key=cv2.contourArea)
+            if cv2.contourArea(hole) >= 0.05 * h * w:
+                x, y, hw, hh = cv2.boundingRect(hole)
+                extent = (x / w, y / h, (x + hw) / w, (y + hh) / h)
+                filled = np.zeros((hh, hw), np.uint8)
+                cv2.drawContours(filled, [hole], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
+                shape = classify_shape(filled).shape
+    _cache[key] = (catalogue, (extent, shape))
+    return extent, shape
+
+
+def hole_candidates(catalogue, colour: str, shapes: Iterable[str], hsv_ranges, allowed_colours: Iterable[str],
+                    exclude: Iterable[str] = ()) -> List[Tuple[object, Extent]]:
+    """(entry, field extent) of the templates whose ``colour`` encloses a field of one of ``shapes``."""
+    shapes, allowed, excluded = set(shapes), set(allowed_colours), set(exclude)
+    out = []
+    for entry in catalogue:
+        if entry.id in excluded or entry.colour not in allowed:
+            continue
+        extent, shape = hole_part(catalogue, entry.id, colour, hsv_ranges)
+        if extent is not None and shape in shapes:
+            out.append((entry, extent))
+    return out
+
+
 def colour_extent(catalogue, template_id: str, colour: str, hsv_ranges) -> Optional[Extent]:
     """Bounding box of the template's ``colour`` pixels as fractions of its face box; None if it has none."""
     return colour_part(catalogue, template_id, colour, hsv_ranges)[0]
@@ -99,3 +140,50 @@ def candidate_entries(catalogue, colour: str, shapes: Iterable[str], hsv_ranges,
         elif entry.shape in ("rectangle", "square") and part_shape in shapes and 0.1 < _area(extent) < 0.8:
             out.append((entry, extent))
     return out
+
+
+def measured_rim_bbox(image: np.ndarray, segment_bbox, segment_mask: np.ndarray, extent: Extent,
+                      min_fit: float = 0.68, max_saturation: int = 70) -> Optional[Tuple[int, int, int, int]]:
+    """The face box of a rimmed face measured in the image: the white rim around the coloured part.
+
+    The rim's width differs between sign designs (Germany's priority road carries its
+    yellow on half the face, the Swiss template on 78 %), so the template's extent can
+    misplace the face. Around the segment, bright low-saturation pixels joined to it
+    are the rim; the filled outline of segment plus rim must have the segment's
+    shape. None when no such rim is found (then the template's extent stands).
+    """
+    from .shape import classify_shape
+
+    x, y, w, h = segment_bbox
+    fx0, fy0, fx1, fy1 = extent
+    grow = max(fx0, fy0, 1 - fx1, 1 - fy1) / max(0.05, min(fx1 - fx0, fy1 - fy0))  # rim / coloured part
+    gx, gy = int(np.ceil(w * (2.0 * grow + 0.3))), int(np.ceil(h * (2.0 * grow + 0.3)))
+    height, width = image.shape[:2]
+    x0, y0, x1, y1 = max(0, x - gx), max(0, y - gy), min(width, x + w + gx), min(height, y + h + gy)
+    hsv = cv2.cvtColor(image[y0:y1, x0:x1], cv2.COLOR_BGR2HSV)
+    inner = hsv[y - y0 : y - y0 + h, x - x0 : x - x0 + w, 2][segment_mask > 0]
+    if inner.size == 0:
+        return None
+    bright = (hsv[..., 1] < max_saturation) & (hsv[..., 2] >= max(60, np.median(inner) * 0.9))
+    mask = bright.astype(np.uint8) * 255
+    mask[y - y0 : y - y0 + h, x - x0 : x - x0 + w][segment_mask > 0] = 255
+    mask = cv2.morphologyEx(mask, cv2.MORPH_CLOSE, np.ones((3, 3), np.uint8))
+    n, labels = cv2.connectedComponents(mask)
+    cy, cx = y - y0 + h // 2, x - x0 + w // 2
+    label = labels[cy, cx]
+    if n < 2 or label == 0:
+        return None
+    contours, _ = cv2.findContours((labels == label).astype(np.uint8), cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
+    contour = max(contours, key=cv2.contourArea)
+    bx, by, bw, bh = cv2.boundingRect(contour)
+    if bx == 0 or by == 0 or bx + bw >= x1 - x0 or by + bh >= y1 - y0:
+        return None  # the bright area runs out of the window: sky or a wall, not a rim
+    if not (1.08 * w <= bw <= 2.6 * w and 1.08 * h <= bh <= 2.6 * h):
+        return None
+    filled = np.zeros((bh, bw), np.uint8)
+    cv2.drawContours(filled, [cv2.convexHull(contour)], -1, 255, thickness=cv2.FILLED, offset=(-bx, -by))
+    seg_shape = classify_shape(segment_mask, min_fit)
+    face_shape = classify_shape(filled, min_fit)
+    if seg_shape.shape is None or face_shape.shape != seg_shape.shape:
+        return None
+    return (x0 + bx, y0 + by, bw, bh)

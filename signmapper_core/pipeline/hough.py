@@ -18,7 +18,8 @@ import numpy as np
 from .colour import Segment, hsv_mask
 
 # Hue bins (OpenCV 0-179) for naming the weak colour of a Hough circle's ring.
-WEAK_HUES = {"red": ((0, 10), (165, 179)), "yellow": ((16, 35),), "blue": ((95, 135),)}
+# Dim red rings drift to magenta (hue 150-165 on GTSDB photographs), as in config.WEAK_HUES.
+WEAK_HUES = {"red": ((0, 10), (150, 179)), "yellow": ((16, 35),), "blue": ((95, 135),)}
 
 
 def radius_range_px(fx: float, near_m: float, far_m: float, diameters_m: Sequence[float], slack: float = 0.2):
@@ -89,7 +90,8 @@ def weak_colour(bgr: np.ndarray, mask: np.ndarray, min_saturation: int = 40, min
     return best
 
 
-def circle_segment(bgr: np.ndarray, u: float, v: float, r: float, border_margin_px: int = 2) -> Optional[Segment]:
+def circle_segment(bgr: np.ndarray, u: float, v: float, r: float, border_margin_px: int = 2,
+                   tint_min_saturation: int = 40) -> Optional[Segment]:
     """A Hough circle as a segment (disc mask in its box), its colour from the ring."""
     height, width = bgr.shape[:2]
     x0, y0 = int(round(u - r)), int(round(v - r))
@@ -103,7 +105,7 @@ def circle_segment(bgr: np.ndarray, u: float, v: float, r: float, border_margin_
     mask = np.zeros((size, size), np.uint8)
     cv2.circle(mask, (size // 2, size // 2), size // 2, 255, -1)
     crop = bgr[y0 : y0 + size, x0 : x0 + size]
-    colour = weak_colour(crop, mask)
+    colour = weak_colour(crop, mask, tint_min_saturation)
     contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
     return Segment(colour, (x0, y0, size, size), mask, contours[0] + np.array([x0, y0]),
                    int(np.count_nonzero(mask)), touches, source="hough")
@@ -119,6 +121,7 @@ def hough_segments(
     circularity: float = 0.85,
     edge_threshold: float = 150.0,
     border_margin_px: int = 2,
+    tint_min_saturation: int = 40,
 ) -> List[Segment]:
     """Round-sign segments from Hough circles whose centre is not inside a ``taken`` box."""
     out = []
@@ -127,7 +130,7 @@ def hough_segments(
     for u, v, r in find_circles(bgr, search_mask, r_min, r_max, scale, circularity, edge_threshold):
         if any(x <= u < x + w and y <= v < y + h for x, y, w, h in taken):
             continue
-        seg = circle_segment(bgr, u, v, r, border_margin_px)
+        seg = circle_segment(bgr, u, v, r, border_margin_px, tint_min_saturation)
         if seg is not None:
             out.append(seg)
     return out

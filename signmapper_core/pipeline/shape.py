@@ -11,7 +11,7 @@ the bounding box, so mild perspective (ellipses, sheared boxes) still fits.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Dict, Optional
+from typing import Dict, Optional, Tuple
 
 import cv2
 import numpy as np
@@ -93,13 +93,23 @@ def classify_shape(mask: np.ndarray, min_fit: float = 0.72, fill_window: float =
     return ShapeResult(best, fits[best], fill, circularity, corners, fits)
 
 
-def catalogue_shapes(shape: str, width_px: int, height_px: int, fits: Optional[Dict[str, float]] = None,
-                     tie: float = 0.03) -> tuple:
-    """Catalogue shape names a detected outline may be: a rectangle may be a square; with the outline
-    ``fits``, a shape within ``tie`` of the best one too (a small Stop with rounded corners fits a circle
-    about as well as an octagon)."""
-    names = [shape] + [s for s, f in (fits or {}).items() if s != shape and f >= fits[shape] - tie]
-    out = []
-    for name in names:
-        out += ["square", "rectangle"] if name == "rectangle" else [name]
-    return tuple(dict.fromkeys(out))
+def outline_shapes(result: ShapeResult, margin: float, min_fit: float = 0.72) -> Tuple[str, ...]:
+    """The best-fitting shape and every other one within ``margin`` of its fit (and >= ``min_fit``).
+
+    A small disc and a small octagon differ by a few pixels at their corners (their ideal
+    outlines overlap by IoU 0.95): where the fits are that close, both readings stay open
+    and the templates decide.
+    """
+    if result.shape is None:
+        return ()
+    best = result.fits[result.shape]
+    others = sorted((s for s, f in result.fits.items() if s != result.shape and f >= max(min_fit, best - margin)),
+                    key=result.fits.get, reverse=True)
+    return (result.shape, *others)
+
+
+def catalogue_shapes(shape: str, width_px: int, height_px: int) -> tuple:
+    """Catalogue shape names a detected outline may be: a rectangle may be a square."""
+    if shape == "rectangle":
+        return ("square", "rectangle")
+    return (shape,)

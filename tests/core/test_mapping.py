@@ -80,6 +80,50 @@ def test_corrupt_pair_is_skipped_with_a_warning_naming_it(drive_dir, catalogue, 
     assert result.detections and all(o.pair_id != broken.stem for o in result.detections)
 
 
+def _failing_at(pair_index, drive_dir, monkeypatch):
+    """detect_pair raising deep inside for one pair, as a bug met by unusual pixels would."""
+    import signmapper_core.pipeline as pipeline
+
+    real, failing = pipeline.detect_pair, open_drive(drive_dir).pairs[pair_index].pose
+
+    def detect_pair(left, depth, right, camera, pose, *args, **kwargs):
+        if pose == failing:
+            return [][1]
+        return real(left, depth, right, camera, pose, *args, **kwargs)
+
+    monkeypatch.setattr(pipeline, "detect_pair", detect_pair)
+
+
+def test_pair_whose_detection_raises_is_skipped_with_its_traceback_and_the_run_goes_on(
+        drive_dir, catalogue, mapped, monkeypatch):
+    _failing_at(4, drive_dir, monkeypatch)
+    warnings = []
+    result = map_drive(open_drive(drive_dir), catalogue, PipelineConfig(), warn_skipped=warnings.append)
+    (failed,) = result.skipped
+    assert failed.record.id == "000004" and failed.stage == "detect"
+    assert failed.error == "detection failed: IndexError: list index out of range"
+    assert "Traceback (most recent call last)" in failed.traceback and "detect_pair" in failed.traceback
+    (warning,) = warnings
+    assert warning.startswith("Skipped pair 000004: detection failed: IndexError") and failed.traceback in warning
+    assert result.failure_summary() == "1 of 10 pairs skipped: 1 detection error"
+    # every other pair is mapped as without the failure
+    full, _ = mapped
+    others = [o.pair_id for o in full.detections if o.pair_id != "000004"]
+    assert [o.pair_id for o in result.detections] == others and len(result.signs) >= 2
+
+
+def test_summary_counts_unreadable_pairs_and_detection_errors_apart(drive_dir, catalogue, tmp_path, monkeypatch):
+    drive = tmp_path / "both"
+    shutil.copytree(drive_dir, drive)
+    broken = sorted((drive / "left").iterdir())[7]
+    broken.write_bytes(broken.read_bytes()[:2000])
+    _failing_at(2, drive_dir, monkeypatch)
+    result = map_drive(open_drive(drive), catalogue, PipelineConfig())
+    assert [(r.record.id, r.stage) for r in result.skipped] == [("000002", "detect"), (broken.stem, "read")]
+    assert result.skipped[1].traceback is None
+    assert result.failure_summary() == "2 of 10 pairs skipped: 1 unreadable, 1 detection error"
+
+
 def test_cancel_raises_cancelled_between_pairs(drive_dir, catalogue):
     seen = []
     with pytest.raises(Cancelled, match="mapping drive"):

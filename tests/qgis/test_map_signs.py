@@ -179,6 +179,38 @@ def test_corrupt_pair_is_logged_and_skipped(run, small_drive, tmp_path):
     assert any(broken.stem in m and broken.name in m for m in messages), messages
 
 
+def test_pair_whose_detection_raises_is_logged_with_its_traceback_and_the_run_goes_on(
+        run, sign_mapper, small_drive, tmp_path, monkeypatch):
+    import importlib
+
+    pipeline = importlib.import_module(f"{sign_mapper.__name__}.signmapper_core.pipeline")
+    real, failing = pipeline.detect_pair, open_drive(small_drive).pairs[4].pose
+
+    def detect_pair(left, depth, right, camera, pose, *args, **kwargs):
+        if (pose.easting, pose.northing) == (failing.easting, failing.northing):  # the plugin's Pose is another class
+            raise ZeroDivisionError("bad pixels")
+        return real(left, depth, right, camera, pose, *args, **kwargs)
+
+    monkeypatch.setattr(pipeline, "detect_pair", detect_pair)
+    errors, warnings = [], []
+
+    class Recorder(QgsProcessingFeedback):
+        def reportError(self, error, fatalError=False):  # noqa: N802, N803
+            errors.append(error)
+
+        def pushWarning(self, warning):  # noqa: N802
+            warnings.append(warning)
+
+    out = tmp_path / "failing.gpkg"
+    run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out)}, feedback=Recorder())
+    assert read_detections(out).featureCount() > 0
+    (error,) = errors
+    assert error.startswith("Skipped pair 000004: detection failed: ZeroDivisionError: bad pixels\nTraceback")
+    assert 'raise ZeroDivisionError("bad pixels")' in error
+    n = len(open_drive(small_drive).pairs)
+    assert any(w.startswith(f"1 of {n} pairs skipped: 1 detection error") for w in warnings), warnings
+
+
 def test_cancel_writes_nothing(run, small_drive, tmp_path):
     out = tmp_path / "cancelled.gpkg"
     feedback = QgsProcessingFeedback()

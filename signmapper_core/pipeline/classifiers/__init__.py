@@ -67,5 +67,12 @@ def min_score(classifier, config) -> float:
     return classifier.min_score if config.min_classification_score is None else config.min_classification_score
 
 
+def marginal_min_score(classifier, config) -> float:
+    """The indicator a loosely fitting or oblique outline needs to be reported at all."""
+    if config.marginal_shape_min_score is not None:
+        return config.marginal_shape_min_score
+    return classifier.marginal_min_score
+
+
 __all__ = ["CLASSIFIERS", "ClassifierError", "LearnedClassifier", "NccClassifier", "accept_threshold",
-           "classifier_for", "load_model_card", "make_classifier", "min_score", "model_card_path"]
+           "classifier_for", "load_model_card", "make_classifier", "marginal_min_score", "min_score", "model_card_path"]

@@ -106,6 +106,7 @@ class LearnedClassifier:
         self.card = card
         self.accept_threshold = card.accept_threshold
         self.min_score = card.min_score
+        self.marginal_min_score = card.accept_threshold  # a loose or oblique outline must be read with confidence
         self._index = {c: i for i, c in enumerate(card.classes)}
         try:
             self._net = cv2.dnn.readNetFromONNX(str(card.onnx))

@@ -15,6 +15,7 @@ class NccClassifier:
     name = "ncc"
     accept_threshold = 0.6  # NCC score needed for "accepted" (the first version's default)
     min_score = 0.35  # below this no template resembles the segment: not reported
+    marginal_min_score = 0.5  # a loose or oblique outline must resemble its template clearly
 
     def __init__(self, catalogue, scales=(0.92, 1.0, 1.08), shift_fraction: float = 0.08, max_template_px: int = 96):
         self.catalogue = catalogue

@@ -1,0 +1,116 @@
+"""Colour classes that follow the scene's illumination: white balance and thresholds from the image itself.
+
+The fixed HSV thresholds of the colour step hold for signs in good light. On real
+photographs a faded ring, a dull overcast scene or a camera's colour cast put the
+ring's saturation below them. Two measures follow the scene:
+
+- a white balance from the image's own near-neutral pixels (road, sky, walls):
+  a cast shifts hues and lends every pixel a false saturation, so it is removed
+  before the colour classes are read;
+- a weak saturation (and brightness) floor per scene, from the saturation and
+  brightness the scene's pixels typically have: a dull scene lowers it, a vivid
+  one raises it (where more of the background is coloured).
+
+The colour classes stay HSV hue bands (red / blue / yellow) as in Cavegn (2011);
+only their saturation and brightness floors adapt.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Dict, Tuple
+
+import cv2
+import numpy as np
+
+from .config import HsvRange, PipelineConfig
+
+_SAMPLE_STEP = 4  # statistics on every 4th pixel of every 4th row: 1/16 of the cost, same percentiles
+
+
+@dataclass(frozen=True)
+class SceneColour:
+    """What the colour step learns about one image before segmenting it."""
+
+    gains: Tuple[float, float, float]  # B, G, R factors that make the neutral pixels grey
+    saturation: float  # median saturation (0-255) of the balanced image
+    brightness: float  # median value (0-255) of the balanced image
+    weak_ranges: Dict[str, Tuple[HsvRange, ...]]  # per colour: lowered saturation/value floors
+
+
+def white_balance_gains(bgr: np.ndarray, max_saturation: int, max_gain: float) -> Tuple[float, float, float]:
+    """Per-channel gains that bring the mean of the near-neutral pixels to grey (B = G = R).
+
+    Near-neutral: saturation below ``max_saturation`` and neither dark nor clipped.
+    Gains are limited to ``1/max_gain .. max_gain``: a scene dominated by one colour
+    (a green hedge) must not be turned magenta. Without enough neutral pixels: no change.
+    """
+    sample = np.ascontiguousarray(bgr[::_SAMPLE_STEP, ::_SAMPLE_STEP])
+    if sample.size == 0:
+        return (1.0, 1.0, 1.0)
+    hsv = cv2.cvtColor(sample, cv2.COLOR_BGR2HSV)
+    neutral = cv2.inRange(hsv, (0, 0, 41), (180, max_saturation - 1, 239))
+    if cv2.countNonZero(neutral) < 0.02 * neutral.size:
+        return (1.0, 1.0, 1.0)
+    means = np.array(cv2.mean(sample, mask=neutral)[:3])
+    gains = np.clip(means.mean() / np.maximum(means, 1.0), 1.0 / max_gain, max_gain)
+    return tuple(float(g) for g in gains)
+
+
+def apply_gains(bgr: np.ndarray, gains: Tuple[float, float, float]) -> np.ndarray:
+    """The image with each channel scaled by its gain (saturating at 255); unchanged (the same array) when
+    every gain is within 3 % of 1: so slight a cast moves no hue across a class border, and skipping it
+    saves two full-frame passes."""
+    if all(abs(g - 1.0) < 0.03 for g in gains):
+        return bgr
+    levels = np.arange(256, dtype=np.float32)[:, None] * np.asarray(gains, np.float32)[None, :]
+    lut = np.clip(np.round(levels), 0, 255).astype(np.uint8).reshape(256, 1, 3)
+    return cv2.LUT(bgr, lut)  # a table per channel: a fraction of the cost of a matrix transform
+
+
+def weak_ranges(config: PipelineConfig, saturation: float, brightness: float) -> Dict[str, Tuple[HsvRange, ...]]:
+    """Per colour, the weak pass's HSV ranges: ``config.weak_hues`` with this scene's floors.
+
+    Saturation floor = ``weak_sat_factor`` x the scene's median saturation + ``weak_sat_offset``,
+    clipped to ``weak_sat_min`` .. the colour's strong floor (never above it); the value floor
+    likewise from the scene's median brightness.
+    """
+    sat_floor = config.weak_sat_factor * saturation + config.weak_sat_offset
+    val_floor = config.weak_val_factor * brightness
+    out = {}
+    for colour, strong in config.hsv_ranges.items():
+        s_strong, v_strong = min(r[2] for r in strong), min(r[4] for r in strong)
+        s = int(np.clip(sat_floor, config.weak_sat_min, s_strong))
+        v = int(np.clip(val_floor, config.weak_val_min, v_strong))
+        hues = config.weak_hues.get(colour) or tuple((r[0], r[1]) for r in strong)
+        out[colour] = tuple((h0, h1, s, 255, v, 255) for h0, h1 in hues)
+    return out
+
+
+def chroma_at_least(hsv: np.ndarray, min_chroma: int) -> np.ndarray:
+    """Bool mask of pixels whose max - min of B, G, R (= S x V / 255) is at least ``min_chroma``.
+
+    Unlike saturation, chroma is not inflated in dark pixels, where the hue is mostly noise.
+    """
+    s, v = cv2.extractChannel(hsv, 1), cv2.extractChannel(hsv, 2)
+    return cv2.multiply(s, v, scale=1.0 / 255.0) >= min_chroma
+
+
+def _median_u8(values: np.ndarray) -> float:
+    """Median of uint8 values from their histogram: a tenth of the cost of sorting a frame's worth."""
+    counts = np.bincount(values.ravel(), minlength=256).cumsum()
+    if counts[-1] == 0:
+        return 0.0
+    lo = int(np.searchsorted(counts, (counts[-1] - 1) // 2 + 1))
+    hi = int(np.searchsorted(counts, counts[-1] // 2 + 1))
+    return (lo + hi) / 2.0
+
+
+def scene_colour(bgr: np.ndarray, config: PipelineConfig) -> SceneColour:
+    """White balance and weak colour ranges of one image (or image window)."""
+    gains = white_balance_gains(bgr, config.neutral_max_saturation, config.max_white_balance_gain) \
+        if config.white_balance else (1.0, 1.0, 1.0)
+    sample = apply_gains(np.ascontiguousarray(bgr[::_SAMPLE_STEP, ::_SAMPLE_STEP]), gains)
+    hsv = cv2.cvtColor(sample, cv2.COLOR_BGR2HSV) if sample.size else np.zeros((1, 1, 3), np.uint8)
+    saturation, brightness = _median_u8(hsv[..., 1]), _median_u8(hsv[..., 2])
+    return SceneColour(gains, saturation, brightness, weak_ranges(config, saturation, brightness))

@@ -1,0 +1,215 @@
+"""The colour step under real-photograph conditions, on small constructed images.
+
+Faded and dim rings, colour casts, thin rings of small signs, faces split by a
+bar, discs seen at an angle, rings touching a neighbour, rims too pale for any
+colour threshold: each is drawn here with a known answer.
+"""
+
+import cv2
+import numpy as np
+import pytest
+from pipeline_scenes import CAMERA, POSE, RED, WHITE, constant_depth, noisy_background, paste, pixels_for
+
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.pipeline import PipelineConfig, detect_pair
+from signmapper_core.pipeline.candidates import face_candidates
+from signmapper_core.pipeline.colour import find_colour_segments, ring_open_px, split_face_merges
+from signmapper_core.pipeline.scene_colour import apply_gains, scene_colour, white_balance_gains
+
+
+@pytest.fixture(scope="module")
+def catalogue():
+    return load_catalogue()
+
+
+def _iou(a, b):
+    ax, ay, aw, ah = a
+    bx, by, bw, bh = b
+    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
+    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
+    return iw * ih / float(aw * ah + bw * bh - iw * ih)
+
+
+def _desaturate(bgr, factor):
+    hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV).astype(np.float32)
+    hsv[..., 1] *= factor
+    return cv2.cvtColor(hsv.astype(np.uint8), cv2.COLOR_HSV2BGR)
+
+
+def _ring_image(diameter, ring_px, colour=RED, centre=(200, 150), **background):
+    image = noisy_background(**background)
+    cv2.circle(image, centre, diameter // 2, colour, -1)
+    cv2.circle(image, centre, diameter // 2 - ring_px, WHITE, -1)
+    return image
+
+
+def _red_boxes(segments):
+    return [s.bbox for s in segments if s.colour == "red"]
+
+
+def test_faded_ring_below_the_strong_saturation_floor_is_found_by_the_scene_pass():
+    image = _ring_image(60, 6)
+    image[120:181, 170:231] = _desaturate(image[120:181, 170:231], 0.3)  # ring saturation ~60 < 90
+    hsv = cv2.cvtColor(image, cv2.COLOR_BGR2HSV)
+    assert hsv[150, 172, 1] < 90
+    strong_only = find_colour_segments(image, None, PipelineConfig(weak_colour=False), 60)
+    assert _red_boxes(strong_only) == []
+    (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(), 60))
+    assert _iou(box, (170, 120, 61, 61)) > 0.9
+
+
+def test_faded_sign_is_detected_and_accepted_by_colour(catalogue):
+    z = 7.0
+    n = pixels_for(0.6, z)
+    bgr, alpha = catalogue.render("2.30-50", n)
+    image = noisy_background()
+    paste(image, _desaturate(bgr, 0.3), alpha, 300, 150)
+    config = PipelineConfig(hough_enabled=False)
+    assert detect_pair(image, constant_depth(z), None, CAMERA, POSE, catalogue,
+                       PipelineConfig(hough_enabled=False, weak_colour=False)) == []
+    (det,) = detect_pair(image, constant_depth(z), None, CAMERA, POSE, catalogue, config)
+    assert det.template_id == "2.30-50" and det.source == "colour" and det.format == "normal"
+
+
+def test_dim_magenta_tinted_ring_of_a_dull_scene_is_red():
+    # GTSDB's dimly lit red rings drift to hue ~155 with saturation ~40 in scenes of median saturation ~10
+    image = noisy_background(level=90, sigma=6)
+    ring = cv2.cvtColor(np.uint8([[[155, 70, 95]]]), cv2.COLOR_HSV2BGR)[0, 0].tolist()
+    cv2.circle(image, (200, 150), 25, ring, -1)
+    cv2.circle(image, (200, 150), 20, (150, 150, 150), -1)
+    assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False), 50)) == []
+    (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(), 50))
+    assert _iou(box, (175, 125, 51, 51)) > 0.85
+
+
+def test_scene_floors_follow_the_scene_saturation():
+    config = PipelineConfig()
+    dull = scene_colour(noisy_background(sigma=6), config)
+    vivid_image = noisy_background()
+    vivid_image[:, :320] = (40, 160, 60)  # half the scene saturated green
+    vivid = scene_colour(vivid_image, config)
+    assert dull.saturation < 20 and dull.weak_ranges["red"][0][2] == int(dull.saturation + config.weak_sat_offset)
+    assert vivid.saturation > dull.saturation + 50
+    assert vivid.weak_ranges["red"][0][2] > dull.weak_ranges["red"][0][2] + 20
+    assert all(r[2] <= 90 for r in vivid.weak_ranges["red"])  # never above the strong floor
+
+
+def test_white_balance_removes_a_colour_cast_and_keeps_a_neutral_scene():
+    grey = noisy_background(sigma=6)
+    assert all(abs(g - 1.0) < 0.02 for g in white_balance_gains(grey, 40, 1.2))
+    cast = np.clip(grey.astype(np.float32) * (1.0, 0.97, 1.1), 0, 255).astype(np.uint8)  # warm light
+    gains = white_balance_gains(cast, 40, 1.2)
+    balanced = apply_gains(cast, gains).reshape(-1, 3).mean(axis=0)
+    assert np.ptp(cast.reshape(-1, 3).mean(axis=0)) > 10 > 4 * np.ptp(balanced)
+
+
+def test_two_pixel_ring_of_a_small_sign_survives_the_ring_scaled_opening():
+    image = _ring_image(24, 2)
+    assert ring_open_px(24, PipelineConfig()) == 1 and ring_open_px(60, PipelineConfig()) == 3
+    # with a search space whose smallest face is 60 px the usual 3 px opening erases the ring
+    assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False), 60)) == []
+    (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False), None))
+    assert _iou(box, (188, 138, 25, 25)) > 0.85
+
+
+def _no_entry_split_by_its_bar(catalogue, n):
+    bgr, alpha = catalogue.render("2.02", n)
+    bgr = bgr.copy()
+    rows = np.nonzero((bgr[:, n // 2] > 200).all(axis=1))[0]
+    bgr[rows.min() : rows.max() + 1, :] = WHITE  # faded links at the bar's ends: two red halves
+    image = noisy_background()
+    paste(image, bgr, alpha, 300, 150)
+    return image
+
+
+def test_no_entry_split_by_its_bar_is_one_face_before_its_halves_are_judged(catalogue):
+    n = 60  # its bar is 8 px high: wider than the closing bridges
+    image = _no_entry_split_by_its_bar(catalogue, n)
+    segments = find_colour_segments(image, None, PipelineConfig(), None)
+    halves = [s for s in segments if s.colour == "red" and s.source == "colour"]
+    assert len(halves) == 2 and all(s.bbox[3] < 0.6 * n for s in halves)
+    ((merged, i, j),) = split_face_merges(segments, PipelineConfig().min_shape_fit)
+    assert _iou(merged.bbox, (300, 150, n, n)) > 0.9
+    candidates = face_candidates(image, catalogue, hough=False)
+    on_face = [c for c in candidates if _iou(c.segment.bbox, (300, 150, n, n)) > 0.3 or
+               (300 <= c.segment.bbox[0] < 300 + n and 150 <= c.segment.bbox[1] < 150 + n)]
+    assert len(on_face) == 1  # the halves are no candidates of their own
+    assert on_face[0].shape == "circle" and "2.02" in on_face[0].template_ids
+    (det,) = detect_pair(image, constant_depth(0.6 * CAMERA.fx / n), None, CAMERA, POSE, catalogue,
+                         PipelineConfig())
+    assert det.template_id == "2.02" and det.format == "normal" and _iou(det.bbox, (300, 150, n, n)) > 0.9
+
+
+@pytest.mark.parametrize("ratio", [0.85, 0.7, 0.6])
+def test_disc_seen_at_an_angle_is_sized_by_its_larger_axis(catalogue, ratio):
+    z = 8.0
+    n = pixels_for(0.6, z)
+    bgr, alpha = catalogue.render("2.30-50", (int(round(n * ratio)), n))  # turned about its vertical axis
+    image = noisy_background()
+    paste(image, bgr, alpha, 300, 150)
+    (det,) = detect_pair(image, constant_depth(z), None, CAMERA, POSE, catalogue, PipelineConfig())
+    assert det.template_id == "2.30-50" and det.format == "normal"
+    assert det.width_m == pytest.approx(0.6) and det.height_m == pytest.approx(0.6)
+
+
+def test_ring_touching_a_red_neighbour_is_found_by_its_field(catalogue):
+    n = 50
+    bgr, alpha = catalogue.render("2.30-50", n)
+    image = noisy_background()
+    paste(image, bgr, alpha, 300, 150)
+    cv2.rectangle(image, (300 + n - 3, 120), (300 + n + 60, 230), RED, -1)  # a red panel touching the ring
+    segments = find_colour_segments(image, None, PipelineConfig(), None)
+    (outer,) = [s for s in segments if s.source == "colour" and s.colour == "red"]
+    assert outer.bbox[2] > 1.5 * n  # the ring's outline swallowed the panel
+    (field,) = [s for s in segments if s.source == "hole"]
+    candidates = face_candidates(image, catalogue, hough=False)
+    readings = [r for c in candidates if c.segment.source == "hole" for r in c.readings]
+    assert any(_iou(r.bbox, (300, 150, n, n)) > 0.8 and "2.30-50" in r.template_ids for r in readings)
+    (det,) = detect_pair(image, constant_depth(0.6 * CAMERA.fx / n), None, CAMERA, POSE, catalogue,
+                         PipelineConfig(hough_enabled=False))
+    assert det.template_id == "2.30-50" and _iou(det.bbox, (300, 150, n, n)) > 0.8
+
+
+def test_rim_too_pale_for_any_colour_pass_is_found_by_hough_and_named_red(catalogue):
+    n = 60
+    bgr, alpha = catalogue.render("2.30-50", n)
+    image = noisy_background(level=150, sigma=6)
+    paste(image, _desaturate(bgr, 0.12), alpha, 300, 150)  # ring saturation ~25
+    assert [c for c in face_candidates(image, catalogue, hough=False) if c.segment.colour == "red"] == []
+    hough = [c for c in face_candidates(image, catalogue) if c.segment.source == "hough"]
+    (circle,) = [c for c in hough if _iou(c.segment.bbox, (300, 150, n, n)) > 0.7]
+    assert circle.segment.colour == "red" and "2.30-50" in circle.template_ids
+
+
+def test_wide_white_rim_of_a_priority_sign_is_measured_in_the_image(catalogue):
+    # Germany's priority road carries its yellow on half the face, the Swiss template on 78 %:
+    # the face box from the template's extent would be far too small
+    image = noisy_background(level=90, sigma=8)
+    n, inset = 80, 20
+    outer = np.array([[40 + n // 2, 40], [40 + n, 40 + n // 2], [40 + n // 2, 40 + n], [40, 40 + n // 2]])
+    cv2.fillPoly(image, [outer], (30, 30, 30))  # thin dark edge
+    cv2.fillPoly(image, [outer + np.array([[0, 2], [-2, 0], [0, -2], [2, 0]])], WHITE)
+    inner = np.array([[40 + n // 2, 40 + inset], [40 + n - inset, 40 + n // 2], [40 + n // 2, 40 + n - inset],
+                      [40 + inset, 40 + n // 2]])
+    cv2.fillPoly(image, [inner], (0, 200, 240))  # yellow
+    (cand,) = [c for c in face_candidates(image, catalogue, hough=False) if c.segment.colour == "yellow"]
+    assert cand.shape == "diamond" and _iou(cand.segment.bbox, (60, 60, 41, 41)) > 0.8
+    template_face, *measured = [r for r in cand.readings if "3.03" in r.template_ids]
+    assert _iou(template_face.bbox, (40, 40, n + 1, n + 1)) < 0.7
+    assert len(measured) == 1 and _iou(measured[0].bbox, (40, 40, n + 1, n + 1)) > 0.85
+
+
+def test_scene_pass_reads_the_white_balanced_image_when_asked():
+    from signmapper_core.pipeline.colour import ColourFrame
+
+    image = _ring_image(60, 6)
+    image[120:181, 170:231] = _desaturate(image[120:181, 170:231], 0.3)
+    cast = np.clip(image.astype(np.float32) * (1.12, 1.0, 0.9), 0, 255).astype(np.uint8)  # cold light
+    balanced = ColourFrame.of(cast, PipelineConfig(white_balance=True))
+    assert not np.array_equal(balanced.hsv_weak, balanced.hsv)
+    plain = ColourFrame.of(cast, PipelineConfig())
+    assert plain.hsv_weak is plain.hsv  # off by default: no second conversion
+    grey = balanced.hsv_weak[20:100, 20:100, 1].astype(float).mean()
+    assert grey < plain.hsv[20:100, 20:100, 1].astype(float).mean() - 5  # the cast's false saturation is gone
+    (box,) = _red_boxes(find_colour_segments(cast, None, PipelineConfig(white_balance=True), 60))
+    assert _iou(box, (170, 120, 61, 61)) > 0.9
