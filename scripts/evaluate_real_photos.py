@@ -109,7 +109,7 @@ def breakdowns(records: list, columns: Callable[[list], List[str]], header: Sequ
 
 
 def run_classify(args, catalogue, config: PipelineConfig) -> int:
-    signs = select(load_manifest(args.data / "crops.csv", known_ids={e.id for e in catalogue}),
+    signs = select(load_manifest(args.data / args.manifest, known_ids={e.id for e in catalogue}),
                    args.split, args.limit, args.seed)
     clf = make_classifier(args.classifier, catalogue, args.model)
     threshold = config.classification_threshold if config.classification_threshold is not None \
@@ -124,7 +124,7 @@ def run_classify(args, catalogue, config: PipelineConfig) -> int:
         records.append({"sign": sign, "id": predicted, "score": score, "n_cand": len(candidates)})
     seconds = time.perf_counter() - start
     which = f"{clf.name} {args.model}" if args.model else clf.name
-    print(f"classify ({which}) on {args.data / 'crops.csv'}: split={args.split}, {len(records)} signs, "
+    print(f"classify ({which}) on {args.data / args.manifest}: split={args.split}, {len(records)} signs, "
           f"{seconds:.0f} s ({1000 * seconds / max(1, len(records)):.0f} ms/sign); perfect box, candidates = "
           f"catalogue entries of the true colour and shape; accepted = score >= {threshold}")
 
@@ -248,6 +248,9 @@ def main(argv=None) -> int:
     parser.add_argument("--limit", type=int, default=0, help="a seeded random sample of this many signs/images")
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--classifier", default="auto", help="auto, cnn or ncc (the pipeline's classifiers)")
+    parser.add_argument("--manifest", default="crops.csv",
+                        help="classify: the signs to classify (crops.csv: GTSRB crops; scenes.csv: the signs of the "
+                             "GTSDB photographs, split by photograph)")
     parser.add_argument("--model", type=Path, default=None, help="evaluate the network in this model folder instead")
     args = parser.parse_args(argv)
     args.data = (args.data or default_data()).resolve()

@@ -1,0 +1,120 @@
+"""Calibrate the learned classifier's indicator on the tune half of the real photographs.
+
+    python scripts/calibrate_classifier.py --data /work/data/real [--split tune] [--max-wrong 0.015]
+
+The network is trained on synthetic faces only; on real photographs it is more
+sure of itself than it should be. This fits two numbers on real photographs
+(never the network): the softmax temperature that makes the indicator a
+probability, and the acceptance threshold above which at most ``--max-wrong`` of
+the accepted signs carry a wrong id. Both are written into the model card with
+what they were fitted on. Report figures on the other half (``--split report``
+of evaluate_real_photos.py), never on this one.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+
+from signmapper_core.catalogue import load_catalogue  # noqa: E402
+from signmapper_core.pipeline.classifiers import LearnedClassifier, load_model_card, model_card_path  # noqa: E402
+from signmapper_core.validation import load_manifest  # noqa: E402
+
+
+def candidate_logits(classifier: LearnedClassifier, catalogue, signs):
+    """Per sign: the network's logits restricted to its candidates (true colour and shape) + background, and
+    the index of the true id among them."""
+    rows = []
+    for sign in signs:
+        entry = catalogue[sign.ssv_id]
+        ids = [e.id for e in catalogue.filter(colours=[entry.colour], shapes=[entry.shape])]
+        z = classifier.logits(sign.load_image(), [sign.bbox])[0]
+        picked = [classifier.card.index(t) for t in ids] + [classifier.card.index("__background__")]
+        rows.append((z[picked], ids.index(sign.ssv_id)))
+    return rows
+
+
+def probabilities(rows, temperature: float):
+    """(probability of the best candidate, whether it is the true one) per sign."""
+    best, right = [], []
+    for z, truth in rows:
+        zz = z / temperature
+        p = np.exp(zz - zz.max())
+        p /= p.sum()
+        k = int(np.argmax(p[:-1]))
+        best.append(p[k])
+        right.append(k == truth)
+    return np.array(best), np.array(right)
+
+
+def fit_temperature(rows) -> float:
+    """The temperature with the least negative log-likelihood of the true ids."""
+    def nll(t):
+        total = 0.0
+        for z, truth in rows:
+            zz = z / t
+            total -= zz[truth] - (zz.max() + np.log(np.exp(zz - zz.max()).sum()))
+        return total
+
+    grid = np.exp(np.linspace(np.log(0.3), np.log(10.0), 80))
+    return float(min(grid, key=nll))
+
+
+def threshold_for(best: np.ndarray, right: np.ndarray, max_wrong: float) -> float:
+    """Lowest threshold with at most ``max_wrong`` wrong among the signs at or above it."""
+    order = np.argsort(-best)
+    wrong = np.cumsum(~right[order]) / np.arange(1, len(order) + 1)
+    ok = np.nonzero(wrong <= max_wrong)[0]
+    if ok.size == 0:
+        return 0.99
+    return float(np.clip(best[order][ok[-1]], 0.5, 0.99))
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--data", type=Path, required=True, help="folder with crops.csv (scripts/realset)")
+    parser.add_argument("--split", default="tune", choices=("tune",), help="only the tune half may be fitted on")
+    parser.add_argument("--model", type=Path, default=None, help="model folder (default: the catalogue's)")
+    parser.add_argument("--max-wrong", type=float, default=0.015, help="wrong share allowed among accepted signs")
+    parser.add_argument("--dry-run", action="store_true", help="print, do not write the model card")
+    args = parser.parse_args(argv)
+    catalogue = load_catalogue()
+    card_path = (args.model / "model.json") if args.model else model_card_path(catalogue.folder)
+    classifier = LearnedClassifier(load_model_card(card_path))
+    signs = [s for s in load_manifest(args.data / "crops.csv", known_ids=set(classifier.card.classes))
+             if s.split == args.split and s.ssv_id in catalogue]
+    rows = candidate_logits(classifier, catalogue, signs)
+    before = classifier.card.temperature
+    temperature = fit_temperature(rows)
+    best, right = probabilities(rows, temperature)
+    threshold = threshold_for(best, right, args.max_wrong)
+    accepted = best >= threshold
+    print(f"{len(rows)} real signs ({args.data / 'crops.csv'}, split {args.split}): correct {right.mean():.3f}; "
+          f"temperature {before:.3f} -> {temperature:.3f}; threshold {threshold:.3f} accepts {accepted.mean():.3f} "
+          f"with {(~right[accepted]).mean() if accepted.any() else 0:.4f} wrong")
+    if args.dry_run:
+        return 0
+    card = json.loads(card_path.read_text(encoding="utf-8"))
+    card["temperature"] = round(temperature, 4)
+    card["accept_threshold"] = round(threshold, 4)
+    card["calibration"] = {
+        "data": "real photographs (GTSRB test crops), tune half of scripts/realset manifests; never trained on",
+        "signs": len(rows), "max_wrong": args.max_wrong,
+        "accepted_share": round(float(accepted.mean()), 4),
+        "wrong_among_accepted": round(float((~right[accepted]).mean()) if accepted.any() else 0.0, 4),
+        "synthetic_temperature": before if "calibration" not in card else card["calibration"]["synthetic_temperature"],
+    }
+    card_path.write_text(json.dumps(card, indent=1) + "\n", encoding="utf-8")
+    print(f"wrote {card_path}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
