@@ -54,6 +54,13 @@ def azimuth_errors(signs, reference, report) -> list:
     return errors
 
 
+def accepted_but_wrong(signs, reference, report) -> tuple:
+    """(accepted fused signs, of them matched to a reference sign of another id, of them matching none)."""
+    accepted = [(sign, ref) for sign, ref in zip(signs, report.match) if sign.status == "accepted"]
+    wrong = sum(1 for sign, ref in accepted if ref >= 0 and sign.template_id != reference[ref].template_id)
+    return len(accepted), wrong, sum(1 for _, ref in accepted if ref < 0)
+
+
 def positions_ids(items):
     return np.array([o.position for o in items]).reshape(-1, 3), [o.template_id for o in items]
 
@@ -70,6 +77,7 @@ def main(argv=None) -> int:
     parser.add_argument("--near", type=float, default=4.0)
     parser.add_argument("--far", type=float, default=14.0)
     parser.add_argument("--catalogue", type=Path, default=None)
+    parser.add_argument("--classifier", default="auto", help="auto, cnn or ncc")
     args = parser.parse_args(argv)
 
     folders = list(args.drives) + [generated_drive(s, args.pairs, args.depth, args.legacy_faces)
@@ -77,9 +85,10 @@ def main(argv=None) -> int:
     if not folders:
         parser.error("give drive folders or --generate SEEDS")
     catalogue = load_catalogue(args.catalogue)
-    config = PipelineConfig(near_m=args.near, far_m=args.far)
+    config = PipelineConfig(near_m=args.near, far_m=args.far, classifier=args.classifier)
     reports = {"detections": [], "signs": []}
     all_azimuth_errors = []
+    accepted_total, accepted_wrong, accepted_unmatched = 0, 0, 0
     total_pairs, total_seconds = 0, 0.0
     for folder in folders:
         drive = open_drive(folder)
@@ -95,10 +104,16 @@ def main(argv=None) -> int:
             reports[kind].append(report)
             if kind == "signs":
                 all_azimuth_errors += azimuth_errors(signs, reference, report)
+                n, wrong, unmatched = accepted_but_wrong(signs, reference, report)
+                accepted_total, accepted_wrong, accepted_unmatched = (accepted_total + n, accepted_wrong + wrong,
+                                                                      accepted_unmatched + unmatched)
             print(format_report(report, f"{head}: {'per-pair detections' if kind == 'detections' else 'fused signs'}"))
             print()
         total_pairs += len(drive.pairs)
         total_seconds += seconds
+    print(f"Fused signs with status accepted ({result.classifier_name}, threshold "
+          f"{result.classification_threshold:.3f}): {accepted_total}; with a wrong id {accepted_wrong} "
+          f"({100 * accepted_wrong / max(accepted_total, 1):.1f} %), matching no reference sign {accepted_unmatched}")
     if all_azimuth_errors:
         err = np.abs(all_azimuth_errors)
         print(f"Face azimuth of fused signs vs truth facing: n={len(err)}, median |d| {np.median(err):.1f} deg, "
