@@ -23,7 +23,7 @@ from signmapper_core.catalogue.official import (
     relettered_svg,
     render_artwork,
 )
-from signmapper_core.catalogue.official_ch import ARTWORK, ARTWORK_SOURCE, OWN_DRAWING
+from signmapper_core.catalogue.official_ch import ARTWORK, ARTWORK_SOURCE, FRAMED, OWN_DRAWING
 from signmapper_core.catalogue.signs_ch import SIGNS
 from signmapper_core.catalogue.svg_compose import SvgDocument
 
@@ -74,7 +74,8 @@ def test_artwork_of_every_entry_is_recorded_and_matches_the_mapping(committed):
     own = {tid for tid, e in entries.items() if e["artwork"] == catalogue_build.OWN}
     assert own == set(OWN_DRAWING) == set(SIGNS) - set(ARTWORK)
     for tid, spec in ARTWORK.items():
-        assert entries[tid]["artwork"] == f"ASTRA {spec.describe()}", tid
+        framed = f", its field in the frame of {FRAMED[tid]}" if tid in FRAMED else ""
+        assert entries[tid]["artwork"] == f"ASTRA {spec.describe()}{framed}", tid
     assert len(ARTWORK) == 101 and len(own) == 7
     assert committed["artwork_source"] == ARTWORK_SOURCE
     assert re.fullmatch(r"[0-9a-f]{40}", ARTWORK_SOURCE["commit"])
@@ -88,10 +89,24 @@ def test_readme_lists_exactly_the_entries_with_the_own_drawing():
 
 
 def test_own_drawing_masters_are_the_procedural_drawing(committed):
-    own = [e["id"] for e in committed["entries"] if e["artwork"] == catalogue_build.OWN]
+    own = [e["id"] for e in committed["entries"] if e["artwork"] == catalogue_build.OWN and e["id"] not in FRAMED]
+    assert own == ["2.53-50"]
     for tid in own:
         on_disk = cv2.imread(str(DEFAULT_CATALOGUE_DIR / "png" / f"{tid}.png"), cv2.IMREAD_UNCHANGED)
         assert int(np.abs(on_disk.astype(int) - catalogue_build.master_rgba(tid).astype(int)).max()) <= 1, tid
+
+
+@pytest.mark.parametrize("tid", sorted(FRAMED))
+def test_framed_masters_have_the_official_rim_and_their_own_field(tid):
+    """The rim of every framed entry is the official 2.01's; its field differs from the empty one (the value)."""
+    read = lambda t: cv2.imread(str(DEFAULT_CATALOGUE_DIR / "png" / f"{t}.png"), cv2.IMREAD_UNCHANGED)  # noqa: E731
+    framed, frame = read(tid).astype(int), read("2.01").astype(int)
+    yy, xx = np.mgrid[0:512, 0:512]
+    r = np.hypot(xx - 255.5, yy - 255.5) / 256
+    rim = (r > 0.75) & (r < 0.95)
+    field = r < 0.55
+    assert np.abs(framed[rim] - frame[rim]).max() <= 2
+    assert np.abs(framed[field][:, :3] - frame[field][:, :3]).mean() > 10
 
 
 def test_official_templates_are_not_the_generators_procedural_faces(cat):
@@ -130,7 +145,7 @@ def test_build_from_a_tiny_svg_folder_falls_back_and_lists_the_rest(tmp_path):
     assert set(report.official) == {"2.01", "1.01", "4.08"}
     assert set(report.own) == set(SIGNS) - {"2.01", "1.01", "4.08"}
     assert "301.svg: official drawing not found" in report.own["3.01"]
-    assert report.own["2.30-70"] == OWN_DRAWING["2.30-70"]
+    assert report.own["2.30-70"] == OWN_DRAWING["2.30-70"] + "; own value in the official frame 201.svg"
     cat = load_catalogue(tmp_path / "out")
     assert len(cat) == len(SIGNS)
     data = json.loads((tmp_path / "out" / "catalogue.json").read_text(encoding="utf-8"))
