@@ -18,14 +18,16 @@ def layer_fields(layer: str) -> QgsFields:
     return fields
 
 
-def layer_feature(fields: QgsFields, layer: str, item) -> QgsFeature:
+def layer_feature(fields: QgsFields, layer: str, item, context=None) -> QgsFeature:
     """A PointZ feature of ``layer`` for a fused sign (signs) or an observation (detections).
+
+    ``context`` (``output_schema.OutputContext``): language, drive clock, crops.
 
     Attributes are set by name, so a layer with fewer or reordered fields (one a
     person copied or edited) gets what it has room for.
     """
     feature = QgsFeature(fields)
-    for name, value in schema.values(layer, item).items():
+    for name, value in schema.values(layer, item, context).items():
         index = fields.indexOf(name)
         if index >= 0:
             feature.setAttribute(index, NULL if value is None else value)

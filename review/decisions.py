@@ -58,7 +58,7 @@ class DecisionTaker:
             return
         current = feature_values(session.layer.getFeature(session.fid), session.kind)
         values = reclassify_values(session.kind, session.catalogue[template_id], current["format"],
-                                   current["status"] or "")
+                                   current["status"] or "", session.language)
         self.dock.show_picker(False)
         self._decide(values, "reclassify feature {fid} as " + template_id)
 
@@ -119,7 +119,7 @@ class DecisionTaker:
             item = manual_sign(observation, max([i for i in ids if i is not None], default=0) + 1)
         label = f"Sign Mapper: add {observation.template_id} in pair {observation.pair_id}"
         try:
-            decision = add_feature(layer, manual_feature(layer, kind, item), label)
+            decision = add_feature(layer, manual_feature(layer, kind, item, self.session.output_context()), label)
         except EditError as exc:
             self.dock.show_message(str(exc), error=True)
             return
