@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import time as _time
 import traceback as _traceback
+import uuid
 from dataclasses import dataclass, field, replace
 from typing import Iterator, Optional
 
@@ -60,6 +61,7 @@ class MappingResult:
     skipped: list[PairResult]  # pairs that could not be read or whose detection failed, with the reason
     seconds: float  # time spent on the pairs (loading and detecting)
     load_seconds: float = 0.0  # of which decoding the files
+    run_id: str = field(default_factory=lambda: str(uuid.uuid4()))  # recorded by exports to recognise the run
 
     def detections_of(self, sign: FusedSign) -> list[Observation]:
         return [o for o in self.detections if o.sign_id == sign.sign_id]

@@ -282,6 +282,8 @@ RUN_KEYS = (
     RunKey("detection_threshold", "Minimum detection indicator.", lambda r: r.config.detection_threshold),
     RunKey("classification_threshold", "Classification indicator for status accepted.",
            lambda r: r.config.classification_threshold),
+    RunKey("run_id", "Identifier of this run (a UUID): exports record it, so the same run is never written twice.",
+           lambda r: r.run_id, True),
 )
 # what the writer chose, not the mapping: read from the OutputContext
 OUTPUT_RUN_KEYS = (

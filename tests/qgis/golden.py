@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import math
 import sqlite3
+import uuid
 from pathlib import Path
 
 from osgeo import ogr
@@ -37,6 +38,14 @@ def _placeholders(text, drive_dir: Path):
     for path, name in ((drive_dir.resolve(), "<drive>"), (drive_dir, "<drive>"), (REPO_ROOT, "<plugin>")):
         text = text.replace(str(path), name)
     return text
+
+
+def _is_uuid(text) -> bool:
+    try:
+        uuid.UUID(str(text))
+    except ValueError:
+        return False
+    return True
 
 
 def _features(path: Path, table: str) -> list:
@@ -108,6 +117,8 @@ def dump_gpkg(path: Path, drive_dir: Path) -> dict:
             table["rows"] = {r["attributes"]["key"]: _placeholders(r["attributes"]["value"], drive_dir) for r in rows}
             software = table["rows"].get("software", "")
             table["rows"]["software"] = "Sign Mapper <version>" if software.startswith("Sign Mapper ") else software
+            if "run_id" in table["rows"]:  # a new UUID every run
+                table["rows"]["run_id"] = "<uuid>" if _is_uuid(table["rows"]["run_id"]) else table["rows"]["run_id"]
         else:
             table["features"] = rows
     abstracts = sorted(a[a.index("<abstract>"):a.index("</abstract>") + 11] for a in abstracts if "<abstract>" in a)
