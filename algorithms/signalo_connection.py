@@ -21,8 +21,9 @@ def conninfo(text: str) -> tuple[str, str]:
     if "=" in text or text.startswith(("postgresql://", "postgres://")):
         shown = " ".join(p for p in text.split() if not p.startswith("password="))
         return text, f"database '{shown}'"
-    raise QgsProcessingException(f"'{text}' is neither a QGIS PostgreSQL connection ({', '.join(connections) or 'none '
-                                 'saved'}) nor a service=NAME or libpq parameters.")
+    saved = ", ".join(connections) or "none saved"
+    raise QgsProcessingException(f"'{text}' is neither a QGIS PostgreSQL connection ({saved}) nor a service=NAME "
+                                 "or libpq parameters.")
 
 
 def open_signalo(text: str):
