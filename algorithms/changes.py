@@ -321,8 +321,8 @@ class ChangesAlgorithm(SignMapperAlgorithm):
                 else:
                     east, north, up = change.mapped.position
                 up = up if math.isfinite(up) else 0.0
-                writer.addFeature(_feature(fields, changes_schema.values(change), QgsGeometry(QgsPoint(east, north, up))),
-                                  QgsFeatureSink.FastInsert)
+                point = QgsGeometry(QgsPoint(east, north, up))
+                writer.addFeature(_feature(fields, changes_schema.values(change), point), QgsFeatureSink.FastInsert)
             del writer
             fields = schema_fields(changes_schema.LINE_FIELDS)
             writer = output.open_layer("displacements", fields, QgsWkbTypes.LineStringZ, crs,

@@ -75,7 +75,8 @@ def edited_inventory(drive, catalogue, config, seed: int) -> list[dict]:
         mappable = t.template_id in catalogue
         seen = mappable and in_view(drive, poses, config, t.position, t.facing, (t.width_m, t.height_m))
         rows.append({"truth": t.sign_id, "template_id": t.template_id, "easting": t.easting, "northing": t.northing,
-                     "height": t.height, "facing": t.facing, "edit": "", "expected": CONFIRMED if seen else NOT_COVERED})
+                     "height": t.height, "facing": t.facing, "edit": "",
+                     "expected": CONFIRMED if seen else NOT_COVERED})
         visible.append(seen)
     candidates = [i for i, seen in enumerate(visible) if seen]
     rng.shuffle(candidates)

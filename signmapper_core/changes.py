@@ -89,7 +89,7 @@ class ChangeConfig:
     max_face_angle_deg: float = 75.0  # a face turned farther away than this is not readable
     camera_height_m: Optional[float] = None  # above the road, for inventory heights given above the road
 
-    def validate(self) -> "ChangeConfig":
+    def validate(self) -> ChangeConfig:
         if not 0 < self.tolerance_m < self.move_radius_m:
             raise ValueError(f"tolerance {self.tolerance_m} m must be positive and below the move radius "
                              f"{self.move_radius_m} m")
@@ -224,7 +224,7 @@ def _assign(pairs, taken_inventory: set, taken_mapped: set):
 
 
 def compare(inventory: Sequence[InventorySign], mapped: Sequence[MappedSign], camera, records,
-            config: ChangeConfig = ChangeConfig(), mappable_types=None) -> ChangeReport:
+            config: Optional[ChangeConfig] = None, mappable_types=None) -> ChangeReport:
     """Verdicts on every inventory sign and the mapped signs no inventory sign accounts for.
 
     ``records``: the drive's pairs (PairRecord, with poses). ``mappable_types``:
@@ -234,7 +234,7 @@ def compare(inventory: Sequence[InventorySign], mapped: Sequence[MappedSign], ca
     (confirmed), another type at the same place (changed), the same type within
     the move radius (moved).
     """
-    config.validate()
+    config = (config or ChangeConfig()).validate()
     poses = pose_arrays(records)
     heights = [with_height(sign, poses[1], config) for sign in inventory]
     same_type, same_place, in_radius = [], [], []

@@ -31,7 +31,8 @@ def binary_dir() -> Path:
     for folder in sorted(glob.glob("/usr/lib/postgresql/*/bin"), key=lambda p: int(Path(p).parent.name),
                          reverse=True):
         version = Path(folder).parent.name
-        if (Path(folder) / "initdb").exists() and glob.glob(f"/usr/share/postgresql/{version}/extension/postgis.control"):
+        postgis = glob.glob(f"/usr/share/postgresql/{version}/extension/postgis.control")
+        if (Path(folder) / "initdb").exists() and postgis:
             return Path(folder)
     raise PostgresUnavailable("no PostgreSQL with PostGIS found under /usr/lib/postgresql: install the Debian "
                               "packages postgresql and postgresql-15-postgis-3 (make setup does)")
@@ -67,7 +68,7 @@ class PostgresServer:
             command = ["runuser", "-u", self.user, "--"] + command
         return subprocess.run(command, capture_output=True, text=True, timeout=120)
 
-    def start(self) -> "PostgresServer":
+    def start(self) -> PostgresServer:
         if self.user:
             try:
                 entry = pwd.getpwnam(self.user)

@@ -68,7 +68,8 @@ def read_inventory(connection, template_ids, where: str = "the database") -> tup
                 level += height
         for (key, official, inscription, d1, d2, hanging, x, y, azimut, _a, _free, _fr, _sr) in stack:
             width, height = _size(d1, d2)
-            facing = None if hanging == "recto-verso" else (float(azimut) + (180.0 if hanging == "verso" else 0.0)) % 360
+            turn = 180.0 if hanging == "verso" else 0.0
+            facing = None if hanging == "recto-verso" else (float(azimut) + turn) % 360
             ours = from_signalo(official, inscription, template_ids)
             label = official + (f" {inscription}" if inscription else "") if official else "(no official type)"
             signs.append(InventorySign(key, ours or (official or ""), np.array([x, y, np.nan]), facing, width, height,
