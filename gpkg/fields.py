@@ -36,11 +36,18 @@ def layer_feature(fields: QgsFields, layer: str, item, context=None) -> QgsFeatu
     return feature
 
 
+def declared_fields(layer: str) -> tuple:
+    """The declared fields of one of our layers: a mapping run's (``output_schema``) or ``changes``."""
+    from ..signmapper_core import changes_schema
+
+    return changes_schema.FIELDS if layer == changes_schema.CHANGES else schema.fields(layer)
+
+
 def feature_values(feature, layer: str) -> dict:
     """Field name -> plain Python value (None for NULL) of a feature of ``layer``; None for fields it lacks."""
     names = feature.fields()
     out = {}
-    for field in schema.fields(layer):
+    for field in declared_fields(layer):
         value = feature.attribute(field.name) if names.indexOf(field.name) >= 0 else None
         out[field.name] = None if value is None or value == NULL else field.typed(value, rounded=False)
     return out

@@ -10,7 +10,8 @@ from __future__ import annotations
 from qgis.PyQt.sip import isdeleted
 
 from ..gpkg.fields import feature_values
-from ..signmapper_core.output_schema import SIGNS
+from ..signmapper_core.changes_schema import CHANGES
+from ..signmapper_core.output_schema import MANUAL, SIGNS
 from .edits import DecisionLog, EditError, add_feature, change_attributes
 from .values import accept_values, manual_feature, reclassify_values, reject_values
 
@@ -55,6 +56,11 @@ class DecisionTaker:
             return
         if template_id not in session.catalogue:
             self.dock.show_message(f"Template {template_id} is not in the catalogue", error=True)
+            return
+        if session.kind == CHANGES:
+            self.dock.show_picker(False)
+            self.dock.show_message("A verdict has no type to change: reclassify the mapped sign in its 'signs' "
+                                   "layer and compare again", error=True)
             return
         current = feature_values(session.layer.getFeature(session.fid), session.kind)
         values = reclassify_values(session.kind, session.catalogue[template_id], current["format"],
@@ -113,6 +119,9 @@ class DecisionTaker:
         from ..signmapper_core.mapping import manual_sign
 
         layer, kind = self.session.layer, self.session.kind
+        if kind == CHANGES:
+            self._found_in_change(observation)
+            return
         item = observation
         if kind == SIGNS:
             ids = [feature_values(f, SIGNS)["sign_id"] for f in layer.getFeatures()]
@@ -127,3 +136,16 @@ class DecisionTaker:
         self.dock.show_message(f"Added {observation.template_id} {observation.name} at {observation.depth_m:.1f} m "
                                f"(pair {observation.pair_id})")
         self.navigator.select(decision.fid)
+
+    def _found_in_change(self, observation) -> None:
+        """A person found the sign of a change (e.g. a 'missing' one) in the image: the verdict becomes what the
+        found sign says against the inventory type."""
+        current = feature_values(self.session.layer.getFeature(self.session.fid), CHANGES)
+        verdict = "confirmed" if observation.template_id == current["inventory_type"] else "changed"
+        x, y, w, h = observation.bbox
+        values = {"verdict": verdict, "template_id": observation.template_id, "status": MANUAL, "reviewed": 1,
+                  "pair_id": observation.pair_id, "u": float(observation.u), "v": float(observation.v),
+                  "bbox_x": int(x), "bbox_y": int(y), "bbox_w": int(w), "bbox_h": int(h),
+                  "reason": f"found by a person in pair {observation.pair_id}: {observation.template_id}"}
+        self._decide(values, f"{verdict}: {observation.template_id} found in pair {observation.pair_id} "
+                             "for feature {fid}")

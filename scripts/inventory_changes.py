@@ -18,6 +18,7 @@ import os
 import sqlite3
 import subprocess
 import sys
+import sysconfig
 from pathlib import Path
 
 import numpy as np
@@ -39,7 +40,8 @@ from signmapper_core.changes import (  # noqa: E402
 )
 from signmapper_core.drive import open_drive  # noqa: E402
 
-EDITS = {"removed": 5, "moved": 6, "type": 5, "gone": 3, "outside": 3}  # 22 edits per drive
+EDITS = {"removed": 4, "moved": 5, "type": 4}  # of signs the drive sees; then signs added, at least 3 of each kind
+MIN_EDITS = 22
 
 
 def qgis_env(work: Path) -> dict:
@@ -48,8 +50,10 @@ def qgis_env(work: Path) -> dict:
     link = plugins / "sign_mapper"
     if not link.exists():
         link.symlink_to(REPO, target_is_directory=True)
+    site = sysconfig.get_paths()["purelib"]  # OpenCV of this venv for the system Python that QGIS runs
+    path = os.pathsep.join(p for p in (site, os.environ.get("PYTHONPATH", "")) if p)
     env = dict(os.environ, QGIS_PLUGINPATH=str(plugins), QGIS_CUSTOM_CONFIG_PATH=str(work / "profile"),
-               QT_QPA_PLATFORM="offscreen")
+               QT_QPA_PLATFORM="offscreen", PYTHONPATH=path)
     subprocess.run(["qgis_process.bin", "plugins", "enable", "sign_mapper"], env=env, capture_output=True)
     return env
 
@@ -101,9 +105,10 @@ def edited_inventory(drive, catalogue, config, seed: int) -> list[dict]:
                 row["expected"] = CHANGED
     truth_xy = np.array([[t.easting, t.northing] for t in drive.truth])
     centres = poses[1]
-    for edit, expected in (("gone", MISSING), ("outside", NOT_COVERED)):
+    to_add = max(6, MIN_EDITS - sum(1 for r in rows if r["edit"]))
+    for edit, expected, count in (("gone", MISSING, (to_add + 1) // 2), ("outside", NOT_COVERED, to_add // 2)):
         added = 0
-        while added < EDITS[edit]:
+        while added < count:
             k = rng.integers(len(centres))
             heading = np.radians(drive.pairs[k].pose.heading)
             ahead, side = np.array([np.sin(heading), np.cos(heading)]), np.array([np.cos(heading), -np.sin(heading)])

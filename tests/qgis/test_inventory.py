@@ -90,17 +90,18 @@ def test_changes_on_an_edited_inventory_gives_the_expected_verdicts(run, mapped,
     assert "<svg" in page and "1 moved, 1 changed, 0 missing, 1 not covered; 1 new" in page
 
 
-def test_missing_sign_opens_where_it_should_be_seen(run, mapped, tmp_path):
+@pytest.fixture
+def missing_run(run, mapped, tmp_path):
+    """changes against an inventory of one sign whose mapped counterpart was rejected: (output, change, sign)."""
     path, drive = mapped
     gone = drive.truth[0]
-    rows = [(gone.template_id, gone.position + np.array([0.0, 0.0, 0.0]), gone.facing)]
-    # the mapped signs without the one at the inventory position: reject it in a copy
+    rows = [(gone.template_id, gone.position, gone.facing)]
     layer = QgsVectorLayer(f"{path}|layername=signs", "signs", "ogr")
-    near = [f.id() for f in layer.getFeatures() if f.geometry().constGet().distance3D(
-        QgsPoint(*gone.position)) < 0.5]
+    near = [f.id() for f in layer.getFeatures() if f.geometry().constGet().distance3D(QgsPoint(*gone.position)) < 0.5]
     assert len(near) == 1
+    status = layer.fields().indexOf("status")
     layer.startEditing()
-    layer.changeAttributeValue(near[0], layer.fields().indexOf("status"), "rejected")
+    layer.changeAttributeValue(near[0], status, "rejected")
     assert layer.commitChanges()
     try:
         result = run("signmapper:changes", {"SIGNS": f"{path}|layername=signs", "INVENTORY": inventory_layer(rows),
@@ -108,19 +109,68 @@ def test_missing_sign_opens_where_it_should_be_seen(run, mapped, tmp_path):
                                             "OUTPUT": str(tmp_path / "c.gpkg")})
     finally:
         layer.startEditing()
-        layer.changeAttributeValue(near[0], layer.fields().indexOf("status"), "accepted")
+        layer.changeAttributeValue(near[0], status, "accepted")
         layer.commitChanges()
     missing = [c for c in changes_of(result["OUTPUT"]) if c["verdict"] == "missing"]
     assert len(missing) == 1
-    change = missing[0]
+    return result["OUTPUT"], missing[0], gone
+
+
+def test_missing_sign_names_the_pairs_and_where_it_should_be_seen(missing_run, mapped):
+    _, change, gone = missing_run
+    drive = mapped[1]
     pairs = change["visible_pairs"].split()
     assert change["pair_id"] in pairs and change["n_pairs"] == len(pairs) and change["status"] == "review"
-    record = drive.pair(change["pair_id"])
     from signmapper_core.geometry import world_to_pixel
 
-    u, v, z = world_to_pixel(drive.camera, record.pose, gone.position)
+    u, v, z = world_to_pixel(drive.camera, drive.pair(change["pair_id"]).pose, gone.position)
     assert (change["u"], change["v"]) == pytest.approx((float(u), float(v)), abs=0.5)
     assert change["bbox_x"] <= u <= change["bbox_x"] + change["bbox_w"]
+
+
+def test_review_dock_opens_a_missing_sign_at_its_pair_and_a_click_confirms_it(missing_run, sign_mapper, qgis_iface):
+    import time
+
+    from qgis.core import QgsProject, QgsSettings
+    from qgis.PyQt.QtWidgets import QApplication
+    from sign_mapper.review.controller import ReviewController
+    from sign_mapper.ui.review_dock import ReviewDock
+
+    path, change, gone = missing_run
+    layer = QgsVectorLayer(f"{path}|layername=changes", "changes", "ogr")
+    QgsProject.instance().addMapLayer(layer)
+    dock = ReviewDock()
+    dock.advance_box.setChecked(False)
+    controller = ReviewController(qgis_iface, dock, ask_drive_folder=lambda old: None, settings=QgsSettings())
+
+    def idle():
+        deadline = time.monotonic() + 60
+        while controller.busy() and time.monotonic() < deadline:
+            QApplication.processEvents()
+            time.sleep(0.005)
+        QApplication.processEvents()
+
+    try:
+        qgis_iface.setActiveLayer(layer)
+        controller.activate()
+        assert controller.kind == "changes"
+        fid = next(f.id() for f in layer.getFeatures() if f["verdict"] == "missing")
+        layer.selectByIds([fid])
+        idle()
+        item = dock.item
+        assert item.pair_id == change["pair_id"] and item.template_id == gone.template_id
+        assert item.bbox == (change["bbox_x"], change["bbox_y"], change["bbox_w"], change["bbox_h"])
+        assert item.image is not None and dock.pair_id == change["pair_id"]
+        dock.addSignClicked.emit(change["pair_id"], change["u"], change["v"])  # the sign is there after all
+        idle()
+        after = QgsVectorLayer(f"{path}|layername=changes", "check", "ogr").getFeature(fid)
+        assert (after["verdict"], after["template_id"], after["status"], after["reviewed"]) == \
+            ("confirmed", gone.template_id, "manual", 1)
+    finally:
+        controller.shutdown()
+        dock.deleteLater()
+        QgsProject.instance().removeAllMapLayers()
+        QApplication.processEvents()
 
 
 def signalo_dsn_parts(dsn):
