@@ -10,6 +10,8 @@ import importlib
 ALGORITHMS = (
     ("map_signs", "MapSignsAlgorithm"),
     ("evaluate", "EvaluateAlgorithm"),
+    ("changes", "ChangesAlgorithm"),
+    ("export_signalo", "ExportToSignaloAlgorithm"),
     ("drive_trajectory", "DriveTrajectoryAlgorithm"),
     ("synthetic_drive", "SyntheticDriveAlgorithm"),
 )

@@ -21,7 +21,7 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
     GROUP_ID = "mapping"
     HELP = ""
 
-    GROUPS = {"mapping": "Mapping", "tools": "Tools", "quality": "Quality"}
+    GROUPS = {"mapping": "Mapping", "tools": "Tools", "quality": "Quality", "inventory": "Inventory"}
 
     def tr(self, text):
         return QCoreApplication.translate("SignMapper", text)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+import shutil
 from pathlib import Path
 
 from qgis.core import (
@@ -11,6 +13,7 @@ from qgis.core import (
     QgsProcessingContext,
     QgsProcessingException,
     QgsProcessingOutputVectorLayer,
+    QgsProcessingParameterBoolean,
     QgsProcessingParameterEnum,
     QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
@@ -20,10 +23,11 @@ from qgis.core import (
 )
 
 from ..gpkg.fields import layer_feature, layer_fields
+from ..gpkg.language import qgis_language
 from ..gpkg.output import AtomicGeoPackage, layer_uri
-from ..gpkg.styles import embed_default_styles
+from ..gpkg.styles import OutputStyler, embed_default_styles
 from ..signmapper_core import output_schema as schema
-from ..signmapper_core.output_schema import DETECTIONS, SIGNS
+from ..signmapper_core.output_schema import DETECTIONS, LANGUAGES, SIGNS, OutputContext
 from ..signmapper_core.progress import Cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise
@@ -32,6 +36,7 @@ COLOURS = ["red", "blue", "yellow"]
 CLASSIFIERS = [("auto", "Automatic: the learned network where the catalogue has one, else template matching"),
                ("cnn", "Learned network (CNN trained on the official drawings)"),
                ("ncc", "Template matching (normalised cross-correlation, Cavegn 2011)")]
+LANGUAGE_CHOICES = ["QGIS language"] + list(LANGUAGES)
 
 
 class MapSignsAlgorithm(SignMapperAlgorithm):
@@ -59,6 +64,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
     CLASSIFICATION_THRESHOLD = "CLASSIFICATION_THRESHOLD"
     CLASSIFIER = "CLASSIFIER"
     CATALOGUE = "CATALOGUE"
+    LANGUAGE = "LANGUAGE"
+    CROPS = "CROPS"
     OUTPUT = "OUTPUT"
     DETECTIONS = "DETECTIONS"
     SIGNS = "SIGNS"
@@ -125,6 +132,18 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                                        behavior=QgsProcessingParameterFile.Folder, optional=True),
             "Folder with catalogue.json and template images; empty = the bundled Swiss (SSV) catalogue.",
             advanced=True,
+        )
+        self.add_parameter(
+            QgsProcessingParameterEnum(self.LANGUAGE, self.tr("Language of sign names and field titles"),
+                                       options=LANGUAGE_CHOICES, defaultValue=0),
+            "Sign names (German, French, Italian; English falls back on German) and field aliases; by default the "
+            "language QGIS runs in.",
+            advanced=True,
+        )
+        self.add_parameter(
+            QgsProcessingParameterBoolean(self.CROPS, self.tr("Write an image crop per sign"), defaultValue=False),
+            "A JPEG of each sign from its best pair, in a folder '<output name>_crops' beside the GeoPackage, its "
+            "path in the field crop_path: signs can then be checked without the drive.",
         )
         self.add_parameter(
             QgsProcessingParameterFileDestination(self.OUTPUT, self.tr("Output GeoPackage"),
@@ -215,25 +234,58 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                           f"({len(catalogue)} templates)")
         self.report_classifier(catalogue, config, feedback)
 
+        language = self.language(parameters, context)
         output = AtomicGeoPackage(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
+        crops = CropFolder(output.target) if self.parameterAsBoolean(parameters, self.CROPS, context) else None
         try:
             result = self.map(drive, catalogue, config, feedback)
-            self.write_layers(output, result)
-            output.write_run_table(result.run_record())
-            embed_default_styles(str(output.partial), catalogue)
+            out = self.output_context(drive, catalogue, language, result, crops, feedback)
+            self.write_layers(output, result, out)
+            output.write_run_table(schema.run_record(result, out))
+            embed_default_styles(str(output.partial), catalogue, language)
+            if crops is not None:
+                crops.commit()
             path = output.commit()
         except BaseException:
             output.discard()
+            if crops is not None:
+                crops.discard()
             raise
         feedback.pushInfo(f"{len(result.detections)} detections fused into {len(result.signs)} signs, "
-                          f"written to {path}")
+                          f"written to {path}" + (f", {len(out.crops)} crops in {crops.folder}" if crops else ""))
         results = {self.OUTPUT: path}
         for key, layer, title in ((self.SIGNS, SIGNS, "Signs"), (self.DETECTIONS, DETECTIONS, "Sign detections")):
             results[key] = layer_uri(path, layer)
-            context.addLayerToLoadOnCompletion(
-                results[key], QgsProcessingContext.LayerDetails(title, context.project(), key)
-            )
+            details = QgsProcessingContext.LayerDetails(title, context.project(), key)
+            details.setPostProcessor(OutputStyler.create(layer, catalogue, language))
+            context.addLayerToLoadOnCompletion(results[key], details)
         return results
+
+    def language(self, parameters, context) -> str:
+        choice = self.parameterAsEnum(parameters, self.LANGUAGE, context)
+        return LANGUAGE_CHOICES[choice] if choice > 0 else qgis_language()
+
+    @staticmethod
+    def output_context(drive, catalogue, language, result, crops, feedback) -> OutputContext:
+        """Language, the drive's clock and, when asked for, the crops written (in the partial folder)."""
+        from ..signmapper_core.drive_clock import drive_start, first_time
+        from ..signmapper_core.errors import DriveFormatError
+
+        try:
+            start = drive_start(drive)
+        except DriveFormatError as exc:
+            feedback.reportError(f"{exc}; timestamps left empty", fatalError=False)
+            start = None
+        written = {}
+        if crops is not None:
+            from ..signmapper_core.sign_crops import write_sign_crops
+
+            feedback.setProgressText(f"Writing {len(result.signs)} sign crops")
+            names = write_sign_crops(drive, result.signs, crops.partial, feedback.isCanceled,
+                                     lambda m: feedback.reportError(m, fatalError=False))
+            written = {sign_id: f"{crops.folder.name}/{name}" for sign_id, name in names.items()}
+        return OutputContext(language=language, catalogue=catalogue, start=start, first_time=first_time(drive),
+                             crops=written)
 
     def excluded_ids(self, parameters, context, catalogue) -> list[str]:
         text = self.parameterAsString(parameters, self.EXCLUDE, context) or ""
@@ -258,7 +310,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         return result
 
     @staticmethod
-    def write_layers(output, result) -> None:
+    def write_layers(output, result, out: OutputContext) -> None:
         """The layers signs (fused signs) and detections (observations), fields as output_schema declares."""
         crs = QgsCoordinateReferenceSystem(result.drive.crs)
         for layer, items, what in ((SIGNS, result.signs, "traffic signs"),
@@ -267,5 +319,23 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             writer = output.open_layer(layer, fields, QgsWkbTypes.PointZ, crs,
                                        abstract=f"Sign Mapper: {what} of drive {result.drive.root}")
             for item in items:
-                writer.addFeature(layer_feature(fields, layer, item), QgsFeatureSink.FastInsert)
+                writer.addFeature(layer_feature(fields, layer, item, out), QgsFeatureSink.FastInsert)
             del writer
+
+
+class CropFolder:
+    """The crops folder beside the GeoPackage, written as a hidden partial folder and moved in at the end."""
+
+    def __init__(self, target: Path):
+        self.folder = target.with_name(f"{target.stem}_crops")
+        self.partial = target.with_name(f".{target.stem}_crops.partial")
+        self.discard()
+
+    def commit(self) -> None:
+        if self.folder.exists():
+            shutil.rmtree(self.folder)
+        os.replace(self.partial, self.folder)
+
+    def discard(self) -> None:
+        if self.partial.exists():
+            shutil.rmtree(self.partial)

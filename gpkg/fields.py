@@ -18,14 +18,16 @@ def layer_fields(layer: str) -> QgsFields:
     return fields
 
 
-def layer_feature(fields: QgsFields, layer: str, item) -> QgsFeature:
+def layer_feature(fields: QgsFields, layer: str, item, context=None) -> QgsFeature:
     """A PointZ feature of ``layer`` for a fused sign (signs) or an observation (detections).
+
+    ``context`` (``output_schema.OutputContext``): language, drive clock, crops.
 
     Attributes are set by name, so a layer with fewer or reordered fields (one a
     person copied or edited) gets what it has room for.
     """
     feature = QgsFeature(fields)
-    for name, value in schema.values(layer, item).items():
+    for name, value in schema.values(layer, item, context).items():
         index = fields.indexOf(name)
         if index >= 0:
             feature.setAttribute(index, NULL if value is None else value)
@@ -34,11 +36,18 @@ def layer_feature(fields: QgsFields, layer: str, item) -> QgsFeature:
     return feature
 
 
+def declared_fields(layer: str) -> tuple:
+    """The declared fields of one of our layers: a mapping run's (``output_schema``) or ``changes``."""
+    from ..signmapper_core import changes_schema
+
+    return changes_schema.FIELDS if layer == changes_schema.CHANGES else schema.fields(layer)
+
+
 def feature_values(feature, layer: str) -> dict:
     """Field name -> plain Python value (None for NULL) of a feature of ``layer``; None for fields it lacks."""
     names = feature.fields()
     out = {}
-    for field in schema.fields(layer):
+    for field in declared_fields(layer):
         value = feature.attribute(field.name) if names.indexOf(field.name) >= 0 else None
         out[field.name] = None if value is None or value == NULL else field.typed(value, rounded=False)
     return out

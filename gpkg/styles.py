@@ -1,9 +1,18 @@
-"""Default styles embedded in Sign Mapper's GeoPackages, so a layer opens showing pictograms.
+"""Styles of Sign Mapper's layers: the same look whether a layer comes from a file, the dialog or a model.
 
 Signs show their catalogue pictogram (SVG embedded as base64, so the style
 does not depend on where the plugin is installed), a small arrow turned to the
-face azimuth, and the template id as label ("?" for signs awaiting review).
-Detections show a small dot coloured by status.
+face azimuth and the template id as label; the legend groups the pictograms by
+sign family. The review state is part of every symbol and follows decisions
+live (data-defined on ``status``): a sign to review has an orange halo and a
+"?" label, a rejected sign is faded and crossed out, a manual one carries a
+blue mark. Detections show a dot coloured by status. Field aliases are in the
+output language (``output_schema.ALIASES``).
+
+The styles are embedded in the GeoPackage as its default (opening the file
+shows them) and applied by a Processing layer post-processor to the layers a
+run loads (:class:`OutputStyler`), since Processing loads results without
+their default style.
 """
 
 from __future__ import annotations
@@ -12,13 +21,17 @@ import base64
 
 from qgis.core import (
     QgsCategorizedSymbolRenderer,
+    QgsEditorWidgetSetup,
     QgsMarkerSymbol,
     QgsPalLayerSettings,
+    QgsProcessingLayerPostProcessorInterface,
     QgsProperty,
     QgsRendererCategory,
+    QgsRuleBasedRenderer,
     QgsSimpleMarkerSymbolLayer,
     QgsSimpleMarkerSymbolLayerBase,
     QgsSvgMarkerSymbolLayer,
+    QgsSymbol,
     QgsSymbolLayer,
     QgsTextFormat,
     QgsVectorLayer,
@@ -27,9 +40,18 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QPointF
 from qgis.PyQt.QtGui import QColor
 
-from ..signmapper_core.output_schema import DETECTIONS, REVIEW, SIGNS, STATUS_COLOURS
+from ..signmapper_core import output_schema as schema
+from ..signmapper_core.catalogue.families import by_family, family_name
+from ..signmapper_core.output_schema import DETECTIONS, MANUAL, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
 
 PICTOGRAM_MM = 7.0
+REJECTED_OPACITY = 35  # percent: a rejected sign stays visible, faded under its cross
+SIGNS_LABEL = (f"\"template_id\" || CASE WHEN \"status\" = '{REVIEW}' THEN ' ?' "
+               f"WHEN \"status\" = '{REJECTED}' THEN ' ✗' ELSE '' END")
+
+
+def _when(status: str) -> QgsProperty:
+    return QgsProperty.fromExpression(f"\"status\" = '{status}'")
 
 
 def _svg_layer(svg_bytes: bytes, size_mm: float) -> QgsSvgMarkerSymbolLayer:
@@ -56,17 +78,71 @@ def _azimuth_arrow() -> QgsSimpleMarkerSymbolLayer:
     return arrow
 
 
-def signs_renderer(catalogue) -> QgsCategorizedSymbolRenderer:
-    renderer = QgsCategorizedSymbolRenderer("template_id")
-    for entry in catalogue:
-        svg = catalogue.pictogram_path(entry.id, "svg")
-        symbol = QgsMarkerSymbol()
-        symbol.changeSymbolLayer(0, _svg_layer(svg.read_bytes(), PICTOGRAM_MM))
-        symbol.appendSymbolLayer(_azimuth_arrow())
-        renderer.addCategory(QgsRendererCategory(entry.id, symbol, entry.id))
+def _review_halo() -> QgsSimpleMarkerSymbolLayer:
+    halo = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Circle, PICTOGRAM_MM + 3.0)
+    colour = QColor(STATUS_COLOURS[REVIEW])
+    colour.setAlpha(150)
+    halo.setColor(colour)
+    halo.setStrokeColor(QColor(STATUS_COLOURS[REVIEW]))
+    halo.setStrokeWidth(0.6)
+    halo.setDataDefinedProperty(QgsSymbolLayer.PropertyLayerEnabled, _when(REVIEW))
+    return halo
+
+
+def _rejected_cross() -> QgsSimpleMarkerSymbolLayer:
+    cross = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Cross2, PICTOGRAM_MM + 1.0)
+    cross.setStrokeColor(QColor("#212121"))
+    cross.setColor(QColor("#212121"))
+    cross.setStrokeWidth(0.8)
+    cross.setDataDefinedProperty(QgsSymbolLayer.PropertyLayerEnabled, _when(REJECTED))
+    return cross
+
+
+def _manual_mark() -> QgsSimpleMarkerSymbolLayer:
+    mark = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Square, 2.2)
+    mark.setColor(QColor(STATUS_COLOURS[MANUAL]))
+    mark.setStrokeColor(QColor("white"))
+    mark.setOffset(QPointF(-PICTOGRAM_MM / 2, -PICTOGRAM_MM / 2))
+    mark.setDataDefinedProperty(QgsSymbolLayer.PropertyLayerEnabled, _when(MANUAL))
+    return mark
+
+
+def pictogram_symbol(svg_bytes: bytes) -> QgsMarkerSymbol:
+    """Halo (review), pictogram, face arrow, cross (rejected), mark (manual); faded when rejected."""
+    symbol = QgsMarkerSymbol()
+    symbol.changeSymbolLayer(0, _review_halo())
+    for layer in (_svg_layer(svg_bytes, PICTOGRAM_MM), _azimuth_arrow(), _rejected_cross(), _manual_mark()):
+        symbol.appendSymbolLayer(layer)
+    symbol.setDataDefinedProperty(
+        QgsSymbol.PropertyOpacity,
+        QgsProperty.fromExpression(f"CASE WHEN \"status\" = '{REJECTED}' THEN {REJECTED_OPACITY} ELSE 100 END"),
+    )
+    return symbol
+
+
+def _quoted(text: str) -> str:
+    return "'" + text.replace("'", "''") + "'"
+
+
+def signs_renderer(catalogue, language: str = "en") -> QgsRuleBasedRenderer:
+    """Rule-based: one group per sign family, one pictogram rule per catalogue entry; an 'other' rule last."""
+    root = QgsRuleBasedRenderer.Rule(None)
+    for name, entries in by_family(catalogue).items():
+        if not entries:
+            continue
+        ids = ", ".join(_quoted(e.id) for e in entries)
+        group = QgsRuleBasedRenderer.Rule(None, 0, 0, f'"template_id" IN ({ids})', family_name(name, language))
+        for entry in entries:
+            svg = catalogue.pictogram_path(entry.id, "svg")
+            group.appendChild(QgsRuleBasedRenderer.Rule(
+                pictogram_symbol(svg.read_bytes()), 0, 0, f'"template_id" = {_quoted(entry.id)}',
+                f"{entry.id} {entry.name(language)}"))
+        root.appendChild(group)
     fallback = QgsMarkerSymbol.createSimple({"name": "circle", "color": "#d52b1e", "size": "3"})
-    renderer.addCategory(QgsRendererCategory("", fallback, "other"))
-    return renderer
+    other = QgsRuleBasedRenderer.Rule(fallback, 0, 0, "", "other")
+    other.setIsElse(True)
+    root.appendChild(other)
+    return QgsRuleBasedRenderer(root)
 
 
 def detections_renderer() -> QgsCategorizedSymbolRenderer:
@@ -94,21 +170,66 @@ def id_labels(expression: str) -> QgsVectorLayerSimpleLabeling:
     return QgsVectorLayerSimpleLabeling(settings)
 
 
-def embed_default_styles(gpkg_path: str, catalogue) -> None:
-    """Save the default styles into the GeoPackage's layer_styles table, used when the layers are opened."""
-    signs = QgsVectorLayer(f"{gpkg_path}|layername={SIGNS}", SIGNS, "ogr")
-    signs.setRenderer(signs_renderer(catalogue))
-    signs.setLabeling(id_labels(f"\"template_id\" || if(\"status\" = '{REVIEW}', ' ?', '')"))
-    signs.setLabelsEnabled(True)
-    _save(signs, "Sign Mapper: pictograms, face direction and ids")
-    detections = QgsVectorLayer(f"{gpkg_path}|layername={DETECTIONS}", DETECTIONS, "ogr")
-    detections.setRenderer(detections_renderer())
-    _save(detections, "Sign Mapper: detections by status")
+def set_aliases(layer: QgsVectorLayer, kind: str, language: str) -> None:
+    """Field aliases in ``language``; a crop path field opens as an image in the attribute form."""
+    fields = layer.fields()
+    for field in schema.fields(kind):
+        index = fields.indexOf(field.name)
+        if index >= 0:
+            layer.setFieldAlias(index, field.alias(language))
+    index = fields.indexOf("crop_path")
+    if index >= 0:
+        layer.setEditorWidgetSetup(index, QgsEditorWidgetSetup("ExternalResource", {
+            "DocumentViewer": 1, "RelativeStorage": 1, "FileWidget": True, "UseLink": True}))
 
 
-def _save(layer: QgsVectorLayer, description: str) -> None:
-    if not layer.isValid():
-        raise RuntimeError(f"cannot open {layer.source()} to store its style")
-    error = layer.saveStyleToDatabase("default", description, True, "")
-    if error:
-        raise RuntimeError(f"{layer.source()}: style not saved: {error}")
+def apply_style(layer: QgsVectorLayer, kind: str, catalogue, language: str = "en") -> None:
+    """Give ``layer`` (of kind signs or detections) Sign Mapper's look."""
+    if kind == SIGNS:
+        layer.setRenderer(signs_renderer(catalogue, language))
+        layer.setLabeling(id_labels(SIGNS_LABEL))
+        layer.setLabelsEnabled(True)
+    elif kind == DETECTIONS:
+        layer.setRenderer(detections_renderer())
+    else:
+        raise ValueError(f"no style for layer kind '{kind}'")
+    set_aliases(layer, kind, language)
+    layer.triggerRepaint()
+
+
+def embed_default_styles(gpkg_path: str, catalogue, language: str = "en") -> None:
+    """Save the styles into the GeoPackage's layer_styles table, used when the layers are opened."""
+    for kind, description in ((SIGNS, "Sign Mapper: pictograms by family, review state, face direction, ids"),
+                              (DETECTIONS, "Sign Mapper: detections by status")):
+        layer = QgsVectorLayer(f"{gpkg_path}|layername={kind}", kind, "ogr")
+        if not layer.isValid():
+            raise RuntimeError(f"cannot open {layer.source()} to store its style")
+        apply_style(layer, kind, catalogue, language)
+        error = layer.saveStyleToDatabase("default", description, True, "")
+        if error:
+            raise RuntimeError(f"{layer.source()}: style not saved: {error}")
+
+
+class OutputStyler(QgsProcessingLayerPostProcessorInterface):
+    """Styles a layer Processing loads from a run (dialog, model, ``runAndLoadResults``).
+
+    Processing calls it after adding the layer to the project; it must outlive
+    the algorithm, so :meth:`create` keeps every instance in a class list.
+    """
+
+    _alive = []
+
+    def __init__(self, kind: str, catalogue, language: str):
+        super().__init__()
+        self.kind, self.catalogue, self.language = kind, catalogue, language
+
+    @classmethod
+    def create(cls, kind: str, catalogue, language: str) -> OutputStyler:
+        styler = cls(kind, catalogue, language)
+        cls._alive.append(styler)
+        del cls._alive[:-16]  # Processing uses one right after the run; keep the last few
+        return styler
+
+    def postProcessLayer(self, layer, context, feedback):  # noqa: N802 - QGIS interface
+        if isinstance(layer, QgsVectorLayer) and layer.isValid():
+            apply_style(layer, self.kind, self.catalogue, self.language)

@@ -104,7 +104,7 @@ class ReviewController(QObject):
         self._unfollow_layer()
         kind = layer_kind(layer)
         if kind is None:
-            self.dock.show_empty("Select a feature of a Sign Mapper 'signs' or 'detections' layer")
+            self.dock.show_empty("Select a feature of a Sign Mapper 'signs', 'detections' or 'changes' layer")
             self.dock.set_pairs([])
             return
         session = self.session

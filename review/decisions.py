@@ -10,7 +10,8 @@ from __future__ import annotations
 from qgis.PyQt.sip import isdeleted
 
 from ..gpkg.fields import feature_values
-from ..signmapper_core.output_schema import SIGNS
+from ..signmapper_core.changes_schema import CHANGES
+from ..signmapper_core.output_schema import MANUAL, SIGNS
 from .edits import DecisionLog, EditError, add_feature, change_attributes
 from .values import accept_values, manual_feature, reclassify_values, reject_values
 
@@ -56,9 +57,14 @@ class DecisionTaker:
         if template_id not in session.catalogue:
             self.dock.show_message(f"Template {template_id} is not in the catalogue", error=True)
             return
+        if session.kind == CHANGES:
+            self.dock.show_picker(False)
+            self.dock.show_message("A verdict has no type to change: reclassify the mapped sign in its 'signs' "
+                                   "layer and compare again", error=True)
+            return
         current = feature_values(session.layer.getFeature(session.fid), session.kind)
         values = reclassify_values(session.kind, session.catalogue[template_id], current["format"],
-                                   current["status"] or "")
+                                   current["status"] or "", session.language)
         self.dock.show_picker(False)
         self._decide(values, "reclassify feature {fid} as " + template_id)
 
@@ -113,13 +119,16 @@ class DecisionTaker:
         from ..signmapper_core.mapping import manual_sign
 
         layer, kind = self.session.layer, self.session.kind
+        if kind == CHANGES:
+            self._found_in_change(observation)
+            return
         item = observation
         if kind == SIGNS:
             ids = [feature_values(f, SIGNS)["sign_id"] for f in layer.getFeatures()]
             item = manual_sign(observation, max([i for i in ids if i is not None], default=0) + 1)
         label = f"Sign Mapper: add {observation.template_id} in pair {observation.pair_id}"
         try:
-            decision = add_feature(layer, manual_feature(layer, kind, item), label)
+            decision = add_feature(layer, manual_feature(layer, kind, item, self.session.output_context()), label)
         except EditError as exc:
             self.dock.show_message(str(exc), error=True)
             return
@@ -127,3 +136,16 @@ class DecisionTaker:
         self.dock.show_message(f"Added {observation.template_id} {observation.name} at {observation.depth_m:.1f} m "
                                f"(pair {observation.pair_id})")
         self.navigator.select(decision.fid)
+
+    def _found_in_change(self, observation) -> None:
+        """A person found the sign of a change (e.g. a 'missing' one) in the image: the verdict becomes what the
+        found sign says against the inventory type."""
+        current = feature_values(self.session.layer.getFeature(self.session.fid), CHANGES)
+        verdict = "confirmed" if observation.template_id == current["inventory_type"] else "changed"
+        x, y, w, h = observation.bbox
+        values = {"verdict": verdict, "template_id": observation.template_id, "status": MANUAL, "reviewed": 1,
+                  "pair_id": observation.pair_id, "u": float(observation.u), "v": float(observation.v),
+                  "bbox_x": int(x), "bbox_y": int(y), "bbox_w": int(w), "bbox_h": int(h),
+                  "reason": f"found by a person in pair {observation.pair_id}: {observation.template_id}"}
+        self._decide(values, f"{verdict}: {observation.template_id} found in pair {observation.pair_id} "
+                             "for feature {fid}")

@@ -11,6 +11,8 @@ import numpy as np
 from qgis.PyQt.QtCore import Qt
 from qgis.PyQt.QtGui import QImage
 
+from ..signmapper_core.sign_crops import crop_box as crop_rect  # noqa: F401 - the review's name for it
+
 Rect = Tuple[int, int, int, int]  # x, y, w, h
 
 
@@ -19,18 +21,6 @@ def bgr_to_qimage(bgr: np.ndarray) -> QImage:
     rgb = np.ascontiguousarray(bgr[:, :, ::-1])
     height, width = rgb.shape[:2]
     return QImage(rgb.data, width, height, 3 * width, QImage.Format_RGB888).copy()
-
-
-def crop_rect(bbox: Rect, image_size: Tuple[int, int], context: float = 3.0, min_px: int = 120) -> Rect:
-    """A square-ish region ``context`` times the sign's size around it (at least ``min_px``), inside the image."""
-    x, y, w, h = bbox
-    width, height = image_size
-    side = int(max(min_px, context * max(w, h)))
-    side_w, side_h = min(side, width), min(side, height)
-    cx, cy = x + w / 2.0, y + h / 2.0
-    x0 = int(round(min(max(cx - side_w / 2.0, 0), width - side_w)))
-    y0 = int(round(min(max(cy - side_h / 2.0, 0), height - side_h)))
-    return x0, y0, side_w, side_h
 
 
 def thumbnail(bgr: np.ndarray, bbox: Rect, size_px: int = 72) -> QImage:

@@ -12,6 +12,7 @@ from typing import List, Optional, Tuple
 from qgis.core import QgsFeatureRequest
 
 from ..gpkg.fields import feature_values
+from ..signmapper_core.changes_schema import CHANGES
 from ..signmapper_core.output_schema import DETECTIONS, REVIEW, SIGNS
 from ..ui.review_item import ObservationView, ReviewItem
 from .imaging import crop_rect
@@ -45,6 +46,8 @@ def read_item(session, feature) -> ReviewItem:
     order = driving_order(layer, kind)
     position = next((i for i, (fid, _) in enumerate(order) if fid == feature.id()), 0) + 1
     to_review = sum(status == REVIEW for _, status in order)
+    if kind == CHANGES:
+        return change_item(session, feature, values, f"{position} of {len(order)} · {to_review} to review")
     if kind == SIGNS:
         what, pair_id = f"sign {values['sign_id']}", values["best_pair_id"]
     else:
@@ -87,3 +90,34 @@ def observations_of(signs_layer, sign_id) -> List[ObservationView]:
         views.append(ObservationView(pair_id, f"{pair_id}\n{score:.2f}" if score is not None else pair_id, None,
                                      values["template_id"] or "", tuple(c or 0 for c in (values[k] for k in BBOX))))
     return views
+
+
+def change_item(session, feature, values: dict, place: str) -> ReviewItem:
+    """A verdict of ``changes``: the pair where the mapped sign was seen, or where a missing sign should be,
+    with the sign's box; the template is the mapped sign's, or for a missing sign the inventory's."""
+    verdict, inventory_id = values["verdict"] or "", values["inventory_id"]
+    what = f"{verdict}: inventory {inventory_id} ({values['inventory_label'] or values['inventory_type']})" \
+        if inventory_id else f"{verdict}: mapped sign {values['sign_id']}"
+    template_id = values["template_id"] or values["inventory_type"] or ""
+    catalogue = session.catalogue
+    entry = catalogue[template_id] if catalogue is not None and template_id in catalogue else None
+    u, v = values["u"], values["v"]
+    point = feature.geometry().constGet() if feature.hasGeometry() else None
+    size = entry.formats.get("normal", next(iter(entry.formats.values()))) if entry is not None else (0.0, 0.0)
+    item = ReviewItem(
+        CHANGES, feature.id(), f"{session.layer.name()} · {what} · {place}", template_id=template_id,
+        name=entry.name("de") if entry else "", colour=entry.colour if entry else "",
+        shape=entry.shape if entry else "",
+        format="normal" if entry else "", size_m=size, status=values["status"] or "",
+        reviewed=bool(values["reviewed"]), pair_id=values["pair_id"] or "", time=values["time"],
+        depth_m=values["depth_m"], bbox=_bbox(values), centroid=(u, v) if u is not None and v is not None else None,
+        position=(point.x(), point.y(), point.z()) if point is not None else None,
+    )
+    if entry is not None:
+        item.pictogram_path = str(catalogue.pictogram_path(template_id, "png"))
+    item.extra = [("verdict", verdict)] + [(label, fmt.format(values[key])) for key, label, fmt in (
+        ("inventory_type", "inventory", "{}"), ("distance_m", "distance", "{:.2f} m"), ("n_pairs", "pairs", "{}"))
+        if values[key] is not None]
+    if item.bbox is not None and session.drive is not None:
+        item.crop = crop_rect(item.bbox, session.drive.image_size)
+    return item

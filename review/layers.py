@@ -7,6 +7,7 @@ from typing import Optional, Tuple
 from qgis.core import QgsExpression, QgsFeatureRequest, QgsProject, QgsProviderRegistry, QgsVectorLayer
 
 from ..gpkg.output import layer_uri
+from ..signmapper_core import changes_schema
 from ..signmapper_core.output_schema import DETECTIONS, LAYERS, RUN_TABLE, SIGNS, required_names
 
 
@@ -24,7 +25,7 @@ def has_run_table(path: str) -> bool:
 
 
 def layer_kind(layer) -> Optional[str]:
-    """'signs' or 'detections' for a Sign Mapper layer, else None.
+    """'signs', 'detections' or 'changes' for a Sign Mapper layer, else None.
 
     A layer is ours when it has the fields the review needs (``output_schema``,
     ``required``). Its kind is its name in a GeoPackage with our run table, or
@@ -33,6 +34,8 @@ def layer_kind(layer) -> Optional[str]:
     if not isinstance(layer, QgsVectorLayer) or not layer.isValid():
         return None
     names = set(layer.fields().names())
+    if changes_schema.required_names() <= names:
+        return changes_schema.CHANGES
     kinds = [kind for kind in LAYERS if required_names(kind) <= names]
     if not kinds:
         return None

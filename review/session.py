@@ -39,6 +39,28 @@ class ReviewSession:
             self.show_message(f"Pair {pair_id} is not in drive {self.drive.root}", error=True)
             return None
 
+    @property
+    def language(self) -> str:
+        """The language the run wrote its names in (German for files from before it was recorded)."""
+        from ..signmapper_core.output_schema import DEFAULT_LANGUAGE, LANGUAGES
+
+        language = self.run.get("language")
+        return language if language in LANGUAGES else DEFAULT_LANGUAGE
+
+    def output_context(self):
+        """How the run wrote its rows (language, drive clock): what an added sign is written with."""
+        from ..signmapper_core.drive_clock import drive_start, first_time
+        from ..signmapper_core.output_schema import OutputContext
+
+        start = None
+        if self.drive is not None:
+            try:
+                start = drive_start(self.drive)
+            except ValueError:
+                start = None
+        return OutputContext(language=self.language, catalogue=self.catalogue, start=start,
+                             first_time=first_time(self.drive) if self.drive is not None else 0.0)
+
     def pipeline_config(self):
         """The run's recorded pipeline settings (defaults for anything missing or invalid)."""
         from ..signmapper_core.pipeline import PipelineConfig

@@ -9,7 +9,7 @@ from __future__ import annotations
 from typing import Optional
 
 from ..gpkg.fields import layer_feature
-from ..signmapper_core.output_schema import ACCEPTED, MANUAL, REJECTED, template_values
+from ..signmapper_core.output_schema import ACCEPTED, DEFAULT_LANGUAGE, MANUAL, REJECTED, OutputContext, template_values
 
 DEFAULT_FORMAT = "normal"
 
@@ -30,13 +30,14 @@ def template_format(entry, current_format: Optional[str]) -> str:
     return next(iter(entry.formats))
 
 
-def reclassify_values(layer_kind: str, entry, current_format: Optional[str], current_status: str) -> dict:
+def reclassify_values(layer_kind: str, entry, current_format: Optional[str], current_status: str,
+                      language: str = DEFAULT_LANGUAGE) -> dict:
     """A person assigned template ``entry``: what the template gives (id, name, colour, shape, size), reviewed."""
-    values = template_values(layer_kind, entry, template_format(entry, current_format))
+    values = template_values(layer_kind, entry, template_format(entry, current_format), language)
     values.update(status=MANUAL if current_status == MANUAL else ACCEPTED, reviewed=1)
     return values
 
 
-def manual_feature(layer, layer_kind: str, item):
+def manual_feature(layer, layer_kind: str, item, context: Optional[OutputContext] = None):
     """A feature for a sign a person clicked: its Observation (detections) or manual FusedSign (signs)."""
-    return layer_feature(layer.fields(), layer_kind, item)
+    return layer_feature(layer.fields(), layer_kind, item, context)

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import time as _time
 import traceback as _traceback
+import uuid
 from dataclasses import dataclass, field, replace
 from typing import Iterator, Optional
 
@@ -62,6 +63,7 @@ class MappingResult:
     load_seconds: float = 0.0  # of which decoding the files
     classifier_name: str = ""  # the strategy that ran ("cnn" or "ncc")
     classification_threshold: Optional[float] = None  # the indicator "accepted" needed in this run
+    run_id: str = field(default_factory=lambda: str(uuid.uuid4()))  # recorded by exports to recognise the run
 
     def detections_of(self, sign: FusedSign) -> list[Observation]:
         return [o for o in self.detections if o.sign_id == sign.sign_id]

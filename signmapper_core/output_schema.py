@@ -19,6 +19,8 @@ from __future__ import annotations
 import json
 import operator
 from dataclasses import dataclass
+from dataclasses import field as dc_field
+from datetime import datetime, timedelta
 from typing import Any, Callable, Optional
 
 from . import __version__
@@ -33,29 +35,72 @@ STATUS_COLOURS = {ACCEPTED: "#2e7d32", REVIEW: "#f57c00", REJECTED: "#9e9e9e", M
 
 TEXT, INTEGER, REAL = "text", "integer", "real"
 
-Reader = Callable[[Any], Any]
+# Languages of names and field aliases: the Swiss catalogue's three and English (names fall back to German).
+LANGUAGES = ("en", "de", "fr", "it")
+DEFAULT_LANGUAGE = "de"
+
+Reader = Callable[..., Any]
+
+
+def language_of(locale: str) -> str:
+    """The output language of a locale name ("fr_CH", "de", "C"): its language if we have it, else English."""
+    code = (locale or "").replace("-", "_").split("_", 1)[0].lower()
+    return code if code in LANGUAGES else "en"
+
+
+@dataclass(frozen=True)
+class OutputContext:
+    """What a row's values depend on beyond the sign itself: language, the drive's clock, written crops."""
+
+    language: str = DEFAULT_LANGUAGE
+    catalogue: Any = None  # template id -> name in ``language``; None: the detection's own (German) name
+    start: Optional[datetime] = None  # absolute time of the drive's first pair (drive.json "start_time")
+    first_time: float = 0.0  # poses.csv time of the first pair
+    crops: dict = dc_field(default_factory=dict)  # sign_id -> crop image path relative to the GeoPackage
+
+    def name(self, template_id: str, fallback: str) -> str:
+        if self.catalogue is not None and template_id in self.catalogue:
+            return self.catalogue[template_id].name(self.language)
+        return fallback
+
+    def timestamp(self, time: Optional[float]) -> Optional[str]:
+        """ISO 8601 time of a pair, None when the drive does not state its absolute start."""
+        if self.start is None or time is None:
+            return None
+        return (self.start + timedelta(seconds=float(time) - self.first_time)).isoformat(timespec="milliseconds")
 
 
 @dataclass(frozen=True)
 class Field:
-    """One attribute of the output layers."""
+    """One attribute of the output layers.
+
+    ``survey`` fields are what a surveyor reads (the layer lists them first);
+    the others record pixels and internals for the review and for checking the method.
+    """
 
     name: str
     kind: str  # TEXT, INTEGER or REAL
     help: str
+    aliases: dict = dc_field(default_factory=dict)  # language -> column title
     sign: Optional[Reader] = None  # value of a FusedSign; None: not in the signs layer
     detection: Optional[Reader] = None  # value of an Observation; None: not in the detections layer
-    template: Optional[Callable[[Any, str], Any]] = None  # (catalogue entry, format name) -> value on reclassify
+    template: Optional[Callable[..., Any]] = None  # (catalogue entry, format name, language) -> value on reclassify
     decimals: Optional[int] = None  # REAL: rounded to this many decimals when written
     length: int = 0  # TEXT: longest value, 0 = unlimited
     required: bool = False  # the review cannot show a feature without it: it marks our layers
+    survey: bool = True
+    contextual: bool = False  # readers take (item, OutputContext)
 
     def reader(self, layer: str) -> Optional[Reader]:
         return self.sign if layer == SIGNS else self.detection
 
-    def value(self, layer: str, item) -> Any:
+    def value(self, layer: str, item, context: Optional[OutputContext] = None) -> Any:
         """The value written for ``item`` in ``layer``: typed, rounded, None for unknown."""
-        return self.typed(self.reader(layer)(item))
+        read = self.reader(layer)
+        return self.typed(read(item, context or OutputContext()) if self.contextual else read(item))
+
+    def alias(self, language: str) -> str:
+        return self.aliases.get(language) or self.aliases.get("en") or self.name
 
     def typed(self, value, rounded: bool = True) -> Any:
         """``value`` as this field's Python type (None stays None); REAL rounded to ``decimals`` if ``rounded``."""
@@ -82,56 +127,105 @@ def _bbox(i: int) -> dict:
     return {"sign": lambda sign: sign.best.bbox[i], "detection": lambda obs: obs.bbox[i]}
 
 
+def _coordinate(i: int) -> dict:
+    return {"sign": lambda item: item.position[i], "detection": lambda item: item.position[i]}
+
+
+def _names(en: str, de: str, fr: str, it: str) -> dict:
+    return {"aliases": {"en": en, "de": de, "fr": fr, "it": it}}
+
+
 FIELDS = (
     Field("sign_id", INTEGER, "Number of the physical sign, from 1 in order of first sight.", required=True,
-          sign=lambda s: s.sign_id),
+          sign=lambda s: s.sign_id, **_names("Sign no.", "Signal-Nr.", "N° signal", "N. segnale")),
     Field("template_id", TEXT, "Catalogue id (SSV number, '-<value>' for a sign with a number), by weighted vote "
-          "for a sign.", required=True, template=lambda entry, fmt: entry.id, **_both("template_id")),
-    Field("name", TEXT, "German name of the template.", template=lambda entry, fmt: entry.name("de"),
-          **_both("name")),
-    Field("colour", TEXT, "Dominant colour segmented: red, blue, yellow (or white).",
-          template=lambda entry, fmt: entry.colour, **_both("colour")),
-    Field("shape", TEXT, "Shape of the face: circle, triangle, triangle-down, octagon, diamond, square, rectangle.",
-          template=lambda entry, fmt: entry.shape, **_both("shape")),
-    Field("width_m", REAL, "Standard width of the format [m] (the face's bounding box).",
-          template=lambda entry, fmt: entry.formats[fmt][0], **_both("width_m")),
-    Field("height_m", REAL, "Standard height of the format [m] (the face's bounding box).",
-          template=lambda entry, fmt: entry.formats[fmt][1], **_both("height_m")),
-    Field("format", TEXT, "Standard format the measured size was rounded to (e.g. normal, large).",
-          template=lambda entry, fmt: fmt, **_both("format")),
-    Field("detection_indicator", REAL, "Planar share of the face, 0-1: is it a sign? Mean of the voters for a sign.",
-          decimals=4, **_both("detection_indicator")),
-    Field("classification_indicator", REAL, "Template-matching score, 0-1: is it this sign? Mean of the voters "
-          "for a sign.", decimals=4, **_both("classification_indicator")),
+          "for a sign.", required=True, template=lambda entry, fmt, lang: entry.id, **_both("template_id"),
+          **_names("Sign type (SSV)", "Signaltyp (SSV)", "Type de signal (OSR)", "Tipo di segnale (OSS)")),
+    Field("name", TEXT, "Name of the template in the output language (German, French or Italian; English output "
+          "names fall back on German).", template=lambda entry, fmt, lang: entry.name(lang), contextual=True,
+          sign=lambda s, ctx: ctx.name(s.template_id, s.name), detection=lambda o, ctx: ctx.name(o.template_id, o.name),
+          **_names("Name", "Bezeichnung", "Désignation", "Denominazione")),
     Field("status", TEXT, "accepted, review (a person should look), rejected (by a person) or manual (added by a "
-          "person).", required=True, **_both("status")),
+          "person).", required=True, **_both("status"), **_names("Status", "Status", "Statut", "Stato")),
     Field("reviewed", INTEGER, "1 once a person decided on the feature, else 0.", required=True,
-          sign=lambda s: int(s.status == MANUAL), detection=lambda o: int(o.status == MANUAL)),
-    Field("source", TEXT, "How the face was found: colour segmentation or the Hough fallback for round signs.",
-          **_best("source")),
-    Field("n_obs", INTEGER, "Number of detections fused into the sign.", required=True, sign=lambda s: s.n_obs),
-    Field("vote_share", REAL, "Share of the weighted vote its template won, 0-1.", decimals=3,
-          sign=lambda s: s.vote_share),
-    Field("sigma_m", REAL, "RMS 3D distance of the voters' positions from the fused one [m].", decimals=4,
-          sign=lambda s: s.sigma_m),
+          sign=lambda s: int(s.status == MANUAL), detection=lambda o: int(o.status == MANUAL),
+          **_names("Reviewed", "Geprüft", "Contrôlé", "Verificato")),
+    Field("easting", REAL, "E coordinate of the face centre in the drive's CRS [m] (as the point geometry).",
+          decimals=3, **_coordinate(0), **_names("E [m]", "E [m]", "E [m]", "E [m]")),
+    Field("northing", REAL, "N coordinate of the face centre in the drive's CRS [m].", decimals=3, **_coordinate(1),
+          **_names("N [m]", "N [m]", "N [m]", "N [m]")),
+    Field("elevation", REAL, "Height H of the face centre in the drive's CRS [m].", decimals=3, **_coordinate(2),
+          **_names("H [m]", "H [m]", "H [m]", "H [m]")),
     Field("azimuth", REAL, "Direction the face looks towards, degrees clockwise from grid north.", decimals=1,
-          sign=lambda s: s.azimuth),
+          sign=lambda s: s.azimuth, **_names("Face azimuth [°]", "Azimut Signalfläche [°]",
+                                             "Azimut de la face [°]", "Azimut della faccia [°]")),
     Field("mount_height_m", REAL, "Lower edge of the face above the road [m]; empty when the drive does not state "
-          "its camera height.", decimals=2, sign=lambda s: s.mount_height_m),
+          "its camera height.", decimals=2, sign=lambda s: s.mount_height_m,
+          **_names("Mounting height [m]", "Montagehöhe [m]", "Hauteur de pose [m]", "Altezza di posa [m]")),
+    Field("width_m", REAL, "Standard width of the format [m] (the face's bounding box).",
+          template=lambda entry, fmt, lang: entry.formats[fmt][0], **_both("width_m"),
+          **_names("Width [m]", "Breite [m]", "Largeur [m]", "Larghezza [m]")),
+    Field("height_m", REAL, "Standard height of the format [m] (the face's bounding box).",
+          template=lambda entry, fmt, lang: entry.formats[fmt][1], **_both("height_m"),
+          **_names("Height of face [m]", "Höhe Signalfläche [m]", "Hauteur de la face [m]",
+                   "Altezza della faccia [m]")),
+    Field("format", TEXT, "Standard format the measured size was rounded to (e.g. normal, large).",
+          template=lambda entry, fmt, lang: fmt, **_both("format"),
+          **_names("Format", "Format", "Format", "Formato")),
+    Field("timestamp", TEXT, "Date and time (ISO 8601) of the pair the sign was seen best in (a detection: its "
+          "pair); empty when drive.json does not state the drive's start_time.", contextual=True,
+          sign=lambda s, ctx: ctx.timestamp(s.best.time), detection=lambda o, ctx: ctx.timestamp(o.time),
+          **_names("Recorded", "Aufnahmezeit", "Date de prise de vue", "Data di ripresa")),
+    Field("detection_indicator", REAL, "Planar share of the face, 0-1: is it a sign? Mean of the voters for a sign.",
+          decimals=4, **_both("detection_indicator"),
+          **_names("Detection indicator", "Detektionsindikator", "Indicateur de détection",
+                   "Indicatore di rilevamento")),
+    Field("classification_indicator", REAL, "Template-matching score, 0-1: is it this sign? Mean of the voters "
+          "for a sign.", decimals=4, **_both("classification_indicator"),
+          **_names("Classification indicator", "Klassifikationsindikator", "Indicateur de classification",
+                   "Indicatore di classificazione")),
+    Field("n_obs", INTEGER, "Number of detections fused into the sign.", required=True, sign=lambda s: s.n_obs,
+          **_names("Observations", "Beobachtungen", "Observations", "Osservazioni")),
+    Field("vote_share", REAL, "Share of the weighted vote its template won, 0-1.", decimals=3,
+          sign=lambda s: s.vote_share, **_names("Vote share", "Stimmenanteil", "Part des votes", "Quota di voti")),
+    Field("sigma_m", REAL, "RMS 3D distance of the voters' positions from the fused one [m].", decimals=4,
+          sign=lambda s: s.sigma_m, **_names("Position spread σ [m]", "Streuung σ [m]", "Dispersion σ [m]",
+                                            "Dispersione σ [m]")),
+    Field("crop_path", TEXT, "Image crop of the sign from its best pair, relative to the GeoPackage (written when "
+          "asked for), so the sign can be checked without the drive.", contextual=True,
+          sign=lambda s, ctx: ctx.crops.get(s.sign_id),
+          **_names("Image crop", "Bildausschnitt", "Extrait d'image", "Ritaglio d'immagine")),
+    Field("colour", TEXT, "Dominant colour segmented: red, blue, yellow (or white).", survey=False,
+          template=lambda entry, fmt, lang: entry.colour, **_both("colour"),
+          **_names("Colour", "Farbe", "Couleur", "Colore")),
+    Field("shape", TEXT, "Shape of the face: circle, triangle, triangle-down, octagon, diamond, square, rectangle.",
+          survey=False, template=lambda entry, fmt, lang: entry.shape, **_both("shape"),
+          **_names("Shape", "Form", "Forme", "Forma")),
+    Field("source", TEXT, "How the face was found: colour segmentation or the Hough fallback for round signs.",
+          survey=False, **_best("source"), **_names("Found by", "Gefunden durch", "Trouvé par", "Trovato da")),
     Field("best_pair_id", TEXT, "Pair of the best observation, the one the review shows first.", required=True,
-          sign=lambda s: s.best.pair_id),
-    Field("pair_id", TEXT, "Stereo pair (poses.csv id) the detection was made in.", required=True,
-          detection=lambda o: o.pair_id),
-    Field("time", REAL, "Time of that pair [s].", **_best("time")),
-    Field("u", REAL, "Column of the face centre in the left image [px].", decimals=2, required=True, **_best("u")),
-    Field("v", REAL, "Row of the face centre in the left image [px].", decimals=2, required=True, **_best("v")),
-    Field("bbox_x", INTEGER, "Left column of the face's box in the left image [px].", required=True, **_bbox(0)),
-    Field("bbox_y", INTEGER, "Top row of the face's box [px].", required=True, **_bbox(1)),
-    Field("bbox_w", INTEGER, "Width of the face's box [px].", required=True, **_bbox(2)),
-    Field("bbox_h", INTEGER, "Height of the face's box [px].", required=True, **_bbox(3)),
-    Field("depth_m", REAL, "Depth of the face centre along the optical axis [m].", decimals=3, **_best("depth_m")),
-    Field("sign_id", INTEGER, "The sign this detection was fused into (signs.sign_id).",
-          detection=lambda o: o.sign_id),
+          survey=False, sign=lambda s: s.best.pair_id,
+          **_names("Best pair", "Bestes Bildpaar", "Meilleure paire", "Coppia migliore")),
+    Field("pair_id", TEXT, "Stereo pair (poses.csv id) the detection was made in.", required=True, survey=False,
+          detection=lambda o: o.pair_id, **_names("Pair", "Bildpaar", "Paire", "Coppia")),
+    Field("time", REAL, "Time of that pair as in poses.csv [s].", survey=False, **_best("time"),
+          **_names("Pair time [s]", "Zeit Bildpaar [s]", "Temps de la paire [s]", "Tempo della coppia [s]")),
+    Field("u", REAL, "Column of the face centre in the left image [px].", decimals=2, required=True, survey=False,
+          **_best("u"), **_names("u [px]", "u [px]", "u [px]", "u [px]")),
+    Field("v", REAL, "Row of the face centre in the left image [px].", decimals=2, required=True, survey=False,
+          **_best("v"), **_names("v [px]", "v [px]", "v [px]", "v [px]")),
+    Field("bbox_x", INTEGER, "Left column of the face's box in the left image [px].", required=True, survey=False,
+          **_bbox(0), **_names("Box x [px]", "Box x [px]", "Cadre x [px]", "Riquadro x [px]")),
+    Field("bbox_y", INTEGER, "Top row of the face's box [px].", required=True, survey=False, **_bbox(1),
+          **_names("Box y [px]", "Box y [px]", "Cadre y [px]", "Riquadro y [px]")),
+    Field("bbox_w", INTEGER, "Width of the face's box [px].", required=True, survey=False, **_bbox(2),
+          **_names("Box width [px]", "Box Breite [px]", "Cadre largeur [px]", "Riquadro larghezza [px]")),
+    Field("bbox_h", INTEGER, "Height of the face's box [px].", required=True, survey=False, **_bbox(3),
+          **_names("Box height [px]", "Box Höhe [px]", "Cadre hauteur [px]", "Riquadro altezza [px]")),
+    Field("depth_m", REAL, "Depth of the face centre along the optical axis [m].", decimals=3, survey=False,
+          **_best("depth_m"), **_names("Depth [m]", "Tiefe [m]", "Profondeur [m]", "Profondità [m]")),
+    Field("sign_id", INTEGER, "The sign this detection was fused into (signs.sign_id).", survey=False,
+          detection=lambda o: o.sign_id, **_names("Sign no.", "Signal-Nr.", "N° signal", "N. segnale")),
 )
 
 
@@ -154,14 +248,15 @@ def required_names(layer: str) -> set[str]:
     return {f.name for f in fields(layer) if f.required}
 
 
-def values(layer: str, item) -> dict:
+def values(layer: str, item, context: Optional[OutputContext] = None) -> dict:
     """Field name -> written value of a fused sign (``signs``) or an observation (``detections``)."""
-    return {f.name: f.value(layer, item) for f in fields(layer)}
+    return {f.name: f.value(layer, item, context) for f in fields(layer)}
 
 
-def template_values(layer: str, entry, format_name: str) -> dict:
-    """What reclassifying as catalogue ``entry`` in format ``format_name`` writes."""
-    return {f.name: f.typed(f.template(entry, format_name)) for f in fields(layer) if f.template is not None}
+def template_values(layer: str, entry, format_name: str, language: str = DEFAULT_LANGUAGE) -> dict:
+    """What reclassifying as catalogue ``entry`` in format ``format_name`` writes (its name in ``language``)."""
+    return {f.name: f.typed(f.template(entry, format_name, language)) for f in fields(layer)
+            if f.template is not None}
 
 
 @dataclass(frozen=True)
@@ -189,13 +284,25 @@ RUN_KEYS = (
            lambda r: r.classifier_name, True),
     RunKey("classification_threshold", "Classification indicator for status accepted (the classifier's own "
            "calibrated one unless set).", lambda r: r.classification_threshold),
+    RunKey("run_id", "Identifier of this run (a UUID): exports record it, so the same run is never written twice.",
+           lambda r: r.run_id, True),
 )
-_TEXT_KEYS = {k.key for k in RUN_KEYS if k.text}
+# what the writer chose, not the mapping: read from the OutputContext
+OUTPUT_RUN_KEYS = (
+    RunKey("language", "Language of names and field aliases.", lambda c: c.language, True),
+    RunKey("start_time", "Absolute time of the first pair (drive.json start_time), ISO 8601.",
+           lambda c: c.start.isoformat() if c.start is not None else "", True),
+    RunKey("crops", "Number of sign crops written beside the GeoPackage.", lambda c: len(c.crops)),
+)
+_TEXT_KEYS = {k.key for k in RUN_KEYS + OUTPUT_RUN_KEYS if k.text}
 
 
-def run_record(result) -> dict:
-    """Key -> value of the run table for a ``MappingResult``."""
-    return {k.key: k.read(result) for k in RUN_KEYS}
+def run_record(result, context: Optional[OutputContext] = None) -> dict:
+    """Key -> value of the run table for a ``MappingResult`` (and, when given, how it was written)."""
+    record = {k.key: k.read(result) for k in RUN_KEYS}
+    if context is not None:
+        record.update({k.key: k.read(context) for k in OUTPUT_RUN_KEYS})
+    return record
 
 
 def encode_run_value(value) -> str:
@@ -218,9 +325,14 @@ def _check() -> None:
         duplicates = {n for n in names if names.count(n) > 1}
         if duplicates:
             raise ValueError(f"output schema: layer '{layer}' lists {', '.join(sorted(duplicates))} twice")
+        survey = [f.survey for f in fields(layer)]
+        if True in survey[survey.index(False):] if False in survey else False:
+            raise ValueError(f"output schema: layer '{layer}' lists a survey field after an internal one")
     for f in FIELDS:
         if f.kind not in (TEXT, INTEGER, REAL) or not f.help or (f.sign is None and f.detection is None):
             raise ValueError(f"output schema: field '{f.name}' needs a kind, help text and a layer")
+        if set(f.aliases) != set(LANGUAGES):
+            raise ValueError(f"output schema: field '{f.name}' needs an alias in each of {', '.join(LANGUAGES)}")
 
 
 _check()

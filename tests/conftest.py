@@ -15,3 +15,32 @@ REPO_ROOT = Path(__file__).resolve().parents[1]
 if str(REPO_ROOT) not in sys.path:
     sys.path.insert(0, str(REPO_ROOT))
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+
+import pytest  # noqa: E402
+
+
+@pytest.fixture(scope="session")
+def postgres():
+    """A PostgreSQL + PostGIS server of our own on a free port, removed after the session; fails (never skips)
+    when it cannot start."""
+    from postgres_server import PostgresServer, PostgresUnavailable
+
+    try:
+        server = PostgresServer().start()
+    except PostgresUnavailable as exc:
+        pytest.fail(f"the database tests need PostgreSQL with PostGIS: {exc}", pytrace=False)
+    yield server
+    server.stop()
+
+
+@pytest.fixture(scope="session")
+def signalo_database(postgres):
+    """make(name, up_to=None) -> DSN of a new database holding Signalo's data model (up to that version)."""
+    from signalo_schema import install_signalo
+
+    def make(name: str, up_to=None) -> str:
+        dsn = postgres.create_database(name)
+        install_signalo(dsn, up_to)
+        return dsn
+
+    return make

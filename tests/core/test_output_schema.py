@@ -94,3 +94,48 @@ def test_run_values_round_trip_as_text_or_json():
     assert schema.decode_run_value("colours", schema.encode_run_value(["red", "blue"])) == ["red", "blue"]
     assert schema.decode_run_value("from_a_later_version", "not json") == "not json"
     assert [k.key for k in schema.RUN_KEYS][:2] == ["software", "drive"]
+
+
+def test_survey_fields_come_first_with_coordinates_and_aliases_in_four_languages():
+    for layer in schema.LAYERS:
+        survey = [f.survey for f in schema.fields(layer)]
+        assert survey == sorted(survey, reverse=True), layer  # no survey field after an internal one
+        assert all(set(f.aliases) == set(schema.LANGUAGES) for f in schema.fields(layer))
+    names = [f.name for f in schema.fields(schema.SIGNS)]
+    assert names.index("elevation") < names.index("u") and names.index("timestamp") < names.index("bbox_x")
+    assert schema.field(schema.SIGNS, "template_id").alias("it") == "Tipo di segnale (OSS)"
+    assert schema.field(schema.SIGNS, "sigma_m").alias("xx") == "Position spread σ [m]"  # unknown: English
+    assert [schema.language_of(x) for x in ("fr_CH", "de", "it-IT", "C", "", "rm_CH")] == ["fr", "de", "it", "en",
+                                                                                         "en", "en"]
+
+
+def test_coordinates_names_and_iso_timestamps_follow_the_output_context(fused):
+    from datetime import datetime, timedelta, timezone
+
+    sign, observations = fused
+    plain = schema.values(schema.SIGNS, sign)
+    assert (plain["easting"], plain["northing"], plain["elevation"]) == tuple(round(float(c), 3) for c in
+                                                                             sign.position)
+    assert plain["timestamp"] is None and plain["crop_path"] is None and plain["name"] == sign.name
+    start = datetime(2026, 5, 4, 9, 12, 3, 200000, tzinfo=timezone(timedelta(hours=2)))
+    context = schema.OutputContext(language="fr", catalogue=load_catalogue(), start=start, first_time=0.2,
+                                   crops={sign.sign_id: "run_crops/sign_00001.jpg"})
+    row = schema.values(schema.SIGNS, sign, context)
+    assert row["name"] == load_catalogue()["2.30-50"].name("fr")
+    expected = (start + timedelta(seconds=sign.best.time - 0.2)).isoformat(timespec="milliseconds")
+    assert row["timestamp"] == expected and expected.endswith("+02:00")
+    assert row["crop_path"] == "run_crops/sign_00001.jpg"
+    assert schema.values(schema.DETECTIONS, observations[0], context)["timestamp"] == (
+        start + timedelta(seconds=0.4)).isoformat(timespec="milliseconds")
+    assert schema.template_values(schema.SIGNS, load_catalogue()["2.01"], "normal", "it")["name"] == \
+        load_catalogue()["2.01"].name("it")
+
+
+def test_run_table_records_how_the_rows_were_written():
+    from types import SimpleNamespace
+
+    context = schema.OutputContext(language="it", crops={1: "a.jpg", 2: "b.jpg"})
+    record = {k.key: k.read(context) for k in schema.OUTPUT_RUN_KEYS}
+    assert record == {"language": "it", "start_time": "", "crops": 2}
+    assert schema.decode_run_value("language", "it") == "it"
+    assert SimpleNamespace  # the mapping part is covered by the golden GeoPackage

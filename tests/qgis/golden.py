@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import math
 import sqlite3
+import uuid
 from pathlib import Path
 
 from osgeo import ogr
@@ -22,6 +23,7 @@ REPO_ROOT = Path(__file__).resolve().parents[2]
 FLOAT_TOLERANCE = {
     "detection_indicator": 1.1e-4, "classification_indicator": 1.1e-4, "vote_share": 1.1e-3, "sigma_m": 1.1e-4,
     "azimuth": 0.11, "mount_height_m": 0.011, "u": 0.011, "v": 0.011, "depth_m": 1.1e-3, "geometry": 1e-4,
+    "easting": 1.1e-3, "northing": 1.1e-3, "elevation": 1.1e-3,
 }
 DEFAULT_TOLERANCE = 1e-9
 
@@ -38,6 +40,14 @@ def _placeholders(text, drive_dir: Path):
     return text
 
 
+def _is_uuid(text) -> bool:
+    try:
+        uuid.UUID(str(text))
+    except ValueError:
+        return False
+    return True
+
+
 def _features(path: Path, table: str) -> list:
     source = ogr.Open(str(path))
     layer = source.GetLayerByName(table)
@@ -52,21 +62,24 @@ def _features(path: Path, table: str) -> list:
 
 
 def _styles(path: Path) -> dict:
-    """What the default style of each layer shows: renderer, its attribute, categories, labels."""
+    """What the default style of each layer shows: renderer, its groups or categories, labels, aliases."""
     from qgis.core import QgsVectorLayer
 
     out = {}
     for name in ("signs", "detections"):
         layer = QgsVectorLayer(f"{path}|layername={name}", name, "ogr")
         renderer = layer.renderer()
-        style = {"renderer": renderer.type(), "attribute": renderer.classAttribute(), "labels": None}
-        categories = renderer.categories()  # keep the list alive: its symbols belong to it
+        style = {"renderer": renderer.type(), "labels": None}
         if name == "detections":
+            categories = renderer.categories()  # keep the list alive: its symbols belong to it
+            style["attribute"] = renderer.classAttribute()
             style["categories"] = [[c.value(), c.symbol().color().name()] for c in categories]
-        else:  # one pictogram per catalogue entry: the catalogue is not this file's schema, only its fallback is
-            style["fallback"] = [c.label() for c in categories if c.value() == ""]
+        else:  # one pictogram per catalogue entry: the catalogue is not this file's schema; its family groups are
+            groups = renderer.rootRule().children()
+            style["groups"] = [[g.label(), len(g.children()), g.isElse()] for g in groups]
         if layer.labelsEnabled():
             style["labels"] = layer.labeling().settings().fieldName
+        style["aliases"] = {f.name(): f.alias() for f in layer.fields() if f.alias()}
         out[name] = style
     return out
 
@@ -104,6 +117,8 @@ def dump_gpkg(path: Path, drive_dir: Path) -> dict:
             table["rows"] = {r["attributes"]["key"]: _placeholders(r["attributes"]["value"], drive_dir) for r in rows}
             software = table["rows"].get("software", "")
             table["rows"]["software"] = "Sign Mapper <version>" if software.startswith("Sign Mapper ") else software
+            if "run_id" in table["rows"]:  # a new UUID every run
+                table["rows"]["run_id"] = "<uuid>" if _is_uuid(table["rows"]["run_id"]) else table["rows"]["run_id"]
         else:
             table["features"] = rows
     abstracts = sorted(a[a.index("<abstract>"):a.index("</abstract>") + 11] for a in abstracts if "<abstract>" in a)

@@ -21,7 +21,8 @@ def test_mapsigns_output_matches_the_golden_geopackage(registered_plugin, small_
     import processing
 
     out = tmp_path / "golden.gpkg"
-    processing.run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out)})
+    # German names and aliases whatever the machine's locale (LANGUAGE 2 = de)
+    processing.run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out), "LANGUAGE": 2})
     dump = dump_gpkg(out, small_drive)
     if os.environ.get("SIGNMAPPER_UPDATE_GOLDEN"):
         write_golden(GOLDEN, dump)

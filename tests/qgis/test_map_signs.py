@@ -96,11 +96,10 @@ def test_layers_open_with_the_embedded_pictogram_style(run, small_drive, tmp_pat
     run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out)})
     signs = QgsVectorLayer(f"{out}|layername=signs", "s", "ogr")
     renderer = signs.renderer()
-    assert renderer.type() == "categorizedSymbol" and renderer.classAttribute() == "template_id"
-    categories = renderer.categories()  # keep the list alive: its symbols belong to it
-    values = {c.value() for c in categories}
-    assert {f["template_id"] for f in signs.getFeatures()} <= values
-    svg = categories[0].symbol().symbolLayer(0)
+    assert renderer.type() == "RuleRenderer"
+    rules = {r.filterExpression(): r for r in renderer.rootRule().descendants()}
+    assert all(f""""template_id" = '{f["template_id"]}'""" in rules for f in signs.getFeatures())
+    svg = renderer.rootRule().children()[0].children()[0].symbol().symbolLayer(1)
     assert svg.layerType() == "SvgMarker" and svg.path().startswith("base64:")
     assert signs.labelsEnabled()
     detections = QgsVectorLayer(f"{out}|layername=detections", "d", "ogr")
@@ -157,7 +156,8 @@ def test_tuning_parameters_are_advanced(registered_plugin):
     alg = QgsApplication.processingRegistry().algorithmById("signmapper:mapsigns")
     advanced = {p.name() for p in alg.parameterDefinitions()
                 if p.flags() & QgsProcessingParameterDefinition.FlagAdvanced}
-    assert advanced == {"EXCLUDE", "DETECTION_THRESHOLD", "CLASSIFIER", "CLASSIFICATION_THRESHOLD", "CATALOGUE"}
+    assert advanced == {"EXCLUDE", "DETECTION_THRESHOLD", "CLASSIFIER", "CLASSIFICATION_THRESHOLD", "CATALOGUE",
+                        "LANGUAGE"}
 
 
 def test_corrupt_pair_is_logged_and_skipped(run, small_drive, tmp_path):
@@ -254,3 +254,26 @@ def test_map_signs_through_qgis_process(plugin_dir, small_drive, tmp_path):
     assert code == 0, log
     assert data["results"]["OUTPUT"] == str(out)
     assert_finds_truth(read_detections(out), small_drive, min_signs=2)
+
+
+def test_crops_beside_the_geopackage_and_iso_timestamps(run, small_drive, tmp_path):
+    import json
+    import shutil
+
+    drive = tmp_path / "dated"
+    shutil.copytree(small_drive, drive)
+    meta = json.loads((drive / "drive.json").read_text())
+    meta["start_time"] = "2026-05-04T09:12:03+02:00"
+    (drive / "drive.json").write_text(json.dumps(meta))
+    out = tmp_path / "run.gpkg"
+    run("signmapper:mapsigns", {"DRIVE": str(drive), "OUTPUT": str(out), "CROPS": True})
+    signs = list(QgsVectorLayer(f"{out}|layername=signs", "s", "ogr").getFeatures())
+    assert signs
+    first = open_drive(drive).pairs[0].time
+    for sign in signs:
+        crop = out.parent / sign["crop_path"]
+        assert sign["crop_path"] == f"run_crops/sign_{sign['sign_id']:05d}.jpg" and crop.is_file()
+        assert sign["timestamp"].startswith("2026-05-04T09:12:") and sign["timestamp"].endswith("+02:00")
+        seconds = float(sign["timestamp"][17:23]) - 3.0
+        assert seconds == pytest.approx(sign["time"] - first, abs=1e-3)
+    assert not list(tmp_path.glob(".*partial*"))

@@ -1,0 +1,2 @@
+ALTER TABLE signalo_db.support
+    ADD column picture_2 text;

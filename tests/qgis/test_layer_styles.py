@@ -1,0 +1,189 @@
+"""Layer styles: every way a run's layers reach the map is styled, the review state shows and follows decisions,
+the legend groups by sign family, fields carry aliases in the output language."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from drive_fixtures import SMALL_SYNTHETIC as SMALL
+from qgis.core import (
+    QgsFeature,
+    QgsGeometry,
+    QgsMapRendererParallelJob,
+    QgsMapSettings,
+    QgsPointXY,
+    QgsProcessingModelAlgorithm,
+    QgsProcessingModelChildAlgorithm,
+    QgsProcessingModelChildParameterSource,
+    QgsProcessingModelOutput,
+    QgsProject,
+    QgsRectangle,
+    QgsVectorLayer,
+)
+from qgis.PyQt.QtCore import QSize
+from qgis.PyQt.QtGui import QColor, QImage
+
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.output_schema import STATUS_COLOURS
+
+STATUSES = ("accepted", "review", "rejected", "manual")
+SPACING_M = 10.0  # between the test signs on the map
+PX_PER_M = 8.0
+
+
+@pytest.fixture
+def styles(sign_mapper):
+    from sign_mapper.gpkg import styles
+
+    return styles
+
+
+@pytest.fixture
+def clean_project():
+    yield QgsProject.instance()
+    QgsProject.instance().removeAllMapLayers()
+
+
+def memory_signs(statuses, template_id="2.30-50"):
+    """A signs-like memory layer: one 2.30-50 per status, SPACING_M apart along x."""
+    layer = QgsVectorLayer("Point?crs=EPSG:2056&field=template_id:string&field=status:string&field=azimuth:double",
+                           "signs", "memory")
+    features = []
+    for i, status in enumerate(statuses):
+        feature = QgsFeature(layer.fields())
+        feature.setAttributes([template_id, status, None])
+        feature.setGeometry(QgsGeometry.fromPointXY(QgsPointXY(2600000.0 + SPACING_M * i, 1200000.0)))
+        features.append(feature)
+    layer.dataProvider().addFeatures(features)
+    return layer
+
+
+def render(layer, n):
+    settings = QgsMapSettings()
+    settings.setLayers([layer])
+    settings.setDestinationCrs(layer.crs())
+    width = int(SPACING_M * n * PX_PER_M)
+    settings.setOutputSize(QSize(width, int(SPACING_M * PX_PER_M)))
+    settings.setExtent(QgsRectangle(2600000.0 - SPACING_M / 2, 1200000.0 - SPACING_M / 2,
+                                    2600000.0 + SPACING_M * (n - 0.5), 1200000.0 + SPACING_M / 2))
+    settings.setBackgroundColor(QColor("white"))
+    settings.setOutputDpi(96)
+    job = QgsMapRendererParallelJob(settings)
+    job.start()
+    job.waitForFinished()
+    image = job.renderedImage().convertToFormat(QImage.Format_RGB888)
+    ptr = image.constBits()
+    ptr.setsize(image.bytesPerLine() * image.height())
+    rows = np.frombuffer(ptr, np.uint8).reshape(image.height(), image.bytesPerLine())
+    return rows[:, : image.width() * 3].reshape(image.height(), image.width(), 3).copy()
+
+
+def cells(rgb, n):
+    w = rgb.shape[1] // n
+    return [rgb[:, i * w:(i + 1) * w] for i in range(n)]
+
+
+def share_near(cell, colour, tolerance=40):
+    target = np.array(QColor(colour).getRgb()[:3])
+    return float(np.mean(np.abs(cell.astype(int) - target).sum(axis=2) < tolerance))
+
+
+def strong_red(cell):
+    r, g, b = (cell[..., i].astype(int) for i in range(3))
+    return float(np.mean((r > 180) & (g < 80) & (b < 80)))
+
+
+def test_review_state_shows_in_the_symbol_and_follows_decisions(styles):
+    layer = memory_signs(STATUSES)
+    styles.apply_style(layer, "signs", load_catalogue(), "de")
+    accepted, review, rejected, manual = cells(render(layer, 4), 4)
+    assert strong_red(accepted) > 0.01 and share_near(accepted, STATUS_COLOURS["review"]) < 0.002
+    assert share_near(review, STATUS_COLOURS["review"], 60) > 0.01  # orange halo
+    assert strong_red(rejected) < 0.2 * strong_red(accepted)  # faded
+    assert share_near(rejected, "#212121", 60) > 0.002  # crossed
+    assert share_near(manual, STATUS_COLOURS["manual"]) > 0.002 and share_near(accepted,
+                                                                              STATUS_COLOURS["manual"]) < 0.001
+    # a decision changes the picture at the next repaint, without restyling
+    layer.startEditing()
+    fid = sorted(f.id() for f in layer.getFeatures())[1]
+    layer.changeAttributeValue(fid, layer.fields().indexOf("status"), "rejected")
+    layer.commitChanges()
+    _, decided, _, _ = cells(render(layer, 4), 4)
+    assert share_near(decided, STATUS_COLOURS["review"], 60) < 0.002 and share_near(decided, "#212121", 60) > 0.002
+
+
+def test_legend_groups_the_pictograms_by_sign_family(styles):
+    catalogue = load_catalogue()
+    renderer = styles.signs_renderer(catalogue, "fr")
+    groups = renderer.rootRule().children()
+    labels = [g.label() for g in groups]
+    assert labels == ["Signaux de danger", "Signaux de priorité", "Interdictions", "Prescriptions",
+                      "Signaux d'indication", "other"]
+    assert sum(len(g.children()) for g in groups[:-1]) == len(catalogue)
+    danger = {r.label().split(" ", 1)[0] for r in groups[0].children()}
+    assert "1.01" in danger and "2.30-50" not in danger
+    mandatory = {r.label().split(" ", 1)[0] for r in groups[3].children()}
+    assert "2.37" in mandatory and all(catalogue[i].colour == "blue" for i in mandatory)
+    assert groups[-1].isElse()
+
+
+def test_fields_get_aliases_in_the_output_language(styles, small_drive, registered_plugin, tmp_path):
+    import processing
+
+    out = tmp_path / "fr.gpkg"
+    processing.run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out), "LANGUAGE": 3})  # fr
+    layer = QgsVectorLayer(f"{out}|layername=signs", "signs", "ogr")  # opens with the embedded default style
+    aliases = {f.name(): f.alias() for f in layer.fields()}
+    assert aliases["template_id"] == "Type de signal (OSR)" and aliases["elevation"] == "H [m]"
+    names = {f["template_id"]: f["name"] for f in layer.getFeatures()}
+    catalogue = load_catalogue()
+    assert names and all(name == catalogue[tid].name("fr") for tid, name in names.items())
+
+
+def _assert_styled(layer, language_alias):
+    assert layer.renderer().type() == "RuleRenderer", layer.name()
+    assert layer.labelsEnabled()
+    assert layer.fields().field("template_id").alias() == language_alias
+
+
+def test_run_and_load_results_gives_styled_layers(registered_plugin, small_drive, tmp_path, clean_project):
+    """The dialog's path: Processing loads the layers without their default style; the post-processor styles."""
+    import processing
+
+    out = tmp_path / "loaded.gpkg"
+    processing.runAndLoadResults("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out),
+                                                         "LANGUAGE": 2})  # de
+    layers = {Path(layer.source().split("|")[0]).name + "|" + layer.source().split("=")[-1]: layer
+              for layer in clean_project.mapLayers().values()}
+    signs, detections = layers["loaded.gpkg|signs"], layers["loaded.gpkg|detections"]
+    _assert_styled(signs, "Signaltyp (SSV)")
+    assert detections.renderer().type() == "categorizedSymbol"
+    assert detections.renderer().classAttribute() == "status"
+
+
+def test_a_model_run_loads_styled_layers(registered_plugin, tmp_path, clean_project):
+    import processing
+
+    model = QgsProcessingModelAlgorithm("chain", "tests")
+    sim = QgsProcessingModelChildAlgorithm("signmapper:syntheticdrive")
+    sim.setChildId("sim")
+    for name, value in {"PAIRS": 6, "SEED": 12, "WRITE_DEPTH": True, "WIDTH": SMALL["width"],
+                        "HEIGHT": SMALL["height"], "FX": SMALL["fx"]}.items():
+        sim.addParameterSources(name, [QgsProcessingModelChildParameterSource.fromStaticValue(value)])
+    sim.addParameterSources("OUTPUT", [QgsProcessingModelChildParameterSource.fromStaticValue(str(tmp_path / "d"))])
+    mapper = QgsProcessingModelChildAlgorithm("signmapper:mapsigns")
+    mapper.setChildId("map")
+    mapper.addParameterSources("DRIVE", [QgsProcessingModelChildParameterSource.fromChildOutput("sim", "OUTPUT")])
+    mapper.addParameterSources("LANGUAGE", [QgsProcessingModelChildParameterSource.fromStaticValue(1)])  # en
+    output = QgsProcessingModelOutput("gpkg", "Mapped signs")
+    output.setChildId("map")
+    output.setChildOutputName("OUTPUT")
+    mapper.setModelOutputs({"gpkg": output})
+    model.addChildAlgorithm(sim)
+    model.addChildAlgorithm(mapper)
+    model.updateDestinationParameters()
+    processing.runAndLoadResults(model, {"map:gpkg": str(tmp_path / "chain.gpkg")})
+    signs = [layer for layer in clean_project.mapLayers().values() if layer.source().endswith("layername=signs")]
+    assert signs, [layer.source() for layer in clean_project.mapLayers().values()]
+    for layer in signs:
+        _assert_styled(layer, "Sign type (SSV)")
