@@ -88,6 +88,8 @@ def test_model_card_reads_its_fields(tmp_path):
     ({"temperature": 0}, "field 'temperature'"),
     ({"accept_threshold": 1.0}, "field 'accept_threshold'"),
     ({"margin": True}, "field 'margin'"),
+    ({"views": [[0, 0]]}, "field 'views'"),
+    ({"views": [[0.9, 0, 1]]}, "field 'views'"),
     ({"onnx": "missing.onnx"}, "model file missing"),
 ])
 def test_model_card_errors_name_the_file_and_field(tmp_path, changes, message):
@@ -141,3 +143,11 @@ def test_configured_threshold_wins_over_the_classifiers_own(catalogue_without_mo
     assert accept_threshold(ncc, PipelineConfig()) == ncc.accept_threshold == 0.6
     assert accept_threshold(ncc, PipelineConfig(classification_threshold=0.75)) == 0.75
     assert min_score(ncc, PipelineConfig(min_classification_score=0.1)) == 0.1
+
+
+def test_a_view_moves_and_scales_the_box_about_its_centre():
+    from signmapper_core.pipeline.classifiers.learned import _view
+
+    assert _view((10, 20, 40, 20), (0.0, 0.0, 1.0)) == (10, 20, 40, 20)
+    assert _view((10, 20, 40, 20), (0.25, -0.5, 1.0)) == (20, 10, 40, 20)
+    assert _view((10, 20, 40, 20), (0.0, 0.0, 1.5)) == (0, 15, 60, 30)

@@ -46,6 +46,7 @@ class ModelCard:
     temperature: float
     accept_threshold: float  # calibrated probability above which a sign is "accepted"
     min_score: float  # below this probability the segment is not reported as a sign
+    views: tuple = ((0.0, 0.0, 1.0),)  # (dx, dy, scale) of the box, in box sizes: logits averaged over them
 
     def index(self, template_id: str) -> int:
         return self.classes.index(template_id)
@@ -80,6 +81,12 @@ def load_model_card(path) -> ModelCard:
     if BACKGROUND not in classes:
         raise ClassifierError(path, f"field 'classes' needs the background class {BACKGROUND!r}")
     onnx = path.parent / field("onnx", str, bool, "the model file name")
+    views = raw.get("views", [[0.0, 0.0, 1.0]])
+    if (not isinstance(views, list) or not views or not all(
+            isinstance(v, list) and len(v) == 3 and all(isinstance(c, (int, float)) for c in v)
+            and abs(v[0]) <= 0.5 and abs(v[1]) <= 0.5 and 0.5 <= v[2] <= 2 for v in views)):
+        raise ClassifierError(path, f"field 'views' must be a list of [dx, dy, scale] (|d| <= 0.5, scale 0.5..2), "
+                                    f"got {views!r}")
     if not onnx.is_file():
         raise ClassifierError(onnx, "model file missing (named by field 'onnx' of model.json)")
     return ModelCard(
@@ -89,7 +96,16 @@ def load_model_card(path) -> ModelCard:
         temperature=float(field("temperature", (int, float), lambda v: 0.05 <= v <= 20, "a number 0.05..20")),
         accept_threshold=float(field("accept_threshold", (int, float), lambda v: 0 < v < 1, "a number in (0, 1)")),
         min_score=float(field("min_score", (int, float), lambda v: 0 <= v < 1, "a number in [0, 1)")),
+        views=tuple(tuple(float(c) for c in v) for v in views),
     )
+
+
+def _view(bbox, view) -> tuple:
+    """``bbox`` moved by (dx, dy) box sizes and scaled about its centre: another look at an uncertain box."""
+    x, y, w, h = (float(c) for c in bbox)
+    dx, dy, scale = view
+    cx, cy = x + w / 2 + dx * w, y + h / 2 + dy * h
+    return cx - scale * w / 2, cy - scale * h / 2, scale * w, scale * h
 
 
 def _softmax(z: np.ndarray) -> np.ndarray:
@@ -121,10 +137,13 @@ class LearnedClassifier:
         return all(t in self._index for t in template_ids)
 
     def logits(self, image: np.ndarray, bboxes: Sequence) -> np.ndarray:
-        """Raw network outputs (n, classes) for face boxes of one image."""
-        patches = np.stack([face_patch(image, b, self.card.input_px, self.card.margin) for b in bboxes])
+        """Network outputs (n, classes) for face boxes of one image, averaged over the card's views of each."""
+        views = self.card.views
+        boxes = [_view(b, v) for b in bboxes for v in views]
+        patches = np.stack([face_patch(image, b, self.card.input_px, self.card.margin) for b in boxes])
         self._net.setInput(standardise(patches))
-        return np.asarray(self._net.forward(), dtype=np.float64).reshape(len(bboxes), -1)
+        out = np.asarray(self._net.forward(), dtype=np.float64).reshape(len(bboxes), len(views), -1)
+        return out.mean(axis=1)
 
     def probabilities(self, logits: np.ndarray, candidate_ids: Sequence[str]) -> np.ndarray:
         """Calibrated probabilities of the candidates and, last, of the background."""
