@@ -21,3 +21,7 @@ class DriveFormatError(ValueError):
 
 class ImageReadError(DriveFormatError):
     """An image or depth map exists but cannot be decoded or has the wrong size."""
+
+
+class MappingError(RuntimeError):
+    """A run whose output could not be trusted, e.g. because too many pairs could not be read."""
