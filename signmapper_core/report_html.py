@@ -11,14 +11,10 @@ import html
 
 import numpy as np
 
-from .evaluation import COMPONENTS, EvaluationReport
+from .evaluation import COMPONENTS, NO_DIFFERENCES, EvaluationReport, table1_texts
 
 LABELS = {"across": "across track", "along": "along track", "height": "height", "planimetric": "planimetric",
           "3d": "3D"}
-
-
-def _pct(x: float) -> str:
-    return "–" if not np.isfinite(x) else f"{100 * x:.1f} %"
 
 
 def _m(x: float) -> str:
@@ -50,21 +46,24 @@ def error_plot_svg(differences: np.ndarray, size_px: int = 360) -> str:
 
 
 def report_html(report: EvaluationReport, title: str, notes: list[str] | None = None) -> str:
-    t1 = report.table1
+    texts = table1_texts(report.table1)
     rows1 = [
-        ("Reference signs", f"{t1.reference_signs}"),
-        ("Detected signs", f"{t1.detected_signs} ({_pct(t1.detection_rate)})"),
-        ("Correctly classified signs", f"{t1.correctly_classified_signs} ({_pct(t1.classification_rate)} of detected)"),
-        ("Mapped features", f"{t1.detections}"),
-        ("False positives (features matching no reference sign)", f"{t1.false_positive_detections}"),
-        ("Duplicates (reference signs matched by more than one feature)", f"{t1.duplicates}"),
+        ("Reference signs", texts["reference signs"]),
+        ("Detected signs", texts["detected signs"]),
+        ("Correctly classified signs", texts["correctly classified signs"]),
+        ("Mapped features", texts["mapped features"]),
+        ("False positives (features matching no reference sign)", texts["false positive features"]),
+        ("Duplicates (reference signs matched by more than one feature)", texts["reference signs with >1 feature"]),
     ]
-    rows2 = "\n".join(
-        f"<tr><td>{LABELS[c]}</td><td>{report.table2[c].n}</td><td>{_m(report.table2[c].mean)}</td>"
-        f"<td>{_m(report.table2[c].std)}</td><td>{_m(report.table2[c].rms)}</td>"
-        f"<td>{_m(report.table2[c].max_abs)}</td></tr>"
-        for c in COMPONENTS
-    )
+    if report.table2[COMPONENTS[0]].n == 0:
+        rows2 = f'<tr><td colspan="6">{html.escape(NO_DIFFERENCES)}</td></tr>'
+    else:
+        rows2 = "\n".join(
+            f"<tr><td>{LABELS[c]}</td><td>{report.table2[c].n}</td><td>{_m(report.table2[c].mean)}</td>"
+            f"<td>{_m(report.table2[c].std)}</td><td>{_m(report.table2[c].rms)}</td>"
+            f"<td>{_m(report.table2[c].max_abs)}</td></tr>"
+            for c in COMPONENTS
+        )
     confusions = "".join(f"<li>{html.escape(a)} → {html.escape(b)}</li>" for a, b in report.confusions)
     notes_html = "".join(f"<li>{html.escape(n)}</li>" for n in (notes or []))
     return f"""<!DOCTYPE html>
