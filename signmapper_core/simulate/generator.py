@@ -1,8 +1,10 @@
 """Driver of a synthetic drive: poses along the street, pair-by-pair rendering, files.
 
-The drive is written into a hidden sibling folder and renamed when complete, so a
-cancelled or failed run leaves no half-written drive. Memory stays flat with the
-length of the drive: only textures near the vehicle are kept.
+The drive is written into a hidden sibling folder ``.<name>.partial-<pid>`` and
+renamed when complete, so a cancelled or failed run leaves no half-written drive;
+the folder of a run that was killed (its process is gone) is removed by the next
+run for the same drive. Memory stays flat with the length of the drive: only
+textures near the vehicle are kept.
 """
 
 from __future__ import annotations
@@ -113,14 +115,39 @@ def _temporary_sibling(out_dir: Path) -> Path:
     return out_dir.parent / f".{out_dir.name}.partial-{os.getpid()}"
 
 
+def _process_alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # another user's process
+        return True
+    return True
+
+
+def remove_stale_partials(out_dir: Path) -> list[Path]:
+    """Delete the partial folders of earlier runs for ``out_dir`` whose process no longer exists (killed)."""
+    removed = []
+    for folder in out_dir.parent.glob(f".{out_dir.name}.partial-*"):
+        pid = folder.name.rsplit("-", 1)[-1]
+        if folder.is_dir() and pid.isdigit() and (int(pid) == os.getpid() or not _process_alive(int(pid))):
+            shutil.rmtree(folder, ignore_errors=True)
+            removed.append(folder)
+    return removed
+
+
 def generate_drive(out_dir, config: SimulationConfig | None = None,
                    progress: Callable[[float, str], None] | None = None,
-                   is_cancelled: Callable[[], bool] | None = None) -> SimulationSummary:
+                   is_cancelled: Callable[[], bool] | None = None,
+                   before_commit: Callable[[list], None] | None = None) -> SimulationSummary:
     """Write a synthetic drive (drive-format v1 with truth.csv) into ``out_dir``.
 
     ``out_dir`` must not exist or be an empty folder. Returns a summary with the
     true poses the images were rendered from. Raises :class:`Cancelled` when
     ``is_cancelled()`` turns true; nothing is left behind then.
+    ``before_commit(truth)`` is called with the truth signs once every file is
+    written, before the drive takes its name: a caller's own outputs (the truth
+    layer) are written there, so that when they fail no drive is left either.
     """
     config = config or SimulationConfig()
     config.validate()
@@ -130,9 +157,8 @@ def generate_drive(out_dir, config: SimulationConfig | None = None,
     started = time.perf_counter()
     report = progress or (lambda _f, _m: None)
     cancelled = is_cancelled or (lambda: False)
+    remove_stale_partials(out_dir)
     tmp = _temporary_sibling(out_dir)
-    if tmp.exists():
-        shutil.rmtree(tmp)
     tmp.mkdir(parents=True)
     try:
         report(0.0, "laying out the street")
@@ -162,6 +188,8 @@ def generate_drive(out_dir, config: SimulationConfig | None = None,
         write_truth_csv(tmp, truth)
         if cancelled():
             raise Cancelled("synthetic drive cancelled")
+        if before_commit is not None:
+            before_commit(truth)
         if out_dir.exists():
             out_dir.rmdir()
         tmp.rename(out_dir)
