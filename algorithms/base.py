@@ -68,6 +68,24 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
             "Folder of one drive in the stereo-drive/1 layout: drive.json, poses.csv, left/ and right/ or depth/.",
         )
 
+    def checkParameterValues(self, parameters, context):  # noqa: N802
+        """QGIS's own checks, then the outputs: no folder, writable, not an input (``output_paths``)."""
+        ok, message = super().checkParameterValues(parameters, context)
+        if not ok:
+            return ok, message
+        from .output_paths import output_problem
+
+        problem = output_problem(self, parameters, context)
+        return (False, problem) if problem else (True, "")
+
+    def check_outputs(self, parameters, context) -> None:
+        """The output check of ``checkParameterValues`` at the start of a run (models may skip the former)."""
+        from .output_paths import output_problem
+
+        problem = output_problem(self, parameters, context)
+        if problem:
+            raise QgsProcessingException(problem)
+
     def require_dependencies(self):
         """Raise a clear QgsProcessingException naming what to install when OpenCV & co. are missing."""
         missing = missing_modules()

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 from qgis.core import (
@@ -31,6 +32,12 @@ from ..signmapper_core.output_schema import REJECTED
 from .base import SignMapperAlgorithm
 
 
+def defined(value):
+    """A figure as a number, or None (NULL, no value) where it is undefined: a rate of nothing, σ of nothing."""
+    value = float(value)
+    return value if math.isfinite(value) else None
+
+
 class EvaluateAlgorithm(SignMapperAlgorithm):
     NAME = "evaluate"
     DISPLAY_NAME = "Evaluate against reference"
@@ -43,7 +50,11 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         "matched by more than one mapped sign). Table 2: mean, empirical standard deviation, RMS and maximum "
         "of the coordinate differences across track, along track, in height, planimetric and 3D, in the frame "
         "of the trajectory at each sign. Signs with status 'rejected' are left out. Writes an HTML report with "
-        "a plot of the error vectors, a statistics table and a line layer joining each matched pair."
+        "a plot of the error vectors, a statistics table and a line layer joining each matched pair. "
+        "Sign types are catalogue ids compared as text: '1.30' is not '1.3'. Load a reference such as truth.csv "
+        "with its id field as text; where the field is numeric (delimited-text type detection turns '1.30' into "
+        "1.3) a warning says so and each number is read back as the catalogue id it stands for where that is "
+        "unambiguous. No output may name an input file: the run is refused before any work."
     )
 
     SIGNS = "SIGNS"
@@ -120,6 +131,8 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         import numpy as np
 
+        self.check_outputs(parameters, context)
+
         from ..signmapper_core.evaluation import COMPONENTS, evaluate, format_report
         from ..signmapper_core.report_html import report_html
 
@@ -136,6 +149,9 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         to_signs = QgsCoordinateTransform(reference.sourceCrs(), signs.sourceCrs(), context.transformContext())
         facing_field = self.parameterAsString(parameters, self.REFERENCE_FACING_FIELD, context)
         refs = self.read_points(reference, ref_field, height_field, to_signs, context, facing_field=facing_field)
+        if reference.fields().field(ref_field).isNumeric():
+            refs["ids"] = self.ids_from_numbers(refs["ids"], mapped["ids"], parameters, context, feedback,
+                                                reference, ref_field)
         if not refs["xyz"]:
             raise QgsProcessingException("The reference layer has no points.")
         trajectory = self.trajectory_xy(parameters, context, signs, to_signs)
@@ -158,10 +174,54 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         t1 = report.table1
         return {
             self.REPORT: html_path, self.STATISTICS: stats_id, self.MATCHES: matches_id,
-            "DETECTION_RATE": t1.detection_rate, "CLASSIFICATION_RATE": t1.classification_rate,
+            "DETECTION_RATE": defined(t1.detection_rate), "CLASSIFICATION_RATE": defined(t1.classification_rate),
             "FALSE_POSITIVES": t1.false_positive_detections, "DUPLICATES": t1.duplicates,
-            "SIGMA_3D": report.table2["3d"].std,
+            "SIGMA_3D": defined(report.table2["3d"].std),
         }
+
+    def ids_from_numbers(self, numbers, mapped_ids, parameters, context, feedback, reference, field_name):
+        """Catalogue ids (text) for a reference id field that QGIS typed as a number, with a warning.
+
+        1.3 stands for the id that reads as that number ("1.30") among the mapped ids and the catalogue
+        the signs were mapped with; where none or several do, the number stays as written.
+        """
+        from ..signmapper_core.catalogue import load_catalogue
+
+        kind = reference.fields().field(field_name).typeName()
+        known = set(mapped_ids)
+        try:
+            known |= set(load_catalogue(self.recorded_run(parameters, context).get("catalogue")).ids())
+        except Exception:  # noqa: BLE001 - the catalogue only helps to read numbers back; its loss is logged
+            feedback.pushInfo("The catalogue of the mapped signs could not be loaded; only their own ids are "
+                              "used to read the reference's numbers back as ids")
+        by_number: dict[float, set] = {}
+        for text in known:
+            try:
+                by_number.setdefault(float(text), set()).add(text)
+            except ValueError:
+                continue
+        ids, unresolved, example = [], [], None
+        for value in numbers:
+            try:
+                number = float(value)
+            except ValueError:  # NULL
+                ids.append(value)
+                continue
+            candidates = by_number.get(number, set())
+            ids.append(next(iter(candidates)) if len(candidates) == 1 else f"{number:g}")
+            if len(candidates) != 1:
+                unresolved.append(f"{number:g}")
+            elif example is None and ids[-1] != f"{number:g}":
+                example = f"{number:g} as {ids[-1]}"
+        text = (f"Reference field '{field_name}' is numeric ({kind}), but sign types are catalogue ids compared as "
+                "text ('1.30' is not '1.3'). Load the reference with this field as text (for a delimited-text "
+                "layer: switch off 'Detect field types').")
+        if example:
+            text += f" Numbers were read back as the catalogue ids they stand for (e.g. {example})."
+        if unresolved:
+            text += f" {len(unresolved)} stand for no single catalogue id and stay numbers (e.g. {unresolved[0]})."
+        feedback.reportError(text, fatalError=False)
+        return ids
 
     @staticmethod
     def keep_facing_trajectory(refs: dict, trajectory, feedback) -> dict:
@@ -223,17 +283,19 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
                 "give the trajectory, e.g. from Drive trajectory.")
         return np.array([[r.pose.easting, r.pose.northing] for r in drive.pairs])
 
+    def recorded_run(self, parameters, context) -> dict:
+        """The run table of the mapped signs' GeoPackage ({} for other layers)."""
+        layer = self.parameterAsVectorLayer(parameters, self.SIGNS, context)
+        return {} if layer is None else read_run_table(layer.source().split("|")[0])
+
     def recorded_drive(self, parameters, context):
         from ..signmapper_core.drive import open_drive
         from ..signmapper_core.errors import DriveFormatError
 
-        layer = self.parameterAsVectorLayer(parameters, self.SIGNS, context)
-        if layer is None:
-            return None
-        path = layer.source().split("|")[0]
-        values = read_run_table(path)
+        values = self.recorded_run(parameters, context)
         if "drive" not in values:
             return None
+        path = self.parameterAsVectorLayer(parameters, self.SIGNS, context).source().split("|")[0]
         try:
             return open_drive(values["drive"], check_images=False)
         except DriveFormatError as exc:
@@ -256,7 +318,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
                      ("2", f"{c}_max", s.max_abs)]
         for table, figure, value in rows:
             feature = QgsFeature(fields)
-            feature.setAttributes([table, figure, float(value)])
+            feature.setAttributes([table, figure, defined(value)])
             sink.addFeature(feature, QgsFeatureSink.FastInsert)
         return dest
 

@@ -141,7 +141,7 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     ``warn_skipped`` as they happen; skipped pairs are listed in the result.
     ``Cancelled`` is raised when ``is_cancelled()`` turns true; ``MappingError``
     as soon as more than ``max_skipped_share`` (0..1) of the pairs are skipped,
-    and when no pair could be read at all.
+    and when no pair could be mapped at all.
     """
     detections, skipped, seconds, load_seconds, total = [], [], 0.0, 0.0, len(drive.pairs)
     for done, result in enumerate(map_pairs(drive, catalogue, config, is_cancelled), start=1):
