@@ -30,6 +30,7 @@ from qgis.PyQt.QtCore import QVariant
 from ..gpkg.output import read_run_table
 from ..signmapper_core.output_schema import REJECTED
 from .base import SignMapperAlgorithm
+from .output_paths import remove_written
 
 
 def defined(value):
@@ -162,15 +163,25 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         report = evaluate(np.array(mapped["xyz"]).reshape(-1, 3), mapped["ids"], np.array(refs["xyz"]),
                           refs["ids"], trajectory, radius)
         feedback.pushInfo(format_report(report))
+        if feedback.isCanceled():
+            raise QgsProcessingException("Cancelled; nothing written.")
 
         html_path = self.parameterAsFileOutput(parameters, self.REPORT, context)
         notes = [f"Matching radius {radius} m (3D). Signs with status 'rejected' left out.",
                  f"Mapped signs: {signs.sourceName()}; reference: {reference.sourceName()}."]
-        Path(html_path).write_text(report_html(report, "Sign Mapper: evaluation against reference", notes),
-                                   encoding="utf-8")
-
-        stats_id = self.write_statistics(parameters, context, report, COMPONENTS)
-        matches_id = self.write_matches(parameters, context, signs, report, mapped, refs)
+        written = [html_path]  # deleted again when the run fails or is cancelled while writing
+        try:
+            Path(html_path).write_text(report_html(report, "Sign Mapper: evaluation against reference", notes),
+                                       encoding="utf-8")
+            stats_id = self.write_statistics(parameters, context, report, COMPONENTS)
+            written.append(stats_id)
+            matches_id = self.write_matches(parameters, context, signs, report, mapped, refs)
+            written.append(matches_id)
+            if feedback.isCanceled():
+                raise QgsProcessingException("Cancelled; nothing written.")
+        except BaseException:
+            remove_written(written)
+            raise
         t1 = report.table1
         return {
             self.REPORT: html_path, self.STATISTICS: stats_id, self.MATCHES: matches_id,

@@ -86,3 +86,12 @@ def test_cancel_writes_nothing(run, tmp_path):
         run("signmapper:drivetrajectory", {"DRIVE": str(drive), "OUTPUT": str(out), "TRACK": str(track)},
             feedback=feedback)
     assert not out.exists() and not track.exists()
+
+
+def test_output_that_is_a_folder_is_refused_before_reading_the_drive(run, tmp_path):
+    drive = make_drive(tmp_path / "drive", n_pairs=2)
+    folder = tmp_path / "trajectory.gpkg"
+    folder.mkdir()
+    with pytest.raises(QgsProcessingException) as info:
+        run("signmapper:drivetrajectory", {"DRIVE": str(drive), "OUTPUT": str(folder)})
+    assert str(info.value).splitlines()[-1] == f"Trajectory points: {folder} is an existing folder; give a file name"

@@ -152,3 +152,21 @@ def test_no_match_says_0_of_n(run, tmp_path):
     assert "detected signs                  0 of 4 (0.0 %)" in log
     assert "false positive features         4" in log
     assert "nan" not in log.lower() and "nan" not in (tmp_path / "r.html").read_text().lower()
+
+
+# 9. a cancel is a cancel
+
+def test_cancel_writes_nothing(run, tmp_path):
+    class CancelAtTables(Recorder):
+        def pushInfo(self, info):  # noqa: N802
+            super().pushInfo(info)
+            if info.startswith("Table 1"):
+                self.cancel()
+
+    report, statistics = tmp_path / "r.html", tmp_path / "stats.gpkg"
+    with pytest.raises(QgsProcessingException, match="Cancelled; nothing written"):
+        run("signmapper:evaluate", {
+            "SIGNS": point_layer(REF, "mapped"), "REFERENCE": point_layer(REF, "ref"),
+            "REFERENCE_ID_FIELD": "template_id", "RADIUS": 1.0, "TRAJECTORY": eastward_trajectory(),
+            "REPORT": str(report), "STATISTICS": str(statistics), "MATCHES": "memory:"}, feedback=CancelAtTables())
+    assert not report.exists() and not statistics.exists()

@@ -317,6 +317,19 @@ def test_principal_point_outside_the_image_is_refused(run, tmp_path):
                                "-1000000000.0 lies outside the image (-0.5 to 63.5 px)")
 
 
+def test_heading_that_is_no_angle_is_refused(run, tmp_path):
+    drive = make_drive(tmp_path / "drive", n_pairs=2)
+    lines = (drive / "poses.csv").read_text().splitlines()
+    row = lines[2].split(",")
+    row[5] = "1e300"
+    lines[2] = ",".join(row)
+    (drive / "poses.csv").write_text("\n".join(lines) + "\n")
+    with pytest.raises(QgsProcessingException) as info:
+        run("signmapper:mapsigns", {"DRIVE": str(drive), "OUTPUT": str(tmp_path / "x.gpkg")})
+    assert str(info.value) == (f"Invalid drive: {drive / 'poses.csv'}, line 3, field 'heading': heading 1e+300 is "
+                               "not an angle in degrees")
+
+
 def test_implausible_drive_is_mapped_with_warnings_in_the_log(run, tmp_path):
     import cv2
 
