@@ -92,7 +92,7 @@ def area_of_use(crs_text: str):
         return None
     xmin, ymin, xmax, ymax = bounds
     margin = AREA_MARGIN * max(xmax - xmin, ymax - ymin)
-    name = f"{crs_text} ({horizontal.name}: {area.name})"
+    name = f"{crs_text} ({horizontal.name}: {area.name.rstrip('.')})"
     return name, (xmin - margin, ymin - margin, xmax + margin, ymax + margin)
 
 
