@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from qgis.core import (
     QgsProcessingAlgorithm,
     QgsProcessingException,
@@ -9,8 +11,11 @@ from qgis.core import (
     QgsProcessingParameterFile,
 )
 from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtGui import QIcon
 
 from ..dependencies import install_hint, missing_modules
+
+ICONS = Path(__file__).resolve().parents[1] / "icons"
 
 
 class SignMapperAlgorithm(QgsProcessingAlgorithm):
@@ -20,6 +25,7 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
     DISPLAY_NAME = ""
     GROUP_ID = "mapping"
     HELP = ""
+    ICON = ""  # file in icons/
 
     GROUPS = {"mapping": "Mapping", "tools": "Tools", "quality": "Quality", "inventory": "Inventory"}
 
@@ -31,6 +37,9 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
 
     def name(self):
         return self.NAME
+
+    def icon(self):
+        return QIcon(str(ICONS / self.ICON)) if self.ICON else super().icon()
 
     def displayName(self):  # noqa: N802
         return self.tr(self.DISPLAY_NAME)

@@ -39,6 +39,7 @@ class DriveTrajectoryAlgorithm(SignMapperAlgorithm):
     NAME = "drivetrajectory"
     DISPLAY_NAME = "Drive trajectory"
     GROUP_ID = "tools"
+    ICON = "drive_trajectory.svg"
     HELP = (
         "Reads a drive folder (stereo-drive/1: drive.json, poses.csv, left/, right/ or depth/) and writes one "
         "3D point per stereo pair at the left camera's projection centre, in the drive's CRS, with the pair id, "

@@ -43,6 +43,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
     NAME = "evaluate"
     DISPLAY_NAME = "Evaluate against reference"
     GROUP_ID = "quality"
+    ICON = "evaluate.svg"
     HELP = (
         "Compares mapped signs with a reference inventory (surveyed signs, or a drive's truth.csv loaded as a "
         "point layer) as in Cavegn (2011). Each mapped sign is matched to the nearest reference sign within the "

@@ -40,6 +40,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
     NAME = "mapsigns"
     DISPLAY_NAME = "Map traffic signs"
     GROUP_ID = "mapping"
+    ICON = "map_signs.svg"
     HELP = (
         "Detects, classifies and positions the traffic signs of a stereo drive (Cavegn 2011). Per stereo pair: "
         "depth from the given depth map or by semi-global matching, search space cut to the depth range, HSV "

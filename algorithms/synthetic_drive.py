@@ -29,6 +29,7 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
     NAME = "syntheticdrive"
     DISPLAY_NAME = "Synthetic drive"
     GROUP_ID = "tools"
+    ICON = "synthetic_drive.svg"
     HELP = (
         "Generates a synthetic stereo mobile-mapping drive in the stereo-drive/1 layout: a street with façades, "
         "vegetation, cars and other sign-coloured distractors, and poles carrying Swiss traffic signs, rendered "

@@ -49,10 +49,16 @@ def test_init_gui_after_init_processing_adds_one_action_and_unload_removes_every
     plugin.initGui()
     plugin.initGui()  # a second call adds nothing
     assert QgsApplication.processingRegistry().providerById("signmapper") is not None
-    action = plugin.review_ui.action
-    assert iface.added == [("toolbar", action), ("menu", "&Sign Mapper", action)]
+    action, viewer = plugin.review_ui.action, plugin.viewer_ui.action
+    assert iface.added == [("toolbar", action), ("menu", "&Sign Mapper", action),
+                           ("toolbar", viewer), ("menu", "&Sign Mapper", viewer)]
     assert action.text() == "Review signs" and action.isCheckable()
-    assert plugin.review_ui.dock is None  # built on first use
+    assert viewer.text() == "Drive viewer" and not viewer.icon().isNull()
+    assert plugin.review_ui.dock is None and plugin.viewer_ui.dock is None  # built on first use
+    viewer.setChecked(True)
+    QApplication.processEvents()
+    viewer_dock = plugin.viewer_ui.dock
+    assert viewer_dock is not None and viewer_dock.isVisible() and plugin.viewer_ui.controller._active
 
     action.setChecked(True)
     QApplication.processEvents()
@@ -68,8 +74,9 @@ def test_init_gui_after_init_processing_adds_one_action_and_unload_removes_every
 
     plugin.unload()
     assert ("toolbar", action) in iface.removed and ("menu", "&Sign Mapper", action) in iface.removed
-    assert ("dock", dock) in iface.removed
-    assert plugin.review_ui is None
+    assert ("dock", dock) in iface.removed and ("dock", viewer_dock) in iface.removed
+    assert ("toolbar", viewer) in iface.removed
+    assert plugin.review_ui is None and plugin.viewer_ui is None
     assert QgsApplication.processingRegistry().providerById("signmapper") is None
 
 
