@@ -59,6 +59,7 @@ class ChangesAlgorithm(SignMapperAlgorithm):
     NAME = "changes"
     DISPLAY_NAME = "Compare with inventory"
     GROUP_ID = "inventory"
+    ICON = "changes.svg"
     HELP = (
         "Compares a mapping run with the existing sign inventory, given as a point layer with a sign type field or "
         "as a Signalo database. For every inventory sign the drive could have seen (in some pair its whole face in "
