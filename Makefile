@@ -25,13 +25,14 @@ DEMO_PAIRS := 20
 PLUGIN_NAME := sign_mapper
 QGIS_PROFILE_PLUGINS := $(HOME)/.local/share/QGIS/QGIS3/profiles/default/python/plugins
 
-.PHONY: setup apt venv test test-core demo lint zip deploy catalogue catalogue-sheet clean help
+.PHONY: setup apt venv test test-core demo screenshots lint zip deploy catalogue catalogue-sheet clean help
 
 help:
 	@echo "make setup     Debian packages (QGIS), venv with pinned requirements"
 	@echo "make test      all tests (core, QGIS, qgis_process.bin)"
 	@echo "make test-core core tests only, without QGIS"
 	@echo "make demo      generate a sample drive and run Sign Mapper on it with qgis_process.bin"
+	@echo "make screenshots QGIS desktop under Xvfb: map the demo drive from the dialog, open viewer and review, screenshots in docs/"
 	@echo "make lint      ruff"
 	@echo "make zip       dist/sign_mapper.zip, installable in QGIS"
 	@echo "make deploy    link this checkout into the default QGIS profile"
@@ -78,6 +79,25 @@ demo: setup
 		RADIUS=0.75 REPORT=$(CURDIR)/$(DEMO_DIR)/evaluation.html STATISTICS=$(CURDIR)/$(DEMO_DIR)/statistics.gpkg \
 		MATCHES=$(CURDIR)/$(DEMO_DIR)/matches.gpkg 2>/dev/null | sed -n '/^Table 1/,/^  3d/p'
 	@echo "Demo output in $(DEMO_DIR)/: signs.gpkg (layers signs, detections), evaluation.html, trajectory.gpkg"
+
+# Real-display check: QGIS desktop under Xvfb with the plugin in a throw-away profile, driven by
+# scripts/desktop_check.py (Map traffic signs from its dialog, drive viewer, review dock); screenshots in docs/.
+SCREEN_DIR := build/desktop
+screenshots: setup
+	@command -v xvfb-run >/dev/null || { $(SUDO) apt-get update -qq && \
+		DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq xvfb; }
+	@[ -f $(DEMO_DRIVE)/poses.csv ] || $(PY) -m signmapper_core.simulate $(DEMO_DRIVE) --pairs $(DEMO_PAIRS) --seed 7
+	@rm -rf $(SCREEN_DIR) && mkdir -p $(SCREEN_DIR)/plugins $(SCREEN_DIR)/profiles/profiles/default/QGIS
+	@ln -s $(CURDIR) $(SCREEN_DIR)/plugins/$(PLUGIN_NAME)
+	@printf '[PythonPlugins]\n$(PLUGIN_NAME)=true\n\n[qgis]\ncheckVersion=false\n' \
+		> $(SCREEN_DIR)/profiles/profiles/default/QGIS/QGIS3.ini
+	QT_QPA_PLATFORM=xcb QGIS_PLUGINPATH=$(CURDIR)/$(SCREEN_DIR)/plugins \
+	SIGNMAPPER_CHECK_DRIVE=$(CURDIR)/$(DEMO_DRIVE) SIGNMAPPER_CHECK_OUT=$(CURDIR)/docs \
+	SIGNMAPPER_CHECK_GPKG=$(CURDIR)/$(SCREEN_DIR)/signs.gpkg SIGNMAPPER_CHECK_REPORT=$(CURDIR)/$(SCREEN_DIR)/report.json \
+		timeout 900 xvfb-run -a -s "-screen 0 1600x1000x24" qgis --profiles-path $(CURDIR)/$(SCREEN_DIR)/profiles \
+		--nologo --noversioncheck --code $(CURDIR)/scripts/desktop_check.py
+	@$(PY) -c "import json, sys; r = json.load(open('$(SCREEN_DIR)/report.json')); \
+		print(json.dumps(r, indent=1)); sys.exit(0 if r['ok'] else 1)"
 
 lint: venv
 	$(PY) -m ruff check .

@@ -17,6 +17,7 @@ class SignMapperPlugin:
         self.provider = None
         self.review_ui = None
         self.viewer_ui = None
+        self.installer = None
 
     def initProcessing(self):  # noqa: N802 - called by QGIS and qgis_process
         """Register the Processing provider once; a second call does nothing."""
@@ -33,8 +34,11 @@ class SignMapperPlugin:
     def initGui(self):  # noqa: N802
         self.initProcessing()
         missing = missing_modules()
-        if missing and self.iface is not None:
-            self.iface.messageBar().pushMessage(LOG_TAG, install_hint(missing), Qgis.Warning, 0)
+        if missing and self.iface is not None and self.installer is None:
+            from .opencv_installer import ModuleInstaller
+
+            self.installer = ModuleInstaller(self.iface)
+            self.installer.offer(missing)  # the hint and an Install… button
         if self.iface is not None and self.review_ui is None:
             from .review.plugin_ui import ReviewUi
             from .viewer.plugin_ui import ViewerUi
@@ -50,6 +54,7 @@ class SignMapperPlugin:
             self.review_ui.unload()
             self.review_ui = None
         self.viewer_ui = None
+        self.installer = None
         if self.provider is not None:
             QgsApplication.processingRegistry().removeProvider(self.provider)
             self.provider = None

@@ -6,6 +6,7 @@ import math
 from pathlib import Path
 
 from qgis.core import (
+    NULL,
     QgsCoordinateTransform,
     QgsFeature,
     QgsFeatureRequest,
@@ -31,6 +32,21 @@ from ..gpkg.output import read_run_table
 from ..signmapper_core.output_schema import REJECTED
 from .base import SignMapperAlgorithm
 from .output_paths import remove_written
+
+
+def facing_value(source, feature, field: str):
+    """A facing azimuth from a numeric or text field (None when empty); a clear error names the feature."""
+    value = feature[field]
+    if value is None or value == NULL or str(value).strip() == "":
+        return None
+    try:
+        number = float(str(value).strip().replace(",", "."))
+    except ValueError:
+        number = math.nan
+    if math.isfinite(number):
+        return number % 360.0
+    raise QgsProcessingException(f"{source.sourceName()}: feature {feature.id()}: facing field '{field}' holds "
+                                     f"{value!r}, not an azimuth in degrees")
 
 
 def defined(value):
@@ -98,14 +114,16 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterField(self.REFERENCE_FACING_FIELD, self.tr("Facing field of the reference"),
-                                        None, self.REFERENCE, QgsProcessingParameterField.Numeric, optional=True),
-            "Optional azimuth (degrees from grid north) the sign face looks towards. When given, reference signs "
+                                        None, self.REFERENCE, QgsProcessingParameterField.Any, optional=True),
+            "Optional azimuth (degrees from grid north, a number or text holding one) the sign face looks "
+            "towards. When given, reference signs "
             "whose face never looks towards the vehicle within 20 m ahead (e.g. the far sign of a back-to-back "
             "pair on a one-way drive) are left out, since no forward-looking camera could map them.",
         )
         self.add_parameter(
-            QgsProcessingParameterDistance(self.RADIUS, self.tr("Matching radius"), 1.0, self.SIGNS, minValue=0.01),
-            "A mapped sign farther than this (3D) from every reference sign is a false positive.",
+            QgsProcessingParameterDistance(self.RADIUS, self.tr("Matching radius"), 0.75, self.SIGNS, minValue=0.01),
+            "A mapped sign farther than this (3D) from every reference sign is a false positive; 0.75 m as in the "
+            "README's figures.",
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSource(self.TRAJECTORY, self.tr("Trajectory"), [
@@ -136,7 +154,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         self.check_outputs(parameters, context)
 
         from ..signmapper_core.evaluation import COMPONENTS, evaluate, format_report
-        from ..signmapper_core.report_html import report_html
+        from ..signmapper_core.report_html import missed_rows, report_html, sign_rows
 
         signs = self.parameterAsSource(parameters, self.SIGNS, context)
         reference = self.parameterAsSource(parameters, self.REFERENCE, context)
@@ -163,17 +181,20 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
                           f"radius {radius} m, trajectory of {len(trajectory)} vertices")
         report = evaluate(np.array(mapped["xyz"]).reshape(-1, 3), mapped["ids"], np.array(refs["xyz"]),
                           refs["ids"], trajectory, radius)
-        feedback.pushInfo(format_report(report))
+        feedback.pushInfo(format_report(report, aligned=False))
         if feedback.isCanceled():
             raise QgsProcessingException("Cancelled; nothing written.")
 
         html_path = self.parameterAsFileOutput(parameters, self.REPORT, context)
         notes = [f"Matching radius {radius} m (3D). Signs with status 'rejected' left out.",
                  f"Mapped signs: {signs.sourceName()}; reference: {reference.sourceName()}."]
+        run = self.report_run(parameters, context, signs, reference, radius, facing_field)
+        sign_list = sign_rows(report, mapped["ids"], [f"fid {f}" for f in mapped["fids"]])
+        missed = missed_rows(report, refs["xyz"], [f"fid {f}" for f in refs["fids"]])
         written = [html_path]  # deleted again when the run fails or is cancelled while writing
         try:
-            Path(html_path).write_text(report_html(report, "Sign Mapper: evaluation against reference", notes),
-                                       encoding="utf-8")
+            Path(html_path).write_text(report_html(report, "Sign Mapper: evaluation against reference", notes, run,
+                                                   sign_list, missed), encoding="utf-8")
             stats_id = self.write_statistics(parameters, context, report, COMPONENTS)
             written.append(stats_id)
             matches_id = self.write_matches(parameters, context, signs, report, mapped, refs)
@@ -240,7 +261,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         from ..signmapper_core.visibility import faces_trajectory
 
         keep = [i for i, (xyz, facing) in enumerate(zip(refs["xyz"], refs["facing"]))
-                if faces_trajectory(xyz, facing, trajectory)]
+                if facing is None or faces_trajectory(xyz, facing, trajectory)]  # unknown facing: kept
         feedback.pushInfo(f"{len(refs['xyz']) - len(keep)} reference signs never face the drive and are left out")
         return {key: [values[i] for i in keep] for key, values in refs.items()}
 
@@ -271,8 +292,20 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             out["xyz"].append((point.x(), point.y(), float(z)))
             out["ids"].append(str(feature[id_field]))
             out["fids"].append(feature.id())
-            out["facing"].append(float(feature[facing_field]) if facing_field else None)
+            out["facing"].append(facing_value(source, feature, facing_field) if facing_field else None)
         return out
+
+    def report_run(self, parameters, context, signs, reference, radius, facing_field) -> dict:
+        """What the report says about the run: drive, date, the evaluation's and the mapping's parameters."""
+        from datetime import datetime
+
+        run = {"date of this evaluation": datetime.now().astimezone().isoformat(timespec="seconds"),
+               "mapped signs": signs.sourceName(), "reference": reference.sourceName(),
+               "matching radius [m]": radius, "facing field": facing_field or "(none)"}
+        recorded = self.recorded_run(parameters, context)
+        for key, value in recorded.items():
+            run[f"mapping: {key}"] = ", ".join(map(str, value)) if isinstance(value, list) else value
+        return run
 
     def trajectory_xy(self, parameters, context, signs, to_signs):
         import numpy as np

@@ -183,8 +183,9 @@ def table1_texts(t1: Table1) -> dict[str, str]:
 NO_DIFFERENCES = "no mapped sign matches a reference sign: no coordinate differences"
 
 
-def format_report(report: EvaluationReport, title: str = "") -> str:
-    """Plain-text Tables 1 and 2, laid out like the paper's."""
+def format_report(report: EvaluationReport, title: str = "", aligned: bool = True) -> str:
+    """Plain-text Tables 1 and 2, laid out like the paper's; ``aligned=False`` labels every figure instead of
+    lining up columns (for logs shown in a proportional font, like QGIS's Processing log)."""
     lines = [title] if title else []
     if report.table1.detections == 0:
         lines.append("No mapped signs: every reference sign counts as missed.")
@@ -193,6 +194,11 @@ def format_report(report: EvaluationReport, title: str = "") -> str:
     lines.append("Table 2: coordinate differences (mapped - reference) [m]")
     if report.table2[COMPONENTS[0]].n == 0:
         lines.append(f"  {NO_DIFFERENCES}")
+    elif not aligned:
+        for name in COMPONENTS:
+            s = report.table2[name]
+            lines.append(f"  {name}: n {s.n}, mean {s.mean:.3f}, empirical σ {s.std:.3f}, RMS {s.rms:.3f}, "
+                         f"max |d| {s.max_abs:.3f}")
     else:
         lines.append("  component       n     mean      std      rms  max|d|")
         for name in COMPONENTS:

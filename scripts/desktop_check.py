@@ -1,0 +1,186 @@
+"""Real-display check of the plugin in QGIS desktop: run it inside QGIS (``qgis --code``), as ``make screenshots`` does.
+
+What a surveyor does first, driven step by step with timers so QGIS keeps
+painting between the steps:
+  1. open *Map traffic signs* from the Processing dialog on a drive and press Run;
+  2. once Processing has loaded the layers, check they are styled (rule-based
+     pictograms, aliases) and take a screenshot of the main window;
+  3. open the drive viewer on a pair that sees signs, with the vehicle on the map;
+  4. open the review dock on a sign; screenshots after each step;
+  5. write the findings to SIGNMAPPER_CHECK_REPORT (JSON) and quit QGIS.
+
+Environment: SIGNMAPPER_CHECK_DRIVE (drive folder), SIGNMAPPER_CHECK_OUT (folder
+for screenshots and the report), SIGNMAPPER_CHECK_GPKG (output GeoPackage).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import traceback
+from pathlib import Path
+
+from qgis.core import QgsApplication, QgsProject
+from qgis.PyQt.QtCore import QTimer
+from qgis.PyQt.QtWidgets import QApplication
+from qgis.utils import iface, plugins
+
+DRIVE = os.environ["SIGNMAPPER_CHECK_DRIVE"]
+OUT = Path(os.environ.get("SIGNMAPPER_CHECK_OUT", "docs"))
+GPKG = os.environ.get("SIGNMAPPER_CHECK_GPKG", str(OUT / "desktop-check.gpkg"))
+REPORT = Path(os.environ.get("SIGNMAPPER_CHECK_REPORT", str(Path(GPKG).with_suffix(".json"))))
+TIMEOUT_S = 600
+
+report = {"drive": DRIVE, "steps": [], "ok": False}
+state = {"waited": 0.0}
+
+
+def log(step: str, **facts) -> None:
+    report["steps"].append({"step": step, **facts})
+    REPORT.write_text(json.dumps(report, indent=1), encoding="utf-8")
+
+
+def shot(name: str, widget=None) -> str:
+    QApplication.processEvents()
+    path = OUT / name
+    (widget or iface.mainWindow()).grab().save(str(path))
+    return str(path)
+
+
+def later(ms: int, step) -> None:
+    def run():
+        try:
+            step()
+        except Exception:  # noqa: BLE001 - the report says what failed, then QGIS quits
+            log("error", traceback=traceback.format_exc())
+            finish(False)
+    QTimer.singleShot(ms, run)
+
+
+def finish(ok: bool) -> None:
+    report["ok"] = ok
+    log("done")
+    QgsProject.instance().setDirty(False)
+    QTimer.singleShot(500, lambda: QgsApplication.exit(0 if ok else 1))
+
+
+def plugin():
+    return plugins["sign_mapper"]
+
+
+def step_dialog():
+    import processing
+
+    iface.mainWindow().showMaximized()
+    for name in ("signs", "detections"):
+        for layer in QgsProject.instance().mapLayersByName(name):
+            QgsProject.instance().removeMapLayer(layer)
+    dialog = processing.createAlgorithmDialog("signmapper:mapsigns", {"DRIVE": DRIVE, "OUTPUT": GPKG})
+    dialog.show()
+    state["dialog"] = dialog
+    later(1500, step_run)
+
+
+def step_run():
+    dialog = state["dialog"]
+    log("dialog", screenshot=shot("desktop-dialog.png", dialog), title=dialog.windowTitle())
+    dialog.runAlgorithm()  # what the Run button does
+    later(1000, step_wait_for_layers)
+
+
+def loaded(kind: str):
+    return [layer for layer in QgsProject.instance().mapLayers().values()
+            if layer.source().endswith(f"layername={kind}") and Path(layer.source().split("|")[0]) == Path(GPKG)]
+
+
+def step_wait_for_layers():
+    state["waited"] += 1.0
+    if not (loaded("signs") and loaded("detections")):
+        if state["waited"] > TIMEOUT_S:
+            log("layers", error="Processing did not load the layers in time")
+            finish(False)
+            return
+        later(1000, step_wait_for_layers)
+        return
+    state["dialog"].close()
+    signs, detections = loaded("signs")[0], loaded("detections")[0]
+    facts = {
+        "signs_renderer": signs.renderer().type(),
+        "signs_groups": [g.label() for g in signs.renderer().rootRule().children()],
+        "signs_labels": signs.labelsEnabled(),
+        "detections_renderer": detections.renderer().type(),
+        "template_alias": signs.fields().field("template_id").alias(),
+        "signs": signs.featureCount(), "detections": detections.featureCount(),
+    }
+    state["signs"], state["detections"] = signs, detections
+    iface.setActiveLayer(signs)
+    extent = signs.extent()
+    extent.grow(12.0)
+    iface.mapCanvas().setExtent(extent)
+    iface.mapCanvas().refresh()
+    facts["styled"] = facts["signs_renderer"] == "RuleRenderer" and facts["signs_labels"] and \
+        facts["detections_renderer"] == "categorizedSymbol"
+    state["facts"] = facts
+    later(2500, step_result_shot)
+
+
+def step_result_shot():
+    log("result", screenshot=shot("desktop-result.png"), **state["facts"])
+    viewer = plugin().viewer_ui
+    viewer.action.setChecked(True)
+    later(1500, step_viewer)
+
+
+def step_viewer():
+    controller = plugin().viewer_ui.controller
+    drive = controller.drive
+    if drive is None:
+        log("viewer", error="the viewer found no drive")
+        finish(False)
+        return
+    # the pair with most signs and detections in view: what shows the overlay best
+    scores = [(len(controller.boxes(record)), record.index) for record in drive.pairs]
+    best = max(scores)[1]
+    state["pair"] = best
+    controller.go_to(best)
+    later(2500, step_viewer_shot)
+
+
+def step_viewer_shot():
+    controller = plugin().viewer_ui.controller
+    dock = plugin().viewer_ui.dock
+    boxes = dock.view.boxes()
+    log("viewer", screenshot=shot("desktop-viewer.png"), pair=dock.pair_id, boxes=len(boxes),
+        mapped_signs=sum(b.key.startswith("signs:") for b in boxes),
+        vehicle=[controller.vehicle.position.x(), controller.vehicle.position.y()]
+        if controller.vehicle.position is not None else None)
+    review = plugin().review_ui
+    review.action.setChecked(True)
+    later(1500, step_review)
+
+
+def step_review():
+    signs = state["signs"]
+    iface.setActiveLayer(signs)
+    viewer_pair = plugin().viewer_ui.dock.pair_id
+    chosen = None
+    for feature in signs.getFeatures():
+        if feature["best_pair_id"] == viewer_pair or chosen is None:
+            chosen = feature
+    signs.selectByIds([chosen.id()])
+    state["sign"] = chosen.id()
+    later(3000, step_review_shot)
+
+
+def step_review_shot():
+    dock = plugin().review_ui.dock
+    item = dock.item
+    log("review", screenshot=shot("desktop-review.png"), feature=state["sign"],
+        shown=item.template_id if item is not None else None,
+        image=dock.image_view.has_image(), progress=dock.progress.text())
+    shot("desktop-review-dock.png", dock)
+    ok = state["facts"]["styled"] and item is not None and dock.image_view.has_image()
+    finish(ok)
+
+
+later(3000, step_dialog)
