@@ -20,7 +20,7 @@ import os
 import traceback
 from pathlib import Path
 
-from qgis.core import QgsApplication, QgsProject
+from qgis.core import QgsProject
 from qgis.PyQt.QtCore import QTimer
 from qgis.PyQt.QtWidgets import QApplication
 from qgis.utils import iface, plugins
@@ -58,10 +58,12 @@ def later(ms: int, step) -> None:
 
 
 def finish(ok: bool) -> None:
+    """Quit as a user would (File ▸ Exit) once the project is closed: QGIS tears down in its own order."""
     report["ok"] = ok
     log("done")
+    QgsProject.instance().clear()
     QgsProject.instance().setDirty(False)
-    QTimer.singleShot(500, lambda: QgsApplication.exit(0 if ok else 1))
+    QTimer.singleShot(1000, iface.actionExit().trigger)
 
 
 def plugin():
@@ -71,7 +73,7 @@ def plugin():
 def step_dialog():
     import processing
 
-    iface.mainWindow().showMaximized()
+    iface.mainWindow().setGeometry(0, 0, 1600, 1000)  # no window manager under Xvfb: maximise by hand
     for name in ("signs", "detections"):
         for layer in QgsProject.instance().mapLayersByName(name):
             QgsProject.instance().removeMapLayer(layer)
@@ -121,13 +123,24 @@ def step_wait_for_layers():
     facts["styled"] = facts["signs_renderer"] == "RuleRenderer" and facts["signs_labels"] and \
         facts["detections_renderer"] == "categorizedSymbol"
     state["facts"] = facts
+    processing_run_trajectory()
     later(2500, step_result_shot)
+
+
+def processing_run_trajectory():
+    """The drive's trajectory points on the map too: what a click opens in the viewer."""
+    import processing
+
+    processing.runAndLoadResults("signmapper:drivetrajectory", {
+        "DRIVE": DRIVE, "OUTPUT": str(Path(GPKG).with_name("trajectory.gpkg"))})
+    iface.setActiveLayer(state["signs"])
 
 
 def step_result_shot():
     log("result", screenshot=shot("desktop-result.png"), **state["facts"])
     viewer = plugin().viewer_ui
     viewer.action.setChecked(True)
+    iface.mainWindow().resizeDocks([viewer.dock], [520], 2)  # 2 = Qt.Vertical: a taller image
     later(1500, step_viewer)
 
 
@@ -156,20 +169,27 @@ def step_viewer_shot():
         if controller.vehicle.position is not None else None)
     review = plugin().review_ui
     review.action.setChecked(True)
+    iface.mainWindow().resizeDocks([review.dock], [470], 1)  # 1 = Qt.Horizontal
     later(1500, step_review)
 
 
 def step_review():
+    """Select the sign the viewer shows (a click on its box), then accept it with the dock's button."""
     signs = state["signs"]
-    iface.setActiveLayer(signs)
-    viewer_pair = plugin().viewer_ui.dock.pair_id
-    chosen = None
-    for feature in signs.getFeatures():
-        if feature["best_pair_id"] == viewer_pair or chosen is None:
-            chosen = feature
-    signs.selectByIds([chosen.id()])
-    state["sign"] = chosen.id()
-    later(3000, step_review_shot)
+    dock = plugin().viewer_ui.dock
+    keys = [b.key for b in dock.view.boxes() if b.key.startswith("signs:")]
+    fid = int(keys[0].split(":")[1]) if keys else next(signs.getFeatures()).id()
+    plugin().viewer_ui.controller.select_box(f"signs:{fid}")
+    state["sign"] = fid
+    later(3000, step_accept)
+
+
+def step_accept():
+    review = plugin().review_ui.dock
+    review.advance_box.setChecked(False)
+    log("review-before", shown=review.item.template_id if review.item else None, progress=review.progress.text())
+    review.buttons["accept"].click()
+    later(2500, step_review_shot)
 
 
 def step_review_shot():
@@ -178,7 +198,6 @@ def step_review_shot():
     log("review", screenshot=shot("desktop-review.png"), feature=state["sign"],
         shown=item.template_id if item is not None else None,
         image=dock.image_view.has_image(), progress=dock.progress.text())
-    shot("desktop-review-dock.png", dock)
     ok = state["facts"]["styled"] and item is not None and dock.image_view.has_image()
     finish(ok)
 

@@ -95,6 +95,7 @@ class ImageView(QGraphicsView):
         self._boxes = []
         font = QFont()
         font.setBold(True)
+        font.setPointSizeF(max(6.0, font.pointSizeF() * 0.8))
         for box in boxes:
             pen = QPen(QColor(box.colour), 2, Qt.DashLine if box.dashed else Qt.SolidLine)
             pen.setCosmetic(True)

@@ -47,11 +47,14 @@ SHORTCUTS = {
     "reclassify": ("Reclassify…", "C"),
     "previous": ("◀ Previous", "P"),
     "next": ("Next ▶", "N"),
-    "next_review": ("Next to review", "Space"),
+    "next_review": ("To review", "Space"),
     "zoom": ("Zoom map", "Z"),
-    "add_sign": ("Add missed sign", "M"),
-    "undo": ("Undo last decision", "U"),
+    "add_sign": ("Add missed", "M"),
+    "undo": ("Undo", "U"),
 }
+REJECT_COLOUR = "#c62828"
+TOOLTIPS = {"next_review": "Next feature to review", "add_sign": "Add a missed sign: then click the centre of the "
+            "sign in the image", "undo": "Undo the last decision"}
 
 
 def _fmt(value, digits=2) -> str:
@@ -83,6 +86,7 @@ class ReviewDock(QDockWidget):
         scroll = QScrollArea()
         scroll.setWidgetResizable(True)
         scroll.setFrameShape(QFrame.NoFrame)
+        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarAlwaysOff)
         scroll.setWidget(body)
         self.setWidget(scroll)
         layout = QVBoxLayout(body)
@@ -168,7 +172,7 @@ class ReviewDock(QDockWidget):
     def _button(self, name: str) -> QPushButton:
         text, key = SHORTCUTS[name]
         button = QPushButton(f"{text} [{key}]")
-        button.setToolTip(f"{text} ({key})")
+        button.setToolTip(f"{TOOLTIPS.get(name, text)} ({key})")
         button.setFocusPolicy(Qt.TabFocus)
         self.buttons[name] = button
         return button
@@ -177,29 +181,31 @@ class ReviewDock(QDockWidget):
         self.buttons = {}
         grid = QGridLayout()
         grid.setSpacing(3)
-        for col, name in enumerate(("previous", "next", "next_review", "zoom")):
+        # three columns keep the dock narrow enough for a laptop screen beside the map
+        for col, name in enumerate(("previous", "next", "next_review")):
             grid.addWidget(self._button(name), 0, col)
-        for col, name in enumerate(("accept", "reject", "reclassify", "undo")):
+        for col, name in enumerate(("accept", "reject", "reclassify")):
             grid.addWidget(self._button(name), 1, col)
-        # coloured only while enabled: a plain "color" would make a disabled button look usable
-        for name, status in (("accept", ACCEPTED), ("reject", REJECTED)):
-            self.buttons[name].setStyleSheet(f"QPushButton:enabled {{ color: {STATUS_COLOURS[status]}; "
-                                             "font-weight: bold }")
+        for col, name in enumerate(("zoom", "undo")):
+            grid.addWidget(self._button(name), 2, col)
+        # coloured only while enabled: a plain "color" would make a disabled button look usable; Reject is red,
+        # not the grey of the rejected status, which would look disabled
+        for name, colour in (("accept", STATUS_COLOURS[ACCEPTED]), ("reject", REJECT_COLOUR)):
+            self.buttons[name].setStyleSheet(f"QPushButton:enabled {{ color: {colour}; font-weight: bold }}")
         self.buttons["reclassify"].setCheckable(True)
         add = self._button("add_sign")
         add.setCheckable(True)
-        add.setToolTip("Then click the centre of a missed sign in the image (M)")
         add.setEnabled(False)
         add.toggled.connect(self.image_view.set_picking)
-        grid.addWidget(add, 2, 0, 1, 2)
+        grid.addWidget(add, 2, 2)
         self.pair_box = QComboBox()
         self.pair_box.setToolTip("Show another pair of the drive, e.g. to add a sign no detection points to")
         self.pair_box.activated.connect(lambda i: self.pairRequested.emit(self.pair_box.itemText(i)))
-        grid.addWidget(self.pair_box, 2, 2)
+        grid.addWidget(self.pair_box, 3, 0, 1, 2)
         self.advance_box = QCheckBox("Advance")
         self.advance_box.setToolTip("After a decision, go to the next feature needing review")
         self.advance_box.setChecked(True)
-        grid.addWidget(self.advance_box, 2, 3)
+        grid.addWidget(self.advance_box, 3, 2)
 
         b = self.buttons
         b["accept"].clicked.connect(self.acceptRequested)

@@ -65,7 +65,6 @@ class BarIface:
 
 def test_the_offer_is_a_message_with_an_install_button(sign_mapper):
     from qgis.PyQt.QtWidgets import QPushButton
-
     from sign_mapper import opencv_installer
 
     iface = BarIface()
