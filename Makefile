@@ -82,6 +82,7 @@ demo: setup
 
 # Real-display check: QGIS desktop under Xvfb with the plugin in a throw-away profile, driven by
 # scripts/desktop_check.py (Map traffic signs from its dialog, drive viewer, review dock); screenshots in docs/.
+# No PYTHONPATH: the plugin finds OpenCV in this folder's .venv by itself.
 SCREEN_DIR := build/desktop
 screenshots: setup
 	@command -v xvfb-run >/dev/null || { $(SUDO) apt-get update -qq && \
@@ -91,7 +92,7 @@ screenshots: setup
 	@ln -s $(CURDIR) $(SCREEN_DIR)/plugins/$(PLUGIN_NAME)
 	@printf '[PythonPlugins]\n$(PLUGIN_NAME)=true\n\n[qgis]\ncheckVersion=false\n' \
 		> $(SCREEN_DIR)/profiles/profiles/default/QGIS/QGIS3.ini
-	QT_QPA_PLATFORM=xcb QGIS_PLUGINPATH=$(CURDIR)/$(SCREEN_DIR)/plugins \
+	env -u PYTHONPATH QT_QPA_PLATFORM=xcb QGIS_PLUGINPATH=$(CURDIR)/$(SCREEN_DIR)/plugins \
 	SIGNMAPPER_CHECK_DRIVE=$(CURDIR)/$(DEMO_DRIVE) SIGNMAPPER_CHECK_OUT=$(CURDIR)/docs \
 	SIGNMAPPER_CHECK_GPKG=$(CURDIR)/$(SCREEN_DIR)/signs.gpkg SIGNMAPPER_CHECK_REPORT=$(CURDIR)/$(SCREEN_DIR)/report.json \
 		timeout 900 xvfb-run -a -s "-screen 0 1600x1000x24" qgis --profiles-path $(CURDIR)/$(SCREEN_DIR)/profiles \
@@ -114,7 +115,7 @@ zip: venv
 deploy:
 	mkdir -p $(QGIS_PROFILE_PLUGINS)
 	ln -sfn $(CURDIR) $(QGIS_PROFILE_PLUGINS)/$(PLUGIN_NAME)
-	@echo "Linked into $(QGIS_PROFILE_PLUGINS)/$(PLUGIN_NAME); start QGIS with PYTHONPATH=$(SITE_PACKAGES)"
+	@echo "Linked into $(QGIS_PROFILE_PLUGINS)/$(PLUGIN_NAME); the plugin finds OpenCV in $(SITE_PACKAGES) by itself"
 
 clean:
 	rm -rf build dist $(DEMO_DIR) .pytest_cache .ruff_cache

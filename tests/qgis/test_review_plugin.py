@@ -93,3 +93,23 @@ def test_visible_dock_follows_the_current_layer_and_unload_disconnects(sign_mapp
     plugin.unload()
     assert not controller._active and not controller.busy()
     QgsProject.instance().removeAllMapLayers()
+
+
+def test_add_missed_sign_from_the_viewer_opens_the_review_on_the_viewers_layer(sign_mapper, qgis_processing, iface):
+    plugin = sign_mapper.classFactory(iface)
+    plugin.initGui()
+    layer = QgsVectorLayer("Point?crs=EPSG:2056&field=name:string", "other", "memory")
+    QgsProject.instance().addMapLayer(layer)
+    calls = []
+    plugin.review_ui.action.setChecked(True)
+    QApplication.processEvents()
+    review = plugin.review_ui.controller
+    review.decisions.add_sign = lambda pair_id, u, v: calls.append((review.session.layer, pair_id, u, v))
+    plugin.review_ui.action.setChecked(False)
+    QApplication.processEvents()
+    plugin.viewer_ui._add_sign(layer, "000004", 120.0, 80.0)
+    QApplication.processEvents()
+    assert plugin.review_ui.action.isChecked() and plugin.review_ui.dock.isVisible()
+    assert calls == [(None, "000004", 120.0, 80.0)]  # a plain memory layer is no Sign Mapper layer: no session
+    plugin.unload()
+    QgsProject.instance().removeAllMapLayers()
