@@ -9,14 +9,13 @@ textures near the vehicle are kept.
 
 from __future__ import annotations
 
-import os
-import shutil
 import time
 from pathlib import Path
 from typing import Callable
 
 import numpy as np
 
+from ..atomic_folder import remove_stale_partials, writing_folder  # noqa: F401 (re-exported)
 from ..drive_writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
 from ..geometry import Pose
 from ..progress import Cancelled
@@ -111,31 +110,6 @@ def render_pair(config: SimulationConfig, scene: Scene, rasterizer: Rasterizer, 
     return apply_effects(left, fx, right=False), apply_effects(right, fx, right=True), depth
 
 
-def _temporary_sibling(out_dir: Path) -> Path:
-    return out_dir.parent / f".{out_dir.name}.partial-{os.getpid()}"
-
-
-def _process_alive(pid: int) -> bool:
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:  # another user's process
-        return True
-    return True
-
-
-def remove_stale_partials(out_dir: Path) -> list[Path]:
-    """Delete the partial folders of earlier runs for ``out_dir`` whose process no longer exists (killed)."""
-    removed = []
-    for folder in out_dir.parent.glob(f".{out_dir.name}.partial-*"):
-        pid = folder.name.rsplit("-", 1)[-1]
-        if folder.is_dir() and pid.isdigit() and (int(pid) == os.getpid() or not _process_alive(int(pid))):
-            shutil.rmtree(folder, ignore_errors=True)
-            removed.append(folder)
-    return removed
-
-
 def generate_drive(out_dir, config: SimulationConfig | None = None,
                    progress: Callable[[float, str], None] | None = None,
                    is_cancelled: Callable[[], bool] | None = None,
@@ -152,15 +126,10 @@ def generate_drive(out_dir, config: SimulationConfig | None = None,
     config = config or SimulationConfig()
     config.validate()
     out_dir = Path(out_dir)
-    if out_dir.exists() and (not out_dir.is_dir() or any(out_dir.iterdir())):
-        raise FileExistsError(f"{out_dir}: exists and is not an empty folder")
     started = time.perf_counter()
     report = progress or (lambda _f, _m: None)
     cancelled = is_cancelled or (lambda: False)
-    remove_stale_partials(out_dir)
-    tmp = _temporary_sibling(out_dir)
-    tmp.mkdir(parents=True)
-    try:
+    with writing_folder(out_dir) as tmp:
         report(0.0, "laying out the street")
         street = make_street(config)
         scene = make_scene(config, street)
@@ -190,12 +159,6 @@ def generate_drive(out_dir, config: SimulationConfig | None = None,
             raise Cancelled("synthetic drive cancelled")
         if before_commit is not None:
             before_commit(truth)
-        if out_dir.exists():
-            out_dir.rmdir()
-        tmp.rename(out_dir)
-    except BaseException:
-        shutil.rmtree(tmp, ignore_errors=True)
-        raise
     size = sum(f.stat().st_size for f in out_dir.rglob("*") if f.is_file())
     return SimulationSummary(out_dir=out_dir, pairs=config.pairs, signs=truth, true_poses=poses,
                              recorded_poses=noisy, seconds=time.perf_counter() - started, bytes_written=size,
