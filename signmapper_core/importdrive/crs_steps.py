@@ -8,12 +8,17 @@ no-op); the output without one, they are copied as the input states them (a
 warning says which heights they are); the input without one and the output
 with one is an error, because nobody said what the input heights are.
 
-Orientations are recorded against true north (navigation systems) or against
-the grid north of a projected input. :meth:`CrsSteps.grid_rotations` gives the
-rotation from the local true east/north/up frame to the output grid at each
-point: ``Rz(c)``, with ``c`` PROJ's meridian convergence (grid azimuth = true
-azimuth - c).
+Orientations are recorded against true north (navigation systems: the meridian
+of the input's datum) or against the grid north of a projected input.
+:meth:`CrsSteps.north_azimuths` gives, at each point, the azimuth in the output
+grid of that north, from pyproj transforming the point and a small step north
+of it; :meth:`CrsSteps.grid_rotations` turns the recorded east/north/up frame
+into the output grid's, ``Rz(-azimuth)``. Where input and output share a datum
+this is PROJ's meridian convergence with the opposite sign
+(``Proj.get_factors``); where they do not (WGS 84 against LV95's CH1903+) it
+also holds the 3.6 arc seconds by which the two meridians differ.
 """
+
 
 from __future__ import annotations
 
@@ -23,6 +28,9 @@ import numpy as np
 
 from ..errors import ImportInputError
 from ..geometry import rot_z
+
+NORTH_STEP_DEG = 1e-6   # about 0.11 m along a meridian
+NORTH_STEP_M = 0.1      # along a projected input's grid north
 
 
 def parse_crs(text: str, role: str):
@@ -75,8 +83,6 @@ class CrsSteps:
     warnings: list[str] = field(default_factory=list)
 
     def __post_init__(self):
-        from pyproj import Proj
-
         self.input = parse_crs(self.input_text, "input")
         self.output = parse_crs(self.output_text, "output")
         problem = output_crs_problem(self.output)
@@ -101,12 +107,10 @@ class CrsSteps:
             self.warnings.append(f"the output CRS {self.output.to_string()} has no heights: the heights are copied "
                                  f"as the input states them, {height_name(self.input)}")
         self._positions = self._transformer(self.input, self.output)
-        out_flat = horizontal(self.output)
-        self._to_output_geographic = self._transformer(self.input, out_flat.geodetic_crs)
-        self._output_proj = Proj(out_flat)
-        if not self.input_geographic:
-            self._to_input_geographic = self._transformer(self.input, flat_in.geodetic_crs)
-            self._input_proj = Proj(flat_in)
+        geographic, flat_out = self.input.geodetic_crs, horizontal(self.output)
+        self._to_input_geographic = self._transformer(self.input, geographic)
+        self._geographic_to_grid = self._transformer(geographic, flat_out)
+        self._input_to_grid = self._transformer(self.input, flat_out)
 
     def _transformer(self, source, target):
         """The best transformation PROJ has, refusing a ballpark one or one whose grids are missing."""
@@ -142,29 +146,28 @@ class CrsSteps:
                                    "input CRS's axis order (longitude/easting first)?")
         return out
 
-    def convergence_output(self, xyz: np.ndarray) -> np.ndarray:
-        """Meridian convergence (degrees) of the output grid at input points (grid azimuth = true - c)."""
+    def north_azimuths(self, xyz: np.ndarray, north: str) -> np.ndarray:
+        """Azimuth (degrees clockwise from the output's grid north) of the north the angles were recorded against:
+        ``"true"``, the input datum's meridian, or ``"grid"``, a projected input's grid north."""
+        if north not in ("true", "grid"):
+            raise ValueError(f"north must be 'true' or 'grid', not {north!r}")
         xyz = np.asarray(xyz, dtype=float).reshape(-1, 3)
-        lon, lat = self._to_output_geographic.transform(xyz[:, 0], xyz[:, 1])
-        return np.asarray(self._output_proj.get_factors(lon, lat).meridian_convergence, dtype=float).reshape(-1)
-
-    def convergence_input(self, xyz: np.ndarray) -> np.ndarray:
-        """Meridian convergence (degrees) of a projected input's grid at input points."""
-        if self.input_geographic:
+        if north == "grid" and self.input_geographic:
             raise ImportInputError("input CRS", f"{self.input.to_string()} is geographic: it has no grid north; "
                                    "its angles are against true north")
-        xyz = np.asarray(xyz, dtype=float).reshape(-1, 3)
-        lon, lat = self._to_input_geographic.transform(xyz[:, 0], xyz[:, 1])
-        return np.asarray(self._input_proj.get_factors(lon, lat).meridian_convergence, dtype=float).reshape(-1)
+        if north == "grid":
+            start, step, to_grid = xyz, xyz + [0.0, NORTH_STEP_M, 0.0], self._input_to_grid
+        else:
+            lon, lat, h = self._to_input_geographic.transform(xyz[:, 0], xyz[:, 1], xyz[:, 2])
+            start = np.column_stack([lon, lat, h])
+            step, to_grid = start + [0.0, NORTH_STEP_DEG, 0.0], self._geographic_to_grid
+        e0, n0, _ = to_grid.transform(start[:, 0], start[:, 1], start[:, 2])
+        e1, n1, _ = to_grid.transform(step[:, 0], step[:, 1], step[:, 2])
+        return np.degrees(np.arctan2(np.asarray(e1) - e0, np.asarray(n1) - n0))
 
     def grid_rotations(self, xyz: np.ndarray, north: str) -> np.ndarray:
         """(n, 3, 3) rotations from the frame the angles were recorded in to the output grid's east/north/up.
 
         ``north``: ``"true"`` (local level frame, true north) or ``"grid"`` (the projected input's grid).
         """
-        if north not in ("true", "grid"):
-            raise ValueError(f"north must be 'true' or 'grid', not {north!r}")
-        angle = self.convergence_output(xyz)
-        if north == "grid":
-            angle = angle - self.convergence_input(xyz)
-        return np.stack([rot_z(np.radians(a)) for a in angle])
+        return np.stack([rot_z(-np.radians(a)) for a in self.north_azimuths(xyz, north)])

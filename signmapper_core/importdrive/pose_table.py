@@ -66,11 +66,9 @@ class PoseTable:
                          self.angle_names, None if self.row_files is None else [self.row_files[i] for i in rows])
 
 
-def _dialect(sample: str):
-    try:
-        return csv.Sniffer().sniff(sample, delimiters=",;\t ")
-    except csv.Error:
-        return csv.excel
+def _delimiter(header: str) -> str | None:
+    """The separator of the header line: comma, semicolon or tab, else None (runs of spaces)."""
+    return next((d for d in (",", ";", "\t") if d in header), None)
 
 
 def read_rows(path) -> tuple[list[str], list[tuple[int, list[str]]]]:
@@ -86,13 +84,10 @@ def read_rows(path) -> tuple[list[str], list[tuple[int, list[str]]]]:
              if line.strip() and not line.lstrip().startswith("#")]
     if not lines:
         raise ImportInputError(path, "file is empty, expected a header line", line=1)
-    dialect = _dialect("\n".join(line for _, line in lines[:5]))
-    skip_spaces = getattr(dialect, "delimiter", ",") == " "
+    delimiter = _delimiter(lines[0][1])
     rows = []
     for number, line in lines:
-        cells = next(csv.reader([line], dialect))
-        if skip_spaces:
-            cells = [c for c in cells if c != ""]
+        cells = line.split() if delimiter is None else next(csv.reader([line], delimiter=delimiter))
         rows.append((number, [c.strip() for c in cells]))
     header = [h.lower() for h in rows[0][1]]
     return header, rows[1:]
