@@ -22,6 +22,7 @@ also holds the 3.6 arc seconds by which the two meridians differ.
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -117,7 +118,9 @@ class CrsSteps:
         import pyproj
         from pyproj.transformer import TransformerGroup
 
-        group = TransformerGroup(source, target, always_xy=True, allow_ballpark=False)
+        with warnings.catch_warnings():  # pyproj warns of a missing grid; the error below names it
+            warnings.simplefilter("ignore", UserWarning)
+            group = TransformerGroup(source, target, always_xy=True, allow_ballpark=False)
         if group.transformers and group.best_available:
             return group.transformers[0]
         missing = sorted({grid.short_name for op in group.unavailable_operations for grid in op.grids

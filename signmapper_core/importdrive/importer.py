@@ -84,23 +84,31 @@ class ImportSummary:
     crs: str
 
 
-def import_drive(out_dir, source: DriveSource, options: Optional[ImportOptions] = None,
-                 progress: Optional[ProgressCallback] = None, is_cancelled: Optional[CancelCheck] = None,
-                 warn_callback: Optional[WarnCallback] = None) -> ImportSummary:
-    """Write ``source`` as a drive folder ``out_dir`` (new or empty); see module."""
-    started = time.perf_counter()
-    options = options or ImportOptions()
+@dataclass
+class ImportPlan:
+    """Everything an import decides before it touches a pixel."""
+
+    size: tuple[int, int]
+    calibration: StereoCalibration
+    rectifier: Rectifier
+    mount: Mount
+    pairs: list[ImagePair]             # in time order
+    times: list[float]
+    poses: list[Pose]                  # of the left normal images
+    suffixes: list[Optional[str]]      # per pair: None = copy the files, else the suffix to write
+
+
+def plan_import(source: DriveSource, options: ImportOptions, note: Callable[[str], None] = lambda _m: None,
+                all_headers: bool = True) -> ImportPlan:
+    """Check the inputs against each other and compute the poses (see module); no pixel is read.
+
+    ``all_headers``: check every image's size (else the first image's only, for a quick check in a dialog).
+    """
     if options.image_format not in IMAGE_FORMATS:
         raise ValueError(f"image format must be one of {IMAGE_FORMATS}, not {options.image_format!r}")
-    warnings: list[str] = []
-
-    def note(message: str) -> None:
-        warnings.append(message)
-        warn(warn_callback, message)
-
-    report(progress, 0.0, "reading image headers")
-    size = pair_size(source.pairs)
-    calibration = choose_calibration(source.calibrations, size, source.pairs[0].left)
+    first = source.pairs[0].left
+    size = pair_size(source.pairs) if all_headers else image_header(first, check_suffix=False).size
+    calibration = choose_calibration(source.calibrations, size, first)
     if calibration.size is None:
         note(f"{calibration.source}: the calibration does not state its image size; taken as the images' "
              f"{size[0]}x{size[1]}")
@@ -109,20 +117,35 @@ def import_drive(out_dir, source: DriveSource, options: Optional[ImportOptions] 
     steps = CrsSteps(source.input_crs, options.output_crs)
     for message in steps.warnings:
         note(message)
-    report(progress, 0.02, "computing the camera poses")
     ordered, times, poses = _camera_poses(source, steps, mount, rectifier, options, note)
-    suffixes = _output_suffixes(ordered, rectifier, options.image_format)
+    return ImportPlan(size, calibration, rectifier, mount, ordered, times, poses,
+                      _output_suffixes(ordered, rectifier, options.image_format))
+
+
+def import_drive(out_dir, source: DriveSource, options: Optional[ImportOptions] = None,
+                 progress: Optional[ProgressCallback] = None, is_cancelled: Optional[CancelCheck] = None,
+                 warn_callback: Optional[WarnCallback] = None) -> ImportSummary:
+    """Write ``source`` as a drive folder ``out_dir`` (new or empty); see module."""
+    started = time.perf_counter()
+    options = options or ImportOptions()
+    warnings: list[str] = []
+
+    def note(message: str) -> None:
+        warnings.append(message)
+        warn(warn_callback, message)
+
+    report(progress, 0.0, "reading image headers, calibration and poses")
+    plan = plan_import(source, options, note)
     check_cancelled(is_cancelled, "drive import")
     with writing_folder(out_dir) as tmp:
-        check, first_pair = _convert_pairs(tmp, ordered, suffixes, rectifier, size, options, progress,
-                                           is_cancelled, calibration)
+        check, first_pair = _convert_pairs(tmp, plan, options, progress, is_cancelled)
         if not check.enough:
-            note(f"only {check.matches} features matched in the first pair ({ordered[0].id}): the rows could not "
-                 "be checked; look at the pairs before mapping")
+            note(f"only {check.matches} features matched in the first pair ({plan.pairs[0].id}): the rows could "
+                 "not be checked; look at the pairs before mapping")
         metadata = {**source.metadata, "software": SOFTWARE,
-                    "import": _import_record(source, calibration, rectifier, options, check, mount)}
-        write_drive_json(tmp, options.output_crs, rectifier.camera, **metadata)
-        write_poses_csv(tmp, [(pair.id, t, pose) for pair, t, pose in zip(ordered, times, poses)])
+                    "import": _import_record(source, plan, options, check)}
+        write_drive_json(tmp, options.output_crs, plan.rectifier.camera, **metadata)
+        write_poses_csv(tmp, [(pair.id, t, pose) for pair, t, pose in zip(plan.pairs, plan.times, plan.poses)])
         report(progress, 0.97, "validating the written drive")
         from ..drive import open_drive
 
@@ -131,9 +154,9 @@ def import_drive(out_dir, source: DriveSource, options: Optional[ImportOptions] 
             note(message.replace(str(tmp), str(out_dir)))
         if options.check_image is not None:
             _write_check_image(options.check_image, check, first_pair)
-    report(progress, 1.0, f"{len(ordered)} pairs written")
-    return ImportSummary(Path(out_dir), len(ordered), rectifier.camera, rectifier.resamples, check, warnings,
-                         time.perf_counter() - started, options.output_crs)
+    report(progress, 1.0, f"{len(plan.pairs)} pairs written")
+    return ImportSummary(Path(out_dir), len(plan.pairs), plan.rectifier.camera, plan.rectifier.resamples, check,
+                         warnings, time.perf_counter() - started, options.output_crs)
 
 
 # -- poses --------------------------------------------------------------------------------------------------------
@@ -232,18 +255,19 @@ def _convert_one(tmp: Path, pair: ImagePair, suffix: Optional[str], rectifier: R
     write_image(tmp / "right" / f"{pair.id}{suffix}", right, quality)
 
 
-def _convert_pairs(tmp: Path, pairs: list[ImagePair], suffixes, rectifier: Rectifier, size, options: ImportOptions,
-                   progress, is_cancelled, calibration: StereoCalibration) -> tuple[EpipolarCheck, tuple]:
+def _convert_pairs(tmp: Path, plan: ImportPlan, options: ImportOptions, progress,
+                   is_cancelled) -> tuple[EpipolarCheck, tuple]:
     """Rectify and write every pair; the first one is checked (rows line up) before the others are touched.
 
     Returns the check and the first pair's normal images.
     """
+    pairs, suffixes, rectifier, size = plan.pairs, plan.suffixes, plan.rectifier, plan.size
     first = pairs[0]
     normal = rectifier.rectify(read_image(first.left, size), read_image(first.right, size))
     check = match_features(*normal)
     if check.enough and check.mean_abs_dy >= options.max_vertical_disparity_px:
         raise ImportInputError(
-            calibration.source, f"the rows of the first pair ({first.id}) do not line up after rectification: "
+            plan.calibration.source, f"the rows of the first pair ({first.id}) do not line up after rectification: "
             f"{check.text()}, at most {options.max_vertical_disparity_px:g} px allowed; the calibration does not "
             "fit these images (wrong file, cameras swapped, or the rig moved since it was calibrated)")
     _convert_one(tmp, first, suffixes[0], rectifier, size, options.jpeg_quality, normal)
@@ -281,20 +305,19 @@ def _write_check_image(path: Path, check: EpipolarCheck, images: tuple) -> None:
     write_image(Path(path), picture)
 
 
-def _import_record(source: DriveSource, calibration: StereoCalibration, rectifier: Rectifier, options: ImportOptions,
-                   check: EpipolarCheck, mount: Mount) -> dict:
+def _import_record(source: DriveSource, plan: ImportPlan, options: ImportOptions, check: EpipolarCheck) -> dict:
     """How the drive was made, kept in drive.json (a writer key) so that a result can be traced."""
     o = source.orientation
     return {
         "source": source.label,
-        "calibration": str(calibration.source),
-        "calibration_kind": calibration.name,
-        "rectified_by_import": rectifier.resamples,
+        "calibration": str(plan.calibration.source),
+        "calibration_kind": plan.calibration.name,
+        "rectified_by_import": plan.rectifier.resamples,
         "poses": str(source.poses.path),
         "poses_kind": "per image" if source.per_image else "trajectory",
         "angle_convention": o.convention, "angle_unit": o.unit, "north": o.north,
         "input_crs": source.input_crs,
-        "lever_arm_m": [round(float(v), 6) for v in mount.lever_arm_m],
-        "camera_to_body": np.round(mount.rotation, 9).tolist(),
+        "lever_arm_m": [round(float(v), 6) for v in plan.mount.lever_arm_m],
+        "camera_to_body": np.round(plan.mount.rotation, 9).tolist(),
         "epipolar_check": {"pair": "first", **check.summary()},
     }
