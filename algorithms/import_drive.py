@@ -35,6 +35,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
     NAME = "importdrive"
     DISPLAY_NAME = "Import drive"
     GROUP_ID = "tools"
+    ICON = "import_drive.svg"
     HELP = (
         "Builds a drive folder (stereo-drive/1) from what a survey vehicle records: left and right images (raw, "
         "i.e. distorted and slightly convergent, or already rectified), a stereo calibration and the poses of the "
