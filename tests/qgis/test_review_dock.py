@@ -258,3 +258,20 @@ def test_progress_shows_what_is_left_to_review(dock):
     dock.set_progress(3, 12, 20)
     assert dock.progress.isVisibleTo(dock) and dock.progress.text() == "3 to review · 12 of 20 reviewed"
     assert dock.progress.value() == 12 and dock.progress.maximum() == 20
+
+
+def test_wheel_zoom_in_the_full_frame_stays_when_the_dock_changes_size(dock):
+    from qgis.PyQt.QtCore import QPointF
+    from qgis.PyQt.QtGui import QWheelEvent
+
+    view = dock.image_view
+    centre = QPointF(view.viewport().rect().center())
+    event = QWheelEvent(centre, view.viewport().mapToGlobal(QPoint(0, 0)), QPoint(0, 0), QPoint(0, 360),
+                        Qt.NoButton, Qt.NoModifier, Qt.NoScrollPhase, False)
+    QApplication.sendEvent(view.viewport(), event)
+    zoomed = view.transform().m11()
+    dock.resize(dock.width() + 60, dock.height() - 40)  # labels re-wrapping change the dock's layout
+    QApplication.processEvents()
+    assert view.transform().m11() == pytest.approx(zoomed)
+    QTest.mouseDClick(view.viewport(), Qt.LeftButton)  # double click: back to the crop
+    assert view.transform().m11() < zoomed
