@@ -126,8 +126,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         self.add_parameter(
             QgsProcessingParameterEnum(self.LANGUAGE, self.tr("Language of sign names and field titles"),
                                        options=LANGUAGE_CHOICES, defaultValue=0),
-            "Sign names (German, French, Italian; English falls back on German) and field aliases; by default the "
-            "language QGIS runs in.",
+            "Sign names and field titles in German, French, Italian or English; by default the language QGIS "
+            "runs in.",
             advanced=True,
         )
         self.add_parameter(

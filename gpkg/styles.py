@@ -44,6 +44,7 @@ from qgis.PyQt.QtGui import QColor
 
 from ..signmapper_core import output_schema as schema
 from ..signmapper_core.catalogue.families import by_family, family_name
+from ..signmapper_core.catalogue.names import sign_name
 from ..signmapper_core.output_schema import DETECTIONS, MANUAL, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
 
 PICTOGRAM_MM = 7.0
@@ -174,7 +175,8 @@ def signs_renderer(catalogue, language: str = "en") -> QgsRuleBasedRenderer:
             svg = pictogram_svg(catalogue, entry)
             face = _plain_layer(entry, PICTOGRAM_MM) if svg is None else _svg_layer(svg, PICTOGRAM_MM)
             group.appendChild(QgsRuleBasedRenderer.Rule(
-                sign_symbol(face), 0, 0, f'"template_id" = {_quoted(entry.id)}', f"{entry.id} {entry.name(language)}"))
+                sign_symbol(face), 0, 0, f'"template_id" = {_quoted(entry.id)}',
+                f"{entry.id} {sign_name(entry, language)}"))
         root.appendChild(group)
     fallback = QgsMarkerSymbol.createSimple({"name": "circle", "color": "#d52b1e", "size": "3"})
     other = QgsRuleBasedRenderer.Rule(fallback, 0, 0, "", "other")

@@ -159,16 +159,18 @@ class ReviewController(QObject):
 
     def _load_catalogue(self) -> None:
         from ..signmapper_core.catalogue import load_catalogue
+        from ..signmapper_core.catalogue.names import sign_name
 
         folder = self.session.run.get("catalogue")
         key = folder if folder and (Path(folder) / "catalogue.json").is_file() else None
         if key not in self._catalogues:
             self._catalogues[key] = load_catalogue(key)
         catalogue = self.session.catalogue = self._catalogues[key]
-        if key != self._catalogue_key or not self.dock.has_template_choices():
-            self._catalogue_key = key
+        if (key, self.session.language) != self._catalogue_key or not self.dock.has_template_choices():
+            self._catalogue_key = key, self.session.language
             self.dock.set_template_choices([
-                TemplateChoice(e.id, e.name("de"), e.colour, e.shape, str(catalogue.pictogram_path(e.id, "png")))
+                TemplateChoice(e.id, sign_name(e, self.session.language), e.colour, e.shape,
+                               str(catalogue.pictogram_path(e.id, "png")))
                 for e in catalogue
             ])
 
