@@ -30,13 +30,15 @@ QGIS_PROFILE_PLUGINS := $(HOME)/.local/share/QGIS/QGIS3/profiles/default/python/
 TRAIN_VENV := .venv-train
 TRAIN_PY := $(TRAIN_VENV)/bin/python
 
-.PHONY: setup apt venv test test-core demo lint zip deploy catalogue catalogue-sheet train-classifier clean help
+.PHONY: setup apt venv test test-core demo screenshots desktop-check lint zip deploy catalogue catalogue-sheet train-classifier clean help
 
 help:
 	@echo "make setup     Debian packages (QGIS), venv with pinned requirements"
 	@echo "make test      all tests (core, QGIS, qgis_process.bin)"
 	@echo "make test-core core tests only, without QGIS"
 	@echo "make demo      generate a sample drive and run Sign Mapper on it with qgis_process.bin"
+	@echo "make desktop-check QGIS desktop under Xvfb: map the demo drive from the dialog, open viewer and review"
+	@echo "make screenshots the same, keeping its screenshots in docs/"
 	@echo "make lint      ruff"
 	@echo "make zip       dist/sign_mapper.zip, installable in QGIS"
 	@echo "make deploy    link this checkout into the default QGIS profile"
@@ -85,6 +87,30 @@ demo: setup
 		MATCHES=$(CURDIR)/$(DEMO_DIR)/matches.gpkg 2>/dev/null | sed -n '/^Table 1/,/^  3d/p'
 	@echo "Demo output in $(DEMO_DIR)/: signs.gpkg (layers signs, detections), evaluation.html, trajectory.gpkg"
 
+# Real-display check: QGIS desktop under Xvfb with the plugin in a throw-away profile, driven by
+# scripts/desktop_check.py (Map traffic signs from its dialog, drive viewer, review dock); screenshots in docs/.
+# No PYTHONPATH: the plugin finds OpenCV in this folder's .venv by itself.
+SCREEN_DIR := build/desktop
+SHOTS_OUT ?= $(CURDIR)/$(SCREEN_DIR)/shots
+screenshots:
+	$(MAKE) desktop-check SHOTS_OUT=$(CURDIR)/docs
+
+desktop-check: setup
+	@command -v xvfb-run >/dev/null || { $(SUDO) apt-get update -qq && \
+		DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq xvfb; }
+	@[ -f $(DEMO_DRIVE)/poses.csv ] || $(PY) -m signmapper_core.simulate $(DEMO_DRIVE) --pairs $(DEMO_PAIRS) --seed 7
+	@rm -rf $(SCREEN_DIR) && mkdir -p $(SCREEN_DIR)/plugins $(SCREEN_DIR)/profiles/profiles/default/QGIS $(SHOTS_OUT)
+	@ln -s $(CURDIR) $(SCREEN_DIR)/plugins/$(PLUGIN_NAME)
+	@printf '[PythonPlugins]\n$(PLUGIN_NAME)=true\n\n[qgis]\ncheckVersion=false\n' \
+		> $(SCREEN_DIR)/profiles/profiles/default/QGIS/QGIS3.ini
+	env -u PYTHONPATH QT_QPA_PLATFORM=xcb QGIS_PLUGINPATH=$(CURDIR)/$(SCREEN_DIR)/plugins \
+	SIGNMAPPER_CHECK_DRIVE=$(CURDIR)/$(DEMO_DRIVE) SIGNMAPPER_CHECK_OUT=$(SHOTS_OUT) \
+	SIGNMAPPER_CHECK_GPKG=$(CURDIR)/$(SCREEN_DIR)/signs.gpkg SIGNMAPPER_CHECK_REPORT=$(CURDIR)/$(SCREEN_DIR)/report.json \
+		timeout 900 xvfb-run -a -s "-screen 0 1600x1000x24" qgis --profiles-path $(CURDIR)/$(SCREEN_DIR)/profiles \
+		--nologo --noversioncheck --code $(CURDIR)/scripts/desktop_check.py
+	@$(PY) -c "import json, sys; r = json.load(open('$(SCREEN_DIR)/report.json')); \
+		print(json.dumps(r, indent=1)); sys.exit(0 if r['ok'] else 1)"
+
 lint: venv
 	$(PY) -m ruff check .
 
@@ -116,7 +142,7 @@ zip: venv
 deploy:
 	mkdir -p $(QGIS_PROFILE_PLUGINS)
 	ln -sfn $(CURDIR) $(QGIS_PROFILE_PLUGINS)/$(PLUGIN_NAME)
-	@echo "Linked into $(QGIS_PROFILE_PLUGINS)/$(PLUGIN_NAME); start QGIS with PYTHONPATH=$(SITE_PACKAGES)"
+	@echo "Linked into $(QGIS_PROFILE_PLUGINS)/$(PLUGIN_NAME); the plugin finds OpenCV in $(SITE_PACKAGES) by itself"
 
 clean:
 	rm -rf build dist $(DEMO_DIR) .pytest_cache .ruff_cache $(TRAIN_VENV)

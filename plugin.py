@@ -16,6 +16,8 @@ class SignMapperPlugin:
         self.iface = iface
         self.provider = None
         self.review_ui = None
+        self.viewer_ui = None
+        self.installer = None
 
     def initProcessing(self):  # noqa: N802 - called by QGIS and qgis_process
         """Register the Processing provider once; a second call does nothing."""
@@ -32,17 +34,27 @@ class SignMapperPlugin:
     def initGui(self):  # noqa: N802
         self.initProcessing()
         missing = missing_modules()
-        if missing and self.iface is not None:
-            self.iface.messageBar().pushMessage(LOG_TAG, install_hint(missing), Qgis.Warning, 0)
+        if missing and self.iface is not None and self.installer is None:
+            from .opencv_installer import ModuleInstaller
+
+            self.installer = ModuleInstaller(self.iface)
+            self.installer.offer(missing)  # the hint and an Install… button
         if self.iface is not None and self.review_ui is None:
             from .review.plugin_ui import ReviewUi
+            from .viewer.plugin_ui import ViewerUi
 
             self.review_ui = ReviewUi(self.iface)
+            self.viewer_ui = ViewerUi(self.iface, self.review_ui)
 
     def unload(self):
+        if self.viewer_ui is not None:
+            self.viewer_ui.unload()
+            self.viewer_ui = None
         if self.review_ui is not None:
             self.review_ui.unload()
             self.review_ui = None
+        self.viewer_ui = None
+        self.installer = None
         if self.provider is not None:
             QgsApplication.processingRegistry().removeProvider(self.provider)
             self.provider = None

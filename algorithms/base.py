@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from qgis.core import (
     QgsProcessingAlgorithm,
     QgsProcessingException,
@@ -9,8 +11,11 @@ from qgis.core import (
     QgsProcessingParameterFile,
 )
 from qgis.PyQt.QtCore import QCoreApplication
+from qgis.PyQt.QtGui import QIcon
 
 from ..dependencies import install_hint, missing_modules
+
+ICONS = Path(__file__).resolve().parents[1] / "icons"
 
 
 class SignMapperAlgorithm(QgsProcessingAlgorithm):
@@ -20,6 +25,7 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
     DISPLAY_NAME = ""
     GROUP_ID = "mapping"
     HELP = ""
+    ICON = ""  # file in icons/
 
     GROUPS = {"mapping": "Mapping", "tools": "Tools", "quality": "Quality", "inventory": "Inventory"}
 
@@ -31,6 +37,9 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
 
     def name(self):
         return self.NAME
+
+    def icon(self):
+        return QIcon(str(ICONS / self.ICON)) if self.ICON else super().icon()
 
     def displayName(self):  # noqa: N802
         return self.tr(self.DISPLAY_NAME)
@@ -67,6 +76,24 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
             QgsProcessingParameterFile(name, self.tr("Drive folder"), behavior=QgsProcessingParameterFile.Folder),
             "Folder of one drive in the stereo-drive/1 layout: drive.json, poses.csv, left/ and right/ or depth/.",
         )
+
+    def checkParameterValues(self, parameters, context):  # noqa: N802
+        """QGIS's own checks, then the outputs: no folder, writable, not an input (``output_paths``)."""
+        ok, message = super().checkParameterValues(parameters, context)
+        if not ok:
+            return ok, message
+        from .output_paths import output_problem
+
+        problem = output_problem(self, parameters, context)
+        return (False, problem) if problem else (True, "")
+
+    def check_outputs(self, parameters, context) -> None:
+        """The output check of ``checkParameterValues`` at the start of a run (models may skip the former)."""
+        from .output_paths import output_problem
+
+        problem = output_problem(self, parameters, context)
+        if problem:
+            raise QgsProcessingException(problem)
 
     def require_dependencies(self):
         """Raise a clear QgsProcessingException naming what to install when OpenCV & co. are missing."""

@@ -34,6 +34,7 @@ from qgis.core import (
 from ..gpkg.fields import QT_TYPES
 from ..gpkg.output import AtomicGeoPackage, layer_uri
 from .base import SignMapperAlgorithm
+from .drive_input import qgis_crs
 from .signalo_connection import HELP as SIGNALO_HELP
 from .signalo_connection import open_signalo
 from .signs_input import read_signs, signs_layer_and_run
@@ -58,6 +59,7 @@ class ChangesAlgorithm(SignMapperAlgorithm):
     NAME = "changes"
     DISPLAY_NAME = "Compare with inventory"
     GROUP_ID = "inventory"
+    ICON = "changes.svg"
     HELP = (
         "Compares a mapping run with the existing sign inventory, given as a point layer with a sign type field or "
         "as a Signalo database. For every inventory sign the drive could have seen (in some pair its whole face in "
@@ -254,7 +256,7 @@ class ChangesAlgorithm(SignMapperAlgorithm):
                                          "(exactly one of them).")
         layer, run = signs_layer_and_run(self.parameterAsVectorLayer(parameters, self.SIGNS, context))
         drive = self.open_run_drive(parameters, context, run)
-        drive_crs = QgsCoordinateReferenceSystem(drive.crs)
+        drive_crs, _note = qgis_crs(drive.crs)
         catalogue_dir = run.get("catalogue")
         catalogue = load_catalogue(catalogue_dir if catalogue_dir and Path(catalogue_dir).is_dir() else None)
         excluded = set(run.get("exclude") or [])
@@ -306,7 +308,7 @@ class ChangesAlgorithm(SignMapperAlgorithm):
         from ..signmapper_core import changes_schema
         from ..signmapper_core.changes import CHANGED, CONFIRMED, MOVED, with_height
 
-        crs = QgsCoordinateReferenceSystem(drive.crs)
+        crs, _note = qgis_crs(drive.crs)
         output = AtomicGeoPackage(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
         centres = [r.pose.centre for r in drive.pairs]
         try:

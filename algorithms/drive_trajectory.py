@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from qgis.core import (
-    QgsCoordinateReferenceSystem,
     QgsFeature,
     QgsFeatureSink,
     QgsField,
@@ -20,7 +19,8 @@ from qgis.PyQt.QtCore import QVariant
 
 from ..signmapper_core.progress import Cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
-from .drive_input import open_drive_or_raise
+from .drive_input import open_drive_or_raise, qgis_crs
+from .output_paths import remove_written
 
 
 def trajectory_fields() -> QgsFields:
@@ -39,6 +39,7 @@ class DriveTrajectoryAlgorithm(SignMapperAlgorithm):
     NAME = "drivetrajectory"
     DISPLAY_NAME = "Drive trajectory"
     GROUP_ID = "tools"
+    ICON = "drive_trajectory.svg"
     HELP = (
         "Reads a drive folder (stereo-drive/1: drive.json, poses.csv, left/, right/ or depth/) and writes one "
         "3D point per stereo pair at the left camera's projection centre, in the drive's CRS, with the pair id, "
@@ -67,42 +68,54 @@ class DriveTrajectoryAlgorithm(SignMapperAlgorithm):
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         self.require_dependencies()
+        self.check_outputs(parameters, context)
         folder = self.parameterAsFile(parameters, self.DRIVE, context)
         feedback.pushInfo(self.tr(f"Validating drive {folder}"))
         try:
             drive = open_drive_or_raise(folder, CoreFeedback(feedback, 0, 50))
         except Cancelled:
             raise QgsProcessingException(self.tr("Cancelled while validating the drive; nothing written.")) from None
-        crs = QgsCoordinateReferenceSystem(drive.crs)
+        crs, note = qgis_crs(drive.crs)
+        if note:
+            feedback.pushInfo(note)
         fields = trajectory_fields()
-        sink, dest_id = self.parameterAsSink(
-            parameters, self.OUTPUT, context, fields, QgsWkbTypes.PointZ, crs
-        )
-        if sink is None:
-            raise QgsProcessingException(self.invalidSinkError(parameters, self.OUTPUT))
-        track_sink, track_id = self.parameterAsSink(
-            parameters, self.TRACK, context, QgsFields(), QgsWkbTypes.LineStringZ, crs
-        )
-        vertices = []
-        total = len(drive.pairs)
-        for record in drive.pairs:
+        features, vertices = [], []
+        for record in drive.pairs:  # built first: a cancel here leaves no file behind
             if feedback.isCanceled():
-                break
+                raise QgsProcessingException(self.tr("Cancelled; nothing written."))
             pose = record.pose
-            point = QgsPoint(pose.easting, pose.northing, pose.height)
             vertices.append(QgsPoint(pose.easting, pose.northing, pose.height))
             feature = QgsFeature(fields)
-            feature.setGeometry(QgsGeometry(point))
+            feature.setGeometry(QgsGeometry(QgsPoint(pose.easting, pose.northing, pose.height)))
             feature.setAttributes(
                 [record.id, record.index, record.time, pose.heading, pose.pitch, pose.roll, str(record.left_path)]
             )
-            sink.addFeature(feature, QgsFeatureSink.FastInsert)
-            feedback.setProgress(50 + 50 * (record.index + 1) / total)
-        feedback.pushInfo(self.tr(f"{len(vertices)} of {total} pairs written"))
-        results = {self.OUTPUT: dest_id}
-        if track_sink is not None:
-            line = QgsFeature()
-            line.setGeometry(QgsGeometry(QgsLineString(vertices)))
-            track_sink.addFeature(line, QgsFeatureSink.FastInsert)
-            results[self.TRACK] = track_id
+            features.append(feature)
+            feedback.setProgress(50 + 40 * (record.index + 1) / len(drive.pairs))
+        written = []  # files of the outputs, deleted when the run fails or is cancelled after writing them
+        try:
+            sink, dest_id = self.parameterAsSink(parameters, self.OUTPUT, context, fields, QgsWkbTypes.PointZ, crs)
+            if sink is None:
+                raise QgsProcessingException(self.invalidSinkError(parameters, self.OUTPUT))
+            written.append(dest_id)
+            if not sink.addFeatures(features, QgsFeatureSink.FastInsert):
+                raise QgsProcessingException(f"{dest_id}: cannot write the trajectory points")
+            results = {self.OUTPUT: dest_id}
+            track_sink, track_id = self.parameterAsSink(
+                parameters, self.TRACK, context, QgsFields(), QgsWkbTypes.LineStringZ, crs
+            )
+            if track_sink is not None:
+                written.append(track_id)
+                line = QgsFeature()
+                line.setGeometry(QgsGeometry(QgsLineString(vertices)))
+                track_sink.addFeature(line, QgsFeatureSink.FastInsert)
+                results[self.TRACK] = track_id
+            del sink, track_sink  # closes the files
+            if feedback.isCanceled():
+                raise QgsProcessingException(self.tr("Cancelled; nothing written."))
+        except BaseException:
+            remove_written(written)
+            raise
+        feedback.setProgress(100)
+        feedback.pushInfo(self.tr(f"{len(features)} of {len(drive.pairs)} pairs written"))
         return results

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 from qgis.core import (
+    NULL,
     QgsCoordinateTransform,
     QgsFeature,
     QgsFeatureRequest,
@@ -29,12 +31,35 @@ from qgis.PyQt.QtCore import QVariant
 from ..gpkg.output import read_run_table
 from ..signmapper_core.output_schema import REJECTED
 from .base import SignMapperAlgorithm
+from .output_paths import remove_written
+
+
+def facing_value(source, feature, field: str):
+    """A facing azimuth from a numeric or text field (None when empty); a clear error names the feature."""
+    value = feature[field]
+    if value is None or value == NULL or str(value).strip() == "":
+        return None
+    try:
+        number = float(str(value).strip().replace(",", "."))
+    except ValueError:
+        number = math.nan
+    if math.isfinite(number):
+        return number % 360.0
+    raise QgsProcessingException(f"{source.sourceName()}: feature {feature.id()}: facing field '{field}' holds "
+                                     f"{value!r}, not an azimuth in degrees")
+
+
+def defined(value):
+    """A figure as a number, or None (NULL, no value) where it is undefined: a rate of nothing, σ of nothing."""
+    value = float(value)
+    return value if math.isfinite(value) else None
 
 
 class EvaluateAlgorithm(SignMapperAlgorithm):
     NAME = "evaluate"
     DISPLAY_NAME = "Evaluate against reference"
     GROUP_ID = "quality"
+    ICON = "evaluate.svg"
     HELP = (
         "Compares mapped signs with a reference inventory (surveyed signs, or a drive's truth.csv loaded as a "
         "point layer) as in Cavegn (2011). Each mapped sign is matched to the nearest reference sign within the "
@@ -43,7 +68,11 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         "matched by more than one mapped sign). Table 2: mean, empirical standard deviation, RMS and maximum "
         "of the coordinate differences across track, along track, in height, planimetric and 3D, in the frame "
         "of the trajectory at each sign. Signs with status 'rejected' are left out. Writes an HTML report with "
-        "a plot of the error vectors, a statistics table and a line layer joining each matched pair."
+        "a plot of the error vectors, a statistics table and a line layer joining each matched pair. "
+        "Sign types are catalogue ids compared as text: '1.30' is not '1.3'. Load a reference such as truth.csv "
+        "with its id field as text; where the field is numeric (delimited-text type detection turns '1.30' into "
+        "1.3) a warning says so and each number is read back as the catalogue id it stands for where that is "
+        "unambiguous. No output may name an input file: the run is refused before any work."
     )
 
     SIGNS = "SIGNS"
@@ -85,14 +114,16 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterField(self.REFERENCE_FACING_FIELD, self.tr("Facing field of the reference"),
-                                        None, self.REFERENCE, QgsProcessingParameterField.Numeric, optional=True),
-            "Optional azimuth (degrees from grid north) the sign face looks towards. When given, reference signs "
+                                        None, self.REFERENCE, QgsProcessingParameterField.Any, optional=True),
+            "Optional azimuth (degrees from grid north, a number or text holding one) the sign face looks "
+            "towards. When given, reference signs "
             "whose face never looks towards the vehicle within 20 m ahead (e.g. the far sign of a back-to-back "
             "pair on a one-way drive) are left out, since no forward-looking camera could map them.",
         )
         self.add_parameter(
-            QgsProcessingParameterDistance(self.RADIUS, self.tr("Matching radius"), 1.0, self.SIGNS, minValue=0.01),
-            "A mapped sign farther than this (3D) from every reference sign is a false positive.",
+            QgsProcessingParameterDistance(self.RADIUS, self.tr("Matching radius"), 0.75, self.SIGNS, minValue=0.01),
+            "A mapped sign farther than this (3D) from every reference sign is a false positive; 0.75 m as in the "
+            "README's figures.",
         )
         self.add_parameter(
             QgsProcessingParameterFeatureSource(self.TRAJECTORY, self.tr("Trajectory"), [
@@ -120,8 +151,10 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         import numpy as np
 
+        self.check_outputs(parameters, context)
+
         from ..signmapper_core.evaluation import COMPONENTS, evaluate, format_report
-        from ..signmapper_core.report_html import report_html
+        from ..signmapper_core.report_html import missed_rows, report_html, sign_rows
 
         signs = self.parameterAsSource(parameters, self.SIGNS, context)
         reference = self.parameterAsSource(parameters, self.REFERENCE, context)
@@ -136,6 +169,9 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         to_signs = QgsCoordinateTransform(reference.sourceCrs(), signs.sourceCrs(), context.transformContext())
         facing_field = self.parameterAsString(parameters, self.REFERENCE_FACING_FIELD, context)
         refs = self.read_points(reference, ref_field, height_field, to_signs, context, facing_field=facing_field)
+        if reference.fields().field(ref_field).isNumeric():
+            refs["ids"] = self.ids_from_numbers(refs["ids"], mapped["ids"], parameters, context, feedback,
+                                                reference, ref_field)
         if not refs["xyz"]:
             raise QgsProcessingException("The reference layer has no points.")
         trajectory = self.trajectory_xy(parameters, context, signs, to_signs)
@@ -145,30 +181,87 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
                           f"radius {radius} m, trajectory of {len(trajectory)} vertices")
         report = evaluate(np.array(mapped["xyz"]).reshape(-1, 3), mapped["ids"], np.array(refs["xyz"]),
                           refs["ids"], trajectory, radius)
-        feedback.pushInfo(format_report(report))
+        feedback.pushInfo(format_report(report, aligned=False))
+        if feedback.isCanceled():
+            raise QgsProcessingException("Cancelled; nothing written.")
 
         html_path = self.parameterAsFileOutput(parameters, self.REPORT, context)
         notes = [f"Matching radius {radius} m (3D). Signs with status 'rejected' left out.",
                  f"Mapped signs: {signs.sourceName()}; reference: {reference.sourceName()}."]
-        Path(html_path).write_text(report_html(report, "Sign Mapper: evaluation against reference", notes),
-                                   encoding="utf-8")
-
-        stats_id = self.write_statistics(parameters, context, report, COMPONENTS)
-        matches_id = self.write_matches(parameters, context, signs, report, mapped, refs)
+        run = self.report_run(parameters, context, signs, reference, radius, facing_field)
+        sign_list = sign_rows(report, mapped["ids"], [f"fid {f}" for f in mapped["fids"]])
+        missed = missed_rows(report, refs["xyz"], [f"fid {f}" for f in refs["fids"]])
+        written = [html_path]  # deleted again when the run fails or is cancelled while writing
+        try:
+            Path(html_path).write_text(report_html(report, "Sign Mapper: evaluation against reference", notes, run,
+                                                   sign_list, missed), encoding="utf-8")
+            stats_id = self.write_statistics(parameters, context, report, COMPONENTS)
+            written.append(stats_id)
+            matches_id = self.write_matches(parameters, context, signs, report, mapped, refs)
+            written.append(matches_id)
+            if feedback.isCanceled():
+                raise QgsProcessingException("Cancelled; nothing written.")
+        except BaseException:
+            remove_written(written)
+            raise
         t1 = report.table1
         return {
             self.REPORT: html_path, self.STATISTICS: stats_id, self.MATCHES: matches_id,
-            "DETECTION_RATE": t1.detection_rate, "CLASSIFICATION_RATE": t1.classification_rate,
+            "DETECTION_RATE": defined(t1.detection_rate), "CLASSIFICATION_RATE": defined(t1.classification_rate),
             "FALSE_POSITIVES": t1.false_positive_detections, "DUPLICATES": t1.duplicates,
-            "SIGMA_3D": report.table2["3d"].std,
+            "SIGMA_3D": defined(report.table2["3d"].std),
         }
+
+    def ids_from_numbers(self, numbers, mapped_ids, parameters, context, feedback, reference, field_name):
+        """Catalogue ids (text) for a reference id field that QGIS typed as a number, with a warning.
+
+        1.3 stands for the id that reads as that number ("1.30") among the mapped ids and the catalogue
+        the signs were mapped with; where none or several do, the number stays as written.
+        """
+        from ..signmapper_core.catalogue import load_catalogue
+
+        kind = reference.fields().field(field_name).typeName()
+        known = set(mapped_ids)
+        try:
+            known |= set(load_catalogue(self.recorded_run(parameters, context).get("catalogue")).ids())
+        except Exception:  # noqa: BLE001 - the catalogue only helps to read numbers back; its loss is logged
+            feedback.pushInfo("The catalogue of the mapped signs could not be loaded; only their own ids are "
+                              "used to read the reference's numbers back as ids")
+        by_number: dict[float, set] = {}
+        for text in known:
+            try:
+                by_number.setdefault(float(text), set()).add(text)
+            except ValueError:
+                continue
+        ids, unresolved, example = [], [], None
+        for value in numbers:
+            try:
+                number = float(value)
+            except ValueError:  # NULL
+                ids.append(value)
+                continue
+            candidates = by_number.get(number, set())
+            ids.append(next(iter(candidates)) if len(candidates) == 1 else f"{number:g}")
+            if len(candidates) != 1:
+                unresolved.append(f"{number:g}")
+            elif example is None and ids[-1] != f"{number:g}":
+                example = f"{number:g} as {ids[-1]}"
+        text = (f"Reference field '{field_name}' is numeric ({kind}), but sign types are catalogue ids compared as "
+                "text ('1.30' is not '1.3'). Load the reference with this field as text (for a delimited-text "
+                "layer: switch off 'Detect field types').")
+        if example:
+            text += f" Numbers were read back as the catalogue ids they stand for (e.g. {example})."
+        if unresolved:
+            text += f" {len(unresolved)} stand for no single catalogue id and stay numbers (e.g. {unresolved[0]})."
+        feedback.reportError(text, fatalError=False)
+        return ids
 
     @staticmethod
     def keep_facing_trajectory(refs: dict, trajectory, feedback) -> dict:
         from ..signmapper_core.visibility import faces_trajectory
 
         keep = [i for i, (xyz, facing) in enumerate(zip(refs["xyz"], refs["facing"]))
-                if faces_trajectory(xyz, facing, trajectory)]
+                if facing is None or faces_trajectory(xyz, facing, trajectory)]  # unknown facing: kept
         feedback.pushInfo(f"{len(refs['xyz']) - len(keep)} reference signs never face the drive and are left out")
         return {key: [values[i] for i in keep] for key, values in refs.items()}
 
@@ -199,8 +292,20 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             out["xyz"].append((point.x(), point.y(), float(z)))
             out["ids"].append(str(feature[id_field]))
             out["fids"].append(feature.id())
-            out["facing"].append(float(feature[facing_field]) if facing_field else None)
+            out["facing"].append(facing_value(source, feature, facing_field) if facing_field else None)
         return out
+
+    def report_run(self, parameters, context, signs, reference, radius, facing_field) -> dict:
+        """What the report says about the run: drive, date, the evaluation's and the mapping's parameters."""
+        from datetime import datetime
+
+        run = {"date of this evaluation": datetime.now().astimezone().isoformat(timespec="seconds"),
+               "mapped signs": signs.sourceName(), "reference": reference.sourceName(),
+               "matching radius [m]": radius, "facing field": facing_field or "(none)"}
+        recorded = self.recorded_run(parameters, context)
+        for key, value in recorded.items():
+            run[f"mapping: {key}"] = ", ".join(map(str, value)) if isinstance(value, list) else value
+        return run
 
     def trajectory_xy(self, parameters, context, signs, to_signs):
         import numpy as np
@@ -223,17 +328,19 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
                 "give the trajectory, e.g. from Drive trajectory.")
         return np.array([[r.pose.easting, r.pose.northing] for r in drive.pairs])
 
+    def recorded_run(self, parameters, context) -> dict:
+        """The run table of the mapped signs' GeoPackage ({} for other layers)."""
+        layer = self.parameterAsVectorLayer(parameters, self.SIGNS, context)
+        return {} if layer is None else read_run_table(layer.source().split("|")[0])
+
     def recorded_drive(self, parameters, context):
         from ..signmapper_core.drive import open_drive
         from ..signmapper_core.errors import DriveFormatError
 
-        layer = self.parameterAsVectorLayer(parameters, self.SIGNS, context)
-        if layer is None:
-            return None
-        path = layer.source().split("|")[0]
-        values = read_run_table(path)
+        values = self.recorded_run(parameters, context)
         if "drive" not in values:
             return None
+        path = self.parameterAsVectorLayer(parameters, self.SIGNS, context).source().split("|")[0]
         try:
             return open_drive(values["drive"], check_images=False)
         except DriveFormatError as exc:
@@ -256,7 +363,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
                      ("2", f"{c}_max", s.max_abs)]
         for table, figure, value in rows:
             feature = QgsFeature(fields)
-            feature.setAttributes([table, figure, float(value)])
+            feature.setAttributes([table, figure, defined(value)])
             sink.addFeature(feature, QgsFeatureSink.FastInsert)
         return dest
 

@@ -25,6 +25,7 @@ class ExportToSignaloAlgorithm(SignMapperAlgorithm):
     NAME = "exporttosignalo"
     DISPLAY_NAME = "Export to Signalo"
     GROUP_ID = "inventory"
+    ICON = "export_signalo.svg"
     HELP = (
         "Writes the accepted signs of a mapping run (and those a person added; optionally also those still awaiting "
         "review, marked 'needs validation') into a Signalo database (opengisch/signalo, data model 1.2 to 1.x). "

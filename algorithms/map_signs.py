@@ -7,7 +7,6 @@ import shutil
 from pathlib import Path
 
 from qgis.core import (
-    QgsCoordinateReferenceSystem,
     QgsFeatureSink,
     QgsProcessing,
     QgsProcessingContext,
@@ -24,13 +23,14 @@ from qgis.core import (
 
 from ..gpkg.fields import layer_feature, layer_fields
 from ..gpkg.language import qgis_language
-from ..gpkg.output import AtomicGeoPackage, layer_uri
+from ..gpkg.output import AtomicGeoPackage, geopackage_tables, layer_uri
 from ..gpkg.styles import OutputStyler, embed_default_styles
 from ..signmapper_core import output_schema as schema
+from ..signmapper_core.errors import MappingError
 from ..signmapper_core.output_schema import DETECTIONS, LANGUAGES, SIGNS, OutputContext
-from ..signmapper_core.progress import Cancelled
+from ..signmapper_core.progress import Cancelled, check_cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
-from .drive_input import open_drive_or_raise
+from .drive_input import open_drive_or_raise, qgis_crs
 
 COLOURS = ["red", "blue", "yellow"]
 CLASSIFIERS = [("auto", "Automatic: the learned network where the catalogue has one, else template matching"),
@@ -43,6 +43,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
     NAME = "mapsigns"
     DISPLAY_NAME = "Map traffic signs"
     GROUP_ID = "mapping"
+    ICON = "map_signs.svg"
     HELP = (
         "Detects, classifies and positions the traffic signs of a stereo drive (Cavegn 2011). Per stereo pair: "
         "depth from the given depth map or by semi-global matching, search space cut to the depth range, HSV "
@@ -52,7 +53,10 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         "pair, in the drive's CRS), the layer 'signs' (the detections of each physical sign fused into one point with "
         "class by weighted vote, number of observations, position spread and face azimuth) and the table "
         "'signmapper_run' recording the drive folder and parameters. "
-        "A pair with a corrupt or missing image is logged and skipped; a failed or cancelled run writes nothing."
+        "A pair with a corrupt or missing image is logged and skipped; when more than a set share of the pairs "
+        "(or all of them) cannot be mapped, the run fails. A failed or cancelled run writes nothing and leaves an "
+        "earlier output as it was. Written into an existing GeoPackage, only the layers above are replaced: the "
+        "file's other layers stay."
     )
 
     DRIVE = "DRIVE"
@@ -66,6 +70,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
     CATALOGUE = "CATALOGUE"
     LANGUAGE = "LANGUAGE"
     CROPS = "CROPS"
+    MAX_SKIPPED = "MAX_SKIPPED"
     OUTPUT = "OUTPUT"
     DETECTIONS = "DETECTIONS"
     SIGNS = "SIGNS"
@@ -136,8 +141,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         self.add_parameter(
             QgsProcessingParameterEnum(self.LANGUAGE, self.tr("Language of sign names and field titles"),
                                        options=LANGUAGE_CHOICES, defaultValue=0),
-            "Sign names (German, French, Italian; English falls back on German) and field aliases; by default the "
-            "language QGIS runs in.",
+            "Sign names and field titles in German, French, Italian or English; by default the language QGIS "
+            "runs in.",
             advanced=True,
         )
         self.add_parameter(
@@ -146,16 +151,26 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             "path in the field crop_path: signs can then be checked without the drive.",
         )
         self.add_parameter(
+            QgsProcessingParameterNumber(self.MAX_SKIPPED, self.tr("Largest share of unreadable pairs [%]"),
+                                         QgsProcessingParameterNumber.Double, 50.0, minValue=0.0, maxValue=100.0),
+            "Pairs whose files cannot be read (or whose detection fails) are skipped and logged. When more than "
+            "this share of the drive is skipped the run fails (as soon as that is certain) and writes nothing, "
+            "since the output would lack their signs without a word. A run where no pair can be mapped always "
+            "fails.",
+            advanced=True,
+        )
+        self.add_parameter(
             QgsProcessingParameterFileDestination(self.OUTPUT, self.tr("Output GeoPackage"),
                                                   fileFilter="GeoPackage (*.gpkg)"),
-            "GeoPackage to write; it is replaced only when the run completes.",
+            "GeoPackage to write. Its layers signs and detections and the table signmapper_run are replaced only "
+            "when the run completes; other layers of an existing GeoPackage are kept.",
         )
         self.addOutput(QgsProcessingOutputVectorLayer(self.SIGNS, self.tr("Signs"), QgsProcessing.TypeVectorPoint))
         self.addOutput(QgsProcessingOutputVectorLayer(self.DETECTIONS, self.tr("Detections"),
                                                       QgsProcessing.TypeVectorPoint))
 
     def checkParameterValues(self, parameters, context):  # noqa: N802
-        """Catch wrong inputs before the run: drive folder, output name, depth range, colours, catalogue, exclusions."""
+        """Catch wrong inputs before the run: drive folder, outputs, depth range, colours, catalogue, exclusions."""
         ok, message = super().checkParameterValues(parameters, context)
         if not ok:
             return ok, message
@@ -178,10 +193,13 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         output = self.parameterAsFileOutput(parameters, self.OUTPUT, context)
         if not output.lower().endswith(".gpkg"):
             raise QgsProcessingException(f"{output}: the output must be a GeoPackage file ending in .gpkg")
+        self.check_outputs(parameters, context)
+        geopackage_tables(output)  # an existing file that is no GeoPackage is refused, not replaced
         near = self.parameterAsDouble(parameters, self.NEAR, context)
         far = self.parameterAsDouble(parameters, self.FAR, context)
         if near >= far:
-            raise QgsProcessingException(f"Near limit {near:g} m must be less than the far limit {far:g} m.")
+            labels = [self.parameterDefinition(n).description() for n in (self.NEAR, self.FAR)]
+            raise QgsProcessingException(f"{labels[0]} ({near:g} m) must be less than {labels[1]} ({far:g} m).")
         colours = [COLOURS[i] for i in self.parameterAsEnums(parameters, self.COLOURS, context)]
         if not colours:
             raise QgsProcessingException("Choose at least one sign colour to detect.")
@@ -236,21 +254,36 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
 
         language = self.language(parameters, context)
         output = AtomicGeoPackage(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
+        unchanged = f"; {output.target} is as it was" if output.target.exists() else ""
         crops = CropFolder(output.target) if self.parameterAsBoolean(parameters, self.CROPS, context) else None
+        max_skipped = self.parameterAsDouble(parameters, self.MAX_SKIPPED, context) / 100.0
         try:
-            result = self.map(drive, catalogue, config, feedback)
+            result = self.map(drive, catalogue, config, feedback, max_skipped)
             out = self.output_context(drive, catalogue, language, result, crops, feedback)
-            self.write_layers(output, result, out)
+            self.write_layers(output, result, out, feedback)
             output.write_run_table(schema.run_record(result, out))
-            embed_default_styles(str(output.partial), catalogue, language)
+            without_svg = embed_default_styles(str(output.partial), catalogue, language)
+            check_cancelled(feedback.isCanceled, "writing")
             if crops is not None:
                 crops.commit()
             path = output.commit()
-        except BaseException:
+        except BaseException as exc:
             output.discard()
             if crops is not None:
                 crops.discard()
+            if isinstance(exc, Cancelled):
+                raise QgsProcessingException(f"Cancelled; no output written{unchanged}.") from None
+            if isinstance(exc, MappingError):
+                label = self.parameterDefinition(self.MAX_SKIPPED).description()
+                raise QgsProcessingException(f"Mapping failed: {exc}. Nothing written{unchanged}. Repair or remove "
+                                             f"the unreadable files, or raise '{label}'.") from None
             raise
+        if without_svg:
+            feedback.pushWarning(f"{len(without_svg)} of {len(catalogue)} templates have no SVG pictogram (e.g. "
+                                 f"{without_svg[0]}): their signs are drawn with a plain marker of their shape and "
+                                 "colour")
+        if output.kept:
+            feedback.pushInfo(f"Kept the other layers of {path}: {', '.join(output.kept)}")
         feedback.pushInfo(f"{len(result.detections)} detections fused into {len(result.signs)} signs, "
                           f"written to {path}" + (f", {len(out.crops)} crops in {crops.folder}" if crops else ""))
         results = {self.OUTPUT: path}
@@ -296,29 +329,36 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         return ids
 
     @staticmethod
-    def map(drive, catalogue, config, feedback):
-        """The core's map_drive with the algorithm's progress bar, cancel button and log."""
+    def map(drive, catalogue, config, feedback, max_skipped: float = 1.0):
+        """The core's map_drive with the algorithm's progress bar, cancel button and log.
+
+        ``Cancelled`` and ``MappingError`` (too many pairs skipped) reach the caller, which discards its output.
+        """
         from ..signmapper_core.mapping import map_drive
 
         steps = CoreFeedback(feedback, 5, 92)
-        try:
-            result = map_drive(drive, catalogue, config, steps.progress, steps.is_cancelled, steps.warn)
-        except Cancelled:
-            raise QgsProcessingException("Cancelled; no output written.") from None
+        result = map_drive(drive, catalogue, config, steps.progress, steps.is_cancelled, steps.warn,
+                           max_skipped_share=max_skipped)
         if result.skipped:
             feedback.pushWarning(f"{result.failure_summary()}; see the messages above")
         return result
 
     @staticmethod
-    def write_layers(output, result, out: OutputContext) -> None:
-        """The layers signs (fused signs) and detections (observations), fields as output_schema declares."""
-        crs = QgsCoordinateReferenceSystem(result.drive.crs)
+    def write_layers(output, result, out: OutputContext, feedback=None) -> None:
+        """The layers signs (fused signs) and detections (observations), fields as output_schema declares.
+
+        A cancel while writing raises ``Cancelled``; the caller discards the partial file.
+        """
+        crs, note = qgis_crs(result.drive.crs)
+        if note and feedback is not None:
+            feedback.pushInfo(note)
         for layer, items, what in ((SIGNS, result.signs, "traffic signs"),
                                    (DETECTIONS, result.detections, "per-pair sign detections")):
             fields = layer_fields(layer)
             writer = output.open_layer(layer, fields, QgsWkbTypes.PointZ, crs,
                                        abstract=f"Sign Mapper: {what} of drive {result.drive.root}")
             for item in items:
+                check_cancelled(feedback.isCanceled if feedback is not None else None, "writing")
                 writer.addFeature(layer_feature(fields, layer, item, out), QgsFeatureSink.FastInsert)
             del writer
 

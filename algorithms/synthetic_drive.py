@@ -22,12 +22,14 @@ from qgis.PyQt.QtCore import QVariant
 
 from ..signmapper_core.progress import Cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
+from .output_paths import remove_written
 
 
 class SyntheticDriveAlgorithm(SignMapperAlgorithm):
     NAME = "syntheticdrive"
     DISPLAY_NAME = "Synthetic drive"
     GROUP_ID = "tools"
+    ICON = "synthetic_drive.svg"
     HELP = (
         "Generates a synthetic stereo mobile-mapping drive in the stereo-drive/1 layout: a street with façades, "
         "vegetation, cars and other sign-coloured distractors, and poles carrying Swiss traffic signs, rendered "
@@ -83,6 +85,7 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         self.require_dependencies()
+        self.check_outputs(parameters, context)
         from ..signmapper_core.simulate import SimulationConfig, generate_drive
 
         out_dir = self.parameterAsString(parameters, self.OUTPUT, context)
@@ -97,23 +100,31 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
             position_sigma_m=self.parameterAsDouble(parameters, self.POSITION_SIGMA, context),
             angle_sigma_deg=self.parameterAsDouble(parameters, self.ANGLE_SIGMA, context),
         )
-
+        # The truth layer is opened first (a bad destination fails before any rendering) and written before
+        # the drive takes its name: all outputs or none.
+        truth = self.truth_sink(parameters, context, config.crs)
         steps = CoreFeedback(feedback)
         try:
-            summary = generate_drive(out_dir, config, progress=steps.progress, is_cancelled=steps.is_cancelled)
+            summary = generate_drive(out_dir, config, progress=steps.progress, is_cancelled=steps.is_cancelled,
+                                     before_commit=None if truth is None else truth.write)
         except Cancelled:
+            self.remove_truth(truth)
             raise QgsProcessingException("Cancelled; no drive written.") from None
         except (ValueError, OSError) as exc:
+            self.remove_truth(truth)
             raise QgsProcessingException(f"Synthetic drive: {exc}") from exc
+        except BaseException:
+            self.remove_truth(truth)
+            raise
         feedback.pushInfo(f"{summary.pairs} pairs and {len(summary.signs)} signs written to {out_dir} "
                           f"in {summary.seconds:.1f} s")
         results = {self.OUTPUT: out_dir}
-        truth_id = self.write_truth(parameters, context, summary.signs, config.crs)
-        if truth_id is not None:
-            results[self.TRUTH] = truth_id
+        if truth is not None:
+            truth.close()
+            results[self.TRUTH] = truth.dest
         return results
 
-    def write_truth(self, parameters, context, signs, crs):
+    def truth_sink(self, parameters, context, crs) -> TruthLayer | None:
         fields = QgsFields()
         for name, kind in (("sign_id", QVariant.String), ("template_id", QVariant.String),
                            ("width_m", QVariant.Double), ("height_m", QVariant.Double), ("facing", QVariant.Double)):
@@ -121,10 +132,32 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
         sink, dest = self.parameterAsSink(parameters, self.TRUTH, context, fields, QgsWkbTypes.PointZ,
                                           QgsCoordinateReferenceSystem(crs))
         if sink is None:
+            if parameters.get(self.TRUTH) is not None and self.parameterAsOutputLayer(parameters, self.TRUTH, context):
+                raise QgsProcessingException(self.invalidSinkError(parameters, self.TRUTH))
             return None
+        return TruthLayer(sink, dest, fields)
+
+    @staticmethod
+    def remove_truth(truth) -> None:
+        if truth is not None:
+            truth.close()
+            remove_written([truth.dest])
+
+
+class TruthLayer:
+    """The truth sink of a run, written once the drive's signs are known."""
+
+    def __init__(self, sink, dest: str, fields: QgsFields):
+        self.sink, self.dest, self.fields = sink, dest, fields
+
+    def write(self, signs) -> None:
         for sign in signs:
-            feature = QgsFeature(fields)
+            feature = QgsFeature(self.fields)
             feature.setGeometry(QgsGeometry(QgsPoint(sign.easting, sign.northing, sign.height)))
             feature.setAttributes([sign.sign_id, sign.template_id, sign.width_m, sign.height_m, sign.facing])
-            sink.addFeature(feature, QgsFeatureSink.FastInsert)
-        return dest
+            if not self.sink.addFeature(feature, QgsFeatureSink.FastInsert):
+                raise QgsProcessingException(f"{self.dest}: cannot write the ground truth signs")
+
+    def close(self) -> None:
+        """Release the sink: its file is complete (or can be deleted)."""
+        self.sink = None

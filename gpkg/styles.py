@@ -6,8 +6,10 @@ face azimuth and the template id as label; the legend groups the pictograms by
 sign family. The review state is part of every symbol and follows decisions
 live (data-defined on ``status``): a sign to review has an orange halo and a
 "?" label, a rejected sign is faded and crossed out, a manual one carries a
-blue mark. Detections show a dot coloured by status. Field aliases are in the
-output language (``output_schema.ALIASES``).
+blue mark. SVG pictograms are optional in a catalogue: an entry without one (or
+whose file is missing) gets a plain marker of its shape and colour instead.
+Detections show a dot coloured by status. Field aliases are in the output
+language (``output_schema.ALIASES``).
 
 The styles are embedded in the GeoPackage as its default (opening the file
 shows them) and applied by a Processing layer post-processor to the layers a
@@ -42,12 +44,17 @@ from qgis.PyQt.QtGui import QColor
 
 from ..signmapper_core import output_schema as schema
 from ..signmapper_core.catalogue.families import by_family, family_name
+from ..signmapper_core.catalogue.names import sign_name
 from ..signmapper_core.output_schema import DETECTIONS, MANUAL, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
 
 PICTOGRAM_MM = 7.0
 REJECTED_OPACITY = 35  # percent: a rejected sign stays visible, faded under its cross
 SIGNS_LABEL = (f"\"template_id\" || CASE WHEN \"status\" = '{REVIEW}' THEN ' ?' "
                f"WHEN \"status\" = '{REJECTED}' THEN ' ✗' ELSE '' END")
+# catalogue shape -> the plain marker drawn where a template has no SVG pictogram
+PLAIN_SHAPES = {"circle": "Circle", "triangle": "EquilateralTriangle", "triangle-down": "EquilateralTriangle",
+                "octagon": "Octagon", "diamond": "Diamond", "square": "Square", "rectangle": "Square"}
+PLAIN_COLOURS = {"red": "#d52b1e", "blue": "#1f5fae", "yellow": "#f5c400", "white": "#f0f0f0"}
 
 
 def _when(status: str) -> QgsProperty:
@@ -107,11 +114,43 @@ def _manual_mark() -> QgsSimpleMarkerSymbolLayer:
     return mark
 
 
+def _plain_layer(entry, size_mm: float) -> QgsSimpleMarkerSymbolLayer:
+    """A marker of the entry's shape and colour, for a template without an SVG pictogram."""
+    shape = getattr(QgsSimpleMarkerSymbolLayerBase, PLAIN_SHAPES.get(entry.shape, "Circle"),
+                    QgsSimpleMarkerSymbolLayerBase.Circle)
+    layer = QgsSimpleMarkerSymbolLayer(shape, size_mm * 0.7)
+    layer.setColor(QColor(PLAIN_COLOURS.get(entry.colour, "#d52b1e")))
+    layer.setStrokeColor(QColor("#222222"))
+    if entry.shape == "triangle-down":
+        layer.setAngle(180.0)
+    return layer
+
+
+def pictogram_svg(catalogue, entry) -> bytes | None:
+    """The entry's SVG pictogram, or None where the catalogue has none (or its file is missing)."""
+    if not entry.svg:
+        return None
+    try:
+        return catalogue.pictogram_path(entry.id, "svg").read_bytes()
+    except OSError:
+        return None
+
+
+def templates_without_pictogram(catalogue) -> list[str]:
+    """Ids of the entries drawn with a plain marker: no SVG pictogram, or its file is missing."""
+    return [e.id for e in catalogue if not e.svg or not catalogue.pictogram_path(e.id, "svg").is_file()]
+
+
 def pictogram_symbol(svg_bytes: bytes) -> QgsMarkerSymbol:
     """Halo (review), pictogram, face arrow, cross (rejected), mark (manual); faded when rejected."""
+    return sign_symbol(_svg_layer(svg_bytes, PICTOGRAM_MM))
+
+
+def sign_symbol(face) -> QgsMarkerSymbol:
+    """The symbol of one sign type around its ``face`` layer (pictogram or plain marker)."""
     symbol = QgsMarkerSymbol()
     symbol.changeSymbolLayer(0, _review_halo())
-    for layer in (_svg_layer(svg_bytes, PICTOGRAM_MM), _azimuth_arrow(), _rejected_cross(), _manual_mark()):
+    for layer in (face, _azimuth_arrow(), _rejected_cross(), _manual_mark()):
         symbol.appendSymbolLayer(layer)
     symbol.setDataDefinedProperty(
         QgsSymbol.PropertyOpacity,
@@ -133,10 +172,11 @@ def signs_renderer(catalogue, language: str = "en") -> QgsRuleBasedRenderer:
         ids = ", ".join(_quoted(e.id) for e in entries)
         group = QgsRuleBasedRenderer.Rule(None, 0, 0, f'"template_id" IN ({ids})', family_name(name, language))
         for entry in entries:
-            svg = catalogue.pictogram_path(entry.id, "svg")
+            svg = pictogram_svg(catalogue, entry)
+            face = _plain_layer(entry, PICTOGRAM_MM) if svg is None else _svg_layer(svg, PICTOGRAM_MM)
             group.appendChild(QgsRuleBasedRenderer.Rule(
-                pictogram_symbol(svg.read_bytes()), 0, 0, f'"template_id" = {_quoted(entry.id)}',
-                f"{entry.id} {entry.name(language)}"))
+                sign_symbol(face), 0, 0, f'"template_id" = {_quoted(entry.id)}',
+                f"{entry.id} {sign_name(entry, language)}"))
         root.appendChild(group)
     fallback = QgsMarkerSymbol.createSimple({"name": "circle", "color": "#d52b1e", "size": "3"})
     other = QgsRuleBasedRenderer.Rule(fallback, 0, 0, "", "other")
@@ -197,8 +237,11 @@ def apply_style(layer: QgsVectorLayer, kind: str, catalogue, language: str = "en
     layer.triggerRepaint()
 
 
-def embed_default_styles(gpkg_path: str, catalogue, language: str = "en") -> None:
-    """Save the styles into the GeoPackage's layer_styles table, used when the layers are opened."""
+def embed_default_styles(gpkg_path: str, catalogue, language: str = "en") -> list[str]:
+    """Save the styles into the GeoPackage's layer_styles table, used when the layers are opened.
+
+    Returns the ids of the templates drawn with a plain marker (``templates_without_pictogram``).
+    """
     for kind, description in ((SIGNS, "Sign Mapper: pictograms by family, review state, face direction, ids"),
                               (DETECTIONS, "Sign Mapper: detections by status")):
         layer = QgsVectorLayer(f"{gpkg_path}|layername={kind}", kind, "ogr")
@@ -208,6 +251,7 @@ def embed_default_styles(gpkg_path: str, catalogue, language: str = "en") -> Non
         error = layer.saveStyleToDatabase("default", description, True, "")
         if error:
             raise RuntimeError(f"{layer.source()}: style not saved: {error}")
+    return templates_without_pictogram(catalogue)
 
 
 class OutputStyler(QgsProcessingLayerPostProcessorInterface):

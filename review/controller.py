@@ -20,9 +20,10 @@ from .background import BackgroundRunner, Jobs
 from .decisions import DecisionTaker
 from .drive_locator import DriveLocator
 from .images import ImageLoader
-from .items import read_item
+from .items import read_item, review_progress
 from .layers import gpkg_source, layer_kind
 from .navigation import Navigator
+from .progress_on_map import ReviewProgressItem
 from .session import ReviewSession
 
 
@@ -40,6 +41,7 @@ class ReviewController(QObject):
         self.navigator = Navigator(self.session, dock, iface, self.show_feature)
         self.decisions = DecisionTaker(self.session, dock, self.jobs, self.navigator, self.show_feature,
                                        self.show_selection)
+        self.map_progress = ReviewProgressItem(iface.mapCanvas()) if iface is not None else None
         self._catalogues = {}  # catalogue folder (None = bundled) -> Catalogue
         self._catalogue_key = None
         self._active = False
@@ -94,6 +96,9 @@ class ReviewController(QObject):
             signal.disconnect(slot)
         self._dock_connections = []
         self.background.shutdown()
+        if self.map_progress is not None:
+            self.iface.mapCanvas().scene().removeItem(self.map_progress)
+            self.map_progress = None
 
     def busy(self) -> bool:
         return self.background.busy()
@@ -106,6 +111,10 @@ class ReviewController(QObject):
         if kind is None:
             self.dock.show_empty("Select a feature of a Sign Mapper 'signs', 'detections' or 'changes' layer")
             self.dock.set_pairs([])
+            self.dock.set_navigation_enabled(False)
+            self.dock.progress.setVisible(False)
+            if self.map_progress is not None:
+                self.map_progress.clear()
             return
         session = self.session
         session.layer, session.kind = layer, kind
@@ -114,6 +123,7 @@ class ReviewController(QObject):
         session.run = read_run_table(gpkg_source(layer)[0])
         self._load_catalogue()
         self._open_drive()
+        self.dock.set_navigation_enabled(True, can_add=self.session.drive is not None)
         self.show_selection()
 
     def _unfollow_layer(self) -> None:
@@ -149,23 +159,35 @@ class ReviewController(QObject):
 
     def _load_catalogue(self) -> None:
         from ..signmapper_core.catalogue import load_catalogue
+        from ..signmapper_core.catalogue.names import sign_name
 
         folder = self.session.run.get("catalogue")
         key = folder if folder and (Path(folder) / "catalogue.json").is_file() else None
         if key not in self._catalogues:
             self._catalogues[key] = load_catalogue(key)
         catalogue = self.session.catalogue = self._catalogues[key]
-        if key != self._catalogue_key or not self.dock.has_template_choices():
-            self._catalogue_key = key
+        if (key, self.session.language) != self._catalogue_key or not self.dock.has_template_choices():
+            self._catalogue_key = key, self.session.language
             self.dock.set_template_choices([
-                TemplateChoice(e.id, e.name("de"), e.colour, e.shape, str(catalogue.pictogram_path(e.id, "png")))
+                TemplateChoice(e.id, sign_name(e, self.session.language), e.colour, e.shape,
+                               str(catalogue.pictogram_path(e.id, "png")))
                 for e in catalogue
             ])
+
+    def update_progress(self) -> None:
+        layer = self.session.layer
+        if layer is None:
+            return
+        to_review, reviewed, total = review_progress(layer, self.session.kind)
+        self.dock.set_progress(to_review, reviewed, total)
+        if self.map_progress is not None:
+            self.map_progress.set_progress(layer.name(), to_review, reviewed, total)
 
     def show_selection(self) -> None:
         layer = self.session.layer
         if layer is None:
             return
+        self.update_progress()
         ids = sorted(layer.selectedFeatureIds())
         if not ids:
             self.session.fid = self.session.item = None
@@ -180,6 +202,7 @@ class ReviewController(QObject):
             self.dock.show_empty(f"{session.layer.name()}: feature {fid} no longer exists")
             return
         session.fid = fid
+        self.update_progress()
         session.item = item = read_item(session, feature)
         self.dock.show_item(item)
         self.images.show_item(item)

@@ -13,7 +13,10 @@ from ..gpkg.fields import feature_values
 from ..signmapper_core.changes_schema import CHANGES
 from ..signmapper_core.output_schema import MANUAL, SIGNS
 from .edits import DecisionLog, EditError, add_feature, change_attributes
+from .layers import features_where
 from .values import accept_values, manual_feature, reclassify_values, reject_values
+
+DUPLICATE_RADIUS_M = 0.5  # an added sign this close to one of the same type is probably that sign
 
 
 class DecisionTaker:
@@ -114,6 +117,25 @@ class DecisionTaker:
         self.dock.show_message(f"Looking for a sign around ({u:.0f}, {v:.0f}) in pair {pair_id}…")
         self.jobs.submit("add", lambda: detect_at(drive, record, catalogue, config, u, v), found)
 
+    def _same_sign_nearby(self, layer, observation):
+        """(fid, distance) of the nearest feature of the same type within DUPLICATE_RADIUS_M (3D), else None.
+
+        In a detections layer only the same pair counts: other pairs' detections of one sign are expected.
+        """
+        east, north, up = (float(c) for c in observation.position)
+        best = None
+        for feature in features_where(layer, "template_id", observation.template_id):
+            if self.session.kind != SIGNS and feature["pair_id"] != observation.pair_id:
+                continue
+            if not feature.hasGeometry():
+                continue
+            point = feature.geometry().constGet()
+            dz = (point.z() - up) if point.is3D() else 0.0
+            distance = ((point.x() - east) ** 2 + (point.y() - north) ** 2 + dz ** 2) ** 0.5
+            if distance <= DUPLICATE_RADIUS_M and (best is None or distance < best[1]):
+                best = (feature.id(), distance)
+        return best
+
     def _add(self, observation) -> None:
         """A feature for the clicked sign: the observation itself, or in a signs layer a new sign numbered last."""
         from ..signmapper_core.mapping import manual_sign
@@ -121,6 +143,15 @@ class DecisionTaker:
         layer, kind = self.session.layer, self.session.kind
         if kind == CHANGES:
             self._found_in_change(observation)
+            return
+        twin = self._same_sign_nearby(layer, observation)
+        if twin is not None and not self.dock.confirm(
+                "Sign Mapper: add a second sign?",
+                f"{layer.name()} already has a {observation.template_id} {twin[1]:.2f} m from the clicked sign "
+                f"(feature {twin[0]}). Add another one anyway?"):
+            self.dock.show_message(f"Not added: {observation.template_id} is already mapped {twin[1]:.2f} m away "
+                                   f"(feature {twin[0]})")
+            self.navigator.select(twin[0])
             return
         item = observation
         if kind == SIGNS:

@@ -71,10 +71,33 @@ def read_item(session, feature) -> ReviewItem:
         item.pictogram_path = str(catalogue.pictogram_path(item.template_id, "png"))
     if kind == SIGNS:
         item.extra = [(label, fmt.format(values[key])) for key, label, fmt in SIGN_FIGURES if values[key] is not None]
-        item.observations = observations_of(layer, values["sign_id"])
+        item.observations = observations_of(layer, values["sign_id"]) or own_observation(values)
     if item.bbox is not None and session.drive is not None:
         item.crop = crop_rect(item.bbox, session.drive.image_size)
     return item
+
+
+def own_observation(values: dict) -> List[ObservationView]:
+    """A sign without linked detections (added by hand, or a copied layer): its own best observation."""
+    box, pair_id = _bbox(values), values["best_pair_id"]
+    if box is None or not pair_id:
+        return []
+    score = values["classification_indicator"]
+    label = f"{pair_id}\n{score:.2f}" if score is not None else str(pair_id)
+    return [ObservationView(str(pair_id), label, None, values["template_id"] or "", box)]
+
+
+def review_progress(layer, kind: str) -> Tuple[int, int, int]:
+    """(to review, reviewed, total) of a layer: what the dock and the map show of the review's progress."""
+    request = QgsFeatureRequest().setFlags(QgsFeatureRequest.NoGeometry)
+    request.setSubsetOfAttributes(["status", "reviewed"], layer.fields())
+    to_review = reviewed = total = 0
+    for feature in layer.getFeatures(request):
+        values = feature_values(feature, kind)
+        total += 1
+        to_review += values["status"] == REVIEW
+        reviewed += bool(values["reviewed"])
+    return to_review, reviewed, total
 
 
 def observations_of(signs_layer, sign_id) -> List[ObservationView]:

@@ -91,7 +91,7 @@ def main(argv=None) -> int:
     accepted_total, accepted_wrong, accepted_unmatched = 0, 0, 0
     total_pairs, total_seconds = 0, 0.0
     for folder in folders:
-        drive = open_drive(folder)
+        drive = open_drive(folder, require_truth=True)
         reference = mappable_signs(drive, args.near, args.far)
         ref_xyz, ref_ids = [s.position for s in reference], [s.template_id for s in reference]
         traj = np.array([[r.pose.easting, r.pose.northing] for r in drive.pairs])

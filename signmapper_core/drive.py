@@ -17,15 +17,25 @@ from typing import Iterator
 
 import numpy as np
 
-from .errors import DriveFormatError
+from .errors import DriveFormatError, ImageReadError
 from .geometry import Camera, Pose
-from .image_files import DEPTH_SUFFIXES, IMAGE_SUFFIXES, image_size, read_depth, read_image
+from .image_files import (
+    DEPTH_SUFFIXES,
+    IMAGE_SUFFIXES,
+    depth_header,
+    depth_type_error,
+    image_header,
+    read_depth,
+    read_image,
+)
+from .plausibility import camera_warnings, depth_warnings, greyscale_warning, pose_warnings
 from .progress import CancelCheck, ProgressCallback, check_cancelled, report
 
 FORMAT_ID = "stereo-drive/1"
 POSE_COLUMNS = ("id", "time", "easting", "northing", "height", "heading", "pitch", "roll")
 TRUTH_COLUMNS = ("sign_id", "template_id", "easting", "northing", "height", "width_m", "height_m", "facing")
 CAMERA_KEYS = ("width", "height", "fx", "fy", "cx", "cy", "baseline_m")
+MAX_ANGLE_DEG = 1e9  # beyond this a double no longer resolves a microdegree: the value is not an angle
 
 
 @dataclass(frozen=True)
@@ -69,6 +79,8 @@ class Drive:
     pairs: list[PairRecord]
     truth: list[TruthSign] | None = None
     metadata: dict = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)  # implausible but readable input (``plausibility``)
+    truth_error: DriveFormatError | None = None  # why a broken truth.csv was ignored
 
     def __len__(self) -> int:
         return len(self.pairs)
@@ -97,13 +109,17 @@ class Drive:
 
 
 def open_drive(path, check_images: bool = True, progress: ProgressCallback | None = None,
-               is_cancelled: CancelCheck | None = None) -> Drive:
+               is_cancelled: CancelCheck | None = None, require_truth: bool = False) -> Drive:
     """Validate and open a drive folder.
 
     ``check_images`` reads the header of every image and depth map to check it
-    decodes and has the camera's size; leave it on unless the caller checks.
+    decodes, has the camera's size and (depth) is float32, and decodes the first
+    depth map to see it holds metres; leave it on unless the caller checks.
     ``progress`` and ``is_cancelled`` follow :mod:`signmapper_core.progress`
     (reported per pair; :class:`~signmapper_core.progress.Cancelled` when cancelled).
+    Implausible but readable values are listed in ``Drive.warnings``. A broken
+    ``truth.csv`` is only needed by evaluation: it raises with ``require_truth``,
+    otherwise it is a warning and ``Drive.truth`` is None.
     """
     root = Path(path)
     if not root.is_dir():
@@ -112,10 +128,27 @@ def open_drive(path, check_images: bool = True, progress: ProgressCallback | Non
     crs = _validate_crs(root / "drive.json", metadata["crs"])
     camera = _read_camera(root / "drive.json", metadata["camera"])
     rows = _read_poses(root / "poses.csv")
-    pairs = _attach_files(root, rows, camera, check_images, progress, is_cancelled)
+    warnings = camera_warnings(root / "drive.json", camera) + pose_warnings(root / "poses.csv", crs, rows)
+    pairs = _attach_files(root, rows, camera, check_images, progress, is_cancelled, warnings)
+    if check_images:
+        warnings += _first_depth_warnings(pairs, camera)
+    drive = Drive(root=root, crs=crs, camera=camera, pairs=pairs, metadata=metadata, warnings=warnings)
     truth_path = root / "truth.csv"
-    truth = read_truth(truth_path) if truth_path.exists() else None
-    return Drive(root=root, crs=crs, camera=camera, pairs=pairs, truth=truth, metadata=metadata)
+    if truth_path.exists():
+        try:
+            drive.truth = read_truth(truth_path)
+        except DriveFormatError as exc:
+            if require_truth:
+                raise
+            drive.truth_error = exc
+            warnings.append(f"{exc}; the ground truth is ignored (only evaluation needs it)")
+    return drive
+
+
+def _first_depth_warnings(pairs: list[PairRecord], camera: Camera) -> list[str]:
+    """Decode the first given depth map: depth in millimetres or without any valid value shows there."""
+    first = next((r.depth_path for r in pairs if r.depth_path is not None), None)
+    return [] if first is None else depth_warnings(first, read_depth(first, (camera.width, camera.height)))
 
 
 def _read_drive_json(path: Path) -> dict:
@@ -176,6 +209,12 @@ def _read_camera(path: Path, cam: dict) -> Camera:
     for key in ("fx", "fy", "baseline_m"):
         if values[key] <= 0:
             raise DriveFormatError(path, f"must be positive, found {values[key]!r}", field=f"camera.{key}")
+    for key, size in (("cx", values["width"]), ("cy", values["height"])):
+        if not -0.5 <= values[key] <= size - 0.5:
+            raise DriveFormatError(
+                path, f"principal point {values[key]!r} lies outside the image (-0.5 to {size - 0.5:g} px)",
+                field=f"camera.{key}",
+            )
     return Camera(**values)
 
 
@@ -246,6 +285,10 @@ def _read_poses(path: Path) -> list[tuple[int, str, float, Pose]]:
         last_time = nums["time"]
         if not -90.0 <= nums["pitch"] <= 90.0:
             raise DriveFormatError(path, f"pitch {nums['pitch']} outside [-90, 90] degrees", line=line, field="pitch")
+        for name in ("heading", "roll"):
+            if abs(nums[name]) > MAX_ANGLE_DEG:
+                raise DriveFormatError(path, f"{name} {nums[name]:g} is not an angle in degrees", line=line,
+                                       field=name)
         pose = Pose(nums["easting"], nums["northing"], nums["height"], nums["heading"], nums["pitch"], nums["roll"])
         rows.append((line, pair_id, nums["time"], pose))
     if not rows:
@@ -265,13 +308,13 @@ def _find_file(folder: Path, stem: str, suffixes: tuple[str, ...], poses_path: P
 
 
 def _attach_files(root: Path, rows, camera: Camera, check_images: bool, progress=None,
-                  is_cancelled=None) -> list[PairRecord]:
+                  is_cancelled=None, warnings: list | None = None) -> list[PairRecord]:
     poses_path = root / "poses.csv"
     left_dir, right_dir, depth_dir = root / "left", root / "right", root / "depth"
     if not left_dir.is_dir():
         raise DriveFormatError(left_dir, "required folder is missing")
     expected = (camera.width, camera.height)
-    pairs = []
+    pairs, grey = [], []
     for index, (line, pair_id, time, pose) in enumerate(rows):
         check_cancelled(is_cancelled, f"opening drive {root}")
         left = _find_file(left_dir, pair_id, IMAGE_SUFFIXES, poses_path, line)
@@ -289,15 +332,32 @@ def _attach_files(root: Path, rows, camera: Camera, check_images: bool, progress
                 field="id",
             )
         if check_images:
-            for path in (left, right, depth):
-                size = image_size(path) if path is not None else expected
-                if size != expected:
-                    raise DriveFormatError(
-                        path, f"size {size[0]}x{size[1]} differs from the camera's {expected[0]}x{expected[1]}"
-                    )
+            if _check_headers(left, right, depth, expected):
+                grey.append(left)
         pairs.append(PairRecord(index, pair_id, time, pose, left, right, depth))
         report(progress, (index + 1) / len(rows), f"checked pair {pair_id} ({index + 1} of {len(rows)})")
+    if warnings is not None:
+        warnings += greyscale_warning(left_dir, grey, len(pairs))
     return pairs
+
+
+def _check_headers(left: Path, right: Path | None, depth: Path | None, expected: tuple[int, int]) -> bool:
+    """Sizes of a pair's files, their content against their suffix, the depth's sample type.
+
+    Returns whether the left image is greyscale.
+    """
+    headers = [image_header(left)] + ([image_header(right)] if right is not None else [])
+    if depth is not None:
+        found = depth_header(depth)
+        if found.dtype != "float32":
+            raise ImageReadError(depth, depth_type_error(found.dtype))
+        headers.append(found)
+    for path, header in zip([p for p in (left, right, depth) if p is not None], headers):
+        if header.size != expected:
+            raise DriveFormatError(
+                path, f"size {header.size[0]}x{header.size[1]} differs from the camera's {expected[0]}x{expected[1]}"
+            )
+    return headers[0].greyscale
 
 
 def read_truth(path) -> list[TruthSign]:

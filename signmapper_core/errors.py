@@ -21,3 +21,27 @@ class DriveFormatError(ValueError):
 
 class ImageReadError(DriveFormatError):
     """An image or depth map exists but cannot be decoded or has the wrong size."""
+
+
+class MappingError(RuntimeError):
+    """A run whose output could not be trusted, e.g. because too many pairs could not be read."""
+
+
+class ImportInputError(ValueError):
+    """An importer's input (images, calibration, poses, CRS) is missing, malformed or contradicts another input.
+
+    The message names the file (and line and field where there is one) and what is wrong, as
+    :class:`DriveFormatError` does for drive folders.
+    """
+
+    def __init__(self, path, message: str, line: int | None = None, field: str | None = None):
+        self.path = str(path)
+        self.line = line
+        self.field = field
+        self.reason = message
+        where = self.path
+        if line is not None:
+            where += f", line {line}"
+        if field is not None:
+            where += f", field '{field}'"
+        super().__init__(f"{where}: {message}")

@@ -157,25 +157,53 @@ def evaluate(mapped_xyz, mapped_ids, reference_xyz, reference_ids, trajectory_xy
     return EvaluationReport(table1, table2, match, components, reference_ids, confusions)
 
 
-def format_report(report: EvaluationReport, title: str = "") -> str:
-    """Plain-text Tables 1 and 2, laid out like the paper's."""
-    t1 = report.table1
+def percent(share: float) -> str:
+    return f"{100 * share:.1f} %"
+
+
+def table1_texts(t1: Table1) -> dict[str, str]:
+    """Table 1 as the reader should see it: counts "of" their base, never a "nan %" where the base is 0."""
+    detected = (f"{t1.detected_signs} of {t1.reference_signs} ({percent(t1.detection_rate)})"
+                if t1.reference_signs else "0 (no reference signs)")
+    if t1.detected_signs:
+        classified = (f"{t1.correctly_classified_signs} of {t1.detected_signs} detected "
+                      f"({percent(t1.classification_rate)})")
+    else:
+        classified = "0 (no sign detected)"
+    return {
+        "reference signs": f"{t1.reference_signs}",
+        "detected signs": detected,
+        "correctly classified signs": classified,
+        "mapped features": f"{t1.detections}" if t1.detections else "0 (no mapped signs)",
+        "false positive features": f"{t1.false_positive_detections}",
+        "reference signs with >1 feature": f"{t1.duplicates}",
+    }
+
+
+NO_DIFFERENCES = "no mapped sign matches a reference sign: no coordinate differences"
+
+
+def format_report(report: EvaluationReport, title: str = "", aligned: bool = True) -> str:
+    """Plain-text Tables 1 and 2, laid out like the paper's; ``aligned=False`` labels every figure instead of
+    lining up columns (for logs shown in a proportional font, like QGIS's Processing log)."""
     lines = [title] if title else []
-    lines += [
-        "Table 1: detection and classification",
-        f"  reference signs                 {t1.reference_signs:6d}",
-        f"  detected signs                  {t1.detected_signs:6d}   ({100 * t1.detection_rate:5.1f} %)",
-        f"  correctly classified signs      {t1.correctly_classified_signs:6d}   ({100 * t1.classification_rate:5.1f} %"
-        " of detected)",
-        f"  mapped features                 {t1.detections:6d}",
-        f"  false positive features         {t1.false_positive_detections:6d}",
-        f"  reference signs with >1 feature {t1.duplicates:6d}",
-        "Table 2: coordinate differences (mapped - reference) [m]",
-        "  component       n     mean      std      rms  max|d|",
-    ]
-    for name in COMPONENTS:
-        s = report.table2[name]
-        lines.append(f"  {name:<12} {s.n:4d} {s.mean:8.3f} {s.std:8.3f} {s.rms:8.3f} {s.max_abs:7.3f}")
+    if report.table1.detections == 0:
+        lines.append("No mapped signs: every reference sign counts as missed.")
+    lines.append("Table 1: detection and classification")
+    lines += [f"  {name:<32}{text}" for name, text in table1_texts(report.table1).items()]
+    lines.append("Table 2: coordinate differences (mapped - reference) [m]")
+    if report.table2[COMPONENTS[0]].n == 0:
+        lines.append(f"  {NO_DIFFERENCES}")
+    elif not aligned:
+        for name in COMPONENTS:
+            s = report.table2[name]
+            lines.append(f"  {name}: n {s.n}, mean {s.mean:.3f}, empirical σ {s.std:.3f}, RMS {s.rms:.3f}, "
+                         f"max |d| {s.max_abs:.3f}")
+    else:
+        lines.append("  component       n     mean      std      rms  max|d|")
+        for name in COMPONENTS:
+            s = report.table2[name]
+            lines.append(f"  {name:<12} {s.n:4d} {s.mean:8.3f} {s.std:8.3f} {s.rms:8.3f} {s.max_abs:7.3f}")
     if report.confusions:
         lines.append("Misclassified (reference -> assigned): " + ", ".join(f"{a}->{b}" for a, b in report.confusions))
     return "\n".join(lines)

@@ -7,6 +7,7 @@ decoded only when a pair is processed. Images in the core are OpenCV BGR uint8.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -15,6 +16,12 @@ from .errors import ImageReadError
 
 IMAGE_SUFFIXES = (".jpg", ".png", ".tif")
 DEPTH_SUFFIXES = (".tif", ".npy", ".pfm")
+# What each suffix must hold (Pillow's format names; MPO is a JPEG with extra pictures)
+IMAGE_FORMATS = {".jpg": ("JPEG", "MPO"), ".png": ("PNG",), ".tif": ("TIFF",)}
+SUFFIX_OF_FORMAT = {"JPEG": ".jpg", "MPO": ".jpg", "PNG": ".png", "TIFF": ".tif"}
+GREY_MODES = ("1", "L", "LA", "I", "I;16", "F")
+NPY_MAGIC = b"\x93NUMPY"
+TIFF_SAMPLE_TYPES = {1: "uint", 2: "int", 3: "float"}  # TIFF tag 339 SampleFormat
 
 
 def _cv2():
@@ -23,29 +30,130 @@ def _cv2():
     return cv2
 
 
-def image_size(path: Path) -> tuple[int, int]:
-    """(width, height) of an image or depth file from its header."""
+@dataclass(frozen=True)
+class ImageHeader:
+    """What the header of an image says, read without decoding pixels."""
+
+    width: int
+    height: int
+    mode: str  # Pillow's mode: "RGB", "L" (greyscale), ...
+    format: str  # Pillow's format: "JPEG", "PNG", "TIFF"
+
+    @property
+    def size(self) -> tuple[int, int]:
+        return self.width, self.height
+
+    @property
+    def greyscale(self) -> bool:
+        return self.mode in GREY_MODES
+
+
+@dataclass(frozen=True)
+class DepthHeader:
+    """Size and sample type of a depth map, read without decoding it."""
+
+    width: int
+    height: int
+    dtype: str  # numpy's name: "float32", "uint16", ...
+
+    @property
+    def size(self) -> tuple[int, int]:
+        return self.width, self.height
+
+
+def image_header(path: Path, check_suffix: bool = True) -> ImageHeader:
+    """Size, mode and format of an image from its header; with ``check_suffix`` the content must match it."""
+    from PIL import Image
+
+    path = Path(path)
+    try:
+        with Image.open(path) as img:
+            header = ImageHeader(int(img.size[0]), int(img.size[1]), img.mode, img.format or "")
+    except Exception as exc:  # Pillow raises many types for broken headers
+        _check_not_empty(path)
+        raise ImageReadError(path, f"not a readable image ({exc.__class__.__name__}: {exc})") from exc
+    allowed = IMAGE_FORMATS.get(path.suffix.lower()) if check_suffix else None
+    if allowed and header.format not in allowed:
+        right = SUFFIX_OF_FORMAT.get(header.format)
+        hint = f"; rename it to {path.stem}{right}" if right else ""
+        raise ImageReadError(path, f"is a {header.format} image, not what its suffix {path.suffix} says{hint}")
+    return header
+
+
+def depth_header(path: Path) -> DepthHeader:
+    """Size and sample type of a depth map (.npy, .pfm, .tif) from its header."""
     path = Path(path)
     suffix = path.suffix.lower()
     try:
         if suffix == ".npy":
-            arr = np.load(path, mmap_mode="r", allow_pickle=False)
+            arr = _open_npy(path, mmap_mode="r")
             if arr.ndim != 2:
                 raise ImageReadError(path, f"depth array must be 2-D (height, width), found shape {arr.shape}")
-            return int(arr.shape[1]), int(arr.shape[0])
+            return DepthHeader(int(arr.shape[1]), int(arr.shape[0]), arr.dtype.name)
         if suffix == ".pfm":
             width, height, channels, _scale = _pfm_header(path)
             if channels != 1:
                 raise ImageReadError(path, "PFM depth map must have one channel ('Pf'), found 'PF'")
-            return width, height
-        from PIL import Image
-
-        with Image.open(path) as img:
-            return int(img.size[0]), int(img.size[1])
+            return DepthHeader(width, height, "float32")
+        if suffix == ".tif":
+            return _tiff_depth_header(path)
     except ImageReadError:
         raise
     except Exception as exc:  # Pillow/numpy raise many types for broken headers
-        raise ImageReadError(path, f"not a readable image ({exc.__class__.__name__}: {exc})") from exc
+        _check_not_empty(path)
+        raise ImageReadError(path, f"not a readable depth map ({exc.__class__.__name__}: {exc})") from exc
+    raise ImageReadError(path, f"unsupported depth file type '{suffix}'")
+
+
+def _tiff_depth_header(path: Path) -> DepthHeader:
+    """Size and sample type from a TIFF's first directory (Pillow cannot open float64 TIFFs, so no Image.open)."""
+    from PIL import TiffImagePlugin
+
+    with open(path, "rb") as fh:
+        prefix = fh.read(8)
+        ifd = TiffImagePlugin.ImageFileDirectory_v2(prefix)  # raises SyntaxError for a non-TIFF prefix
+        fh.seek(ifd.next)
+        ifd.load(fh)
+    width, height = ifd.get(256), ifd.get(257)
+    if not width or not height:
+        raise ImageReadError(path, "TIFF without image width and length")
+    bands = int(ifd.get(277, 1))
+    bits = ifd.get(258, (1,))
+    bits = int(bits[0] if isinstance(bits, tuple) else bits)
+    sample = ifd.get(339, (1,))
+    sample = int(sample[0] if isinstance(sample, tuple) else sample)
+    if bands != 1:
+        raise ImageReadError(path, f"depth map must have one band, found {bands}")
+    return DepthHeader(int(width), int(height), f"{TIFF_SAMPLE_TYPES.get(sample, 'uint')}{bits}")
+
+
+def image_size(path: Path) -> tuple[int, int]:
+    """(width, height) of any image (whatever its suffix says) or .npy/.pfm depth file from its header."""
+    path = Path(path)
+    if path.suffix.lower() in (".npy", ".pfm"):
+        return depth_header(path).size
+    return image_header(path, check_suffix=False).size
+
+
+def _check_not_empty(path: Path) -> None:
+    try:
+        size = path.stat().st_size
+    except OSError as exc:
+        raise ImageReadError(path, f"cannot be read ({exc.strerror or exc})") from exc
+    if size == 0:
+        raise ImageReadError(path, "empty file (0 bytes)")
+
+
+def _open_npy(path: Path, mmap_mode=None) -> np.ndarray:
+    """A .npy array; anything that is not a NumPy file is named as such (numpy alone would blame pickling)."""
+    try:
+        return np.load(path, mmap_mode=mmap_mode, allow_pickle=False)
+    except ValueError:
+        _check_not_empty(path)
+        with open(path, "rb") as fh:
+            if fh.read(len(NPY_MAGIC)) != NPY_MAGIC:
+                raise ImageReadError(path, "not a NumPy .npy file (no NumPy header)") from None
+        raise
 
 
 def _pfm_header(path: Path) -> tuple[int, int, int, float]:
@@ -77,8 +185,13 @@ def read_image(path: Path, expected_size: tuple[int, int] | None = None) -> np.n
         data = np.fromfile(path, dtype=np.uint8)
     except OSError as exc:
         raise ImageReadError(path, f"cannot be read ({exc.strerror or exc})") from exc
-    if Path(path).suffix.lower() in (".jpg", ".jpeg") and not _has_jpeg_end(data):
-        raise ImageReadError(path, "truncated JPEG (no end-of-image marker)")
+    if data.size == 0:
+        raise ImageReadError(path, "empty file (0 bytes)")
+    if Path(path).suffix.lower() in (".jpg", ".jpeg"):
+        if data[:3].tobytes() != b"\xff\xd8\xff":
+            raise ImageReadError(path, "not a JPEG file although named .jpg")
+        if not _has_jpeg_end(data):
+            raise ImageReadError(path, "truncated JPEG (no end-of-image marker)")
     img = cv2.imdecode(data, cv2.IMREAD_COLOR) if data.size else None
     if img is None:
         raise ImageReadError(path, "cannot be decoded as an image (corrupt or unsupported)")
@@ -97,7 +210,9 @@ def read_depth(path: Path, expected_size: tuple[int, int] | None = None) -> np.n
     suffix = path.suffix.lower()
     if suffix == ".npy":
         try:
-            depth = np.load(path, allow_pickle=False)
+            depth = _open_npy(path)
+        except ImageReadError:
+            raise
         except Exception as exc:
             raise ImageReadError(path, f"cannot be read as a numpy array ({exc})") from exc
     elif suffix in (".tif", ".pfm"):
@@ -110,11 +225,17 @@ def read_depth(path: Path, expected_size: tuple[int, int] | None = None) -> np.n
     if depth.ndim != 2:
         raise ImageReadError(path, f"depth map must have one band, found shape {depth.shape}")
     if depth.dtype != np.float32:
-        raise ImageReadError(path, f"depth map must be float32, found {depth.dtype}")
+        raise ImageReadError(path, depth_type_error(depth.dtype.name))
     _check_size(path, depth.shape, expected_size)
     depth = depth.astype(np.float32, copy=True)
     depth[~np.isfinite(depth) | (depth <= 0)] = np.nan
     return depth
+
+
+def depth_type_error(dtype: str) -> str:
+    """The message for a depth map that is not float32 metres."""
+    hint = " (millimetres as integers?)" if dtype.startswith(("uint", "int")) else ""
+    return f"depth map must be float32 metres (drive-format), found {dtype}{hint}"
 
 
 def write_depth(path: Path, depth: np.ndarray) -> Path:

@@ -4,8 +4,11 @@ This is the one capability every front end uses (the ``mapsigns`` algorithm,
 ``scripts/evaluate_mapping.py``, the benchmarks, the review's "add missed sign").
 Pairs are decoded lazily, one at a time; a pair whose files are corrupt, or
 whose detection raises (a bug met by unusual image content), is reported with
-the reason (and the traceback) and skipped rather than ending the run;
-cancellation is checked between pairs (:mod:`signmapper_core.progress`).
+the reason (and the traceback) and skipped rather than ending the run, unless
+more than a set share of the pairs (or all of them) had to be skipped: then the
+run is a :class:`~signmapper_core.errors.MappingError`, since an output of the
+rest would silently lack signs. Cancellation is checked between pairs
+(:mod:`signmapper_core.progress`).
 """
 
 from __future__ import annotations
@@ -19,10 +22,11 @@ from typing import Iterator, Optional
 import numpy as np
 
 from .drive import Drive, PairRecord
-from .errors import DriveFormatError
+from .errors import DriveFormatError, MappingError
 from .fusion import FusedSign, FusionConfig, Observation, azimuth_deg, fuse_observations
 from .mounting import camera_height_above_road, mounting_height
 from .output_schema import MANUAL, run_record
+from .plausibility import pair_warnings
 from .progress import CancelCheck, ProgressCallback, WarnCallback, check_cancelled, report, warn
 
 PAIRS_SHARE = 0.95  # of the progress: the pairs; fusion and mounting heights take the rest
@@ -47,6 +51,7 @@ class PairResult:
     load_seconds: float = 0.0  # of which decoding the files
     stage: Optional[str] = None
     traceback: Optional[str] = None
+    warnings: list = field(default_factory=list)  # readable but useless input: no depth, no colour
 
 
 @dataclass
@@ -106,7 +111,8 @@ def map_pairs(drive: Drive, catalogue, config, is_cancelled: Optional[CancelChec
                              seconds=_time.perf_counter() - start, load_seconds=loaded - start, stage=DETECT,
                              traceback=_traceback.format_exc())
             continue
-        yield PairResult(record, detections, seconds=_time.perf_counter() - start, load_seconds=loaded - start)
+        yield PairResult(record, detections, seconds=_time.perf_counter() - start, load_seconds=loaded - start,
+                         warnings=pair_warnings(record, left, depth))
 
 
 def failure_summary(skipped: list[PairResult], total: int) -> Optional[str]:
@@ -130,11 +136,14 @@ def set_mounting_heights(drive: Drive, signs: list[FusedSign]) -> None:
 
 def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallback] = None,
               is_cancelled: Optional[CancelCheck] = None, warn_skipped: Optional[WarnCallback] = None,
-              fusion: Optional[FusionConfig] = None) -> MappingResult:
+              fusion: Optional[FusionConfig] = None, max_skipped_share: float = 1.0) -> MappingResult:
     """Detect the signs of every pair, fuse them into physical signs and give each its mounting height.
 
-    Skipped pairs are passed to ``warn_skipped`` as they happen and listed in
-    the result; ``Cancelled`` is raised when ``is_cancelled()`` turns true.
+    Skipped pairs, and pairs without usable depth or colour, are passed to
+    ``warn_skipped`` as they happen; skipped pairs are listed in the result.
+    ``Cancelled`` is raised when ``is_cancelled()`` turns true; ``MappingError``
+    as soon as more than ``max_skipped_share`` (0..1) of the pairs are skipped,
+    and when no pair could be mapped at all.
     """
     from .pipeline.classifiers import accept_threshold, classifier_for
 
@@ -146,15 +155,24 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     for done, result in enumerate(map_pairs(drive, catalogue, config, is_cancelled), start=1):
         seconds += result.seconds
         load_seconds += result.load_seconds
+        for message in result.warnings:
+            warn(warn_skipped, message)
         if result.error:
             skipped.append(result)
             trace = f"\n{result.traceback}" if result.traceback else ""
             warn(warn_skipped, f"Skipped pair {result.record.id}: {result.error}{trace}")
+            if len(skipped) > max_skipped_share * total:
+                raise MappingError(f"{len(skipped)} of {total} pairs skipped, more than the "
+                                   f"{100 * max_skipped_share:g} % allowed (first: pair {skipped[0].record.id}: "
+                                   f"{skipped[0].error})")
         for detection in result.detections:
             detections.append(Observation(detection, result.record, id=len(detections) + 1))
         report(progress, PAIRS_SHARE * done / max(total, 1),
                f"Pair {result.record.id}: {len(result.detections)} signs ({result.seconds:.2f} s)")
     check_cancelled(is_cancelled, f"mapping drive {drive.root}")
+    if total and len(skipped) == total:
+        raise MappingError(f"no pair could be mapped: {total} of {total} pairs skipped (first: pair "
+                           f"{skipped[0].record.id}: {skipped[0].error})")
     report(progress, PAIRS_SHARE, f"Fusing {len(detections)} detections into signs")
     signs = fuse_observations(detections, fusion)
     set_mounting_heights(drive, signs)

@@ -35,7 +35,7 @@ STATUS_COLOURS = {ACCEPTED: "#2e7d32", REVIEW: "#f57c00", REJECTED: "#9e9e9e", M
 
 TEXT, INTEGER, REAL = "text", "integer", "real"
 
-# Languages of names and field aliases: the Swiss catalogue's three and English (names fall back to German).
+# Languages of names and field aliases: the Swiss catalogue's three and English (catalogue.names).
 LANGUAGES = ("en", "de", "fr", "it")
 DEFAULT_LANGUAGE = "de"
 
@@ -59,8 +59,10 @@ class OutputContext:
     crops: dict = dc_field(default_factory=dict)  # sign_id -> crop image path relative to the GeoPackage
 
     def name(self, template_id: str, fallback: str) -> str:
+        from .catalogue.names import sign_name
+
         if self.catalogue is not None and template_id in self.catalogue:
-            return self.catalogue[template_id].name(self.language)
+            return sign_name(self.catalogue[template_id], self.language)
         return fallback
 
     def timestamp(self, time: Optional[float]) -> Optional[str]:
@@ -131,6 +133,12 @@ def _coordinate(i: int) -> dict:
     return {"sign": lambda item: item.position[i], "detection": lambda item: item.position[i]}
 
 
+def _sign_name(entry, language: str) -> str:
+    from .catalogue.names import sign_name
+
+    return sign_name(entry, language)
+
+
 def _names(en: str, de: str, fr: str, it: str) -> dict:
     return {"aliases": {"en": en, "de": de, "fr": fr, "it": it}}
 
@@ -141,8 +149,8 @@ FIELDS = (
     Field("template_id", TEXT, "Catalogue id (SSV number, '-<value>' for a sign with a number), by weighted vote "
           "for a sign.", required=True, template=lambda entry, fmt, lang: entry.id, **_both("template_id"),
           **_names("Sign type (SSV)", "Signaltyp (SSV)", "Type de signal (OSR)", "Tipo di segnale (OSS)")),
-    Field("name", TEXT, "Name of the template in the output language (German, French or Italian; English output "
-          "names fall back on German).", template=lambda entry, fmt, lang: entry.name(lang), contextual=True,
+    Field("name", TEXT, "Name of the template in the output language (German, French, Italian or English).",
+          template=lambda entry, fmt, lang: _sign_name(entry, lang), contextual=True,
           sign=lambda s, ctx: ctx.name(s.template_id, s.name), detection=lambda o, ctx: ctx.name(o.template_id, o.name),
           **_names("Name", "Bezeichnung", "Désignation", "Denominazione")),
     Field("status", TEXT, "accepted, review (a person should look), rejected (by a person) or manual (added by a "

@@ -11,14 +11,10 @@ import html
 
 import numpy as np
 
-from .evaluation import COMPONENTS, EvaluationReport
+from .evaluation import COMPONENTS, NO_DIFFERENCES, EvaluationReport, table1_texts
 
 LABELS = {"across": "across track", "along": "along track", "height": "height", "planimetric": "planimetric",
           "3d": "3D"}
-
-
-def _pct(x: float) -> str:
-    return "–" if not np.isfinite(x) else f"{100 * x:.1f} %"
 
 
 def _m(x: float) -> str:
@@ -49,22 +45,72 @@ def error_plot_svg(differences: np.ndarray, size_px: int = 360) -> str:
     return "\n".join(parts)
 
 
-def report_html(report: EvaluationReport, title: str, notes: list[str] | None = None) -> str:
-    t1 = report.table1
+def sign_rows(report: EvaluationReport, mapped_ids, mapped_labels=None) -> list[tuple]:
+    """One row per mapped sign: (label, mapped id, reference id or '', verdict, 3D difference or None)."""
+    rows, k = [], 0
+    labels = list(mapped_labels) if mapped_labels is not None else [str(i + 1) for i in range(len(mapped_ids))]
+    for i, ref in enumerate(report.match):
+        if ref < 0:
+            rows.append((labels[i], mapped_ids[i], "", "false positive", None))
+            continue
+        reference = report.reference_ids[ref] if ref < len(report.reference_ids) else ""
+        verdict = "correct" if str(mapped_ids[i]) == str(reference) else "misclassified"
+        rows.append((labels[i], mapped_ids[i], reference, verdict, float(report.differences[k][4])))
+        k += 1
+    return rows
+
+
+def missed_rows(report: EvaluationReport, reference_xyz, reference_labels=None) -> list[tuple]:
+    """Reference signs no mapped sign matched: (label, reference id, E, N, H)."""
+    matched = {int(r) for r in report.match if r >= 0}
+    xyz = np.asarray(reference_xyz, float).reshape(-1, 3)
+    labels = list(reference_labels) if reference_labels is not None else [str(i + 1) for i in range(len(xyz))]
+    return [(labels[j], report.reference_ids[j], *xyz[j]) for j in range(len(xyz)) if j not in matched]
+
+
+def _details(run: dict | None, signs: list | None, missed: list | None) -> str:
+    parts = []
+    if run:
+        rows = "".join(f"<tr><td>{html.escape(str(k))}</td><td>{html.escape(str(v))}</td></tr>" for k, v in run.items())
+        parts.append(f"<h2>Run and parameters</h2><table>{rows}</table>")
+    if signs is not None:
+        rows = "".join(
+            f"<tr><td>{html.escape(str(label))}</td><td>{html.escape(str(mapped))}</td>"
+            f"<td>{html.escape(str(reference)) or '–'}</td><td>{verdict}</td><td>{_m(d3) if d3 is not None else '–'}"
+            "</td></tr>" for label, mapped, reference, verdict, d3 in signs)
+        parts.append("<h2>Mapped signs</h2><table><tr><th>feature</th><th>mapped</th><th>reference</th>"
+                     f"<th>verdict</th><th>3D difference [m]</th></tr>{rows}</table>")
+    if missed is not None:
+        rows = "".join(f"<tr><td>{html.escape(str(label))}</td><td>{html.escape(str(rid))}</td><td>{e:.3f}</td>"
+                       f"<td>{n:.3f}</td><td>{h:.3f}</td></tr>" for label, rid, e, n, h in missed)
+        body = (f"<table><tr><th>reference</th><th>type</th><th>E</th><th>N</th><th>H</th></tr>{rows}</table>"
+                if missed else "<p>None: every reference sign was mapped.</p>")
+        parts.append(f"<h2>Missed reference signs ({len(missed)})</h2>{body}")
+    return "\n".join(parts)
+
+
+def report_html(report: EvaluationReport, title: str, notes: list[str] | None = None, run: dict | None = None,
+                signs: list | None = None, missed: list | None = None) -> str:
+    """The page; ``run`` (parameter -> value), ``signs`` (:func:`sign_rows`) and ``missed`` (:func:`missed_rows`)
+    add the run's description, the per-sign list and the reference signs no mapped sign matched."""
+    texts = table1_texts(report.table1)
     rows1 = [
-        ("Reference signs", f"{t1.reference_signs}"),
-        ("Detected signs", f"{t1.detected_signs} ({_pct(t1.detection_rate)})"),
-        ("Correctly classified signs", f"{t1.correctly_classified_signs} ({_pct(t1.classification_rate)} of detected)"),
-        ("Mapped features", f"{t1.detections}"),
-        ("False positives (features matching no reference sign)", f"{t1.false_positive_detections}"),
-        ("Duplicates (reference signs matched by more than one feature)", f"{t1.duplicates}"),
+        ("Reference signs", texts["reference signs"]),
+        ("Detected signs", texts["detected signs"]),
+        ("Correctly classified signs", texts["correctly classified signs"]),
+        ("Mapped features", texts["mapped features"]),
+        ("False positives (features matching no reference sign)", texts["false positive features"]),
+        ("Duplicates (reference signs matched by more than one feature)", texts["reference signs with >1 feature"]),
     ]
-    rows2 = "\n".join(
-        f"<tr><td>{LABELS[c]}</td><td>{report.table2[c].n}</td><td>{_m(report.table2[c].mean)}</td>"
-        f"<td>{_m(report.table2[c].std)}</td><td>{_m(report.table2[c].rms)}</td>"
-        f"<td>{_m(report.table2[c].max_abs)}</td></tr>"
-        for c in COMPONENTS
-    )
+    if report.table2[COMPONENTS[0]].n == 0:
+        rows2 = f'<tr><td colspan="6">{html.escape(NO_DIFFERENCES)}</td></tr>'
+    else:
+        rows2 = "\n".join(
+            f"<tr><td>{LABELS[c]}</td><td>{report.table2[c].n}</td><td>{_m(report.table2[c].mean)}</td>"
+            f"<td>{_m(report.table2[c].std)}</td><td>{_m(report.table2[c].rms)}</td>"
+            f"<td>{_m(report.table2[c].max_abs)}</td></tr>"
+            for c in COMPONENTS
+        )
     confusions = "".join(f"<li>{html.escape(a)} → {html.escape(b)}</li>" for a, b in report.confusions)
     notes_html = "".join(f"<li>{html.escape(n)}</li>" for n in (notes or []))
     return f"""<!DOCTYPE html>
@@ -82,5 +128,6 @@ td,th{{border:1px solid #bbb;padding:4px 10px;text-align:right}} td:first-child,
 {error_plot_svg(report.differences)}
 {f"<h2>Misclassified (reference → assigned)</h2><ul>{confusions}</ul>" if confusions else ""}
 {f"<h2>Notes</h2><ul>{notes_html}</ul>" if notes_html else ""}
+{_details(run, signs, missed)}
 </body></html>
 """

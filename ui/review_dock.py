@@ -17,6 +17,7 @@ from qgis.PyQt.QtWidgets import (
     QComboBox,
     QDockWidget,
     QFormLayout,
+    QFrame,
     QGridLayout,
     QGroupBox,
     QHBoxLayout,
@@ -24,29 +25,36 @@ from qgis.PyQt.QtWidgets import (
     QListView,
     QListWidget,
     QListWidgetItem,
+    QMessageBox,
+    QProgressBar,
     QPushButton,
+    QScrollArea,
     QSizePolicy,
     QVBoxLayout,
     QWidget,
 )
 
 from ..signmapper_core.output_schema import ACCEPTED, REJECTED, STATUS_COLOURS
+from .hover_focus import FocusOnHover
 from .image_view import ImageView
 from .review_item import ObservationView, ReviewItem
 from .template_picker import TemplateChoice, TemplatePicker
 
-# action name -> (button text, shortcut); the shortcuts act while the dock has the focus
+# action name -> (button text, shortcut); the shortcuts act while the pointer is over the dock (or it has the focus)
 SHORTCUTS = {
     "accept": ("Accept", "A"),
     "reject": ("Reject", "R"),
     "reclassify": ("Reclassify…", "C"),
     "previous": ("◀ Previous", "P"),
     "next": ("Next ▶", "N"),
-    "next_review": ("Next to review", "Space"),
+    "next_review": ("To review", "Space"),
     "zoom": ("Zoom map", "Z"),
-    "add_sign": ("Add missed sign", "M"),
-    "undo": ("Undo last decision", "U"),
+    "add_sign": ("Add missed", "M"),
+    "undo": ("Undo", "U"),
 }
+REJECT_COLOUR = "#c62828"
+TOOLTIPS = {"next_review": "Next feature to review", "add_sign": "Add a missed sign: then click the centre of the "
+            "sign in the image", "undo": "Undo the last decision"}
 
 
 def _fmt(value, digits=2) -> str:
@@ -74,7 +82,13 @@ class ReviewDock(QDockWidget):
         self.item: Optional[ReviewItem] = None
         self.pair_id = ""
         body = QWidget()
-        self.setWidget(body)
+        # the body scrolls inside the dock: an open picker or a long strip never grows the main window
+        scroll = QScrollArea()
+        scroll.setWidgetResizable(True)
+        scroll.setFrameShape(QFrame.NoFrame)
+        scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarAlwaysOff)
+        scroll.setWidget(body)
+        self.setWidget(scroll)
         layout = QVBoxLayout(body)
         layout.setContentsMargins(4, 4, 4, 4)
 
@@ -82,7 +96,15 @@ class ReviewDock(QDockWidget):
         self.title.setWordWrap(True)
         self.title.setStyleSheet("font-weight: bold")
         layout.addWidget(self.title)
+        self.progress = QProgressBar()
+        self.progress.setTextVisible(True)
+        self.progress.setMaximumHeight(16)
+        self.progress.setVisible(False)
+        layout.addWidget(self.progress)
 
+        self.image_caption = QLabel("")
+        self.image_caption.setWordWrap(True)
+        layout.addWidget(self.image_caption)
         self.image_view = ImageView()
         self.image_view.imageClicked.connect(self._image_clicked)
         layout.addWidget(self.image_view, 4)
@@ -118,11 +140,13 @@ class ReviewDock(QDockWidget):
         self.picker_box.setVisible(False)
         layout.addWidget(self.picker_box, 2)
 
-        self.message = QLabel("")
+        self.message = QLabel("Keys (in brackets on the buttons) act while the pointer is over this panel.")
         self.message.setWordWrap(True)
         layout.addWidget(self.message)
         self._install_shortcuts()
+        FocusOnHover(self, self.image_view)
         self.set_item_enabled(False)
+        self.set_navigation_enabled(False)
 
     # construction -------------------------------------------------------------------------------------
     def _build_info(self) -> QHBoxLayout:
@@ -147,8 +171,8 @@ class ReviewDock(QDockWidget):
 
     def _button(self, name: str) -> QPushButton:
         text, key = SHORTCUTS[name]
-        button = QPushButton(text)
-        button.setToolTip(f"{text} ({key})")
+        button = QPushButton(f"{text} [{key}]")
+        button.setToolTip(f"{TOOLTIPS.get(name, text)} ({key})")
         button.setFocusPolicy(Qt.TabFocus)
         self.buttons[name] = button
         return button
@@ -157,26 +181,31 @@ class ReviewDock(QDockWidget):
         self.buttons = {}
         grid = QGridLayout()
         grid.setSpacing(3)
-        for col, name in enumerate(("previous", "next", "next_review", "zoom")):
+        # three columns keep the dock narrow enough for a laptop screen beside the map
+        for col, name in enumerate(("previous", "next", "next_review")):
             grid.addWidget(self._button(name), 0, col)
-        for col, name in enumerate(("accept", "reject", "reclassify", "undo")):
+        for col, name in enumerate(("accept", "reject", "reclassify")):
             grid.addWidget(self._button(name), 1, col)
-        self.buttons["accept"].setStyleSheet(f"color: {STATUS_COLOURS[ACCEPTED]}; font-weight: bold")
-        self.buttons["reject"].setStyleSheet(f"color: {STATUS_COLOURS[REJECTED]}; font-weight: bold")
+        for col, name in enumerate(("zoom", "undo")):
+            grid.addWidget(self._button(name), 2, col)
+        # coloured only while enabled: a plain "color" would make a disabled button look usable; Reject is red,
+        # not the grey of the rejected status, which would look disabled
+        for name, colour in (("accept", STATUS_COLOURS[ACCEPTED]), ("reject", REJECT_COLOUR)):
+            self.buttons[name].setStyleSheet(f"QPushButton:enabled {{ color: {colour}; font-weight: bold }}")
         self.buttons["reclassify"].setCheckable(True)
         add = self._button("add_sign")
         add.setCheckable(True)
-        add.setToolTip("Then click the centre of a missed sign in the image (M)")
+        add.setEnabled(False)
         add.toggled.connect(self.image_view.set_picking)
-        grid.addWidget(add, 2, 0, 1, 2)
+        grid.addWidget(add, 2, 2)
         self.pair_box = QComboBox()
         self.pair_box.setToolTip("Show another pair of the drive, e.g. to add a sign no detection points to")
         self.pair_box.activated.connect(lambda i: self.pairRequested.emit(self.pair_box.itemText(i)))
-        grid.addWidget(self.pair_box, 2, 2)
+        grid.addWidget(self.pair_box, 3, 0, 1, 2)
         self.advance_box = QCheckBox("Advance")
         self.advance_box.setToolTip("After a decision, go to the next feature needing review")
         self.advance_box.setChecked(True)
-        grid.addWidget(self.advance_box, 2, 3)
+        grid.addWidget(self.advance_box, 3, 2)
 
         b = self.buttons
         b["accept"].clicked.connect(self.acceptRequested)
@@ -195,9 +224,9 @@ class ReviewDock(QDockWidget):
             "accept": lambda: self._if_enabled("accept"),
             "reject": lambda: self._if_enabled("reject"),
             "reclassify": lambda: self._if_enabled("reclassify"),
-            "previous": self.previousRequested.emit,
-            "next": self.nextRequested.emit,
-            "next_review": self.nextReviewRequested.emit,
+            "previous": lambda: self._if_enabled("previous"),
+            "next": lambda: self._if_enabled("next"),
+            "next_review": lambda: self._if_enabled("next_review"),
             "zoom": lambda: self._if_enabled("zoom"),
             "add_sign": lambda: self._if_enabled("add_sign"),
             "undo": lambda: self._if_enabled("undo"),
@@ -228,11 +257,36 @@ class ReviewDock(QDockWidget):
         if self.pair_id:
             self.pair_box.setCurrentText(self.pair_id)
 
-    def set_item_enabled(self, enabled: bool) -> None:
-        for name in ("accept", "reject", "reclassify", "zoom"):
-            self.buttons[name].setEnabled(enabled)
+    def set_item_enabled(self, enabled: bool, status: str = "", reviewed: bool = False,
+                         has_position: bool = True) -> None:
+        """Decisions only where they change something: no Accept on an accepted reviewed feature, etc."""
+        self.buttons["accept"].setEnabled(enabled and not (status == ACCEPTED and reviewed))
+        self.buttons["reject"].setEnabled(enabled and status != REJECTED)
+        self.buttons["reclassify"].setEnabled(enabled)
+        self.buttons["zoom"].setEnabled(enabled and has_position)
         if not enabled:
             self.buttons["reclassify"].setChecked(False)
+
+    def set_navigation_enabled(self, enabled: bool, can_add: bool = False) -> None:
+        """Previous/Next need a layer; adding a sign needs the drive's images."""
+        for name in ("previous", "next", "next_review"):
+            self.buttons[name].setEnabled(enabled)
+        self.buttons["add_sign"].setEnabled(enabled and can_add)
+        if not (enabled and can_add):
+            self.buttons["add_sign"].setChecked(False)
+        self.pair_box.setEnabled(enabled and can_add)
+
+    def set_progress(self, to_review: int, reviewed: int, total: int) -> None:
+        """Review progress of the layer: how many features a person decided on, how many still need a look."""
+        self.progress.setVisible(total > 0)
+        self.progress.setRange(0, max(total, 1))
+        self.progress.setValue(reviewed)
+        self.progress.setFormat(f"{to_review} to review · {reviewed} of {total} reviewed")
+
+    def confirm(self, title: str, question: str) -> bool:
+        """Ask the user a yes/no question (the controller decides what follows)."""
+        answer = QMessageBox.question(self, title, question, QMessageBox.Yes | QMessageBox.No, QMessageBox.No)
+        return answer == QMessageBox.Yes
 
     def set_undo_enabled(self, enabled: bool, text: str = "") -> None:
         self.buttons["undo"].setEnabled(enabled)
@@ -246,13 +300,14 @@ class ReviewDock(QDockWidget):
         self.message.setStyleSheet("color: #c62828" if error else "")
 
     def show_empty(self, text: str) -> None:
-        """No reviewable feature: keep the pair image if any, disable the decisions."""
+        """No reviewable feature: no image of a feature that is gone, decisions disabled."""
         self.item = None
         self.title.setText(text)
         for value in self.info.values():
             value.setText("–")
         self.pictogram.clear()
         self.strip_box.setVisible(False)
+        self.clear_image()
         self.set_item_enabled(False)
 
     def show_item(self, item: ReviewItem) -> None:
@@ -278,20 +333,33 @@ class ReviewDock(QDockWidget):
             self.pictogram.setPixmap(pix.scaled(68, 68, Qt.KeepAspectRatio, Qt.SmoothTransformation))
         self.picker.set_filter(item.colour, item.shape, "")
         self.picker.select(item.template_id)
-        self.set_item_enabled(True)
-        self.pair_id = item.pair_id
-        if item.pair_id and self.pair_box.findText(item.pair_id) >= 0:
-            self.pair_box.setCurrentText(item.pair_id)
+        self.set_item_enabled(True, item.status, item.reviewed, item.position is not None)
         if item.image is not None:
             self.set_image(item.pair_id, item.image, item.crop, item.bbox, item.centroid)
+        elif self.image_view.has_image():
+            self.clear_image()  # another feature's image must not stand beside this one's attributes
+        if item.pair_id and self.pair_box.findText(item.pair_id) >= 0:
+            self.pair_box.setCurrentText(item.pair_id)
         self.set_observations(item.observations)
 
     def set_image(self, pair_id: str, image, crop=None, bbox=None, centroid=None) -> None:
+        """Show a left image; the caption says whose it is, so it never contradicts the panel below."""
         self.pair_id = pair_id
         self.image_view.set_image(image, crop, bbox, centroid)
+        if self.pair_box.findText(pair_id) >= 0:
+            self.pair_box.setCurrentText(pair_id)
+        if self.item is None:
+            self.image_caption.setText(f"Image: pair {pair_id} (no feature selected)")
+        elif pair_id == self.item.pair_id:
+            self.image_caption.setText(f"Image: pair {pair_id}")
+        else:
+            self.image_caption.setText(f"<b>Image: pair {pair_id}</b> — the feature below is from pair "
+                                       f"{self.item.pair_id or '–'}")
 
     def clear_image(self) -> None:
+        self.pair_id = ""
         self.image_view.clear_image()
+        self.image_caption.setText("")
 
     def set_observations(self, observations: Optional[List[ObservationView]]) -> None:
         self.strip.clear()

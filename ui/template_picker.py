@@ -61,13 +61,15 @@ class TemplatePicker(QWidget):
         self.grid = QListWidget()
         self.grid.setViewMode(QListView.IconMode)
         self.grid.setIconSize(QSize(icon_px, icon_px))
+        self._icon_px = icon_px
         self.grid.setGridSize(QSize(icon_px + 56, icon_px + 30))
         self.grid.setResizeMode(QListView.Adjust)
         self.grid.setMovement(QListView.Static)
         self.grid.setWordWrap(True)
-        self.grid.setTextElideMode(Qt.ElideMiddle)
+        self.grid.setTextElideMode(Qt.ElideNone)  # ids are short: show them whole, never "2…."
         self.grid.setUniformItemSizes(True)
-        self.grid.setMinimumHeight(2 * (icon_px + 30) + 8)
+        self.grid.setMinimumHeight(icon_px + 38)  # one row; the grid scrolls
+        self.grid.setMaximumHeight(4 * (icon_px + 30) + 8)
         self.choose_button = QPushButton("Reclassify as selected")
         self.choose_button.setEnabled(False)
 
@@ -90,6 +92,9 @@ class TemplatePicker(QWidget):
 
     def set_choices(self, choices: Iterable[TemplateChoice]) -> None:
         self._choices = list(choices)
+        metrics = self.grid.fontMetrics()
+        widest = max((metrics.horizontalAdvance(c.id) for c in self._choices), default=0)
+        self.grid.setGridSize(QSize(max(self._icon_px + 24, widest + 16), self._icon_px + metrics.height() + 14))
         colours = sorted({c.colour for c in self._choices})
         shapes = sorted({c.shape for c in self._choices})
         for box, values, label in ((self.colour_box, colours, "Any colour"), (self.shape_box, shapes, "Any shape")):

@@ -24,6 +24,9 @@ FORMAT_ID = "signmapper-catalogue/1"
 COLOURS = ("red", "blue", "yellow", "white")
 SHAPES = ("circle", "triangle", "triangle-down", "octagon", "diamond", "square", "rectangle")
 ID_PATTERN = re.compile(r"^[0-9A-Za-z]+(\.[0-9A-Za-z]+)*(-[0-9A-Za-z.]+)?$")
+# master image path -> (size, mtime_ns) of the version found intact: the catalogue is loaded by every
+# algorithm, so each file is checked once per process and again only when it changes
+_INTACT: dict[str, tuple[int, int]] = {}
 
 
 class CatalogueError(ValueError):
@@ -220,8 +223,35 @@ def _entry_from_json(path: Path, raw: dict, index: int) -> TemplateEntry:
     names = {str(k): str(v) for k, v in (raw.get("names") or {}).items()} or {"de": tid}
     if not (path.parent / png).is_file():
         raise CatalogueError(path, f"{where}: image {png} not found")
+    check_master_image(path.parent / png, where)
     return TemplateEntry(tid, names, colour, shape, formats, bool(raw.get("size_certain", True)), png,
                          raw.get("svg"))
+
+
+def check_master_image(path: Path, where: str) -> None:
+    """Raise CatalogueError unless ``path`` is an intact image, without decoding it where possible.
+
+    A PNG's chunks are read and their checksums verified (Pillow's ``verify``:
+    truncation and corrupt bytes show, at about a tenth of the cost of decoding);
+    other formats are decoded (Pillow). Files found intact are remembered by size and
+    modification time.
+    """
+    from PIL import Image
+
+    stat = path.stat()
+    stamp = (stat.st_size, stat.st_mtime_ns)
+    if _INTACT.get(str(path)) == stamp:
+        return
+    try:
+        with Image.open(path) as img:
+            if img.format == "PNG":
+                img.verify()
+            else:
+                img.load()  # raises on truncated data, where OpenCV would fill in grey
+    except Exception as exc:  # Pillow raises many types for broken files
+        raise CatalogueError(path, f"{where}: the template image is corrupt or unreadable "
+                                   f"({exc.__class__.__name__}: {exc})") from None
+    _INTACT[str(path)] = stamp
 
 
 def load_catalogue(folder=None) -> Catalogue:

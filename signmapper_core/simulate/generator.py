@@ -1,20 +1,21 @@
 """Driver of a synthetic drive: poses along the street, pair-by-pair rendering, files.
 
-The drive is written into a hidden sibling folder and renamed when complete, so a
-cancelled or failed run leaves no half-written drive. Memory stays flat with the
-length of the drive: only textures near the vehicle are kept.
+The drive is written into a hidden sibling folder ``.<name>.partial-<pid>`` and
+renamed when complete, so a cancelled or failed run leaves no half-written drive;
+the folder of a run that was killed (its process is gone) is removed by the next
+run for the same drive. Memory stays flat with the length of the drive: only
+textures near the vehicle are kept.
 """
 
 from __future__ import annotations
 
-import os
-import shutil
 import time
 from pathlib import Path
 from typing import Callable
 
 import numpy as np
 
+from ..atomic_folder import remove_stale_partials, writing_folder  # noqa: F401 (re-exported)
 from ..drive_writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
 from ..geometry import Pose
 from ..progress import Cancelled
@@ -109,32 +110,26 @@ def render_pair(config: SimulationConfig, scene: Scene, rasterizer: Rasterizer, 
     return apply_effects(left, fx, right=False), apply_effects(right, fx, right=True), depth
 
 
-def _temporary_sibling(out_dir: Path) -> Path:
-    return out_dir.parent / f".{out_dir.name}.partial-{os.getpid()}"
-
-
 def generate_drive(out_dir, config: SimulationConfig | None = None,
                    progress: Callable[[float, str], None] | None = None,
-                   is_cancelled: Callable[[], bool] | None = None) -> SimulationSummary:
+                   is_cancelled: Callable[[], bool] | None = None,
+                   before_commit: Callable[[list], None] | None = None) -> SimulationSummary:
     """Write a synthetic drive (drive-format v1 with truth.csv) into ``out_dir``.
 
     ``out_dir`` must not exist or be an empty folder. Returns a summary with the
     true poses the images were rendered from. Raises :class:`Cancelled` when
     ``is_cancelled()`` turns true; nothing is left behind then.
+    ``before_commit(truth)`` is called with the truth signs once every file is
+    written, before the drive takes its name: a caller's own outputs (the truth
+    layer) are written there, so that when they fail no drive is left either.
     """
     config = config or SimulationConfig()
     config.validate()
     out_dir = Path(out_dir)
-    if out_dir.exists() and (not out_dir.is_dir() or any(out_dir.iterdir())):
-        raise FileExistsError(f"{out_dir}: exists and is not an empty folder")
     started = time.perf_counter()
     report = progress or (lambda _f, _m: None)
     cancelled = is_cancelled or (lambda: False)
-    tmp = _temporary_sibling(out_dir)
-    if tmp.exists():
-        shutil.rmtree(tmp)
-    tmp.mkdir(parents=True)
-    try:
+    with writing_folder(out_dir) as tmp:
         report(0.0, "laying out the street")
         street = make_street(config)
         scene = make_scene(config, street)
@@ -162,12 +157,8 @@ def generate_drive(out_dir, config: SimulationConfig | None = None,
         write_truth_csv(tmp, truth)
         if cancelled():
             raise Cancelled("synthetic drive cancelled")
-        if out_dir.exists():
-            out_dir.rmdir()
-        tmp.rename(out_dir)
-    except BaseException:
-        shutil.rmtree(tmp, ignore_errors=True)
-        raise
+        if before_commit is not None:
+            before_commit(truth)
     size = sum(f.stat().st_size for f in out_dir.rglob("*") if f.is_file())
     return SimulationSummary(out_dir=out_dir, pairs=config.pairs, signs=truth, true_poses=poses,
                              recorded_poses=noisy, seconds=time.perf_counter() - started, bytes_written=size,

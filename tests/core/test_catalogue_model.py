@@ -199,3 +199,33 @@ def test_committed_catalogue_matches_the_build():
         assert on_disk.shape == (*on_disk.shape[:2], 4) and max(on_disk.shape[:2]) == 512
         if tid not in artwork and tid not in FRAMED:  # framed ones: test_catalogue_official
             assert int(np.abs(on_disk.astype(int) - master_rgba(tid).astype(int)).max()) <= 1, tid
+
+
+@pytest.mark.parametrize("damage", ["truncated", "flipped byte", "not an image"])
+def test_corrupt_master_image_is_found_when_the_catalogue_loads(tmp_path, damage):
+    _write_user_catalogue(tmp_path)
+    load_catalogue(tmp_path)  # intact, and remembered as intact
+    png = tmp_path / "png" / "X.1-7.png"
+    data = bytearray(png.read_bytes())
+    if damage == "truncated":
+        data = data[: len(data) // 2]
+    elif damage == "flipped byte":
+        data[len(data) // 2] ^= 0xFF
+    else:
+        data = bytearray(b"GIF? no, a text file")
+    png.write_bytes(bytes(data))  # a changed file is checked again
+    with pytest.raises(CatalogueError) as info:
+        load_catalogue(tmp_path)
+    assert str(info.value).startswith(f"{png}: entry 'X.1-7': the template image is corrupt or unreadable (")
+
+
+def test_a_jpeg_master_is_decoded_to_check_it(tmp_path):
+    _write_user_catalogue(tmp_path)
+    data = json.loads((tmp_path / "catalogue.json").read_text())
+    img = cv2.imread(str(tmp_path / "png" / "X.1-7.png"), cv2.IMREAD_COLOR)
+    jpeg = tmp_path / "png" / "X.1-7.jpg"
+    jpeg.write_bytes(cv2.imencode(".jpg", img)[1].tobytes()[:-300])
+    data["entries"][0]["png"] = "png/X.1-7.jpg"
+    (tmp_path / "catalogue.json").write_text(json.dumps(data))
+    with pytest.raises(CatalogueError, match="corrupt or unreadable"):
+        load_catalogue(tmp_path)

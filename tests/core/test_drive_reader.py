@@ -221,8 +221,14 @@ def test_depth_must_be_float32(tmp_path):
 )
 def test_truth_csv_rows(drive_dir, line_no, text, field, words):
     rewrite_line(drive_dir / "truth.csv", line_no, text)
-    err = error_of(drive_dir)
+    with pytest.raises(DriveFormatError) as info:
+        open_drive(drive_dir, require_truth=True)
+    err = info.value
     assert err.path.endswith("truth.csv") and err.line == line_no and err.field == field and words in str(err)
+    # mapping does not need the truth: by default the drive opens without it and says why
+    drive = open_drive(drive_dir)
+    assert drive.truth is None and drive.truth_error is not None
+    assert drive.warnings == [f"{err}; the ground truth is ignored (only evaluation needs it)"]
 
 
 def test_truth_duplicate_sign_id(drive_dir):

@@ -158,3 +158,36 @@ def test_a_click_on_a_sign_gives_a_manual_observation_and_sign(mapped, drive_dir
     towards_camera = np.degrees(np.arctan2(*(record.pose.centre - observation.position)[:2])) % 360
     assert sign.azimuth == pytest.approx(towards_camera)
     assert detect_at(drive, record, catalogue, PipelineConfig(), 20.0, 520.0) is None  # road surface
+
+
+def test_too_many_unreadable_pairs_are_an_error_not_a_thinner_output(drive_dir, catalogue, tmp_path):
+    from signmapper_core.errors import MappingError
+
+    drive = tmp_path / "broken"
+    shutil.copytree(drive_dir, drive)
+    images = sorted((drive / "left").iterdir())
+    for path in images[:4]:
+        path.write_bytes(path.read_bytes()[:2000])
+    warnings = []
+    with pytest.raises(MappingError, match=r"^4 of 10 pairs skipped, more than the 30 % allowed \(first: pair 000000"):
+        map_drive(open_drive(drive), catalogue, PipelineConfig(), warn_skipped=warnings.append,
+                  max_skipped_share=0.3)
+    assert len(warnings) == 4  # stopped as soon as it was certain, not after all pairs
+    for path in images[4:]:
+        path.write_bytes(path.read_bytes()[:2000])
+    with pytest.raises(MappingError, match=r"^no pair could be mapped: 10 of 10 pairs skipped"):
+        map_drive(open_drive(drive), catalogue, PipelineConfig())
+
+
+def test_pairs_without_depth_or_colour_are_warned_about(drive_dir, catalogue, tmp_path):
+    import cv2
+
+    drive = tmp_path / "useless"
+    shutil.copytree(drive_dir, drive)
+    np.save(drive / "depth" / "000002.npy", np.full((540, 960), np.nan, np.float32))
+    grey = cv2.cvtColor(cv2.imread(str(drive / "left" / "000004.jpg")), cv2.COLOR_BGR2GRAY)
+    cv2.imwrite(str(drive / "left" / "000004.jpg"), cv2.cvtColor(grey, cv2.COLOR_GRAY2BGR))  # colour JPEG, no colour
+    warnings = []
+    map_drive(open_drive(drive), catalogue, PipelineConfig(), warn_skipped=warnings.append)
+    assert [w.split(":")[0] for w in warnings] == ["Pair 000002", "Pair 000004"]
+    assert "000002.npy has no usable depth" in warnings[0] and "000004.jpg has no colour at all" in warnings[1]

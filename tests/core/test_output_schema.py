@@ -139,3 +139,17 @@ def test_run_table_records_how_the_rows_were_written():
     assert record == {"language": "it", "start_time": "", "crops": 2}
     assert schema.decode_run_value("language", "it") == "it"
     assert SimpleNamespace  # the mapping part is covered by the golden GeoPackage
+
+
+def test_every_swiss_sign_has_an_english_name_and_english_output_uses_it():
+    from signmapper_core.catalogue.names import NAMES_EN, sign_name
+
+    catalogue = load_catalogue()
+    assert set(NAMES_EN) == set(catalogue.ids())
+    entry = catalogue["2.02"]
+    assert [sign_name(entry, lang) for lang in ("en", "de", "fr")] == ["No entry", "Einfahrt verboten",
+                                                                      "Accès interdit"]
+    assert schema.template_values(schema.SIGNS, entry, "normal", "en")["name"] == "No entry"
+    context = schema.OutputContext(language="en", catalogue=catalogue)
+    assert context.name("2.30-50", "Höchstgeschwindigkeit 50") == "Speed limit 50"
+    assert context.name("9.99", "unknown") == "unknown"

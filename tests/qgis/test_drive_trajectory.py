@@ -57,3 +57,41 @@ def test_non_default_crs_reaches_the_layer(run, tmp_path):
     drive = make_drive(tmp_path / "drive", n_pairs=2, crs="EPSG:25832")
     result = run("signmapper:drivetrajectory", {"DRIVE": str(drive), "OUTPUT": str(tmp_path / "t.gpkg")})
     assert QgsVectorLayer(result["OUTPUT"], "t", "ogr").crs().authid() == "EPSG:25832"
+
+
+@pytest.mark.parametrize("crs, authid", [
+    ("EPSG:2056+5728", "EPSG:2056"),  # compound: LV95 + LN02 heights; QGIS 3.22 carries the horizontal part
+    ("+proj=somerc +lat_0=46.9524055555556 +lon_0=7.43958333333333 +k_0=1 +x_0=2600000 +y_0=1200000 "
+     "+ellps=bessel +towgs84=674.374,15.056,405.346,0,0,0,0 +units=m +no_defs +type=crs", "EPSG:2056"),
+    ("+proj=utm +zone=32 +datum=WGS84 +units=m +no_defs", "EPSG:32632"),
+])
+def test_compound_crs_and_proj_strings_reach_the_layer(run, tmp_path, crs, authid):
+    drive = make_drive(tmp_path / "drive", n_pairs=2, crs=crs)
+    result = run("signmapper:drivetrajectory", {"DRIVE": str(drive), "OUTPUT": str(tmp_path / "t.gpkg"),
+                                                "TRACK": str(tmp_path / "track.gpkg")})
+    for key in ("OUTPUT", "TRACK"):
+        layer = QgsVectorLayer(result[key], "t", "ogr")
+        assert layer.crs().isValid() and layer.crs().authid() == authid, layer.crs().description()
+        assert not layer.crs().isGeographic()
+
+
+def test_cancel_writes_nothing(run, tmp_path):
+    from qgis.core import QgsProcessingFeedback
+
+    drive = make_drive(tmp_path / "drive", n_pairs=20)
+    out, track = tmp_path / "traj.gpkg", tmp_path / "track.gpkg"
+    feedback = QgsProcessingFeedback()
+    feedback.progressChanged.connect(lambda p: feedback.cancel() if p > 60 else None)
+    with pytest.raises(QgsProcessingException, match="Cancelled; nothing written"):
+        run("signmapper:drivetrajectory", {"DRIVE": str(drive), "OUTPUT": str(out), "TRACK": str(track)},
+            feedback=feedback)
+    assert not out.exists() and not track.exists()
+
+
+def test_output_that_is_a_folder_is_refused_before_reading_the_drive(run, tmp_path):
+    drive = make_drive(tmp_path / "drive", n_pairs=2)
+    folder = tmp_path / "trajectory.gpkg"
+    folder.mkdir()
+    with pytest.raises(QgsProcessingException) as info:
+        run("signmapper:drivetrajectory", {"DRIVE": str(drive), "OUTPUT": str(folder)})
+    assert str(info.value).splitlines()[-1] == f"Trajectory points: {folder} is an existing folder; give a file name"

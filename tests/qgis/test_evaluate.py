@@ -174,3 +174,69 @@ def test_modeler_chain_synthetic_drive_map_signs_evaluate(run, tmp_path):
     assert "Table 1" in html and "Detected signs" in html
     reference_row = html.split("Reference signs</td><td>")[1].split("<")[0]
     assert int(reference_row) == len(open_drive(tmp_path / "drive").truth)
+
+
+def test_facing_as_text_radius_default_and_a_report_with_signs_missed_and_parameters(run, tmp_path):
+    """The demo's truth layer (native:createpointslayerfromtable) stores facing as text."""
+    reference = QgsVectorLayer("PointZ?crs=EPSG:2056&field=template_id:string&field=facing:string", "truth",
+                               "memory")
+    features = []
+    for (_sid, tid, e, n, h), facing in zip(REF, ["270.0", "270", "270", " 270,0 "]):
+        f = QgsFeature(reference.fields())
+        f.setGeometry(QgsGeometry(QgsPoint(e, n, h)))
+        f.setAttributes([tid, facing])
+        features.append(f)
+    reference.dataProvider().addFeatures(features)
+    mapped = [(s, t, e + 0.6, n, h) for s, t, e, n, h in REF[:3]]  # 0.6 m off: within 0.75 m, not within 0.5
+    mapped[1] = (mapped[1][0], "3.02", *mapped[1][2:])  # one misread
+    from qgis.core import QgsApplication
+
+    alg = QgsApplication.processingRegistry().algorithmById("signmapper:evaluate")
+    assert alg.parameterDefinition("RADIUS").defaultValue() == 0.75
+    params = {"SIGNS": point_layer(mapped, "mapped"), "REFERENCE": reference, "REFERENCE_ID_FIELD": "template_id",
+              "REFERENCE_FACING_FIELD": "facing", "TRAJECTORY": eastward_trajectory(),
+              "REPORT": str(tmp_path / "report.html"), "STATISTICS": "memory:", "MATCHES": "memory:"}
+    result = run("signmapper:evaluate", params)  # RADIUS left at its default
+    assert result["FALSE_POSITIVES"] == 0
+    html = Path(result["REPORT"]).read_text()
+    assert "<h2>Mapped signs</h2>" in html and html.count("misclassified") == 1 and html.count(">correct<") == 2
+    # s4 is not mapped: the one missed sign
+    assert "<h2>Missed reference signs (1)</h2>" in html and ">1.22<" in html
+    assert "date of this evaluation" in html and "matching radius [m]</td><td>0.75" in html
+    assert "facing field</td><td>facing" in html
+
+
+def test_a_facing_that_is_no_number_names_the_feature(run, tmp_path):
+    reference = QgsVectorLayer("PointZ?crs=EPSG:2056&field=template_id:string&field=facing:string", "truth",
+                               "memory")
+    f = QgsFeature(reference.fields())
+    f.setGeometry(QgsGeometry(QgsPoint(2600010.0, 1200004.0, 402.0)))
+    f.setAttributes(["2.01", "west"])
+    reference.dataProvider().addFeatures([f])
+    from qgis.core import QgsProcessingException
+
+    with pytest.raises(QgsProcessingException, match="facing field 'facing' holds 'west', not an azimuth"):
+        evaluate(run, tmp_path, point_layer(REF[:1], "mapped"), REFERENCE=reference, REFERENCE_FACING_FIELD="facing")
+
+
+def test_table_2_in_the_log_labels_every_figure(run, tmp_path):
+    from qgis.core import QgsProcessingFeedback
+
+    class Recorder(QgsProcessingFeedback):
+        def __init__(self):
+            super().__init__()
+            self.lines = []
+
+        def pushInfo(self, info):  # noqa: N802
+            self.lines.append(info)
+
+    feedback = Recorder()
+    import processing
+
+    moved = [(s, t, e, n - 0.05, h) for s, t, e, n, h in REF]
+    processing.run("signmapper:evaluate", {
+        "SIGNS": point_layer(moved, "mapped"), "REFERENCE": point_layer(REF, "ref"), "REFERENCE_ID_FIELD":
+        "template_id", "TRAJECTORY": eastward_trajectory(), "REPORT": str(tmp_path / "r.html"),
+        "STATISTICS": "memory:", "MATCHES": "memory:"}, feedback=feedback)
+    text = "\n".join(feedback.lines)
+    assert "  across: n 4, mean 0.050, empirical σ 0.000, RMS 0.050, max |d| 0.050" in text

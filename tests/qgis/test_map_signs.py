@@ -131,7 +131,8 @@ def test_unknown_excluded_id_is_a_clear_error(run, small_drive, tmp_path):
 
 
 @pytest.mark.parametrize("change, message", [
-    ({"NEAR": 14.0, "FAR": 4.0}, "Near limit 14 m must be less than the far limit 4 m"),
+    ({"NEAR": 14.0, "FAR": 4.0}, "Near limit of the depth range [m] (14 m) must be less than Far limit of the depth "
+                                 "range [m] (4 m)"),
     ({"COLOURS": []}, "COLOURS"),  # QGIS itself refuses an empty required choice
     ({"OUTPUT": None}, "must be a GeoPackage file ending in .gpkg"),
     ({"CATALOGUE": None}, "Template catalogue"),
@@ -157,7 +158,7 @@ def test_tuning_parameters_are_advanced(registered_plugin):
     advanced = {p.name() for p in alg.parameterDefinitions()
                 if p.flags() & QgsProcessingParameterDefinition.FlagAdvanced}
     assert advanced == {"EXCLUDE", "DETECTION_THRESHOLD", "CLASSIFIER", "CLASSIFICATION_THRESHOLD", "CATALOGUE",
-                        "LANGUAGE"}
+                        "LANGUAGE", "MAX_SKIPPED"}
 
 
 def test_corrupt_pair_is_logged_and_skipped(run, small_drive, tmp_path):

@@ -78,3 +78,19 @@ def test_map_signs_help_lists_every_output_field(registered_plugin):
     for field in output_schema.FIELDS:
         assert f"<b>{field.name}</b>" in help_text and field.help in help_text
     assert "<b>mount_height_m</b> (signs):" in help_text and "<b>u</b> (signs and detections):" in help_text
+
+
+def test_every_algorithm_has_its_own_icon(registered_plugin):
+    from qgis.core import QgsApplication
+
+    provider = QgsApplication.processingRegistry().providerById("signmapper")
+    icons = {}
+    for alg in provider.algorithms():
+        icon = alg.icon()
+        assert not icon.isNull() and icon.availableSizes() or not icon.pixmap(32, 32).isNull(), alg.id()
+        icons[alg.id()] = icon.pixmap(32, 32).toImage()
+    from sign_mapper.algorithms import ALGORITHMS
+
+    assert len(icons) == len(ALGORITHMS)
+    images = list(icons.values())
+    assert all(images[i] != images[j] for i in range(len(images)) for j in range(i + 1, len(images)))

@@ -337,11 +337,14 @@ def test_add_missed_sign_places_it_within_10_cm_of_the_truth(review, tmp_path, d
     record, missed = detections[target]
     gpkg = build_gpkg(tmp_path / "missed.gpkg", drive_dir, detections, skip={target})
     controller, dock, layer = review(gpkg, layer_name)
+    questions = []
+    dock.confirm = lambda title, text: questions.append(text) or True  # the signs layer still has this sign
     count = layer.featureCount()
     truth = min(drive.truth, key=lambda s: np.linalg.norm(s.position - missed.position))
     u, v = _truth_click(drive, record, truth)
     dock.addSignClicked.emit(record.id, u, v)
     wait_idle(controller)
+    assert len(questions) == (1 if layer_name == "signs" else 0)
     features = on_disk(gpkg, layer_name)
     assert len(features) == count + 1
     added = features[controller.fid]
@@ -442,3 +445,56 @@ def test_mapsigns_output_is_reviewable(review, registered_plugin, drive_dir, tmp
     dock.rejectRequested.emit()
     wait_idle(controller)
     assert on_disk(out["OUTPUT"])[fid]["status"] == "rejected"
+
+
+def test_adding_a_sign_next_to_one_of_its_type_asks_first(review, gpkg, drive_dir, detections):
+    drive = open_drive(drive_dir)
+    target = next(i for i, (_, d) in enumerate(detections) if 7 < d.depth_m < 12
+                  and min(np.linalg.norm(t.position - d.position) for t in drive.truth) < 0.1)
+    record, seen = detections[target]
+    controller, dock, layer = review(gpkg, "signs")
+    questions = []
+    dock.confirm = lambda title, text: questions.append(text) or False
+    count = layer.featureCount()
+    truth = min(drive.truth, key=lambda s: np.linalg.norm(s.position - seen.position))
+    dock.addSignClicked.emit(record.id, *_truth_click(drive, record, truth))
+    wait_idle(controller)
+    assert len(questions) == 1 and seen.template_id in questions[0] and " m from the clicked sign" in questions[0]
+    assert layer.featureCount() == count and "Not added" in dock.message.text()
+    twin = layer.getFeature(controller.fid)  # the existing sign is shown instead
+    assert twin["template_id"] == seen.template_id
+
+
+def test_review_progress_in_the_dock_and_on_the_map(review, gpkg):
+    controller, dock, layer = review(gpkg)
+    total = layer.featureCount()
+    to_review = sum(f["status"] == "review" for f in layer.getFeatures())
+    fid = next(f.id() for f in layer.getFeatures() if f["status"] == "review")
+    select(controller, layer, fid)
+    assert dock.progress.text() == f"{to_review} to review · 0 of {total} reviewed"
+    assert controller.map_progress.isVisible()
+    assert controller.map_progress.text.endswith(f"{to_review} to review · 0 of {total} reviewed")
+    dock.acceptRequested.emit()
+    wait_idle(controller)
+    assert dock.progress.text() == f"{to_review - 1} to review · 1 of {total} reviewed"
+    assert controller.map_progress.text.endswith(f"{to_review - 1} to review · 1 of {total} reviewed")
+
+
+def test_an_added_sign_shows_its_one_observation_and_undo_leaves_no_stale_image(review, tmp_path, drive_dir,
+                                                                                  detections):
+    drive = open_drive(drive_dir)
+    target = next(i for i, (_, d) in enumerate(detections) if 7 < d.depth_m < 12
+                  and min(np.linalg.norm(t.position - d.position) for t in drive.truth) < 0.1)
+    record, missed = detections[target]
+    others = [d for i, d in enumerate(detections) if d[1].template_id != missed.template_id]
+    gpkg = build_gpkg(tmp_path / "one.gpkg", drive_dir, others)  # the sign is in neither layer
+    controller, dock, layer = review(gpkg, "signs")
+    truth = min(drive.truth, key=lambda s: np.linalg.norm(s.position - missed.position))
+    dock.addSignClicked.emit(record.id, *_truth_click(drive, record, truth))
+    wait_idle(controller)
+    assert dock.item.template_id == truth.template_id
+    assert dock.strip_box.title() == "Observations (1)" and dock.strip.count() == 1
+    assert dock.item.observations[0].pair_id == record.id
+    dock.undoRequested.emit()
+    wait_idle(controller)
+    assert dock.item is None and not dock.image_view.has_image()

@@ -27,10 +27,12 @@ def dock(ui):
     ])
     image = QImage(200, 100, QImage.Format_RGB32)
     image.fill(QColor(90, 90, 90))
+    widget.set_navigation_enabled(True, can_add=True)  # the controller's part: a layer with its drive
     widget.show_item(review_item.ReviewItem(
         "detections", 3, "detections · feature 3", template_id="2.30-50", name="Höchstgeschwindigkeit 50",
         colour="red", shape="circle", format="normal", size_m=(0.6, 0.6), status="review", pair_id="000004",
         time=0.8, bbox=(80, 30, 40, 40), centroid=(99.5, 49.5), crop=(40, 0, 120, 100), image=image,
+        position=(2600010.0, 1200004.0, 403.1),
     ))
     widget.show()
     QApplication.setActiveWindow(widget)
@@ -176,3 +178,100 @@ def test_pair_box_and_observation_clicks_emit_requests(dock, ui):
     assert observations == [1]
     dock.set_observations(None)  # a detection has no strip
     assert not dock.strip_box.isVisibleTo(dock)
+
+
+def test_keys_act_when_the_pointer_enters_the_dock_and_are_shown_on_the_buttons(dock):
+    from qgis.PyQt.QtCore import QEvent
+    from qgis.PyQt.QtWidgets import QLineEdit, QMainWindow, QPushButton, QVBoxLayout, QWidget
+
+    rec = Recorder(dock)
+    window = QMainWindow()  # as in QGIS: the dock beside the map canvas in one main window
+    centre = QWidget()
+    elsewhere, search = QPushButton("map canvas"), QLineEdit()
+    column = QVBoxLayout(centre)
+    column.addWidget(elsewhere)
+    column.addWidget(search)
+    window.setCentralWidget(centre)
+    window.addDockWidget(Qt.RightDockWidgetArea, dock)
+    window.show()
+    QApplication.setActiveWindow(window)
+    elsewhere.setFocus()
+    QApplication.processEvents()
+    assert QApplication.focusWidget() is elsewhere
+    QApplication.sendEvent(dock, QEvent(QEvent.Enter))
+    assert dock.isAncestorOf(QApplication.focusWidget())
+    QTest.keyClick(QApplication.focusWidget(), Qt.Key_A)
+    assert rec.calls == [("acceptRequested",)]
+    assert dock.buttons["accept"].text() == "Accept [A]" and dock.buttons["next_review"].text().endswith("[Space]")
+    search.setFocus()  # typing elsewhere keeps the focus there
+    QApplication.processEvents()
+    QApplication.sendEvent(dock, QEvent(QEvent.Enter))
+    assert QApplication.focusWidget() is search
+    window.removeDockWidget(dock)
+    dock.setParent(None)  # the fixture closes it
+    window.close()
+
+
+def test_the_open_picker_scrolls_inside_the_dock_and_shows_whole_ids(dock, ui):
+    _, _, template_picker, _ = ui
+    dock.set_template_choices([template_picker.TemplateChoice(f"2.30-{v}", f"Höchstgeschwindigkeit {v}", "red",
+                                                              "circle") for v in (20, 30, 50, 80, 100, 120)]
+                              + [template_picker.TemplateChoice("2.41.1", "Gebotene Richtung", "blue", "circle")])
+    dock.show_picker(True)
+    dock.set_observations([])
+    QApplication.processEvents()
+    assert dock.minimumSizeHint().height() < 400  # a 1000 px screen keeps room for QGIS
+    grid = dock.picker.grid
+    metrics = grid.fontMetrics()
+    assert all(metrics.horizontalAdvance(i) <= grid.gridSize().width() - 8 for i in dock.picker.visible_ids())
+    assert grid.textElideMode() == Qt.ElideNone
+
+
+def test_decisions_that_change_nothing_are_disabled_and_look_it(dock, ui):
+    _, review_item, _, _ = ui
+    dock.show_item(review_item.ReviewItem("signs", 4, "signs · sign 4", template_id="1.01", status="accepted",
+                                          reviewed=True, pair_id="000004", position=(1.0, 2.0, 3.0)))
+    assert not dock.buttons["accept"].isEnabled() and dock.buttons["reject"].isEnabled()
+    dock.show_item(review_item.ReviewItem("signs", 5, "signs · sign 5", template_id="1.01", status="rejected",
+                                          reviewed=True, pair_id="000004"))
+    assert dock.buttons["accept"].isEnabled() and not dock.buttons["reject"].isEnabled()
+    assert not dock.buttons["zoom"].isEnabled()  # no position
+    assert ":enabled" in dock.buttons["accept"].styleSheet()  # the colour is not painted on a disabled button
+    dock.set_navigation_enabled(False)
+    assert not any(dock.buttons[n].isEnabled() for n in ("previous", "next", "next_review", "add_sign"))
+
+
+def test_no_stale_image_and_the_caption_names_the_shown_pair(dock, ui):
+    _, review_item, _, _ = ui
+    assert dock.image_view.has_image() and dock.image_caption.text() == "Image: pair 000004"
+    other = QImage(200, 100, QImage.Format_RGB32)
+    other.fill(QColor(10, 200, 10))
+    dock.set_image("000009", other)  # another pair from the pair box
+    assert "pair 000009" in dock.image_caption.text() and "from pair 000004" in dock.image_caption.text()
+    dock.show_item(review_item.ReviewItem("detections", 8, "detections · feature 8", pair_id="000006"))
+    assert not dock.image_view.has_image()  # until the new feature's image arrives
+    dock.show_empty("nothing selected")
+    assert not dock.image_view.has_image() and dock.image_caption.text() == ""
+
+
+def test_progress_shows_what_is_left_to_review(dock):
+    dock.set_progress(3, 12, 20)
+    assert dock.progress.isVisibleTo(dock) and dock.progress.text() == "3 to review · 12 of 20 reviewed"
+    assert dock.progress.value() == 12 and dock.progress.maximum() == 20
+
+
+def test_wheel_zoom_in_the_full_frame_stays_when_the_dock_changes_size(dock):
+    from qgis.PyQt.QtCore import QPointF
+    from qgis.PyQt.QtGui import QWheelEvent
+
+    view = dock.image_view
+    centre = QPointF(view.viewport().rect().center())
+    event = QWheelEvent(centre, view.viewport().mapToGlobal(QPoint(0, 0)), QPoint(0, 0), QPoint(0, 360),
+                        Qt.NoButton, Qt.NoModifier, Qt.NoScrollPhase, False)
+    QApplication.sendEvent(view.viewport(), event)
+    zoomed = view.transform().m11()
+    dock.resize(dock.width() + 60, dock.height() - 40)  # labels re-wrapping change the dock's layout
+    QApplication.processEvents()
+    assert view.transform().m11() == pytest.approx(zoomed)
+    QTest.mouseDClick(view.viewport(), Qt.LeftButton)  # double click: back to the crop
+    assert view.transform().m11() < zoomed

@@ -49,10 +49,16 @@ def test_init_gui_after_init_processing_adds_one_action_and_unload_removes_every
     plugin.initGui()
     plugin.initGui()  # a second call adds nothing
     assert QgsApplication.processingRegistry().providerById("signmapper") is not None
-    action = plugin.review_ui.action
-    assert iface.added == [("toolbar", action), ("menu", "&Sign Mapper", action)]
+    action, viewer = plugin.review_ui.action, plugin.viewer_ui.action
+    assert iface.added == [("toolbar", action), ("menu", "&Sign Mapper", action),
+                           ("toolbar", viewer), ("menu", "&Sign Mapper", viewer)]
     assert action.text() == "Review signs" and action.isCheckable()
-    assert plugin.review_ui.dock is None  # built on first use
+    assert viewer.text() == "Drive viewer" and not viewer.icon().isNull()
+    assert plugin.review_ui.dock is None and plugin.viewer_ui.dock is None  # built on first use
+    viewer.setChecked(True)
+    QApplication.processEvents()
+    viewer_dock = plugin.viewer_ui.dock
+    assert viewer_dock is not None and viewer_dock.isVisible() and plugin.viewer_ui.controller._active
 
     action.setChecked(True)
     QApplication.processEvents()
@@ -68,8 +74,9 @@ def test_init_gui_after_init_processing_adds_one_action_and_unload_removes_every
 
     plugin.unload()
     assert ("toolbar", action) in iface.removed and ("menu", "&Sign Mapper", action) in iface.removed
-    assert ("dock", dock) in iface.removed
-    assert plugin.review_ui is None
+    assert ("dock", dock) in iface.removed and ("dock", viewer_dock) in iface.removed
+    assert ("toolbar", viewer) in iface.removed
+    assert plugin.review_ui is None and plugin.viewer_ui is None
     assert QgsApplication.processingRegistry().providerById("signmapper") is None
 
 
@@ -85,4 +92,24 @@ def test_visible_dock_follows_the_current_layer_and_unload_disconnects(sign_mapp
     assert controller.layer is None and "Sign Mapper" in plugin.review_ui.dock.title.text()
     plugin.unload()
     assert not controller._active and not controller.busy()
+    QgsProject.instance().removeAllMapLayers()
+
+
+def test_add_missed_sign_from_the_viewer_opens_the_review_on_the_viewers_layer(sign_mapper, qgis_processing, iface):
+    plugin = sign_mapper.classFactory(iface)
+    plugin.initGui()
+    layer = QgsVectorLayer("Point?crs=EPSG:2056&field=name:string", "other", "memory")
+    QgsProject.instance().addMapLayer(layer)
+    calls = []
+    plugin.review_ui.action.setChecked(True)
+    QApplication.processEvents()
+    review = plugin.review_ui.controller
+    review.decisions.add_sign = lambda pair_id, u, v: calls.append((review.session.layer, pair_id, u, v))
+    plugin.review_ui.action.setChecked(False)
+    QApplication.processEvents()
+    plugin.viewer_ui._add_sign(layer, "000004", 120.0, 80.0)
+    QApplication.processEvents()
+    assert plugin.review_ui.action.isChecked() and plugin.review_ui.dock.isVisible()
+    assert calls == [(None, "000004", 120.0, 80.0)]  # a plain memory layer is no Sign Mapper layer: no session
+    plugin.unload()
     QgsProject.instance().removeAllMapLayers()

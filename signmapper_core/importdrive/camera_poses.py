@@ -1,0 +1,68 @@
+"""From recorded body poses to the drive's left-camera poses: the chain of every import.
+
+1. angles in degrees (``angle_units``), positions into the output CRS (``crs_steps``);
+2. body -> local east/north/up (``attitude``), then -> output grid (meridian convergence);
+3. interpolation to the image times for trajectories (``interpolate``);
+4. lever arm and boresight to the raw left camera (``mount``);
+5. the rectifying rotation to the left normal image (``rectify``), and heading/pitch/roll
+   as drive-format.md defines them (``geometry.angles_from_rotation``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..geometry import Pose, angles_from_rotation
+from .angle_units import check_radians_as_degrees, to_degrees
+from .attitude import Convention, convention, forward_heading
+from .crs_steps import CrsSteps
+from .mount import Mount
+from .pose_table import PoseTable
+
+NORTHS = ("auto", "true", "grid")
+
+
+@dataclass(frozen=True)
+class Orientation:
+    """How a pose table's angles are to be read."""
+
+    convention: str = "ned_ypr"
+    unit: str = "deg"            # "deg" or "rad"
+    north: str = "auto"          # "true", "grid" (of a projected input CRS), "auto"
+
+
+def resolve_north(orientation: Orientation, conv: Convention, steps: CrsSteps) -> str:
+    """``auto``: navigation angles are against true north; a camera's exterior orientation against the grid of a
+    projected input CRS (true north for a geographic one)."""
+    if orientation.north not in NORTHS:
+        raise ValueError(f"north must be one of {NORTHS}, not {orientation.north!r}")
+    if orientation.north != "auto":
+        return orientation.north
+    return "grid" if conv.camera_like and not steps.input_geographic else "true"
+
+
+def body_poses(table: PoseTable, orientation: Orientation, steps: CrsSteps) -> tuple[np.ndarray, np.ndarray]:
+    """Body positions (n, 3) in the output CRS and body -> output-grid rotations (n, 3, 3)."""
+    conv = convention(orientation.convention)
+    angles = to_degrees(table.angles, orientation.unit, table)
+    to_grid = steps.grid_rotations(table.xyz, resolve_north(orientation, conv, steps))
+    centres = steps.positions(table.xyz)
+
+    def rotations(rows_deg: np.ndarray) -> np.ndarray:
+        return np.stack([g @ conv.rotation(a) for g, a in zip(to_grid, rows_deg)])
+
+    if orientation.unit == "deg":
+        check_radians_as_degrees(angles, centres, table,
+                                 lambda rows: np.array([forward_heading(r, conv) for r in rotations(rows)]))
+    return centres, rotations(angles)
+
+
+def drive_poses(centres: np.ndarray, rotations: np.ndarray, mount: Mount, rectify_rotation: np.ndarray) -> list[Pose]:
+    """Poses of the left normal image for body poses; ``rectify_rotation`` maps raw to rectified left camera."""
+    camera_centres, raw_to_world = mount.camera_pose(centres, rotations)
+    poses = []
+    for centre, rotation in zip(camera_centres, raw_to_world @ np.asarray(rectify_rotation).T):
+        poses.append(Pose(*(float(v) for v in centre), *angles_from_rotation(rotation)))
+    return poses
