@@ -24,13 +24,14 @@ export QT_QPA_PLATFORM := offscreen
 DEMO_DIR := demo-output
 DEMO_DRIVE := $(DEMO_DIR)/sample-drive
 DEMO_PAIRS := 20
+REAL_DATA ?= /work/data/real
 PLUGIN_NAME := sign_mapper
 QGIS_PROFILE_PLUGINS := $(HOME)/.local/share/QGIS/QGIS3/profiles/default/python/plugins
 
 TRAIN_VENV := .venv-train
 TRAIN_PY := $(TRAIN_VENV)/bin/python
 
-.PHONY: setup apt venv test test-core demo screenshots desktop-check lint zip deploy catalogue catalogue-sheet train-classifier clean help
+.PHONY: setup apt venv test test-core demo screenshots desktop-check lint zip deploy catalogue catalogue-sheet train-classifier calibrate-classifier clean help
 
 help:
 	@echo "make setup     Debian packages (QGIS), venv with pinned requirements"
@@ -44,6 +45,7 @@ help:
 	@echo "make deploy    link this checkout into the default QGIS profile"
 	@echo "make catalogue SVG=DIR  rebuild templates/ch from the official drawings in DIR (deterministic)"
 	@echo "make train-classifier  retrain templates/ch/classifier (own venv with PyTorch; ~1 h on 2 cores)"
+	@echo "make calibrate-classifier REAL_DATA=DIR  fit its indicator on the tune half of real photographs"
 
 setup: apt venv
 
@@ -131,7 +133,11 @@ $(TRAIN_VENV)/.installed: requirements.txt requirements-train.txt
 
 # Reproducible: same catalogue and arguments, same model. Generated patches are cached in /tmp.
 train-classifier: apt $(TRAIN_VENV)/.installed
-	PYTHONPATH= $(TRAIN_PY) -m training.train --catalogue templates/ch $(TRAIN_ARGS)
+	PYTHONPATH= $(TRAIN_PY) -m training.train --catalogue templates/ch --threads 2 --workers 2 $(TRAIN_ARGS)
+
+# temperature and acceptance threshold fitted on the tune half of the real photographs (scripts/realset)
+calibrate-classifier: venv
+	$(PY) scripts/calibrate_classifier.py --data $(REAL_DATA)
 
 catalogue-sheet: venv
 	$(PY) -m signmapper_core.catalogue.sheet docs/catalogue-sheet.png

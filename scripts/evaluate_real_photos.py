@@ -4,8 +4,8 @@
     python scripts/evaluate_real_photos.py detect --data DIR [--split report] [--limit N] [--seed 0]
 
 ``DIR`` holds crops.csv, scenes.csv, scenes_images.csv and the photographs (see
-scripts/realset/README.md); default: $SIGNMAPPER_REAL_DATA, else the committed-subset
-location ../shared/real-signs next to the repo. Tune on ``--split tune``; report ``--split report``.
+scripts/realset/README.md); default: $SIGNMAPPER_REAL_DATA, else the committed subset
+tests/data/real-signs. Tune on ``--split tune``; report ``--split report``.
 
 classify: the face box is given (the ground-truth box, "perfect box"); the candidates are the
 catalogue entries with the true entry's colour and shape. Prints the correct-id rate and, among
@@ -41,7 +41,7 @@ from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.validation import load_manifest, load_scene_list, read_bgr  # noqa: E402
 
 SMALL_PX = 30
-SUBSET_DIR = REPO.parent / "shared" / "real-signs"
+SUBSET_DIR = REPO / "tests" / "data" / "real-signs"
 
 def make_classifier(name: str, catalogue, model: Path = None):
     """The pipeline's classifier ``name`` (``signmapper_core.pipeline.classifiers``), or the network in ``model``."""
@@ -243,7 +243,7 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("mode", choices=("classify", "detect"))
     parser.add_argument("--data", type=Path, default=None,
-                        help="folder with the manifests (default $SIGNMAPPER_REAL_DATA or ../shared/real-signs)")
+                        help="folder with the manifests (default $SIGNMAPPER_REAL_DATA or tests/data/real-signs)")
     parser.add_argument("--split", choices=("tune", "report", "all"), default="tune")
     parser.add_argument("--limit", type=int, default=0, help="a seeded random sample of this many signs/images")
     parser.add_argument("--seed", type=int, default=0)

@@ -183,14 +183,11 @@ def test_make_subset_writes_readable_manifests_from_the_report_half(tiny_set, tm
 
 
 def subset_folder():
-    """The committed subset: $SIGNMAPPER_REAL_SUBSET, else ../shared/real-signs next to the repo."""
+    """The committed subset tests/data/real-signs, or $SIGNMAPPER_REAL_SUBSET."""
     env = os.environ.get("SIGNMAPPER_REAL_SUBSET")
-    candidates = [Path(env)] if env else [REPO.parent / "shared" / "real-signs"]
-    return next((p for p in candidates if (p / "crops.csv").is_file()), None)
+    return Path(env) if env else REPO / "tests" / "data" / "real-signs"
 
 
-@pytest.mark.skipif(subset_folder() is None, reason="no real-photograph subset: set SIGNMAPPER_REAL_SUBSET or "
-                    "place it at ../shared/real-signs (built by scripts/realset/make_subset.py)")
 def test_smoke_on_the_committed_subset(catalogue, capsys):
     folder = subset_folder()
     ids = {e.id for e in catalogue}

@@ -71,13 +71,21 @@ def test_network_reads_official_faces_under_blur_noise_and_perspective(catalogue
     assert result.score >= network.accept_threshold
 
 
-@pytest.mark.parametrize("template_id", ["2.30-60", "1.22", "2.44", "2.41", "1.14", "2.05"])
-def test_network_reads_faces_of_another_artwork(catalogue, network, template_id):
-    """Our procedural drawings (other strokes, palette, font) were never trained on: the network still reads them."""
-    style = FaceStyle(stroke_scale=1.1, rim_scale=0.9, palette_jitter=0.5, font="duplex", detail_jitter=0.3, seed=3)
-    bgr, alpha = render_face(template_id, 70, style)
-    image, bbox = _degraded_scene(bgr, alpha, seed=7)
-    assert network.classify(image, bbox, _candidates(catalogue, template_id)).template_id == template_id
+def test_network_reads_most_faces_of_another_artwork(catalogue, network):
+    """Our procedural drawings (other strokes, palette, font) were never trained on. Measured 2026-12-01 with the
+    committed model: 124 of 216 faces (57 %) read right; real photographs do better (README), these drawings
+    differ from the official ones more than most real print runs do. A regression bar, not a goal."""
+    right, total = 0, 0
+    for k, (font, seed) in enumerate([("duplex", 3), ("simplex", 5)]):
+        style = FaceStyle(stroke_scale=1.1, rim_scale=0.9, palette_jitter=0.5, font=font, detail_jitter=0.3,
+                          seed=seed)
+        for entry in catalogue:
+            bgr, alpha = render_face(entry.id, 70, style)
+            image, bbox = _degraded_scene(bgr, alpha, seed=7 + k)
+            right += network.classify(image, bbox, _candidates(catalogue, entry.id)).template_id == entry.id
+            total += 1
+    assert total == 2 * len(catalogue)
+    assert right >= 0.52 * total
 
 
 def test_network_gives_a_non_sign_a_low_indicator(catalogue, network):

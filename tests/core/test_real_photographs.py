@@ -1,9 +1,9 @@
 """Regression figures on real photographs (the committed subset of GTSDB signs; never trained on).
 
-The subset is found at $SIGNMAPPER_REAL_SUBSET or ../shared/real-signs next to the
-repository (scripts/realset/make_subset.py builds it; its README names sources and
-licences). Thresholds sit a little below what was measured on it; the full figures
-are in README.md ("Recognition on real photographs").
+The subset is committed under tests/data/real-signs (GTSDB scenes, free for any use; its
+README names source, commit and licence; scripts/realset/make_subset.py builds it);
+$SIGNMAPPER_REAL_SUBSET points the tests at another one. Thresholds sit a little below what
+was measured on it; the full figures are in README.md ("Recognition on real photographs").
 """
 
 from __future__ import annotations
@@ -23,15 +23,17 @@ REPO = Path(__file__).resolve().parents[2]
 
 def subset_folder():
     env = os.environ.get("SIGNMAPPER_REAL_SUBSET")
-    for folder in [Path(env)] if env else [REPO.parent / "shared" / "real-signs"]:
-        if (folder / "crops.csv").is_file():
-            return folder
-    return None
+    return Path(env) if env else REPO / "tests" / "data" / "real-signs"
 
 
 SUBSET = subset_folder()
-pytestmark = pytest.mark.skipif(SUBSET is None, reason="no real-photograph subset: set SIGNMAPPER_REAL_SUBSET or "
-                                                      "place it at ../shared/real-signs (scripts/realset/make_subset.py)")
+
+# measured 2026-12-01 on the subset's 600 crops with the committed model (cv2.dnn): 85.4 % of the 445 same-pictogram
+# signs >= 30 px right, 77.9 % of the 136 smaller ones; 50.3 % accepted, 2.3 % of those wrong
+MIN_CORRECT_30PX = 0.83
+MIN_CORRECT_SMALL = 0.75
+MIN_ACCEPTED_SHARE = 0.45
+MAX_WRONG_ACCEPTED = 0.035
 
 
 @pytest.fixture(scope="module")
