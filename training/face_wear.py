@@ -123,7 +123,8 @@ def rim_width(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> 
     red, white = _colour_masks(face, alpha)
     if red.sum() < 0.05 * alpha.size or white.sum() < 0.02 * alpha.size:
         return face
-    k = max(1, int(round(rng.uniform(0.15, 0.5) * 0.08 * max(face.shape[:2]))))
+    # the Swiss speed-limit rim is ~17 % of the diameter, Germany's ~9 %: thin by up to ~10 % of the face
+    k = max(1, int(round(rng.uniform(0.015, 0.1) * max(face.shape[:2]))))
     grown = cv2.dilate(white.astype(np.uint8), cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * k + 1, 2 * k + 1)))
     paint = (grown > 0) & red
     field = np.median(face[white], axis=0)
@@ -146,7 +147,7 @@ def white_edge(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) ->
 def wear_face(face_bgr: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.ndarray:
     """A randomly worn copy of a face (uint8 BGR), each effect switched on with its own probability."""
     face = face_bgr.astype(np.float32)
-    if rng.random() < 0.35:
+    if rng.random() < 0.45:
         face = rim_width(face, alpha, rng)
     if rng.random() < 0.25:
         face = white_edge(face, alpha, rng)
