@@ -115,7 +115,8 @@ def _body_poses(drive, turn_left: np.ndarray, rig: RawRig) -> tuple[np.ndarray, 
 
 def _trajectory_rows(drive, centres, rotations, rig: RawRig):
     """Epochs every 1/``rate_hz`` from just before the first pair to just after the last, offset from the image
-    times; positions linear and turns along the shortest way between the pairs' body poses (held beyond them)."""
+    times; positions linear and turns along the shortest way between the pairs' body poses (beyond the first and
+    last pair: positions extrapolated, turns held)."""
     times = np.array([r.time for r in drive.pairs])
     step = 1.0 / rig.rate_hz
     first = times[0] - step + rig.epoch_offset_s
