@@ -172,6 +172,7 @@ def test_without_a_language_chosen_the_output_speaks_the_language_qgis_is_set_to
     qgis_locale("fr_CH")
     assert algorithm.language({"LANGUAGE": 3}, context) == "fr" and algorithm.language({"LANGUAGE": 1}, context) != "fr"
 
+
 def _assert_styled(layer, language_alias):
     assert layer.renderer().type() == "RuleRenderer", layer.name()
     assert layer.labelsEnabled()
