@@ -25,7 +25,7 @@ DEMO_PAIRS := 20
 PLUGIN_NAME := sign_mapper
 QGIS_PROFILE_PLUGINS := $(HOME)/.local/share/QGIS/QGIS3/profiles/default/python/plugins
 
-.PHONY: setup apt venv test test-core demo screenshots desktop-check lint zip deploy catalogue catalogue-sheet clean help
+.PHONY: setup apt venv test test-core demo screenshots desktop-check lint zip deploy catalogue catalogue-sheet import-model clean help
 
 help:
 	@echo "make setup     Debian packages (QGIS), venv with pinned requirements"
@@ -38,6 +38,7 @@ help:
 	@echo "make zip       dist/sign_mapper.zip, installable in QGIS"
 	@echo "make deploy    link this checkout into the default QGIS profile"
 	@echo "make catalogue rebuild templates/ch from the Swiss sign definitions (deterministic)"
+	@echo "make import-model rebuild models/import_and_map_signs.model3 from the registered algorithms"
 
 setup: apt venv
 
@@ -116,6 +117,9 @@ catalogue-sheet: venv
 
 zip: venv
 	$(PY) scripts/build_zip.py dist/$(PLUGIN_NAME).zip
+
+import-model: venv
+	$(PY) scripts/make_import_model.py
 
 deploy:
 	mkdir -p $(QGIS_PROFILE_PLUGINS)
