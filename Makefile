@@ -31,7 +31,7 @@ QGIS_PROFILE_PLUGINS := $(HOME)/.local/share/QGIS/QGIS3/profiles/default/python/
 TRAIN_VENV := .venv-train
 TRAIN_PY := $(TRAIN_VENV)/bin/python
 
-.PHONY: setup apt venv test test-core demo screenshots desktop-check lint zip deploy catalogue catalogue-sheet train-classifier calibrate-classifier clean help
+.PHONY: setup apt venv test test-core demo screenshots desktop-check lint zip deploy catalogue catalogue-sheet import-model train-classifier calibrate-classifier clean help
 
 help:
 	@echo "make setup     Debian packages (QGIS), venv with pinned requirements"
@@ -46,6 +46,7 @@ help:
 	@echo "make catalogue SVG=DIR  rebuild templates/ch from the official drawings in DIR (deterministic)"
 	@echo "make train-classifier  retrain templates/ch/classifier (own venv with PyTorch; ~1 h on 2 cores)"
 	@echo "make calibrate-classifier REAL_DATA=DIR  fit its indicator on the tune half of real photographs"
+	@echo "make import-model rebuild models/import_and_map_signs.model3 from the registered algorithms"
 
 setup: apt venv
 
@@ -144,6 +145,9 @@ catalogue-sheet: venv
 
 zip: venv
 	$(PY) scripts/build_zip.py dist/$(PLUGIN_NAME).zip
+
+import-model: venv
+	$(PY) scripts/make_import_model.py
 
 deploy:
 	mkdir -p $(QGIS_PROFILE_PLUGINS)

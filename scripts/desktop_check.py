@@ -7,7 +7,9 @@ painting between the steps:
      pictograms, aliases) and take a screenshot of the main window;
   3. open the drive viewer on a pair that sees signs, with the vehicle on the map;
   4. open the review dock on a sign; screenshots after each step;
-  5. write the findings to SIGNMAPPER_CHECK_REPORT (JSON) and quit QGIS.
+  5. write the findings to SIGNMAPPER_CHECK_REPORT (JSON) and quit QGIS; ``ok`` only when the layers came out
+     styled, the viewer drew mapped signs over its image with the vehicle inside the map's extent, and the
+     review showed the sign with its image.
 
 Environment: SIGNMAPPER_CHECK_DRIVE (drive folder), SIGNMAPPER_CHECK_OUT (folder
 for screenshots and the report), SIGNMAPPER_CHECK_GPKG (output GeoPackage).
@@ -179,11 +181,13 @@ def step_viewer_shot():
     controller = plugin().viewer_ui.controller
     dock = plugin().viewer_ui.dock
     boxes = dock.view.boxes()
+    vehicle = controller.vehicle.position
+    mapped_signs = sum(b.key.startswith("signs:") for b in boxes)
+    on_map = vehicle is not None and iface.mapCanvas().extent().contains(vehicle)
+    state["viewer_ok"] = mapped_signs > 0 and on_map
     log("viewer", screenshot=shot("desktop-viewer.png"), pair=dock.pair_id, boxes=len(boxes),
-        stepping_frames_per_s=state["fps"],
-        mapped_signs=sum(b.key.startswith("signs:") for b in boxes),
-        vehicle=[controller.vehicle.position.x(), controller.vehicle.position.y()]
-        if controller.vehicle.position is not None else None)
+        stepping_frames_per_s=state["fps"], mapped_signs=mapped_signs,
+        vehicle=[vehicle.x(), vehicle.y()] if vehicle is not None else None, vehicle_on_map=on_map)
     review = plugin().review_ui
     review.action.setChecked(True)
     iface.mainWindow().resizeDocks([review.dock], [470], 1)  # 1 = Qt.Horizontal
@@ -215,7 +219,7 @@ def step_review_shot():
     log("review", screenshot=shot("desktop-review.png"), feature=state["sign"],
         shown=item.template_id if item is not None else None,
         image=dock.image_view.has_image(), progress=dock.progress.text())
-    ok = state["facts"]["styled"] and item is not None and dock.image_view.has_image()
+    ok = state["facts"]["styled"] and state["viewer_ok"] and item is not None and dock.image_view.has_image()
     finish(ok)
 
 

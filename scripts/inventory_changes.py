@@ -5,9 +5,17 @@ removed from the inventory, moved 1 m, given another type, added where the drive
 sees nothing, added outside its view); every row carries the verdict it should
 get. The drive is mapped with ``signmapper:mapsigns`` and compared with
 ``signmapper:changes`` (both through ``qgis_process.bin``); the script prints
-every wrong verdict and the accuracy. ::
+every wrong verdict and the accuracy. Next to it, the same inventory compared with a
+perfect mapping (every truth sign the drive could have seen, at its true position
+with its true type): what ``changes`` decides by itself, apart from mapping
+errors. With ``--signalo`` it then does the Signalo
+round trip on each mapped drive: a throw-away PostgreSQL (as the database tests
+start it) with Signalo's data model, ``signmapper:exporttosignalo`` of the run
+(signs awaiting review included), ``signmapper:changes`` against that database;
+every written sign should come back ``confirmed`` and only the types Signalo does
+not list ``new``. ::
 
-    scripts/inventory_changes.py --generate 1100 1101 1102 --out /tmp/changes
+    scripts/inventory_changes.py --generate 1100 1101 1102 --out /tmp/changes --signalo
 """
 
 from __future__ import annotations
@@ -35,10 +43,14 @@ from signmapper_core.changes import (  # noqa: E402
     NEW,
     NOT_COVERED,
     ChangeConfig,
+    InventorySign,
+    MappedSign,
+    compare,
     pose_arrays,
     sign_views,
 )
 from signmapper_core.drive import open_drive  # noqa: E402
+from signmapper_core.mounting import camera_height_above_road  # noqa: E402
 
 EDITS = {"removed": 4, "moved": 5, "type": 4}  # of signs the drive sees; then signs added, at least 3 of each kind
 MIN_EDITS = 22
@@ -64,6 +76,59 @@ def run(env, algorithm: str, **params) -> str:
     if done.returncode != 0:
         raise SystemExit(f"{algorithm} failed:\n{done.stdout[-3000:]}\n{done.stderr[-3000:]}")
     return done.stdout
+
+
+def outputs(stdout: str) -> dict:
+    """The 'Results' block qgis_process prints: name -> value (text)."""
+    found, results = {}, False
+    for line in stdout.splitlines():
+        if line.strip() == "Results":
+            results = True
+        elif results and ":\t" in line:
+            name, value = line.split(":\t", 1)
+            found[name.strip()] = value.strip()
+    return found
+
+
+def signs_by_status(gpkg: Path) -> dict:
+    db = sqlite3.connect(gpkg)
+    try:
+        return dict(db.execute("SELECT status, count(*) FROM signs GROUP BY status").fetchall())
+    finally:
+        db.close()
+
+
+def signalo_round_trip(env, out: Path, seeds) -> bool:
+    """Export every mapped drive into its own Signalo database and compare the run with it; True if all came
+    back confirmed (apart from types Signalo does not list, which must be the only 'new' signs)."""
+    sys.path.insert(0, str(REPO / "tests"))
+    from postgres_server import PostgresServer
+    from signalo_schema import install_signalo
+
+    server = PostgresServer().start()
+    all_right = True
+    try:
+        for seed in seeds:
+            mapped = out / f"map{seed}.gpkg"
+            dsn = server.create_database(f"roundtrip{seed}")
+            version = install_signalo(dsn)
+            sent = outputs(run(env, "signmapper:exporttosignalo", SIGNS=f"{mapped}|layername=signs", SIGNALO=dsn,
+                               INCLUDE_REVIEW="true"))
+            back = outputs(run(env, "signmapper:changes", SIGNS=f"{mapped}|layername=signs", SIGNALO=dsn,
+                               OUTPUT=out / f"roundtrip{seed}.gpkg", REPORT=out / f"roundtrip{seed}.html"))
+            counts = {k: int(float(back[k])) for k in ("CONFIRMED", "MOVED", "CHANGED", "MISSING", "NOT_COVERED",
+                                                         "NEW")}
+            added, unknown = int(float(sent["ADDED"])), int(float(sent["UNKNOWN"]))
+            right = (counts["CONFIRMED"] == added and counts["NEW"] == unknown
+                     and not any(counts[k] for k in ("MOVED", "CHANGED", "MISSING", "NOT_COVERED")))
+            all_right &= right
+            print(f"drive {seed} Signalo {version} round trip: signs by status {signs_by_status(mapped)}; exported "
+                  f"{added} on {sent['SUPPORTS']} supports, {unknown} of types Signalo does not list; read back: "
+                  + ", ".join(f"{n} {k.lower().replace('_', ' ')}" for k, n in counts.items())
+                  + ("" if right else "  <-- not all confirmed"))
+    finally:
+        server.stop()
+    return all_right
 
 
 def in_view(drive, poses, config, position, facing, size) -> bool:
@@ -175,16 +240,42 @@ def score(rows, changes, inventory_fids) -> tuple[int, int, list[str]]:
     return right, total, wrong
 
 
+def perfect_mapping_changes(drive, catalogue, rows) -> tuple[list[dict], list[int]]:
+    """``changes`` rows (as read from its GeoPackage) of the inventory against a perfect mapping, and the
+    inventory's feature ids: the inventory built as the algorithm builds it from a point layer (catalogue
+    'normal' sizes), the mapping = every truth sign of a catalogue type that some pair shows by the same
+    visibility test, at its true position with its true type."""
+    config = ChangeConfig(camera_height_m=camera_height_above_road(drive.metadata))
+    poses = pose_arrays(drive.pairs)
+    inventory = []
+    for fid, row in enumerate((r for r in rows if r["expected"] != NEW), start=1):
+        size = catalogue[row["template_id"]].formats.get("normal") if row["template_id"] in catalogue else None
+        inventory.append(InventorySign(str(fid), row["template_id"],
+                                       np.array([row["easting"], row["northing"], row["height"]], float),
+                                       float(row["facing"]), size[0] if size else None, size[1] if size else None))
+    mapped = [MappedSign(k, t.template_id, np.asarray(t.position, float)) for k, t in enumerate(drive.truth, start=1)
+              if t.template_id in catalogue and in_view(drive, poses, config, t.position, t.facing,
+                                                        (t.width_m, t.height_m))]
+    report = compare(inventory, mapped, drive.camera, drive.pairs, config, mappable_types={e.id for e in catalogue})
+    changes = [{"inventory_id": c.inventory.key if c.inventory is not None else None, "verdict": c.verdict,
+                "template_id": c.mapped.template_id if c.mapped is not None else c.inventory.template_id,
+                "sign_id": c.mapped.sign_id if c.mapped is not None else None, "reason": c.reason}
+               for c in report.changes]
+    return changes, list(range(1, len(inventory) + 1))
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--generate", type=int, nargs="+", required=True, help="seeds of the drives")
     parser.add_argument("--out", type=Path, required=True, help="work folder (drives, GeoPackages, reports)")
     parser.add_argument("--pairs", type=int, default=100)
+    parser.add_argument("--signalo", action="store_true",
+                        help="then export each mapped drive to a throw-away Signalo database and compare it back")
     args = parser.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
     env = qgis_env(args.out)
     catalogue = load_catalogue()
-    grand_right = grand_total = 0
+    grand_right = grand_total = ideal_grand_right = ideal_grand_total = 0
     for seed in args.generate:
         drive_dir = args.out / f"drive{seed}"
         if not (drive_dir / "poses.csv").exists():
@@ -214,7 +305,16 @@ def main() -> None:
             print("   ", line)
         grand_right += right
         grand_total += total
-    print(f"all: {grand_right}/{grand_total} verdicts right ({100.0 * grand_right / max(grand_total, 1):.1f} %)")
+        ideal_right, ideal_total, ideal_wrong = score(rows, *perfect_mapping_changes(drive, catalogue, rows))
+        print(f"drive {seed} with a perfect mapping: verdicts right {ideal_right}/{ideal_total}")
+        for line in ideal_wrong:
+            print("   ", line)
+        ideal_grand_right += ideal_right
+        ideal_grand_total += ideal_total
+    print(f"all: {grand_right}/{grand_total} verdicts right ({100.0 * grand_right / max(grand_total, 1):.1f} %); "
+          f"with a perfect mapping {ideal_grand_right}/{ideal_grand_total}")
+    if args.signalo and not signalo_round_trip(env, args.out, args.generate):
+        raise SystemExit("the Signalo round trip did not confirm every exported sign")
 
 
 if __name__ == "__main__":

@@ -174,7 +174,8 @@ class DriveViewerController(QObject):
         n_signs = sum(b.key.startswith(SIGNS) for b in boxes)
         n_det = len(boxes) - n_signs
         return (f"Pair {record.id} · {record.index + 1} of {len(self.drive.pairs)} · t = {record.time:.2f} s · "
-                f"{n_signs} mapped signs in view, {n_det} detections · {Path(self.drive.root).name}")
+                f"{n_signs} mapped sign{'' if n_signs == 1 else 's'} in view, "
+                f"{n_det} detection{'' if n_det == 1 else 's'} · {Path(self.drive.root).name}")
 
     def _frame_failed(self, index: int, message: str) -> None:
         self.dock.show_message(f"Pair {self.drive.pairs[index].id}: {message}", error=True)

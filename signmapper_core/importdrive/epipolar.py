@@ -59,38 +59,61 @@ class EpipolarCheck:
                 f"over {self.matches} matched features")
 
 
-def _grey(image: np.ndarray) -> np.ndarray:
+def grey(image: np.ndarray) -> np.ndarray:
     import cv2
 
     return image if image.ndim == 2 else cv2.cvtColor(image, cv2.COLOR_BGR2GRAY)
+
+
+LK_CRITERIA = (3, 40, 0.001)   # cv2.TERM_CRITERIA_EPS | COUNT, 40 iterations, 0.001 px
+
+
+def corners(grey_image: np.ndarray, max_features: int = 1500) -> np.ndarray:
+    """Well-textured points (n, 2) of an image, refined to sub-pixel positions."""
+    import cv2
+
+    spacing = max(5, min(grey_image.shape) // 60)
+    found = cv2.goodFeaturesToTrack(grey_image, maxCorners=max_features, qualityLevel=0.005, minDistance=spacing,
+                                    blockSize=7)
+    if found is None:
+        return np.zeros((0, 2), np.float32)
+    return cv2.cornerSubPix(grey_image, found.astype(np.float32), (5, 5), (-1, -1), LK_CRITERIA).reshape(-1, 2)
+
+
+def track(grey_a: np.ndarray, grey_b: np.ndarray, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Positions in ``grey_b`` of ``points`` of ``grey_a`` (pyramidal Lucas-Kanade) and which are trustworthy:
+    tracked both ways, back within ``FB_MAX_PX``."""
+    import cv2
+
+    points = np.asarray(points, np.float32).reshape(-1, 1, 2)
+    if not len(points):
+        return np.zeros((0, 2)), np.zeros(0, bool)
+    lk = {"winSize": (21, 21), "maxLevel": 5, "criteria": LK_CRITERIA}
+    forward, ok_f, _ = cv2.calcOpticalFlowPyrLK(grey_a, grey_b, points, None, **lk)
+    back, ok_b, _ = cv2.calcOpticalFlowPyrLK(grey_b, grey_a, forward, None, **lk)
+    good = (ok_f.ravel() == 1) & (ok_b.ravel() == 1)
+    good &= np.linalg.norm((back - points).reshape(-1, 2), axis=1) < FB_MAX_PX
+    return forward.reshape(-1, 2).astype(float), good
 
 
 def match_features(left: np.ndarray, right: np.ndarray, max_features: int = 1500) -> EpipolarCheck:
     """Matched features of a stereo pair (see module)."""
     import cv2
 
-    grey_l, grey_r = _grey(left), _grey(right)
-    spacing = max(5, min(grey_l.shape) // 60)
-    corners = cv2.goodFeaturesToTrack(grey_l, maxCorners=max_features, qualityLevel=0.005, minDistance=spacing,
-                                      blockSize=7)
+    grey_l, grey_r = grey(left), grey(right)
+    start = corners(grey_l, max_features)
     empty = EpipolarCheck(np.zeros((0, 2)), np.zeros((0, 2)))
-    if corners is None or len(corners) < 8:
+    if len(start) < 8:
         return empty
-    criteria = (cv2.TERM_CRITERIA_EPS | cv2.TERM_CRITERIA_COUNT, 40, 0.001)
-    corners = cv2.cornerSubPix(grey_l, corners.astype(np.float32), (5, 5), (-1, -1), criteria)
-    lk = {"winSize": (21, 21), "maxLevel": 5, "criteria": criteria}
-    forward, ok_f, _ = cv2.calcOpticalFlowPyrLK(grey_l, grey_r, corners, None, **lk)
-    back, ok_b, _ = cv2.calcOpticalFlowPyrLK(grey_r, grey_l, forward, None, **lk)
-    good = (ok_f.ravel() == 1) & (ok_b.ravel() == 1)
-    good &= np.linalg.norm((back - corners).reshape(-1, 2), axis=1) < FB_MAX_PX
-    pl, pr = corners.reshape(-1, 2)[good], forward.reshape(-1, 2)[good]
+    found, good = track(grey_l, grey_r, start)
+    pl, pr = start[good].astype(float), found[good]
     if len(pl) < 8:
-        return EpipolarCheck(pl.astype(float), pr.astype(float))
+        return EpipolarCheck(pl, pr)
     _, inliers = cv2.findFundamentalMat(pl, pr, cv2.FM_RANSAC, RANSAC_PX, 0.999)
     if inliers is None:
         return empty
     keep = inliers.ravel() == 1
-    return EpipolarCheck(pl[keep].astype(float), pr[keep].astype(float))
+    return EpipolarCheck(pl[keep], pr[keep])
 
 
 def draw_check(left: np.ndarray, right: np.ndarray, check: EpipolarCheck, lines: int = 14) -> np.ndarray:

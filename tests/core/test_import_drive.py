@@ -2,6 +2,7 @@
 against poses computed independently in the tests; failures and cancels leave nothing behind."""
 
 import csv
+import dataclasses
 import json
 
 import cv2
@@ -34,6 +35,7 @@ from signmapper_core.importdrive import (
     match_features,
     utm_crs,
 )
+from signmapper_core.importdrive.consistency import static_point_spread
 from signmapper_core.progress import Cancelled
 
 
@@ -108,6 +110,17 @@ def test_the_drive_records_its_import_and_the_rows_check(imported):
     check = cv2.imread(str(drive.root.parent / "check.png"))
     assert check.shape == (360, 960, 3)
     assert any("heights are copied" in w for w in warnings)   # LV95 without heights: WGS 84 heights kept, said so
+
+
+def test_static_points_map_to_one_place_from_every_pair_and_a_pose_error_shows(imported):
+    _, drive, _ = imported
+    right = static_point_spread(drive, 0, 3)
+    assert len(right.positions) > 100 and right.pairs == ["img_000", "img_001", "img_002"]
+    assert np.median(right.spread_3d) < 0.02
+    turned = dataclasses.replace(drive.pairs[1], pose=dataclasses.replace(drive.pairs[1].pose,
+                                                                          heading=drive.pairs[1].pose.heading + 0.3))
+    wrong = dataclasses.replace(drive, pairs=[drive.pairs[0], turned, drive.pairs[2]])
+    assert np.median(static_point_spread(wrong, 0, 3).spread_3d) > 2 * np.median(right.spread_3d)
 
 
 def opk_of(rotation):

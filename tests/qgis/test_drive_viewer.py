@@ -7,6 +7,7 @@ import cv2
 import numpy as np
 import pytest
 from qgis.core import QgsPointXY, QgsProject, QgsVectorLayer
+from qgis.PyQt.QtCore import QThreadPool
 from qgis.PyQt.QtGui import QImage
 from qgis.PyQt.QtWidgets import QApplication
 
@@ -69,7 +70,14 @@ def viewer(sign_mapper, qgis_iface, mapped):
     wait(lambda: dock.index == 0)
     yield controller, dock, layers, added
     controller.shutdown()
+    dock.close()
+    # No map render may still read the layers removed below: none starts on them any more, the running one
+    # ends, and so do the ones the canvas cancelled while stepping (they finish in Qt's global thread pool).
+    canvas.setLayers([])
+    canvas.waitWhileRendering()
+    assert QThreadPool.globalInstance().waitForDone(60000), "map renders still running after 60 s"
     dock.deleteLater()
+    QApplication.processEvents()
     QgsProject.instance().removeAllMapLayers()
     QApplication.processEvents()
 
@@ -218,3 +226,26 @@ def test_zoom_and_pan_stay_while_stepping_and_add_sign_is_handed_on(viewer):
     dock.buttons["add_sign"].setChecked(True)
     view.imageClicked.emit(300.0, 120.0)
     assert added == [(layers["signs"], dock.pair_id, 300.0, 120.0)]
+
+
+def test_pick_on_map_opens_the_pair_of_a_clicked_trajectory_point(viewer, drive_dir, qgis_iface):
+    """The whole path from the dock's button through the map tool: a click on the canvas at a pair's camera."""
+    from qgis.core import QgsRectangle
+    from qgis.PyQt.QtCore import QPoint, Qt
+    from qgis.PyQt.QtTest import QTest
+
+    controller, dock, _, _ = viewer
+    drive = open_drive(drive_dir)
+    canvas = qgis_iface.mapCanvas()
+    dock.follow_box.setChecked(False)  # the vehicle must not move the map under the click
+    pose = drive.pairs[5].pose
+    canvas.setExtent(QgsRectangle(pose.easting - 30, pose.northing - 20, pose.easting + 30, pose.northing + 20))
+    QApplication.processEvents()
+    dock.buttons["pick"].click()
+    assert canvas.mapTool() is controller.pick_tool
+    pixel = canvas.getCoordinateTransform().transform(pose.easting, pose.northing)
+    QTest.mouseClick(canvas.viewport(), Qt.LeftButton, Qt.NoModifier, QPoint(round(pixel.x()), round(pixel.y())))
+    wait(lambda: dock.index == 5)
+    assert dock.pair_id == drive.pairs[5].id
+    dock.buttons["pick"].click()  # off again: the map tool is handed back
+    assert canvas.mapTool() is not controller.pick_tool and not dock.buttons["pick"].isChecked()

@@ -140,6 +140,39 @@ def test_fields_get_aliases_in_the_output_language(styles, small_drive, register
     assert names and all(name == catalogue[tid].name("fr") for tid, name in names.items())
 
 
+
+@pytest.fixture
+def qgis_locale():
+    """set(locale): QGIS's own locale override, as in Settings ▸ Options ▸ General; restored afterwards."""
+    from qgis.core import QgsSettings
+
+    settings = QgsSettings()
+    saved = {key: settings.value(key) for key in ("locale/overrideFlag", "locale/userLocale")}
+
+    def set_locale(locale: str) -> None:
+        settings.setValue("locale/overrideFlag", True)
+        settings.setValue("locale/userLocale", locale)
+
+    yield set_locale
+    for key, value in saved.items():
+        if value is None:
+            settings.remove(key)
+        else:
+            settings.setValue(key, value)
+
+
+def test_without_a_language_chosen_the_output_speaks_the_language_qgis_is_set_to(registered_plugin, qgis_locale):
+    from qgis.core import QgsApplication, QgsProcessingContext
+
+    algorithm = QgsApplication.processingRegistry().algorithmById("signmapper:mapsigns")
+    context = QgsProcessingContext()
+    for locale, language in (("fr_CH", "fr"), ("it_CH", "it"), ("de_CH", "de"), ("en_GB", "en"), ("rm_CH", "en")):
+        qgis_locale(locale)
+        assert algorithm.language({}, context) == language, locale  # LANGUAGE left at its default
+    qgis_locale("fr_CH")
+    assert algorithm.language({"LANGUAGE": 3}, context) == "fr" and algorithm.language({"LANGUAGE": 1}, context) != "fr"
+
+
 def _assert_styled(layer, language_alias):
     assert layer.renderer().type() == "RuleRenderer", layer.name()
     assert layer.labelsEnabled()
