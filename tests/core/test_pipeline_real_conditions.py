@@ -182,8 +182,8 @@ def test_rim_too_pale_for_any_colour_pass_is_found_by_hough_and_named_red(catalo
 
 
 def test_wide_white_rim_of_a_priority_sign_is_measured_in_the_image(catalogue):
-    # Germany's priority road carries its yellow on half the face, the Swiss template on 78 %:
-    # the face box from the template's extent would be far too small
+    # Germany's priority road carries its yellow on half the face, our former drawing on 78 % (the official
+    # artwork has a wider white rim): a face box from the template's extent alone can be far too small
     image = noisy_background(level=90, sigma=8)
     n, inset = 80, 20
     outer = np.array([[40 + n // 2, 40], [40 + n, 40 + n // 2], [40 + n // 2, 40 + n], [40, 40 + n // 2]])
@@ -194,9 +194,8 @@ def test_wide_white_rim_of_a_priority_sign_is_measured_in_the_image(catalogue):
     cv2.fillPoly(image, [inner], (0, 200, 240))  # yellow
     (cand,) = [c for c in face_candidates(image, catalogue, hough=False) if c.segment.colour == "yellow"]
     assert cand.shape == "diamond" and _iou(cand.segment.bbox, (60, 60, 41, 41)) > 0.8
-    template_face, *measured = [r for r in cand.readings if "3.03" in r.template_ids]
-    assert _iou(template_face.bbox, (40, 40, n + 1, n + 1)) < 0.7
-    assert len(measured) == 1 and _iou(measured[0].bbox, (40, 40, n + 1, n + 1)) > 0.85
+    readings = [r for r in cand.readings if "3.03" in r.template_ids]
+    assert max(_iou(r.bbox, (40, 40, n + 1, n + 1)) for r in readings) > 0.85
 
 
 def test_scene_pass_reads_the_white_balanced_image_when_asked():

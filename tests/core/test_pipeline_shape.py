@@ -2,7 +2,7 @@ import cv2
 import numpy as np
 import pytest
 
-from signmapper_core.pipeline.shape import catalogue_shapes, classify_shape
+from signmapper_core.pipeline.shape import ShapeResult, catalogue_shapes, classify_shape, outline_shapes
 
 SIZE = 61
 
@@ -89,10 +89,13 @@ def test_empty_mask_has_no_shape():
     assert classify_shape(np.zeros((20, 20), np.uint8)).shape is None
 
 
-def test_near_tied_outlines_keep_both_catalogue_shapes():
+def test_near_tied_outlines_keep_both_readings():
     # a small Stop with rounded corners fits a circle about as well as an octagon: both go to classification
-    assert catalogue_shapes("circle", 36, 36, {"circle": 0.966, "octagon": 0.950}) == ("circle", "octagon")
-    assert catalogue_shapes("circle", 60, 60, {"circle": 0.972, "octagon": 0.941}) == ("circle",)
-    assert catalogue_shapes("rectangle", 50, 70) == ("square", "rectangle")
-    assert catalogue_shapes("octagon", 40, 40, {"octagon": 0.95, "circle": 0.93, "rectangle": 0.8}) == \
+    def result(fits):
+        best = max(fits, key=fits.get)
+        return ShapeResult(best, fits[best], 0.8, 0.9, 8, fits)
+
+    assert outline_shapes(result({"circle": 0.966, "octagon": 0.950}), margin=0.03) == ("circle", "octagon")
+    assert outline_shapes(result({"circle": 0.972, "octagon": 0.921}), margin=0.03) == ("circle",)
+    assert outline_shapes(result({"octagon": 0.95, "circle": 0.93, "rectangle": 0.8}), margin=0.03) == \
         ("octagon", "circle")
