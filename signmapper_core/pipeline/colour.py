@@ -25,6 +25,7 @@ from typing import Dict, Iterable, List, Optional, Sequence, Tuple
 import cv2
 import numpy as np
 
+from .bright_fields import red_ring_fields
 from .config import HsvRange, PipelineConfig
 from .scene_colour import apply_gains, chroma_at_least, scene_colour
 from .shape import classify_shape
@@ -268,6 +269,24 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
                 if any(o.colour == colour and _box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou for o in out):
                     continue
                 out.append(seg)
+    if config.field_pass and "red" in config.colours:
+        for seg in field_segments(image, search, config, small_face_px):
+            if not any(o.colour == "red" and _box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou for o in out):
+                out.append(seg)
+    return out
+
+
+def field_segments(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
+                   small_face_px: Optional[float] = None) -> List[Segment]:
+    """The white fields of red-ringed faces found by brightness (:mod:`.bright_fields`) as "hole" segments."""
+    height, width = image.shape[:2]
+    m = config.border_margin_px
+    out = []
+    for field in red_ring_fields(image, search, config, small_face_px):
+        x, y, w, h = field.bbox
+        touches = x <= m or y <= m or x + w >= width - m or y + h >= height - m
+        out.append(Segment("red", field.bbox, field.mask, field.contour, int(np.count_nonzero(field.mask)),
+                           touches, "hole"))
     return out
 
 

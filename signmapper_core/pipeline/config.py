@@ -83,6 +83,26 @@ class PipelineConfig:
     # morphology scaled to the ring: a round sign's ring is ~9.5 % of its diameter (SSV prohibition signs)
     ring_fraction: float = 0.09
     min_face_px: int = 16  # smallest face to find without depth (GTSDB's smallest signs); sets the small pass
+    # white fields inside red rings found by brightness (bright_fields.py): in dim light a ring keeps no
+    # usable saturation, but its field is still brighter than it and the ring still redder than the field
+    field_pass: bool = True
+    field_scale: float = 0.5  # fields are sought on the grey image at this scale (a 30 px face: 12 px field)
+    field_first_level: int = 12  # darkest grey threshold: dusk fields on GTSDB are 30-60 with rings of 15-25
+    field_level_ratio: float = 1.25  # next threshold = this x the last: a ring darker than its field by this
+    # ratio separates them at some level (GTSDB tune split: ring/field brightness 0.3-0.6 for 90 % of signs)
+    # smallest field side (px): the field of a 30 px triangle is ~20 x 17; smaller components (leaves, windows,
+    # JPEG blocks) were 80 % of all (GTSDB tune split) and hardly a sign among them
+    field_min_px: int = 16
+    field_min_fill: float = 0.35  # component area / box: a field's fill is 0.5 (triangle) to 0.79 (disc)
+    field_max_fill: float = 0.95
+    field_same_iou: float = 0.85  # a component whose box overlaps one of a lower level this much is that one
+    field_ring_fraction: float = 0.12  # band around a field read as its ring, x the field's size (SSV: 0.11)
+    # the ring's colour relative to its field (per channel band / field): GTSDB tune split, components
+    # with a field's box and fill: red rings R/G, R/B 1.2-2.2 (10th-75th percentile), other
+    # components 1.0-1.25 (25th-90th); the band is darker than the field on signs (median 0.49)
+    field_ring_min_red_green: float = 1.15
+    field_ring_min_red_blue: float = 1.05
+    field_ring_max_brightness: float = 0.85
     max_face_px: int = 200  # largest round face the Hough route looks for without depth (radius range = cost)
     hough_min_face_px: int = 28  # smallest one: circles under ~28 px double its time and are mostly clutter
 
