@@ -282,10 +282,10 @@ def field_segments(image: np.ndarray, search: Optional[np.ndarray], config: Pipe
     height, width = image.shape[:2]
     m = config.border_margin_px
     out = []
-    for field in red_ring_fields(image, search, config, small_face_px):
-        x, y, w, h = field.bbox
+    for found in red_ring_fields(image, search, config, small_face_px):
+        x, y, w, h = found.bbox
         touches = x <= m or y <= m or x + w >= width - m or y + h >= height - m
-        out.append(Segment("red", field.bbox, field.mask, field.contour, int(np.count_nonzero(field.mask)),
+        out.append(Segment("red", found.bbox, found.mask, found.contour, int(np.count_nonzero(found.mask)),
                            touches, "hole"))
     return out
 
