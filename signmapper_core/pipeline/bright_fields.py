@@ -72,7 +72,7 @@ def ring_contrast(image: np.ndarray, bbox, field: np.ndarray, ring_fraction: flo
 
     ``field``: uint8 0/255 mask of the field in ``bbox`` (full-image pixels). The band is
     ``ring_fraction`` x the field's size wide, one pixel off the field's edge (edge pixels
-    mix both). Each channel's band mean is divided by its field mean: a red ring around a
+    mix both). Each channel's band median is divided by its field median: a red ring around a
     white field gives R/G and R/B above 1 whatever the light's colour, and a brightness ratio
     below 1.
     """
@@ -91,8 +91,9 @@ def ring_contrast(image: np.ndarray, bbox, field: np.ndarray, ring_fraction: flo
     inner = cv2.erode(mask, np.ones((3, 3), np.uint8))
     if not cv2.countNonZero(band) or not cv2.countNonZero(inner):
         return None
-    b = np.asarray(cv2.mean(crop, mask=band)[:3]) + 1.0
-    f = np.asarray(cv2.mean(crop, mask=inner)[:3]) + 1.0
+    # medians: the field's pictogram (digits, a truck) and background past a thin ring are minorities
+    b = np.median(crop[band > 0], axis=0) + 1.0
+    f = np.median(crop[inner > 0], axis=0) + 1.0
     q = b / f  # B, G, R
     return float(q[2] / q[1]), float(q[2] / q[0]), float(b.sum() / f.sum())
 
@@ -141,8 +142,9 @@ def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: Pip
                 continue  # the same field at a lower level
             seen = np.vstack([seen, box[None]])
             field = _ring_field(image, labels, k, tuple(int(v) for v in box), scale, config)
-            if field is not None:
-                out.append(field)
+            if field is not None and not any(_box_ious(np.asarray(field.bbox), np.asarray([f.bbox]))[0]
+                                             >= config.pass_duplicate_iou for f in out):
+                out.append(field)  # the first level that shows a field in its ring stands for it
     return out
 
 

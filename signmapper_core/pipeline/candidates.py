@@ -19,7 +19,7 @@ import numpy as np
 from .colour import Segment, faces_with_split_pieces_merged, find_colour_segments
 from .config import PipelineConfig
 from .detect import segment_candidates, segment_shapes
-from .face_extent import FULL, face_bbox, measured_rim_bbox
+from .face_extent import FULL, face_bbox, rim_face_bboxes
 from .hough import hough_segments
 
 
@@ -49,7 +49,7 @@ def readings_of(seg: Segment, shapes, catalogue, config: PipelineConfig,
     """The face boxes (grouped by colour extent) and candidate ids of a segment of outline ``shapes``.
 
     With ``image``, a face with a white rim around its coloured part also gets the
-    reading of its rim as measured in the image (:func:`.face_extent.measured_rim_bbox`).
+    readings of its rim as measured in the image (:func:`.face_extent.rim_face_bboxes`).
     """
     groups: dict = {}
     for entry, ext in segment_candidates(seg, shapes, catalogue, config):
@@ -60,9 +60,8 @@ def readings_of(seg: Segment, shapes, catalogue, config: PipelineConfig,
     for ext, ids, entry_shapes in groups.values():
         readings.append(FaceReading(face_bbox(seg.bbox, ext), tuple(ids)))
         if image is not None and ext != FULL and seg.source == "colour" and shapes[0] in entry_shapes:
-            rim = measured_rim_bbox(image, seg.bbox, seg.mask, ext, config.min_shape_fit)
-            if rim is not None:
-                same = tuple(i for i, s in zip(ids, entry_shapes) if s == shapes[0])
+            same = tuple(i for i, s in zip(ids, entry_shapes) if s == shapes[0])
+            for rim in rim_face_bboxes(image, seg.bbox, seg.mask, ext, shapes[0], config):
                 readings.append(FaceReading(rim, same))
     return tuple(readings)
 

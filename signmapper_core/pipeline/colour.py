@@ -12,7 +12,9 @@ this scene's lowered saturation floors (faded rings, dull light; see
 thinner than the opening, a pass with an opening scaled to that ring, kept to
 small segments. Only red faces have thin rings (blue and yellow faces are solid
 fields), so with the scene pass on, the small-ring pass reads the scene classes
-of ``config.weak_colours`` (red); without it, the strong classes of all colours.
+of the ring colours (``config.hole_colours``: red); without it, the strong classes
+of all colours. A last pass finds the white fields of red-ringed faces by their
+brightness, where the ring has too little colour left (:mod:`.bright_fields`).
 Segments of the scene classes must stand out of their surroundings and have a
 sign's outline; no pass adds a segment an earlier pass found.
 """
@@ -243,15 +245,17 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
     frame = frame or ColourFrame.of(image, config)
     inside = None if search is None else search.astype(np.uint8) * 255
     small_open = ring_open_px(config.min_face_px if small_face_px is None else small_face_px, config)
-    passes = [(config.morph_open_px, None, False)]  # (opening, largest side kept, scene classes)
+    # (opening, largest side kept, scene classes, colours)
+    passes = [(config.morph_open_px, None, False, config.colours)]
     if config.weak_colour:
-        passes.append((config.morph_open_px, None, True))
+        passes.append((config.morph_open_px, None, True, config.weak_colours))
     if small_open < config.morph_open_px:
-        passes.append((small_open, _ring_safe_max_px(config), config.weak_colour))
+        rings = [c for c in config.weak_colours if c in config.hole_colours] if config.weak_colour else config.colours
+        passes.append((small_open, _ring_safe_max_px(config), config.weak_colour, rings))
     out: List[Segment] = []
-    for open_px, max_side, weak in passes:
-        for colour in config.colours:
-            if weak and colour not in config.weak_colours:
+    for open_px, max_side, weak, colours in passes:
+        for colour in colours:
+            if colour not in config.colours:
                 continue
             raw = frame.colour_mask(colour, weak, config)
             if inside is not None:

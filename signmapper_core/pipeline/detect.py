@@ -22,7 +22,7 @@ from .colour import ColourFrame, Segment, find_colour_segments, merge_candidates
 from .config import PipelineConfig
 from .depth import merge_row_bands, sgbm_depth
 from .detection import Detection
-from .face_extent import FULL, candidate_entries, face_bbox, hole_candidates, measured_rim_bbox
+from .face_extent import FULL, candidate_entries, face_bbox, hole_candidates, rim_face_bboxes
 from .hough import hough_segments, radius_range_px, ring_colour_share
 from .locate import bbox_centre, locate
 from .planarity import segment_planarity
@@ -88,7 +88,7 @@ def size_to_format(seg: Segment, candidates, depth_m: float, camera: Camera, cat
     A round ``shape`` is sized by its diameter (:func:`round_face_diameter_px`), so a disc
     seen at an angle still fits its format. With ``image``, a face whose coloured part sits
     inside a white rim is also read with the rim measured in the image
-    (:func:`.face_extent.measured_rim_bbox`).
+    (:func:`.face_extent.rim_face_bboxes`).
 
     ``candidates``: (entry, colour extent) pairs, grouped by extent so that a
     coloured part inside a white rim or panel is sized as the whole face. Each
@@ -105,9 +105,7 @@ def size_to_format(seg: Segment, candidates, depth_m: float, camera: Camera, cat
         faces = [face_bbox(seg.bbox, ext)]
         rimmed = [e for e in group if e.shape == shape]
         if image is not None and ext != FULL and rimmed and seg.source == "colour":
-            rim = measured_rim_bbox(image, seg.bbox, seg.mask, ext, config.min_shape_fit)
-            if rim is not None and _iou(rim, faces[0]) < 0.8:  # the rim drawn otherwise than the template's
-                faces.append(rim)
+            faces += rim_face_bboxes(image, seg.bbox, seg.mask, ext, shape, config)  # rims drawn otherwise
         for face in faces:
             entries = group if face is faces[0] else rimmed
             if diameter is not None and ext == FULL:  # an oblique disc: both axes are its diameter

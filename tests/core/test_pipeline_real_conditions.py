@@ -52,7 +52,7 @@ def test_faded_ring_below_the_strong_saturation_floor_is_found_by_the_scene_pass
     image[120:181, 170:231] = _desaturate(image[120:181, 170:231], 0.3)  # ring saturation ~60 < 90
     hsv = cv2.cvtColor(image, cv2.COLOR_BGR2HSV)
     assert hsv[150, 172, 1] < 90
-    strong_only = find_colour_segments(image, None, PipelineConfig(weak_colour=False), 60)
+    strong_only = find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), 60)
     assert _red_boxes(strong_only) == []
     (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(), 60))
     assert _iou(box, (170, 120, 61, 61)) > 0.9
@@ -66,7 +66,7 @@ def test_faded_sign_is_detected_and_accepted_by_colour(catalogue):
     paste(image, _desaturate(bgr, 0.3), alpha, 300, 150)
     config = PipelineConfig(hough_enabled=False)
     assert detect_pair(image, constant_depth(z), None, CAMERA, POSE, catalogue,
-                       PipelineConfig(hough_enabled=False, weak_colour=False)) == []
+                       PipelineConfig(hough_enabled=False, weak_colour=False, field_pass=False)) == []
     (det,) = detect_pair(image, constant_depth(z), None, CAMERA, POSE, catalogue, config)
     assert det.template_id == "2.30-50" and det.source == "colour" and det.format == "normal"
 
@@ -77,7 +77,7 @@ def test_dim_magenta_tinted_ring_of_a_dull_scene_is_red():
     ring = cv2.cvtColor(np.uint8([[[155, 70, 95]]]), cv2.COLOR_HSV2BGR)[0, 0].tolist()
     cv2.circle(image, (200, 150), 25, ring, -1)
     cv2.circle(image, (200, 150), 20, (150, 150, 150), -1)
-    assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False), 50)) == []
+    assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), 50)) == []
     (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(), 50))
     assert _iou(box, (175, 125, 51, 51)) > 0.85
 
@@ -107,7 +107,7 @@ def test_two_pixel_ring_of_a_small_sign_survives_the_ring_scaled_opening():
     image = _ring_image(24, 2)
     assert ring_open_px(24, PipelineConfig()) == 1 and ring_open_px(60, PipelineConfig()) == 3
     # with a search space whose smallest face is 60 px the usual 3 px opening erases the ring
-    assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False), 60)) == []
+    assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), 60)) == []
     (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False), None))
     assert _iou(box, (188, 138, 25, 25)) > 0.85
 
@@ -213,3 +213,52 @@ def test_scene_pass_reads_the_white_balanced_image_when_asked():
     assert grey < plain.hsv[20:100, 20:100, 1].astype(float).mean() - 5  # the cast's false saturation is gone
     (box,) = _red_boxes(find_colour_segments(cast, None, PipelineConfig(white_balance=True), 60))
     assert _iou(box, (170, 120, 61, 61)) > 0.9
+
+
+def _priority_sign(image, x, y, n, part, yellow=(0, 200, 240), edge=(30, 30, 30)):
+    """A diamond face of ``n`` px at (x, y): thin dark edge, white rim, a yellow diamond ``part`` x the face."""
+    def diamond(size, off):
+        c = off + size // 2
+        return np.array([[c, off], [off + size, c], [c, off + size], [off, c]]) + np.array([x, y])
+
+    cv2.fillPoly(image, [diamond(n, 0)], edge)
+    cv2.fillPoly(image, [diamond(n - 6, 3)], WHITE)
+    inset = int(round(n * (1 - part) / 2))
+    cv2.fillPoly(image, [diamond(n - 2 * inset, inset)], yellow)
+
+
+def test_rim_blending_into_a_white_wall_is_measured_by_the_face_outer_edge(catalogue):
+    from signmapper_core.pipeline.face_extent import edge_rim_bbox, measured_rim_bbox
+
+    image = noisy_background(level=235, sigma=3)  # a white wall: the rim's white runs into it
+    n = 70
+    _priority_sign(image, 100, 60, n, 0.5)
+    (cand,) = [c for c in face_candidates(image, catalogue, hough=False) if c.segment.colour == "yellow"]
+    seg = cand.segment
+    assert measured_rim_bbox(image, seg.bbox, seg.mask, (0.11, 0.11, 0.89, 0.89)) is None
+    face = (100, 60, n + 1, n + 1)
+    assert _iou(edge_rim_bbox(image, seg.bbox, "diamond"), face) > 0.85
+    assert any(_iou(r.bbox, face) > 0.85 and "3.03" in r.template_ids for r in cand.readings)
+
+
+def test_outer_edge_is_not_invented_where_the_yellow_is_the_whole_face():
+    from signmapper_core.pipeline.face_extent import edge_rim_bbox
+
+    image = noisy_background(level=110, sigma=6)
+    c = np.array([[150, 100], [190, 140], [150, 180], [110, 140]])
+    cv2.fillPoly(image, [c], (0, 200, 240))  # a yellow diamond, no rim: grey texture all around
+    assert edge_rim_bbox(image, (110, 100, 81, 81), "diamond") is None
+
+
+def test_orange_yellow_priority_sign_is_found_by_the_scene_pass(catalogue):
+    # Germany's priority road on GTSDB photographs: hue 13-17, below the strong yellow band (16-35)
+    image = noisy_background(level=100, sigma=8)
+    orange = cv2.cvtColor(np.uint8([[[13, 200, 190]]]), cv2.COLOR_HSV2BGR)[0, 0].tolist()
+    _priority_sign(image, 200, 100, 70, 0.5, yellow=orange)
+    strong = find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), None)
+    assert [s for s in strong if s.colour == "yellow"] == []
+    (seg,) = [s for s in find_colour_segments(image, None, PipelineConfig(), None) if s.colour == "yellow"]
+    assert _iou(seg.bbox, (218, 118, 35, 35)) > 0.7
+    face = (200, 100, 71, 71)
+    assert any(_iou(r.bbox, face) > 0.8 and "3.03" in r.template_ids
+               for c in face_candidates(image, catalogue, hough=False) for r in c.readings)
