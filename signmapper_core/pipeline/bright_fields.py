@@ -98,13 +98,18 @@ def ring_contrast(image: np.ndarray, bbox, field: np.ndarray, ring_fraction: flo
     return float(q[2] / q[1]), float(q[2] / q[0]), float(b.sum() / f.sum())
 
 
-def is_red_ring(contrast, config: PipelineConfig) -> bool:
-    """Whether ring-to-field ratios (:func:`ring_contrast`) are those of a red ring around a white field."""
+def is_red_ring(contrast, config: PipelineConfig, share: float = 1.0) -> bool:
+    """Whether ring-to-field ratios (:func:`ring_contrast`) are those of a red ring around a white field.
+
+    ``share`` < 1 asks for that share of each margin over no contrast (ratios of 1) only: the
+    coarse look at the reduced image, whose means blur ring and field together.
+    """
     if contrast is None:
         return False
     red_green, red_blue, brightness = contrast
-    return (red_green >= config.field_ring_min_red_green and red_blue >= config.field_ring_min_red_blue
-            and brightness <= config.field_ring_max_brightness)
+    return (red_green >= 1.0 + share * (config.field_ring_min_red_green - 1.0)
+            and red_blue >= 1.0 + share * (config.field_ring_min_red_blue - 1.0)
+            and brightness <= 1.0 - share * (1.0 - config.field_ring_max_brightness))
 
 
 def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
@@ -112,28 +117,35 @@ def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: Pip
     """White fields enclosed by a red ring, found by brightness (the colour step makes them "hole" segments).
 
     ``search`` (bool, image size) limits where fields may lie; ``min_face_px`` is the
-    smallest face worth finding (default ``config.min_face_px``).
+    smallest face worth finding (its field is ~0.6 of it; never below ``config.field_min_px``).
+    Each bright component is first judged on the reduced image by means (cheap, loose), then
+    at full resolution by medians.
     """
-    scale = config.field_scale
-    grey = cv2.cvtColor(image, cv2.COLOR_BGR2GRAY)
-    if scale != 1.0:
-        grey = cv2.resize(grey, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA)
+    min_field = max(config.field_min_px, 0.6 * (min_face_px or 0))
+    # the reduced image keeps the smallest field field_min_side_px wide (labelling each level costs per pixel);
+    # an integer reduction, which OpenCV averages fast
+    scale = min(config.field_scale, 1.0 / max(1, int(min_field // config.field_min_side_px)))
+    small = image if scale == 1.0 else cv2.resize(image, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA)
+    grey = cv2.cvtColor(small, cv2.COLOR_BGR2GRAY)
     if search is not None:
         inside = cv2.resize(search.astype(np.uint8), (grey.shape[1], grey.shape[0]), interpolation=cv2.INTER_NEAREST)
         grey[inside == 0] = 0
     height, width = grey.shape
-    min_side = max(3, int(np.floor(max(config.field_min_px, 0.6 * (min_face_px or 0)) * scale)))
+    min_side = max(3, int(np.floor(min_field * scale)))
     max_side = int(np.ceil(config.max_face_px * scale))
     seen = np.zeros((0, 4), np.int64)  # boxes already judged (the same field recurs at neighbouring levels)
-    out = []
+    out: List[Field] = []
+    at_most = np.bincount(grey.ravel(), minlength=256).cumsum()  # pixels at or below each grey value
     for level in grey_levels(config.field_first_level, config.field_level_ratio):
+        if grey.size - at_most[level] < config.field_min_fill * min_side * min_side or at_most[level] < 4 * min_side:
+            continue  # too few pixels above the level for a field, or below it for a ring around one
         bright = cv2.compare(grey, level, cv2.CMP_GT)
         n, labels, stats, _ = cv2.connectedComponentsWithStats(bright, connectivity=4)
         if n < 2:
             break
         xs, ys, ws, hs, areas = stats[1:].T
         short, long_ = np.minimum(ws, hs), np.maximum(ws, hs)
-        keep = ((short >= min_side) & (long_ <= max_side) & (long_ <= 2 * short)
+        keep = ((short >= min_side) & (long_ <= max_side) & (long_ <= config.field_max_aspect * short)
                 & (areas >= config.field_min_fill * ws * hs) & (areas <= config.field_max_fill * ws * hs)
                 & (xs > 0) & (ys > 0) & (xs + ws < width) & (ys + hs < height))
         for k in np.flatnonzero(keep) + 1:
@@ -141,11 +153,30 @@ def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: Pip
             if len(seen) and _box_ious(box, seen).max() >= config.field_same_iou:
                 continue  # the same field at a lower level
             seen = np.vstack([seen, box[None]])
-            field = _ring_field(image, labels, k, tuple(int(v) for v in box), scale, config)
+            box = tuple(int(v) for v in box)
+            if not is_red_ring(_coarse_contrast(small, labels, k, box, config.field_ring_fraction), config,
+                               config.field_coarse_share):
+                continue
+            field = _ring_field(image, labels, k, box, scale, config)
             if field is not None and not any(_box_ious(np.asarray(field.bbox), np.asarray([f.bbox]))[0]
                                              >= config.pass_duplicate_iou for f in out):
                 out.append(field)  # the first level that shows a field in its ring stands for it
     return out
+
+
+def _coarse_contrast(small: np.ndarray, labels: np.ndarray, label: int, box, ring_fraction: float):
+    """:func:`ring_contrast` of component ``label`` on the reduced image, by means; None if cut."""
+    x, y, w, h = box
+    ring = max(1, int(round(ring_fraction * max(w, h))))
+    if x - ring < 0 or y - ring < 0 or x + w + ring > labels.shape[1] or y + h + ring > labels.shape[0]:
+        return None
+    window = (slice(y - ring, y + h + ring), slice(x - ring, x + w + ring))
+    field = cv2.compare(labels[window], float(label), cv2.CMP_EQ)
+    grown = cv2.dilate(field, cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * ring + 1, 2 * ring + 1)))
+    b = np.asarray(cv2.mean(small[window], mask=cv2.subtract(grown, field))[:3]) + 1.0
+    f = np.asarray(cv2.mean(small[window], mask=field)[:3]) + 1.0
+    q = b / f  # B, G, R
+    return float(q[2] / q[1]), float(q[2] / q[0]), float(b.sum() / f.sum())
 
 
 def _ring_field(image, labels, label: int, box, scale: float, config: PipelineConfig) -> Optional[Field]:

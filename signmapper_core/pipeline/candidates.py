@@ -20,7 +20,7 @@ from .colour import Segment, faces_with_split_pieces_merged, find_colour_segment
 from .config import PipelineConfig
 from .detect import segment_candidates, segment_shapes
 from .face_extent import FULL, face_bbox, rim_face_bboxes
-from .hough import hough_segments
+from .hough import hough_scale, hough_segments
 
 
 @dataclass(frozen=True)
@@ -86,7 +86,8 @@ def weak_rim_circles(image: np.ndarray, config: PipelineConfig, taken: Sequence[
     search = np.ones(image.shape[:2], bool) if search is None else search
     r_min, r_max = max(3, config.hough_min_face_px // 2), max(4, config.max_face_px // 2)
     out = []
-    for seg in hough_segments(image, search, r_min, r_max, (), config.hough_scale, config.hough_circularity,
+    scale = hough_scale(r_min, config.hough_scale, config.hough_min_radius_px)
+    for seg in hough_segments(image, search, r_min, r_max, (), scale, config.hough_circularity,
                               config.hough_edge_threshold, config.border_margin_px,
                               config.hough_tint_min_saturation):
         if (seg.colour in config.colours or seg.colour == "white") and not any(

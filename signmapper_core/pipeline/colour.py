@@ -76,13 +76,26 @@ def _kernel(size: int) -> Optional[np.ndarray]:
 
 
 def clean_mask(mask: np.ndarray, open_px: int, close_px: int) -> np.ndarray:
-    """Morphological opening (speckle) then closing (gaps in thin rings)."""
+    """Morphological opening (speckle) then closing (gaps in thin rings).
+
+    Only the box around the mask's pixels is filtered (sign colours are sparse in most frames);
+    the result is the same as filtering the whole mask.
+    """
+    x, y, w, h = cv2.boundingRect(mask)
+    if w == 0 or h == 0:
+        return mask.copy()
+    pad = max(open_px, close_px) + 1
+    x0, y0 = max(0, x - pad), max(0, y - pad)
+    x1, y1 = min(mask.shape[1], x + w + pad), min(mask.shape[0], y + h + pad)
+    out = np.zeros_like(mask)
+    part = mask[y0:y1, x0:x1]
     k_open, k_close = _kernel(open_px), _kernel(close_px)
     if k_open is not None:
-        mask = cv2.morphologyEx(mask, cv2.MORPH_OPEN, k_open)
+        part = cv2.morphologyEx(part, cv2.MORPH_OPEN, k_open)
     if k_close is not None:
-        mask = cv2.morphologyEx(mask, cv2.MORPH_CLOSE, k_close)
-    return mask
+        part = cv2.morphologyEx(part, cv2.MORPH_CLOSE, k_close)
+    out[y0:y1, x0:x1] = part
+    return out
 
 
 def colour_masks(
@@ -209,6 +222,13 @@ class ColourFrame:
     colourful: Optional[np.ndarray]  # uint8 0/255: chroma high enough for the scene pass
     weak_ranges: Dict[str, Tuple[HsvRange, ...]]
     masks: Dict[Tuple[str, bool], np.ndarray] = field(default_factory=dict)  # filled by colour_mask
+    fields: Dict[Optional[float], List[Segment]] = field(default_factory=dict)  # filled by ring_fields
+
+    def ring_fields(self, image: np.ndarray, config: PipelineConfig, small_face_px: Optional[float]) -> List[Segment]:
+        """The image's white fields in red rings (:func:`field_segments` of the whole image); found once per image."""
+        if small_face_px not in self.fields:
+            self.fields[small_face_px] = field_segments(image, None, config, small_face_px)
+        return self.fields[small_face_px]
 
     def colour_mask(self, colour: str, scene: bool, config: PipelineConfig) -> np.ndarray:
         """uint8 0/255 mask of one colour class, strong or of the scene pass; computed once per image."""
@@ -231,6 +251,14 @@ class ColourFrame:
         hsv_weak = hsv if balanced is image else cv2.cvtColor(balanced, cv2.COLOR_BGR2HSV)
         colourful = chroma_at_least(hsv_weak, config.weak_min_chroma).view(np.uint8) * 255
         return cls(hsv, hsv_weak, colourful, scene.weak_ranges)
+
+
+def _weak_outline(seg: Segment, colour: str, config: PipelineConfig) -> bool:
+    """Whether a scene-pass segment has an outline a face of its colour has (``config.weak_shapes``; any
+    ideal outline for colours not listed there)."""
+    shape = classify_shape(seg.mask, config.min_shape_fit, config.shape_fill_window).shape
+    allowed = config.weak_shapes.get(colour)
+    return shape is not None and (allowed is None or shape in allowed)
 
 
 def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
@@ -268,16 +296,25 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
                     continue
                 if weak and surround_share(raw, seg.bbox) > config.weak_max_surround:
                     continue  # part of a larger coloured area (sky, hedge, façade), not a face of its own
-                if weak and classify_shape(seg.mask, config.min_shape_fit, config.shape_fill_window).shape is None:
+                if weak and not _weak_outline(seg, colour, config):
                     continue  # the scene pass's extra segments must look like a face to be worth depth
                 if any(o.colour == colour and _box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou for o in out):
                     continue
                 out.append(seg)
     if config.field_pass and "red" in config.colours:
-        for seg in field_segments(image, search, config, small_face_px):
+        for seg in frame.ring_fields(image, config, small_face_px):
+            if search is not None and inside_share(seg, search) < 0.5:
+                continue  # a field mostly outside the search space
             if not any(o.colour == "red" and _box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou for o in out):
                 out.append(seg)
     return out
+
+
+def inside_share(seg: Segment, search: np.ndarray) -> float:
+    """Share of the segment's pixels inside the bool ``search`` mask."""
+    x, y, w, h = seg.bbox
+    mask = seg.mask > 0
+    return float(np.count_nonzero(search[y : y + h, x : x + w][mask])) / max(1, np.count_nonzero(mask))
 
 
 def field_segments(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,

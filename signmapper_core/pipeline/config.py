@@ -66,6 +66,9 @@ class PipelineConfig:
     # weak blue (sky, tinted asphalt: 16 segments per synthetic image) found no extra sign there
     weak_colours: Tuple[str, ...] = ("red", "yellow")
     weak_hues: Dict[str, Tuple[Tuple[int, int], ...]] = field(default_factory=lambda: dict(WEAK_HUES))
+    # outlines the scene pass keeps per colour (others: any ideal outline): the catalogue's yellow faces are
+    # diamonds (3.03, 3.04); weak yellow of other outlines is beige façade (synthetic drives: +60 % stereo rows)
+    weak_shapes: Dict[str, Tuple[str, ...]] = field(default_factory=lambda: {"yellow": ("diamond",)})
     weak_sat_factor: float = 1.0  # weak saturation floor = factor * the scene's median saturation + offset
     weak_sat_offset: float = 30.0  # GTSDB tune split: at 20, one more of 127 signs but 40 % more candidates
     weak_sat_min: int = 25  # below this, grey road and sky noise turns red/blue; Hough takes paler rims
@@ -87,7 +90,9 @@ class PipelineConfig:
     # white fields inside red rings found by brightness (bright_fields.py): in dim light a ring keeps no
     # usable saturation, but its field is still brighter than it and the ring still redder than the field
     field_pass: bool = True
-    field_scale: float = 0.5  # fields are sought on the grey image at this scale (a 30 px face: 12 px field)
+    field_scale: float = 0.5  # fields are sought on the grey image at this scale at most...
+    field_min_side_px: float = 8.0  # ...or less, where the smallest field sought stays this wide: a 4-14 m
+    # search space's smallest face (50 px at Full HD, field 30 px) is read at 1/3, half the cost at 0.5
     field_first_level: int = 12  # darkest grey threshold: dusk fields on GTSDB are 30-60 with rings of 15-25
     field_level_ratio: float = 1.25  # next threshold = this x the last: a ring darker than its field by this
     # ratio separates them at some level (GTSDB tune split: ring/field brightness 0.3-0.6 for 90 % of signs)
@@ -96,6 +101,8 @@ class PipelineConfig:
     field_min_px: int = 16
     field_min_fill: float = 0.35  # component area / box: a field's fill is 0.5 (triangle) to 0.79 (disc)
     field_max_fill: float = 0.95
+    field_max_aspect: float = 1.6  # longer / shorter box side: a disc turned 50 deg; no field on a sign of the
+    # tune split was longer (a fifth of all components are)
     field_same_iou: float = 0.85  # a component whose box overlaps one of a lower level this much is that one
     field_ring_fraction: float = 0.12  # band around a field read as its ring, x the field's size (SSV: 0.11)
     # the ring's colour relative to its field (per channel band / field): GTSDB tune split, components
@@ -104,6 +111,9 @@ class PipelineConfig:
     field_ring_min_red_green: float = 1.15
     field_ring_min_red_blue: float = 1.05
     field_ring_max_brightness: float = 0.85
+    # a component is first judged on the reduced image by means, asking this share of each margin above
+    # (GTSDB tune split: 15 % of the components pass, every field later kept on a sign among them)
+    field_coarse_share: float = 0.5
     max_face_px: int = 200  # largest round face the Hough route looks for without depth (radius range = cost)
     hough_min_face_px: int = 28  # smallest one: circles under ~28 px double its time and are mostly clutter
 
@@ -140,7 +150,9 @@ class PipelineConfig:
     sgbm_scale: float = 0.5  # SGBM on a downscaled pair: ~8x faster, disparity still sub-pixel
     sgbm_block_size: int = 5
     sgbm_rows_only: bool = True  # match only the row bands holding colour candidates
-    sgbm_row_margin_px: int = 24
+    sgbm_columns_only: bool = True  # within those rows, only windows around the candidates (their columns,
+    # and the largest disparity to their left): 40 % of the rows' width on synthetic drives, same detections
+    sgbm_row_margin_px: int = 24  # margin around candidates, rows and columns
     sgbm_far_factor: float = 2.0  # search disparities down to far*2: far points then match outside the range
     sgbm_uniqueness: int = 15
 
@@ -161,7 +173,10 @@ class PipelineConfig:
 
     # Hough fallback for faded or white/grey round signs
     hough_enabled: bool = True
-    hough_scale: float = 0.5
+    hough_scale: float = 0.5  # at most; less where the smallest radius sought allows (hough_min_radius_px)
+    # smallest radius sought, in pixels of the Hough image: a 4-14 m search space's smallest disc (r 20 px)
+    # is read at 1/3 (half the cost at 0.5); the colour step without depth (r 14 px) stays at 0.5
+    hough_min_radius_px: float = 6.0
     hough_circularity: float = 0.85  # param2 of HOUGH_GRADIENT_ALT
     hough_edge_threshold: float = 150.0  # param1 of HOUGH_GRADIENT_ALT
     hough_max_status: str = "review"  # status cap of Hough finds whose ring is not in full colour

@@ -118,3 +118,16 @@ def test_white_rim_around_yellow_is_not_read_as_a_field(catalogue):
     cv2.circle(image, (200, 150), 30, WHITE, -1)
     cv2.circle(image, (200, 150), 20, (0, 200, 240), -1)
     assert red_ring_fields(image, None, PipelineConfig()) == []
+
+
+def test_fields_are_found_once_per_frame_and_cut_by_the_search_space(catalogue):
+    from signmapper_core.pipeline.colour import ColourFrame
+
+    image = _dusk_scene(catalogue, "2.30-50", 50)
+    config = PipelineConfig()
+    frame = ColourFrame.of(image, config)
+    assert frame.ring_fields(image, config, None) is frame.ring_fields(image, config, None)
+    search = np.ones(image.shape[:2], bool)
+    assert len(find_colour_segments(image, search, config, None, frame)) == 1
+    search[:, 300:350] = False  # the field lies outside the search space
+    assert find_colour_segments(image, search, config, None, frame) == []

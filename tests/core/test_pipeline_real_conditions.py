@@ -262,3 +262,43 @@ def test_orange_yellow_priority_sign_is_found_by_the_scene_pass(catalogue):
     face = (200, 100, 71, 71)
     assert any(_iou(r.bbox, face) > 0.8 and "3.03" in r.template_ids
                for c in face_candidates(image, catalogue, hough=False) for r in c.readings)
+
+
+def test_scene_pass_keeps_yellow_only_in_a_diamond_outline():
+    # the catalogue's yellow faces are diamonds: a dim yellow disc or panel (a façade, a car) is no face
+    image = noisy_background(level=100, sigma=8)
+    dim_yellow = cv2.cvtColor(np.uint8([[[22, 80, 120]]]), cv2.COLOR_HSV2BGR)[0, 0].tolist()  # below the strong S
+    cv2.circle(image, (150, 150), 30, dim_yellow, -1)
+    cv2.rectangle(image, (300, 120), (370, 180), dim_yellow, -1)
+    c = np.array([[500, 110], [540, 150], [500, 190], [460, 150]])
+    cv2.fillPoly(image, [c], dim_yellow)
+    strong = find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), None)
+    assert [s for s in strong if s.colour == "yellow"] == []
+    (seg,) = [s for s in find_colour_segments(image, None, PipelineConfig(), None) if s.colour == "yellow"]
+    assert _iou(seg.bbox, (460, 110, 81, 81)) > 0.85
+
+
+def test_hough_and_field_images_are_reduced_by_whole_factors_as_far_as_the_smallest_size_allows():
+    from signmapper_core.pipeline.hough import hough_scale
+
+    assert hough_scale(14, 0.5, 6.0) == 0.5  # no depth: the smallest disc is 28 px
+    assert hough_scale(20, 0.5, 6.0) == pytest.approx(1 / 3)  # 4-14 m at Full HD
+    assert hough_scale(100, 0.5, 6.0) == pytest.approx(1 / 16)
+
+
+def test_cleaning_only_the_box_around_a_mask_gives_the_whole_mask_result():
+    from signmapper_core.pipeline.colour import _kernel, clean_mask
+
+    rng = np.random.default_rng(3)
+    for _ in range(50):
+        mask = np.zeros((120, 160), np.uint8)
+        for _ in range(int(rng.integers(0, 5))):
+            centre = (int(rng.integers(0, 160)), int(rng.integers(0, 120)))
+            cv2.circle(mask, centre, int(rng.integers(1, 12)), 255, int(rng.choice([-1, 1, 2])))
+        mask[rng.random(mask.shape) > 0.995] = 255
+        for open_px, close_px in ((3, 5), (1, 5), (2, 1)):
+            whole = mask
+            for op, size in ((cv2.MORPH_OPEN, open_px), (cv2.MORPH_CLOSE, close_px)):
+                if _kernel(size) is not None:
+                    whole = cv2.morphologyEx(whole, op, _kernel(size))
+            assert np.array_equal(clean_mask(mask, open_px, close_px), whole)
