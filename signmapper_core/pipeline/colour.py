@@ -305,9 +305,19 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
         for seg in frame.ring_fields(image, config, small_face_px):
             if search is not None and inside_share(seg, search) < 0.5:
                 continue  # a field mostly outside the search space
-            if not any(o.colour == "red" and _box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou for o in out):
+            if not any(o.colour == "red" and (_box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou
+                                              or _field_of(seg.bbox, o.bbox)) for o in out):
                 out.append(seg)
     return out
+
+
+def _field_of(field, outline, slack: int = 2) -> bool:
+    """Whether a field's box lies inside a segment's box and fills at least 30 % of it: the field of a
+    ring the colour passes outlined already (a disc's field fills ~70 % of its box, a triangle's ~50 %)."""
+    fx, fy, fw, fh = field
+    x, y, w, h = outline
+    inside = fx >= x - slack and fy >= y - slack and fx + fw <= x + w + slack and fy + fh <= y + h + slack
+    return inside and fw * fh >= 0.3 * w * h
 
 
 def inside_share(seg: Segment, search: np.ndarray) -> float:
