@@ -146,7 +146,7 @@ def segments_from_mask(
 ) -> List[Segment]:
     """Connected segments of ``mask`` as filled outer contours with bounding boxes.
 
-    Outlines with a solidity below ``min_solidity`` are replaced by their convex hull.
+    A component inside the hole of another is a segment of its own. Outlines with a solidity below ``min_solidity`` are replaced by their convex hull.
     With ``holes``, the enclosed fields of a segment (the white field inside a red
     ring or border) are segments too (source "hole"), unless the outer outline is
     just a ring around the field (box at most ``max_ring_ratio`` times the field's
@@ -154,11 +154,14 @@ def segments_from_mask(
     useless outer outline, but its field still has the face's shape.
     """
     height, width = mask.shape[:2]
-    mode = cv2.RETR_CCOMP if holes else cv2.RETR_EXTERNAL
-    contours, hierarchy = cv2.findContours(mask, mode, cv2.CHAIN_APPROX_NONE)
+    # two levels: outer outlines of every component, also of one inside another's hole (a sign's colour
+    # inside its white rim, in front of background of the same colour), and the holes
+    contours, hierarchy = cv2.findContours(mask, cv2.RETR_CCOMP, cv2.CHAIN_APPROX_NONE)
     out = []
     for k, contour in enumerate(contours):
         parent = hierarchy[0][k][3] if hierarchy is not None else -1
+        if parent >= 0 and not holes:
+            continue
         x, y, w, h = cv2.boundingRect(contour)
         if w < min_bbox_px or h < min_bbox_px:
             continue
@@ -194,21 +197,22 @@ def _ring_safe_max_px(config: PipelineConfig) -> float:
     return (config.morph_open_px + 1) / config.ring_fraction
 
 
-def surround_share(mask: np.ndarray, bbox, grow: float = 0.3) -> float:
-    """Share of ``mask`` pixels in the band around ``bbox`` (``grow`` x its size wide).
+def outline_surround_share(mask: np.ndarray, seg: Segment, grow: float) -> float:
+    """Share of ``mask`` pixels in the band around the segment's filled outline, ``grow`` x its size wide.
 
-    A sign stands out of its surroundings; a patch of sky between branches or of a
-    tinted façade has the same colour all around.
+    The band follows the outline, so a face whose coloured part sits in a white rim (a priority
+    road's yellow diamond) is surrounded by the rim, whatever colour lies beyond the face.
     """
     height, width = mask.shape[:2]
-    x, y, w, h = bbox
-    gx, gy = max(1, int(round(grow * w))), max(1, int(round(grow * h)))
-    x0, y0, x1, y1 = max(0, x - gx), max(0, y - gy), min(width, x + w + gx), min(height, y + h + gy)
-    band = (x1 - x0) * (y1 - y0) - w * h
-    if band <= 0:
-        return 0.0
-    outer = cv2.countNonZero(mask[y0:y1, x0:x1])
-    return (outer - cv2.countNonZero(mask[y : y + h, x : x + w])) / float(band)
+    x, y, w, h = seg.bbox
+    g = max(1, int(round(grow * max(w, h))))
+    x0, y0, x1, y1 = max(0, x - g), max(0, y - g), min(width, x + w + g), min(height, y + h + g)
+    outline = np.zeros((y1 - y0, x1 - x0), np.uint8)
+    outline[y - y0 : y - y0 + h, x - x0 : x - x0 + w] = seg.mask
+    band = cv2.subtract(cv2.dilate(outline, cv2.getStructuringElement(cv2.MORPH_RECT, (2 * g + 1, 2 * g + 1))),
+                        outline)
+    area = cv2.countNonZero(band)
+    return cv2.countNonZero(cv2.bitwise_and(mask[y0:y1, x0:x1], band)) / float(area) if area else 0.0
 
 
 @dataclass
@@ -294,7 +298,7 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
                                           min_hole_px=config.min_hole_px):
                 if max_side is not None and max(seg.bbox[2], seg.bbox[3]) > max_side:
                     continue
-                if weak and surround_share(raw, seg.bbox) > config.weak_max_surround:
+                if weak and outline_surround_share(raw, seg, config.weak_surround_px) > config.weak_max_surround:
                     continue  # part of a larger coloured area (sky, hedge, façade), not a face of its own
                 if weak and not _weak_outline(seg, colour, config):
                     continue  # the scene pass's extra segments must look like a face to be worth depth

@@ -81,8 +81,11 @@ class PipelineConfig:
     # of the same colour; only red faces have rings/borders around a field (blue fields are pictograms)
     hole_colours: Tuple[str, ...] = ("red",)
     min_hole_px: int = 60  # the field of a 30 px triangle is ~200 px; smaller holes are letters and gaps
-    weak_max_surround: float = 0.1  # a weak segment whose surrounding band is this coloured is background
-    # (tune split: 0.25 -> 0.1 cut candidates per image by a quarter and lost no sign)
+    weak_max_surround: float = 0.03  # a weak segment whose surrounding band is this coloured is background
+    weak_surround_px: float = 0.2  # that band follows the outline, this x the segment's size wide: within the
+    # white rim of a priority road (0.5 x its yellow), whose autumn trees are yellow too (a band around the
+    # box reached them). GTSDB tune split, signs >= 30 px: 0.1 -> 0.03 found 2 more (fewer false segments
+    # displaced true ones), 18.9 -> 15.6 candidates per image; 0.01 lost 4, 0 lost 14
     pass_duplicate_iou: float = 0.5  # a later pass's segment overlapping an earlier one this much is the same
     # morphology scaled to the ring: a round sign's ring is ~9.5 % of its diameter (SSV prohibition signs)
     ring_fraction: float = 0.09

@@ -302,3 +302,34 @@ def test_cleaning_only_the_box_around_a_mask_gives_the_whole_mask_result():
                 if _kernel(size) is not None:
                     whole = cv2.morphologyEx(whole, op, _kernel(size))
             assert np.array_equal(clean_mask(mask, open_px, close_px), whole)
+
+
+def test_priority_sign_among_yellow_autumn_leaves_is_kept_by_its_white_rim(catalogue):
+    # the band that tells a face from a patch of background follows the outline: here it lies in the rim
+    image = noisy_background(level=100, sigma=8)
+    leaves = cv2.cvtColor(np.uint8([[[20, 80, 110]]]), cv2.COLOR_HSV2BGR)[0, 0].tolist()  # dim autumn yellow
+    image[60:260, 140:380] = leaves
+    image = np.clip(image.astype(np.int16) + np.random.default_rng(1).normal(0, 4, image.shape), 0, 255).astype(
+        np.uint8)
+    _priority_sign(image, 220, 120, 80, 0.5, yellow=cv2.cvtColor(np.uint8([[[15, 170, 120]]]),
+                                                                 cv2.COLOR_HSV2BGR)[0, 0].tolist())
+    yellow = [s for s in find_colour_segments(image, None, PipelineConfig(), None) if s.colour == "yellow"]
+    assert [s for s in yellow if _iou(s.bbox, (240, 140, 41, 41)) > 0.7]  # the sign's yellow diamond
+    assert not [s for s in yellow if s.bbox[2] > 150]  # the leaves are no face
+
+
+def test_outline_surround_share_reads_the_band_along_the_outline():
+    from signmapper_core.pipeline.colour import Segment, outline_surround_share
+
+    mask = np.zeros((200, 200), np.uint8)
+    diamond = np.zeros((41, 41), np.uint8)
+    cv2.fillPoly(diamond, [np.array([[20, 0], [40, 20], [20, 40], [0, 20]])], 255)
+    seg = Segment("yellow", (80, 80, 41, 41), diamond, np.zeros((0, 1, 2), np.int32), 800, False)
+    mask[80:121, 80:121] = diamond
+    assert outline_surround_share(mask, seg, 0.2) == 0.0
+    mask[60:141, 60:141] = 255  # the colour all around: background
+    assert outline_surround_share(mask, seg, 0.2) == 1.0
+    mask[:] = 0
+    mask[80:121, 80:121] = diamond
+    mask[:, :70] = 255  # a coloured area 10 px beyond the box's left side: outside the band of a 41 px diamond
+    assert outline_surround_share(mask, seg, 0.2) == 0.0
