@@ -146,7 +146,8 @@ def segments_from_mask(
 ) -> List[Segment]:
     """Connected segments of ``mask`` as filled outer contours with bounding boxes.
 
-    A component inside the hole of another is a segment of its own. Outlines with a solidity below ``min_solidity`` are replaced by their convex hull.
+    A component inside the hole of another is a segment of its own. Outlines with a
+    solidity below ``min_solidity`` are replaced by their convex hull.
     With ``holes``, the enclosed fields of a segment (the white field inside a red
     ring or border) are segments too (source "hole"), unless the outer outline is
     just a ring around the field (box at most ``max_ring_ratio`` times the field's
