@@ -294,7 +294,8 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
             if inside is not None:
                 raw = cv2.bitwise_and(raw, inside)
             mask = clean_mask(raw, open_px, config.morph_close_px)
-            for seg in segments_from_mask(mask, colour, config.min_segment_px, config.min_bbox_px,
+            min_px = config.min_part_px.get(colour, config.min_segment_px)
+            for seg in segments_from_mask(mask, colour, min_px, config.min_bbox_px,
                                           config.border_margin_px, holes=colour in config.hole_colours,
                                           min_hole_px=config.min_hole_px):
                 if max_side is not None and max(seg.bbox[2], seg.bbox[3]) > max_side:

@@ -47,6 +47,9 @@ class PipelineConfig:
     morph_open_px: int = 3  # removes speckle
     morph_close_px: int = 5  # bridges small gaps in a sign's ring
     min_segment_px: int = 150  # smaller segments cannot be sized or classified reliably
+    # ...unless the colour is only a part of its face: a yellow diamond fills a quarter of a German priority
+    # road's box (a 30 px face: a 15 px diamond of ~110 px)
+    min_part_px: Dict[str, int] = field(default_factory=lambda: {"yellow": 90})
     min_bbox_px: int = 12
     search_close_px: int = 15  # holes of a given depth's search space this small are closed before it cuts colours
     search_grow_px: int = 31  # with SGBM depth the search space is grown by this much instead
@@ -129,6 +132,8 @@ class PipelineConfig:
     rim_edge_noise: float = 8.0  # Sobel units (~2 grey levels) added to the rim's strength: a spotless rim
     rim_border_scale: float = 1.15  # a dark border line's outer edge within this of its inner one (up to 7 %
     # of the face wide) ends the face; GTSDB's boxes end there
+    rim_blur_px: float = 1.5  # a part's colour segment misses this much of its blurred edge on each side
+    # (GTSDB: a 15 px priority-road diamond's face is 2.3-2.6 x its segment, not 2.0)
     rim_same_iou: float = 0.8  # a measured face box overlapping an earlier reading this much is that reading
 
     # shape

@@ -238,7 +238,7 @@ def outline_edge_profile(image: np.ndarray, segment_bbox, shape: str, scales: np
 
 
 def edge_rim_bbox(image: np.ndarray, segment_bbox, shape: str, max_scale: float = 2.4, inner_scale: float = 1.12,
-                  min_contrast: float = 3.0, noise: float = 8.0, border_scale: float = 1.15,
+                  min_contrast: float = 3.0, noise: float = 8.0, border_scale: float = 1.15, blur_px: float = 1.5,
                   step: float = 1.03) -> Optional[Tuple[int, int, int, int]]:
     """The face box of a coloured part inside a rim, from the face's outer edge; None if no clear edge.
 
@@ -249,9 +249,13 @@ def edge_rim_bbox(image: np.ndarray, segment_bbox, shape: str, max_scale: float 
     ``min_contrast`` x the weakest between them (+ ``noise``, Sobel units: ~2 grey levels);
     where a dark border line follows within ``border_scale``, its outer edge.
     Works where the white rim blends into a white wall or sky (the black border line
-    still is an edge), which :func:`measured_rim_bbox` cannot measure.
+    still is an edge), which :func:`measured_rim_bbox` cannot measure. A small part's colour
+    segment misses the blurred edge of its colour, ``blur_px`` on each side: both scale limits
+    grow by that share of the part.
     """
     x, y, w, h = segment_bbox
+    blur = 2.0 * blur_px / max(1, min(w, h))
+    max_scale, inner_scale = max_scale * (1.0 + blur), inner_scale + blur
     scales = step ** np.arange(int(np.floor(np.log(max_scale) / np.log(step))) + 1)
     profile = outline_edge_profile(image, segment_bbox, shape, scales)
     inner = int(np.argmax(np.where(scales <= inner_scale, profile, -1.0)))
@@ -290,7 +294,8 @@ def rim_face_bboxes(image: np.ndarray, segment_bbox, segment_mask: np.ndarray, e
     boxes = [face_bbox(segment_bbox, extent)]
     for box in (measured_rim_bbox(image, segment_bbox, segment_mask, extent, config.min_shape_fit),
                 edge_rim_bbox(image, segment_bbox, shape, config.rim_max_scale, config.rim_inner_scale,
-                              config.rim_edge_contrast, config.rim_edge_noise, config.rim_border_scale)):
+                              config.rim_edge_contrast, config.rim_edge_noise, config.rim_border_scale,
+                              config.rim_blur_px)):
         if box is not None and all(_box_iou(box, b) < config.rim_same_iou for b in boxes):
             boxes.append(box)
     return boxes[1:]
