@@ -19,7 +19,7 @@ import numpy as np
 from .colour import Segment, faces_with_split_pieces_merged, find_colour_segments
 from .config import PipelineConfig
 from .detect import segment_candidates, segment_shapes
-from .face_extent import FULL, face_bbox, rim_face_bboxes
+from .face_extent import FULL, face_bbox, rim_face_bboxes, ring_edge_bbox
 from .hough import hough_scale, hough_segments
 
 
@@ -63,6 +63,12 @@ def readings_of(seg: Segment, shapes, catalogue, config: PipelineConfig,
             same = tuple(i for i, s in zip(ids, entry_shapes) if s == shapes[0])
             for rim in rim_face_bboxes(image, seg.bbox, seg.mask, ext, shapes[0], config):
                 readings.append(FaceReading(rim, same))
+    if image is not None and seg.source == "hole":
+        same = tuple(dict.fromkeys(i for _, ids, entry_shapes in groups.values()
+                                   for i, s in zip(ids, entry_shapes) if s == shapes[0]))
+        ring = ring_edge_bbox(image, seg.bbox, shapes[0], config) if same else None
+        if ring is not None and all(_box_iou(ring, r.bbox) < config.rim_same_iou for r in readings):
+            readings.append(FaceReading(ring, same))
     return tuple(readings)
 
 

@@ -134,6 +134,8 @@ class PipelineConfig:
     # of the face wide) ends the face; GTSDB's boxes end there
     rim_blur_px: float = 1.5  # a part's colour segment misses this much of its blurred edge on each side
     # (GTSDB: a 15 px priority-road diamond's face is 2.3-2.6 x its segment, not 2.0)
+    ring_edge_max_scale: float = 1.8  # widest ring sought around a field: face / field (Swiss circles 1.21,
+    # triangles 1.4-1.56; GTSDB tune split: 1.4-1.9 to the annotated box)
     rim_same_iou: float = 0.8  # a measured face box overlapping an earlier reading this much is that reading
 
     # shape

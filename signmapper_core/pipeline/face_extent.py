@@ -299,3 +299,11 @@ def rim_face_bboxes(image: np.ndarray, segment_bbox, segment_mask: np.ndarray, e
         if box is not None and all(_box_iou(box, b) < config.rim_same_iou for b in boxes):
             boxes.append(box)
     return boxes[1:]
+
+
+def ring_edge_bbox(image: np.ndarray, field_bbox, shape: str, config) -> Optional[Tuple[int, int, int, int]]:
+    """The face box of a field inside a ring, from the ring's outer edge (:func:`edge_rim_bbox` with the
+    field as the part and the ring as the plain band); None if no clear edge. Ring widths differ between
+    designs (Germany's prohibition signs: face ~1.35 x field with their white border, the Swiss 1.21)."""
+    return edge_rim_bbox(image, field_bbox, shape, config.ring_edge_max_scale, config.rim_inner_scale,
+                         config.rim_edge_contrast, config.rim_edge_noise, config.rim_border_scale, config.rim_blur_px)
