@@ -19,8 +19,8 @@ import numpy as np
 from .colour import Segment, faces_with_split_pieces_merged, find_colour_segments
 from .config import PipelineConfig
 from .detect import segment_candidates, segment_shapes
-from .face_extent import FULL, face_bbox, measured_rim_bbox
-from .hough import hough_segments
+from .face_extent import FULL, face_bbox, rim_face_bboxes, ring_edge_bbox
+from .hough import hough_scale, hough_segments
 
 
 @dataclass(frozen=True)
@@ -49,7 +49,7 @@ def readings_of(seg: Segment, shapes, catalogue, config: PipelineConfig,
     """The face boxes (grouped by colour extent) and candidate ids of a segment of outline ``shapes``.
 
     With ``image``, a face with a white rim around its coloured part also gets the
-    reading of its rim as measured in the image (:func:`.face_extent.measured_rim_bbox`).
+    readings of its rim as measured in the image (:func:`.face_extent.rim_face_bboxes`).
     """
     groups: dict = {}
     for entry, ext in segment_candidates(seg, shapes, catalogue, config):
@@ -60,10 +60,15 @@ def readings_of(seg: Segment, shapes, catalogue, config: PipelineConfig,
     for ext, ids, entry_shapes in groups.values():
         readings.append(FaceReading(face_bbox(seg.bbox, ext), tuple(ids)))
         if image is not None and ext != FULL and seg.source == "colour" and shapes[0] in entry_shapes:
-            rim = measured_rim_bbox(image, seg.bbox, seg.mask, ext, config.min_shape_fit)
-            if rim is not None:
-                same = tuple(i for i, s in zip(ids, entry_shapes) if s == shapes[0])
+            same = tuple(i for i, s in zip(ids, entry_shapes) if s == shapes[0])
+            for rim in rim_face_bboxes(image, seg.bbox, seg.mask, ext, shapes[0], config):
                 readings.append(FaceReading(rim, same))
+    if image is not None and seg.source == "hole":
+        same = tuple(dict.fromkeys(i for _, ids, entry_shapes in groups.values()
+                                   for i, s in zip(ids, entry_shapes) if s == shapes[0]))
+        ring = ring_edge_bbox(image, seg.bbox, shapes[0], config) if same else None
+        if ring is not None and all(_box_iou(ring, r.bbox) < config.rim_same_iou for r in readings):
+            readings.append(FaceReading(ring, same))
     return tuple(readings)
 
 
@@ -87,7 +92,8 @@ def weak_rim_circles(image: np.ndarray, config: PipelineConfig, taken: Sequence[
     search = np.ones(image.shape[:2], bool) if search is None else search
     r_min, r_max = max(3, config.hough_min_face_px // 2), max(4, config.max_face_px // 2)
     out = []
-    for seg in hough_segments(image, search, r_min, r_max, (), config.hough_scale, config.hough_circularity,
+    scale = hough_scale(r_min, config.hough_scale, config.hough_min_radius_px)
+    for seg in hough_segments(image, search, r_min, r_max, (), scale, config.hough_circularity,
                               config.hough_edge_threshold, config.border_margin_px,
                               config.hough_tint_min_saturation):
         if (seg.colour in config.colours or seg.colour == "white") and not any(

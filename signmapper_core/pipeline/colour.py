@@ -12,7 +12,9 @@ this scene's lowered saturation floors (faded rings, dull light; see
 thinner than the opening, a pass with an opening scaled to that ring, kept to
 small segments. Only red faces have thin rings (blue and yellow faces are solid
 fields), so with the scene pass on, the small-ring pass reads the scene classes
-of ``config.weak_colours`` (red); without it, the strong classes of all colours.
+of the ring colours (``config.hole_colours``: red); without it, the strong classes
+of all colours. A last pass finds the white fields of red-ringed faces by their
+brightness, where the ring has too little colour left (:mod:`.bright_fields`).
 Segments of the scene classes must stand out of their surroundings and have a
 sign's outline; no pass adds a segment an earlier pass found.
 """
@@ -25,6 +27,7 @@ from typing import Dict, Iterable, List, Optional, Sequence, Tuple
 import cv2
 import numpy as np
 
+from .bright_fields import red_ring_fields
 from .config import HsvRange, PipelineConfig
 from .scene_colour import apply_gains, chroma_at_least, scene_colour
 from .shape import classify_shape
@@ -73,13 +76,26 @@ def _kernel(size: int) -> Optional[np.ndarray]:
 
 
 def clean_mask(mask: np.ndarray, open_px: int, close_px: int) -> np.ndarray:
-    """Morphological opening (speckle) then closing (gaps in thin rings)."""
+    """Morphological opening (speckle) then closing (gaps in thin rings).
+
+    Only the box around the mask's pixels is filtered (sign colours are sparse in most frames);
+    the result is the same as filtering the whole mask.
+    """
+    x, y, w, h = cv2.boundingRect(mask)
+    if w == 0 or h == 0:
+        return mask.copy()
+    pad = max(open_px, close_px) + 1
+    x0, y0 = max(0, x - pad), max(0, y - pad)
+    x1, y1 = min(mask.shape[1], x + w + pad), min(mask.shape[0], y + h + pad)
+    out = np.zeros_like(mask)
+    part = mask[y0:y1, x0:x1]
     k_open, k_close = _kernel(open_px), _kernel(close_px)
     if k_open is not None:
-        mask = cv2.morphologyEx(mask, cv2.MORPH_OPEN, k_open)
+        part = cv2.morphologyEx(part, cv2.MORPH_OPEN, k_open)
     if k_close is not None:
-        mask = cv2.morphologyEx(mask, cv2.MORPH_CLOSE, k_close)
-    return mask
+        part = cv2.morphologyEx(part, cv2.MORPH_CLOSE, k_close)
+    out[y0:y1, x0:x1] = part
+    return out
 
 
 def colour_masks(
@@ -130,7 +146,8 @@ def segments_from_mask(
 ) -> List[Segment]:
     """Connected segments of ``mask`` as filled outer contours with bounding boxes.
 
-    Outlines with a solidity below ``min_solidity`` are replaced by their convex hull.
+    A component inside the hole of another is a segment of its own. Outlines with a
+    solidity below ``min_solidity`` are replaced by their convex hull.
     With ``holes``, the enclosed fields of a segment (the white field inside a red
     ring or border) are segments too (source "hole"), unless the outer outline is
     just a ring around the field (box at most ``max_ring_ratio`` times the field's
@@ -138,11 +155,14 @@ def segments_from_mask(
     useless outer outline, but its field still has the face's shape.
     """
     height, width = mask.shape[:2]
-    mode = cv2.RETR_CCOMP if holes else cv2.RETR_EXTERNAL
-    contours, hierarchy = cv2.findContours(mask, mode, cv2.CHAIN_APPROX_NONE)
+    # two levels: outer outlines of every component, also of one inside another's hole (a sign's colour
+    # inside its white rim, in front of background of the same colour), and the holes
+    contours, hierarchy = cv2.findContours(mask, cv2.RETR_CCOMP, cv2.CHAIN_APPROX_NONE)
     out = []
     for k, contour in enumerate(contours):
         parent = hierarchy[0][k][3] if hierarchy is not None else -1
+        if parent >= 0 and not holes:
+            continue
         x, y, w, h = cv2.boundingRect(contour)
         if w < min_bbox_px or h < min_bbox_px:
             continue
@@ -178,21 +198,22 @@ def _ring_safe_max_px(config: PipelineConfig) -> float:
     return (config.morph_open_px + 1) / config.ring_fraction
 
 
-def surround_share(mask: np.ndarray, bbox, grow: float = 0.3) -> float:
-    """Share of ``mask`` pixels in the band around ``bbox`` (``grow`` x its size wide).
+def outline_surround_share(mask: np.ndarray, seg: Segment, grow: float) -> float:
+    """Share of ``mask`` pixels in the band around the segment's filled outline, ``grow`` x its size wide.
 
-    A sign stands out of its surroundings; a patch of sky between branches or of a
-    tinted façade has the same colour all around.
+    The band follows the outline, so a face whose coloured part sits in a white rim (a priority
+    road's yellow diamond) is surrounded by the rim, whatever colour lies beyond the face.
     """
     height, width = mask.shape[:2]
-    x, y, w, h = bbox
-    gx, gy = max(1, int(round(grow * w))), max(1, int(round(grow * h)))
-    x0, y0, x1, y1 = max(0, x - gx), max(0, y - gy), min(width, x + w + gx), min(height, y + h + gy)
-    band = (x1 - x0) * (y1 - y0) - w * h
-    if band <= 0:
-        return 0.0
-    outer = cv2.countNonZero(mask[y0:y1, x0:x1])
-    return (outer - cv2.countNonZero(mask[y : y + h, x : x + w])) / float(band)
+    x, y, w, h = seg.bbox
+    g = max(1, int(round(grow * max(w, h))))
+    x0, y0, x1, y1 = max(0, x - g), max(0, y - g), min(width, x + w + g), min(height, y + h + g)
+    outline = np.zeros((y1 - y0, x1 - x0), np.uint8)
+    outline[y - y0 : y - y0 + h, x - x0 : x - x0 + w] = seg.mask
+    band = cv2.subtract(cv2.dilate(outline, cv2.getStructuringElement(cv2.MORPH_RECT, (2 * g + 1, 2 * g + 1))),
+                        outline)
+    area = cv2.countNonZero(band)
+    return cv2.countNonZero(cv2.bitwise_and(mask[y0:y1, x0:x1], band)) / float(area) if area else 0.0
 
 
 @dataclass
@@ -206,6 +227,13 @@ class ColourFrame:
     colourful: Optional[np.ndarray]  # uint8 0/255: chroma high enough for the scene pass
     weak_ranges: Dict[str, Tuple[HsvRange, ...]]
     masks: Dict[Tuple[str, bool], np.ndarray] = field(default_factory=dict)  # filled by colour_mask
+    fields: Dict[Optional[float], List[Segment]] = field(default_factory=dict)  # filled by ring_fields
+
+    def ring_fields(self, image: np.ndarray, config: PipelineConfig, small_face_px: Optional[float]) -> List[Segment]:
+        """The image's white fields in red rings (:func:`field_segments` of the whole image); found once per image."""
+        if small_face_px not in self.fields:
+            self.fields[small_face_px] = field_segments(image, None, config, small_face_px)
+        return self.fields[small_face_px]
 
     def colour_mask(self, colour: str, scene: bool, config: PipelineConfig) -> np.ndarray:
         """uint8 0/255 mask of one colour class, strong or of the scene pass; computed once per image."""
@@ -230,6 +258,14 @@ class ColourFrame:
         return cls(hsv, hsv_weak, colourful, scene.weak_ranges)
 
 
+def _weak_outline(seg: Segment, colour: str, config: PipelineConfig) -> bool:
+    """Whether a scene-pass segment has an outline a face of its colour has (``config.weak_shapes``; any
+    ideal outline for colours not listed there)."""
+    shape = classify_shape(seg.mask, config.min_shape_fit, config.shape_fill_window).shape
+    allowed = config.weak_shapes.get(colour)
+    return shape is not None and (allowed is None or shape in allowed)
+
+
 def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
                          small_face_px: Optional[float] = None, frame: Optional[ColourFrame] = None) -> List[Segment]:
     """Colour segments of ``image`` (limited to the bool ``search`` mask when given), all passes.
@@ -242,32 +278,72 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
     frame = frame or ColourFrame.of(image, config)
     inside = None if search is None else search.astype(np.uint8) * 255
     small_open = ring_open_px(config.min_face_px if small_face_px is None else small_face_px, config)
-    passes = [(config.morph_open_px, None, False)]  # (opening, largest side kept, scene classes)
+    # (opening, largest side kept, scene classes, colours)
+    passes = [(config.morph_open_px, None, False, config.colours)]
     if config.weak_colour:
-        passes.append((config.morph_open_px, None, True))
+        passes.append((config.morph_open_px, None, True, config.weak_colours))
     if small_open < config.morph_open_px:
-        passes.append((small_open, _ring_safe_max_px(config), config.weak_colour))
+        rings = [c for c in config.weak_colours if c in config.hole_colours] if config.weak_colour else config.colours
+        passes.append((small_open, _ring_safe_max_px(config), config.weak_colour, rings))
     out: List[Segment] = []
-    for open_px, max_side, weak in passes:
-        for colour in config.colours:
-            if weak and colour not in config.weak_colours:
+    for open_px, max_side, weak, colours in passes:
+        for colour in colours:
+            if colour not in config.colours:
                 continue
             raw = frame.colour_mask(colour, weak, config)
             if inside is not None:
                 raw = cv2.bitwise_and(raw, inside)
             mask = clean_mask(raw, open_px, config.morph_close_px)
-            for seg in segments_from_mask(mask, colour, config.min_segment_px, config.min_bbox_px,
+            min_px = config.min_part_px.get(colour, config.min_segment_px)
+            for seg in segments_from_mask(mask, colour, min_px, config.min_bbox_px,
                                           config.border_margin_px, holes=colour in config.hole_colours,
                                           min_hole_px=config.min_hole_px):
                 if max_side is not None and max(seg.bbox[2], seg.bbox[3]) > max_side:
                     continue
-                if weak and surround_share(raw, seg.bbox) > config.weak_max_surround:
+                if weak and outline_surround_share(raw, seg, config.weak_surround_px) > config.weak_max_surround:
                     continue  # part of a larger coloured area (sky, hedge, façade), not a face of its own
-                if weak and classify_shape(seg.mask, config.min_shape_fit, config.shape_fill_window).shape is None:
+                if weak and not _weak_outline(seg, colour, config):
                     continue  # the scene pass's extra segments must look like a face to be worth depth
                 if any(o.colour == colour and _box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou for o in out):
                     continue
                 out.append(seg)
+    if config.field_pass and "red" in config.colours:
+        for seg in frame.ring_fields(image, config, small_face_px):
+            if search is not None and inside_share(seg, search) < 0.5:
+                continue  # a field mostly outside the search space
+            if not any(o.colour == "red" and (_box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou
+                                              or _field_of(seg.bbox, o.bbox)) for o in out):
+                out.append(seg)
+    return out
+
+
+def _field_of(field, outline, slack: int = 2) -> bool:
+    """Whether a field's box lies inside a segment's box and fills at least 30 % of it: the field of a
+    ring the colour passes outlined already (a disc's field fills ~70 % of its box, a triangle's ~50 %)."""
+    fx, fy, fw, fh = field
+    x, y, w, h = outline
+    inside = fx >= x - slack and fy >= y - slack and fx + fw <= x + w + slack and fy + fh <= y + h + slack
+    return inside and fw * fh >= 0.3 * w * h
+
+
+def inside_share(seg: Segment, search: np.ndarray) -> float:
+    """Share of the segment's pixels inside the bool ``search`` mask."""
+    x, y, w, h = seg.bbox
+    mask = seg.mask > 0
+    return float(np.count_nonzero(search[y : y + h, x : x + w][mask])) / max(1, np.count_nonzero(mask))
+
+
+def field_segments(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
+                   small_face_px: Optional[float] = None) -> List[Segment]:
+    """The white fields of red-ringed faces found by brightness (:mod:`.bright_fields`) as "hole" segments."""
+    height, width = image.shape[:2]
+    m = config.border_margin_px
+    out = []
+    for found in red_ring_fields(image, search, config, small_face_px):
+        x, y, w, h = found.bbox
+        touches = x <= m or y <= m or x + w >= width - m or y + h >= height - m
+        out.append(Segment("red", found.bbox, found.mask, found.contour, int(np.count_nonzero(found.mask)),
+                           touches, "hole"))
     return out
 
 

@@ -21,11 +21,12 @@ DEFAULT_HSV_RANGES: Dict[str, Tuple[HsvRange, ...]] = {
 
 # Hue bands of the weak (scene-adaptive) pass; its saturation/value floors come from the scene.
 # Faded or dimly lit red rings on real photographs (GTSDB tune split) drift to magenta: hue 150-165
-# held ~40 % of their ring pixels, where hardly any background is.
+# held ~40 % of their ring pixels, where hardly any background is. Germany's priority road (3.03) is
+# orange-yellow: hue 13-17 on most GTSDB photographs, below the strong band's 16.
 WEAK_HUES: Dict[str, Tuple[Tuple[int, int], ...]] = {
     "red": ((0, 10), (150, 179)),
     "blue": ((98, 132),),
-    "yellow": ((16, 35),),
+    "yellow": ((11, 35),),
 }
 
 
@@ -48,6 +49,9 @@ class PipelineConfig:
     morph_open_px: int = 3  # removes speckle
     morph_close_px: int = 5  # bridges small gaps in a sign's ring
     min_segment_px: int = 150  # smaller segments cannot be sized or classified reliably
+    # ...unless the colour is only a part of its face: a yellow diamond fills a quarter of a German priority
+    # road's box (a 30 px face: a 15 px diamond of ~110 px)
+    min_part_px: Dict[str, int] = field(default_factory=lambda: {"yellow": 90})
     min_bbox_px: int = 12
     search_close_px: int = 15  # holes of a given depth's search space this small are closed before it cuts colours
     search_grow_px: int = 31  # with SGBM depth the search space is grown by this much instead
@@ -62,11 +66,14 @@ class PipelineConfig:
     # higher lets beige façades pass for grey and tints the road blue (synthetic drives)
     max_white_balance_gain: float = 1.2  # a scene of mostly one colour (hedge, sky) must not be over-corrected
     weak_colour: bool = True
-    # colours the scene pass looks for: faded red rings were the misses on GTSDB's tune split; weak blue
-    # (sky, tinted asphalt: 16 segments per synthetic image) and weak yellow (beige façades: 3.5) found
-    # no extra sign there (tune subset: same 90 of 127 found, 19.2 -> 16.9 candidates per image)
-    weak_colours: Tuple[str, ...] = ("red",)
+    # colours the scene pass looks for: faded red rings and dim or orange-yellow priority roads (3.03) were
+    # misses on GTSDB's tune split (weak yellow: +11 of 382 signs >= 30 px, +2.3 candidates per image);
+    # weak blue (sky, tinted asphalt: 16 segments per synthetic image) found no extra sign there
+    weak_colours: Tuple[str, ...] = ("red", "yellow")
     weak_hues: Dict[str, Tuple[Tuple[int, int], ...]] = field(default_factory=lambda: dict(WEAK_HUES))
+    # outlines the scene pass keeps per colour (others: any ideal outline): the catalogue's yellow faces are
+    # diamonds (3.03, 3.04); weak yellow of other outlines is beige façade (synthetic drives: +60 % stereo rows)
+    weak_shapes: Dict[str, Tuple[str, ...]] = field(default_factory=lambda: {"yellow": ("diamond",)})
     weak_sat_factor: float = 1.0  # weak saturation floor = factor * the scene's median saturation + offset
     weak_sat_offset: float = 30.0  # GTSDB tune split: at 20, one more of 127 signs but 40 % more candidates
     weak_sat_min: int = 25  # below this, grey road and sky noise turns red/blue; Hough takes paler rims
@@ -79,14 +86,59 @@ class PipelineConfig:
     # of the same colour; only red faces have rings/borders around a field (blue fields are pictograms)
     hole_colours: Tuple[str, ...] = ("red",)
     min_hole_px: int = 60  # the field of a 30 px triangle is ~200 px; smaller holes are letters and gaps
-    weak_max_surround: float = 0.1  # a weak segment whose surrounding band is this coloured is background
-    # (tune split: 0.25 -> 0.1 cut candidates per image by a quarter and lost no sign)
+    weak_max_surround: float = 0.03  # a weak segment whose surrounding band is this coloured is background
+    weak_surround_px: float = 0.2  # that band follows the outline, this x the segment's size wide: within the
+    # white rim of a priority road (0.5 x its yellow), whose autumn trees are yellow too (a band around the
+    # box reached them). GTSDB tune split, signs >= 30 px: 0.1 -> 0.03 found 2 more (fewer false segments
+    # displaced true ones), 18.9 -> 15.6 candidates per image; 0.01 lost 4, 0 lost 14
     pass_duplicate_iou: float = 0.5  # a later pass's segment overlapping an earlier one this much is the same
     # morphology scaled to the ring: a round sign's ring is ~9.5 % of its diameter (SSV prohibition signs)
     ring_fraction: float = 0.09
     min_face_px: int = 16  # smallest face to find without depth (GTSDB's smallest signs); sets the small pass
+    # white fields inside red rings found by brightness (bright_fields.py): in dim light a ring keeps no
+    # usable saturation, but its field is still brighter than it and the ring still redder than the field
+    field_pass: bool = True
+    field_scale: float = 0.5  # fields are sought on the grey image at this scale at most...
+    field_min_side_px: float = 8.0  # ...or less, where the smallest field sought stays this wide: a 4-14 m
+    # search space's smallest face (50 px at Full HD, field 30 px) is read at 1/3, half the cost at 0.5
+    field_first_level: int = 12  # darkest grey threshold: dusk fields on GTSDB are 30-60 with rings of 15-25
+    field_level_ratio: float = 1.25  # next threshold = this x the last: a ring darker than its field by this
+    # ratio separates them at some level (GTSDB tune split: ring/field brightness 0.3-0.6 for 90 % of signs)
+    # smallest field side (px): the field of a 30 px triangle is ~20 x 17; smaller components (leaves, windows,
+    # JPEG blocks) were 80 % of all (GTSDB tune split) and hardly a sign among them
+    field_min_px: int = 16
+    field_min_fill: float = 0.35  # component area / box: a field's fill is 0.5 (triangle) to 0.79 (disc)
+    field_max_fill: float = 0.95
+    field_max_aspect: float = 1.6  # longer / shorter box side: a disc turned 50 deg; no field on a sign of the
+    # tune split was longer (a fifth of all components are)
+    field_same_iou: float = 0.85  # a component whose box overlaps one of a lower level this much is that one
+    field_ring_fraction: float = 0.12  # band around a field read as its ring, x the field's size (SSV: 0.11)
+    # the ring's colour relative to its field (per channel band / field): GTSDB tune split, components
+    # with a field's box and fill: red rings R/G, R/B 1.2-2.2 (10th-75th percentile), other
+    # components 1.0-1.25 (25th-90th); the band is darker than the field on signs (median 0.49)
+    field_ring_min_red_green: float = 1.15
+    field_ring_min_red_blue: float = 1.05
+    field_ring_max_brightness: float = 0.85
+    # a component is first judged on the reduced image by means, asking this share of each margin above
+    # (GTSDB tune split: 15 % of the components pass, every field later kept on a sign among them)
+    field_coarse_share: float = 0.5
     max_face_px: int = 200  # largest round face the Hough route looks for without depth (radius range = cost)
     hough_min_face_px: int = 28  # smallest one: circles under ~28 px double its time and are mostly clutter
+
+    # a coloured part inside a white rim (yellow diamond, blue panel): the face box is also measured in the
+    # image, as the white rim and as the face's outer edge (face_extent.rim_face_bboxes); rim widths differ
+    # between designs (Germany's priority road: face = 2.0 x its yellow, the Swiss template 1.28 x)
+    rim_max_scale: float = 2.4  # widest rim sought: face / coloured part (GTSDB tune split: 1.9-2.3 for 3.03)
+    rim_inner_scale: float = 1.12  # the part's own edge lies within this of its colour segment's box
+    rim_edge_contrast: float = 3.0  # the outer edge is this x stronger than the plain rim inside it
+    rim_edge_noise: float = 8.0  # Sobel units (~2 grey levels) added to the rim's strength: a spotless rim
+    rim_border_scale: float = 1.15  # a dark border line's outer edge within this of its inner one (up to 7 %
+    # of the face wide) ends the face; GTSDB's boxes end there
+    rim_blur_px: float = 1.5  # a part's colour segment misses this much of its blurred edge on each side
+    # (GTSDB: a 15 px priority-road diamond's face is 2.3-2.6 x its segment, not 2.0)
+    ring_edge_max_scale: float = 1.8  # widest ring sought around a field: face / field (Swiss circles 1.21,
+    # triangles 1.4-1.56; GTSDB tune split: 1.4-1.9 to the annotated box)
+    rim_same_iou: float = 0.8  # a measured face box overlapping an earlier reading this much is that reading
 
     # shape
     min_shape_fit: float = 0.68  # IoU with the best ideal outline; real triangles with rounded corners
@@ -111,7 +163,9 @@ class PipelineConfig:
     sgbm_scale: float = 0.5  # SGBM on a downscaled pair: ~8x faster, disparity still sub-pixel
     sgbm_block_size: int = 5
     sgbm_rows_only: bool = True  # match only the row bands holding colour candidates
-    sgbm_row_margin_px: int = 24
+    sgbm_columns_only: bool = True  # within those rows, only windows around the candidates (their columns,
+    # and the largest disparity to their left): 40 % of the rows' width on synthetic drives, same detections
+    sgbm_row_margin_px: int = 24  # margin around candidates, rows and columns
     sgbm_far_factor: float = 2.0  # search disparities down to far*2: far points then match outside the range
     sgbm_uniqueness: int = 15
 
@@ -132,7 +186,10 @@ class PipelineConfig:
 
     # Hough fallback for faded or white/grey round signs
     hough_enabled: bool = True
-    hough_scale: float = 0.5
+    hough_scale: float = 0.5  # at most; less where the smallest radius sought allows (hough_min_radius_px)
+    # smallest radius sought, in pixels of the Hough image: a 4-14 m search space's smallest disc (r 20 px)
+    # is read at 1/3 (half the cost at 0.5); the colour step without depth (r 14 px) stays at 0.5
+    hough_min_radius_px: float = 6.0
     hough_circularity: float = 0.85  # param2 of HOUGH_GRADIENT_ALT
     hough_edge_threshold: float = 150.0  # param1 of HOUGH_GRADIENT_ALT
     hough_max_status: str = "review"  # status cap of Hough finds whose ring is not in full colour

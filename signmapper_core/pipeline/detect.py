@@ -21,10 +21,10 @@ from .classifiers import accept_threshold, classifier_for, marginal_min_score, m
 from .classify import surround_score
 from .colour import ColourFrame, Segment, find_colour_segments, merge_candidates, split_face_merges
 from .config import PipelineConfig
-from .depth import merge_row_bands, sgbm_depth
+from .depth import largest_disparity_px, match_windows, merge_row_bands, sgbm_depth
 from .detection import Detection
-from .face_extent import FULL, candidate_entries, face_bbox, hole_candidates, measured_rim_bbox
-from .hough import hough_segments, radius_range_px, ring_colour_share
+from .face_extent import FULL, candidate_entries, face_bbox, hole_candidates, rim_face_bboxes
+from .hough import hough_scale, hough_segments, radius_range_px, ring_colour_share
 from .locate import bbox_centre, locate
 from .planarity import segment_planarity
 from .search_space import close_holes, grow, search_space_mask
@@ -89,7 +89,7 @@ def size_to_format(seg: Segment, candidates, depth_m: float, camera: Camera, cat
     A round ``shape`` is sized by its diameter (:func:`round_face_diameter_px`), so a disc
     seen at an angle still fits its format. With ``image``, a face whose coloured part sits
     inside a white rim is also read with the rim measured in the image
-    (:func:`.face_extent.measured_rim_bbox`).
+    (:func:`.face_extent.rim_face_bboxes`).
 
     ``candidates``: (entry, colour extent) pairs, grouped by extent so that a
     coloured part inside a white rim or panel is sized as the whole face. Each
@@ -106,9 +106,7 @@ def size_to_format(seg: Segment, candidates, depth_m: float, camera: Camera, cat
         faces = [face_bbox(seg.bbox, ext)]
         rimmed = [e for e in group if e.shape == shape]
         if image is not None and ext != FULL and rimmed and seg.source == "colour":
-            rim = measured_rim_bbox(image, seg.bbox, seg.mask, ext, config.min_shape_fit)
-            if rim is not None and _iou(rim, faces[0]) < 0.8:  # the rim drawn otherwise than the template's
-                faces.append(rim)
+            faces += rim_face_bboxes(image, seg.bbox, seg.mask, ext, shape, config)  # rims drawn otherwise
         for face in faces:
             entries = group if face is faces[0] else rimmed
             if diameter is not None and ext == FULL:  # an oblique disc: both axes are its diameter
@@ -271,27 +269,32 @@ def _round_diameters(catalogue, config: PipelineConfig) -> List[float]:
 
 def _ensure_depth(left, depth, right, camera, catalogue, config: PipelineConfig, roi: Roi,
                   frame: Optional[ColourFrame] = None) -> np.ndarray:
-    """The given depth, or SGBM depth over the rows that can hold a sign in ``roi``."""
+    """The given depth, or SGBM depth over the rows (or windows) that can hold a sign in ``roi``."""
     if depth is not None:
         return np.asarray(depth, dtype=np.float32)
     if right is None:
         raise ValueError("no depth map and no right image: cannot compute depth")
     x0, y0, x1, y1 = roi
-    bands = [(y0, y1)]
+    bands, windows = [(y0, y1)], None
     if config.sgbm_rows_only:
-        # Colour candidates before depth: match only their rows (the Hough fallback then sees only these).
-        # Segments that cannot be a face (or half of one, a coloured part of a panel) anywhere in the
-        # search space are left out.
+        # Colour candidates before depth: match only their rows, or only windows around them (the Hough
+        # fallback then sees only these). Segments that cannot be a face (or half of one, a coloured part
+        # of a panel) anywhere in the search space are left out.
         segs = colour_segments(left, None, config, roi, smallest_face_px(camera, catalogue, config), frame)
         heights = [h for e in catalogue for (_, h) in e.formats.values()] or [0.4, 1.5]
         max_px = 1.3 * max(heights) * camera.fy / config.near_m
         min_px = 0.5 * min(heights) * camera.fy / config.far_m
-        bands = [(s.bbox[1], s.bbox[1] + s.bbox[3]) for s in segs if min_px <= s.bbox[3] <= max_px]
-        bands = merge_row_bands(bands, left.shape[0], config.sgbm_row_margin_px)
+        boxes = [s.bbox for s in segs if min_px <= s.bbox[3] <= max_px]
+        if config.sgbm_columns_only:
+            reach = largest_disparity_px(camera, config.near_m, config.far_m, config.sgbm_scale,
+                                         config.sgbm_far_factor)
+            windows = match_windows(boxes, left.shape[1], left.shape[0], config.sgbm_row_margin_px,
+                                    config.sgbm_row_margin_px, reach)
+        bands = merge_row_bands([(y, y + h) for _, y, _, h in boxes], left.shape[0], config.sgbm_row_margin_px)
     if not bands:
         return np.full(left.shape[:2], np.nan, dtype=np.float32)
     return sgbm_depth(left, right, camera, config.near_m, config.far_m, config.sgbm_scale,
-                      config.sgbm_block_size, bands, config.sgbm_far_factor, config.sgbm_uniqueness)
+                      config.sgbm_block_size, bands, config.sgbm_far_factor, config.sgbm_uniqueness, windows)
 
 
 class _Timer:
@@ -367,7 +370,8 @@ def _hough_detections(left, depth, search, camera, pose, catalogue, config: Pipe
         r_min, r_max = radius_range_px(camera.fx, config.near_m, config.far_m, _round_diameters(catalogue, config))
         taken = [d.bbox for d in found]
         sub = search[y0:y1, x0:x1]
-        for seg in hough_segments(left[y0:y1, x0:x1], sub, r_min, r_max, (), config.hough_scale,
+        scale = hough_scale(r_min, config.hough_scale, config.hough_min_radius_px)
+        for seg in hough_segments(left[y0:y1, x0:x1], sub, r_min, r_max, (), scale,
                                   config.hough_circularity, config.hough_edge_threshold, config.border_margin_px,
                                   config.hough_tint_min_saturation):
             seg = _shift_segment(seg, x0, y0)

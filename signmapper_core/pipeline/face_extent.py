@@ -187,3 +187,123 @@ def measured_rim_bbox(image: np.ndarray, segment_bbox, segment_mask: np.ndarray,
     if seg_shape.shape is None or face_shape.shape != seg_shape.shape:
         return None
     return (x0 + bx, y0 + by, bw, bh)
+
+
+def outline_samples(shape: str, count: int = 96) -> Tuple[np.ndarray, np.ndarray]:
+    """(points, outward normals), each (N, 2), evenly along the ideal outline of ``shape`` in the unit box."""
+    from .shape import IDEAL_POLYGONS
+
+    if shape not in IDEAL_POLYGONS:  # a circle (or an unknown shape: its inscribed ellipse)
+        t = np.linspace(0.0, 2.0 * np.pi, count, endpoint=False)
+        normals = np.stack([np.cos(t), np.sin(t)], axis=1)
+        return 0.5 + 0.5 * normals, normals
+    corners = np.asarray(IDEAL_POLYGONS[shape], float)
+    centre = corners.mean(axis=0)
+    sides = np.roll(corners, -1, axis=0) - corners
+    lengths = np.linalg.norm(sides, axis=1)
+    points, normals = [], []
+    for a, side, length in zip(corners, sides, lengths):
+        n = max(2, int(round(count * length / lengths.sum())))
+        points.append(a + ((np.arange(n) + 0.5) / n)[:, None] * side)
+        normal = np.array([side[1], -side[0]]) / length
+        normals.append(np.repeat((normal if np.dot(a - centre, normal) > 0 else -normal)[None], n, axis=0))
+    return np.vstack(points), np.vstack(normals)
+
+
+def outline_edge_profile(image: np.ndarray, segment_bbox, shape: str, scales: np.ndarray) -> np.ndarray:
+    """Median edge strength across the ideal ``shape`` outline of the segment's box scaled by each of ``scales``
+    about its centre (0 where the outline leaves the image)."""
+    x, y, w, h = segment_bbox
+    cx, cy = x + w / 2.0, y + h / 2.0
+    reach = float(scales.max()) * max(w, h) / 2.0 + 3
+    height, width = image.shape[:2]
+    x0, y0 = int(max(0, cx - reach)), int(max(0, cy - reach))
+    x1, y1 = int(min(width, cx + reach + 1)), int(min(height, cy + reach + 1))
+    grey = cv2.GaussianBlur(cv2.cvtColor(image[y0:y1, x0:x1], cv2.COLOR_BGR2GRAY), (3, 3), 0)
+    gx, gy = cv2.Sobel(grey, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(grey, cv2.CV_32F, 0, 1, ksize=3)
+    points, normals = outline_samples(shape)
+    out = np.zeros(len(scales))
+    for k, s in enumerate(scales):
+        fw, fh = s * w, s * h
+        px = np.round(cx - fw / 2.0 + points[:, 0] * fw - 0.5 - x0).astype(int)
+        py = np.round(cy - fh / 2.0 + points[:, 1] * fh - 0.5 - y0).astype(int)
+        inside = (px >= 0) & (py >= 0) & (px < gx.shape[1]) & (py < gx.shape[0])
+        if inside.mean() < 0.8:
+            continue
+        n = normals[inside] / np.array([fw, fh])  # the normal of the outline stretched to the box
+        n /= np.linalg.norm(n, axis=1, keepdims=True)
+        px, py = px[inside], py[inside]
+        out[k] = float(np.median(np.abs(gx[py, px] * n[:, 0] + gy[py, px] * n[:, 1])))
+    return out
+
+
+def edge_rim_bbox(image: np.ndarray, segment_bbox, shape: str, max_scale: float = 2.4, inner_scale: float = 1.12,
+                  min_contrast: float = 3.0, noise: float = 8.0, border_scale: float = 1.15, blur_px: float = 1.5,
+                  step: float = 1.03) -> Optional[Tuple[int, int, int, int]]:
+    """The face box of a coloured part inside a rim, from the face's outer edge; None if no clear edge.
+
+    The part's box is scaled about its centre from 1 to ``max_scale`` (geometric steps of
+    ``step``), the ideal outline of ``shape`` laid at each scale: the part's own edge is the
+    strongest within ``inner_scale``, then the rim (a plain band, weak edges), then the face's
+    outer edge. The outer edge is the local maximum beyond the part whose strength is at least
+    ``min_contrast`` x the weakest between them (+ ``noise``, Sobel units: ~2 grey levels);
+    where a dark border line follows within ``border_scale``, its outer edge.
+    Works where the white rim blends into a white wall or sky (the black border line
+    still is an edge), which :func:`measured_rim_bbox` cannot measure. A small part's colour
+    segment misses the blurred edge of its colour, ``blur_px`` on each side: both scale limits
+    grow by that share of the part.
+    """
+    x, y, w, h = segment_bbox
+    blur = 2.0 * blur_px / max(1, min(w, h))
+    max_scale, inner_scale = max_scale * (1.0 + blur), inner_scale + blur
+    scales = step ** np.arange(int(np.floor(np.log(max_scale) / np.log(step))) + 1)
+    profile = outline_edge_profile(image, segment_bbox, shape, scales)
+    inner = int(np.argmax(np.where(scales <= inner_scale, profile, -1.0)))
+    best, best_k = 0.0, None
+    for k in range(inner + 2, len(scales) - 1):
+        if profile[k] < profile[k - 1] or profile[k] < profile[k + 1]:
+            continue
+        contrast = profile[k] / (profile[inner:k].min() + noise)
+        if contrast > best:
+            best, best_k = contrast, k
+    if best_k is None or best < min_contrast:
+        return None
+    # a dark border line has two edges: the face ends at its outer one, a strong maximum just beyond
+    outer = [k for k in range(best_k + 1, len(scales) - 1) if scales[k] <= border_scale * scales[best_k]
+             and profile[k] >= profile[k - 1] and profile[k] >= profile[k + 1] and profile[k] >= 0.6 * profile[best_k]]
+    s = scales[outer[-1] if outer else best_k]
+    fw, fh = s * w, s * h
+    return (int(round(x + w / 2.0 - fw / 2.0)), int(round(y + h / 2.0 - fh / 2.0)), int(round(fw)), int(round(fh)))
+
+
+def _box_iou(a, b) -> float:
+    ax, ay, aw, ah = a
+    bx, by, bw, bh = b
+    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
+    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
+    inter = iw * ih
+    return inter / float(aw * ah + bw * bh - inter) if inter else 0.0
+
+
+def rim_face_bboxes(image: np.ndarray, segment_bbox, segment_mask: np.ndarray, extent: Extent, shape: str,
+                    config) -> List[Tuple[int, int, int, int]]:
+    """Face boxes of a coloured part inside a rim measured in the image, beyond the template's own
+    (``face_bbox(segment_bbox, extent)``): the white rim (:func:`measured_rim_bbox`) and the outer edge
+    (:func:`edge_rim_bbox`), each kept when it differs from the boxes before it (IoU < ``config.rim_same_iou``).
+    """
+    boxes = [face_bbox(segment_bbox, extent)]
+    for box in (measured_rim_bbox(image, segment_bbox, segment_mask, extent, config.min_shape_fit),
+                edge_rim_bbox(image, segment_bbox, shape, config.rim_max_scale, config.rim_inner_scale,
+                              config.rim_edge_contrast, config.rim_edge_noise, config.rim_border_scale,
+                              config.rim_blur_px)):
+        if box is not None and all(_box_iou(box, b) < config.rim_same_iou for b in boxes):
+            boxes.append(box)
+    return boxes[1:]
+
+
+def ring_edge_bbox(image: np.ndarray, field_bbox, shape: str, config) -> Optional[Tuple[int, int, int, int]]:
+    """The face box of a field inside a ring, from the ring's outer edge (:func:`edge_rim_bbox` with the
+    field as the part and the ring as the plain band); None if no clear edge. Ring widths differ between
+    designs (Germany's prohibition signs: face ~1.35 x field with their white border, the Swiss 1.21)."""
+    return edge_rim_bbox(image, field_bbox, shape, config.ring_edge_max_scale, config.rim_inner_scale,
+                         config.rim_edge_contrast, config.rim_edge_noise, config.rim_border_scale, config.rim_blur_px)

@@ -19,6 +19,7 @@ from .colour import Segment, hsv_mask
 
 # Hue bins (OpenCV 0-179) for naming the weak colour of a Hough circle's ring.
 # Dim red rings drift to magenta (hue 150-165 on GTSDB photographs), as in config.WEAK_HUES.
+HOUGH_DP = 1.5
 WEAK_HUES = {"red": ((0, 10), (150, 179)), "yellow": ((16, 35),), "blue": ((95, 135),)}
 
 
@@ -27,6 +28,12 @@ def radius_range_px(fx: float, near_m: float, far_m: float, diameters_m: Sequenc
     lo = min(diameters_m) * fx / (2.0 * far_m) * (1.0 - slack)
     hi = max(diameters_m) * fx / (2.0 * near_m) * (1.0 + slack)
     return max(3, int(np.floor(lo))), int(np.ceil(hi))
+
+
+def hough_scale(r_min: float, scale: float, min_radius_px: float) -> float:
+    """Scale of the Hough image: ``scale``, or an integer reduction (fast to average) that keeps the
+    smallest radius sought at least ``min_radius_px`` (the transform's cost grows with the edge pixels)."""
+    return float(min(scale, 1.0 / max(1, int(r_min // min_radius_px))))
 
 
 def find_circles(
@@ -50,7 +57,7 @@ def find_circles(
     grey[mask < 128] = 0
     lo, hi = max(2, int(r_min * scale)), max(3, int(np.ceil(r_max * scale)))
     circles = cv2.HoughCircles(
-        grey, cv2.HOUGH_GRADIENT_ALT, dp=1.5, minDist=max(4, lo), param1=edge_threshold,
+        grey, cv2.HOUGH_GRADIENT_ALT, dp=HOUGH_DP, minDist=max(4, lo), param1=edge_threshold,
         param2=circularity, minRadius=lo, maxRadius=hi,
     )
     if circles is None:

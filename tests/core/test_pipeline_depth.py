@@ -3,7 +3,13 @@ import numpy as np
 import pytest
 from pipeline_scenes import CAMERA
 
-from signmapper_core.pipeline.depth import disparity_range, merge_row_bands, sgbm_depth
+from signmapper_core.pipeline.depth import (
+    disparity_range,
+    largest_disparity_px,
+    match_windows,
+    merge_row_bands,
+    sgbm_depth,
+)
 
 
 def _textured_pair(disparity, seed=0):
@@ -69,3 +75,27 @@ def test_merge_row_bands():
     assert merge_row_bands([(50, 60), (10, 20), (58, 70)], 100, 5) == [(5, 25), (45, 75)]
     assert merge_row_bands([(0, 10), (95, 100)], 100, 10) == [(0, 20), (85, 100)]
     assert merge_row_bands([], 100, 5) == []
+
+
+def test_match_windows_take_the_candidates_columns_and_their_disparity_reach():
+    boxes = [(400, 100, 40, 40), (470, 110, 30, 30), (100, 300, 20, 20)]
+    windows = match_windows(boxes, 640, 400, 10, 10, 150)
+    # the two boxes side by side share a band and, with their reach, one span; the third has its own
+    assert windows == [(240, 90, 510, 150), (0, 290, 130, 330)]
+    assert match_windows([], 640, 400, 10, 10, 150) == []
+
+
+def test_sgbm_on_windows_matches_them_like_the_whole_rows_and_leaves_the_rest_nan():
+    disparity = 90  # 6 m
+    left, right = _textured_pair(disparity)
+    reach = largest_disparity_px(CAMERA, 4.0, 14.0, 0.5, 2.0)
+    assert reach >= CAMERA.fx * CAMERA.baseline_m / 4.0
+    (window,) = match_windows([(400, 120, 60, 40)], CAMERA.width, CAMERA.height, 10, 10, reach)
+    depth = sgbm_depth(left, right, CAMERA, 4.0, 14.0, scale=0.5, far_factor=2.0, windows=[window])
+    rows = sgbm_depth(left, right, CAMERA, 4.0, 14.0, scale=0.5, far_factor=2.0, row_bands=[(110, 170)])
+    kept = np.isfinite(depth)
+    ys, xs = np.nonzero(kept)
+    assert (ys.min(), ys.max() + 1) == (110, 170) and (xs.min(), xs.max() + 1) == (390, 470)
+    box = depth[120:160, 400:460]
+    assert np.mean(np.abs(box - 6.0) < 0.15) > 0.95
+    assert np.mean(np.abs(box - rows[120:160, 400:460]) < 0.05) > 0.95

@@ -52,7 +52,7 @@ def test_faded_ring_below_the_strong_saturation_floor_is_found_by_the_scene_pass
     image[120:181, 170:231] = _desaturate(image[120:181, 170:231], 0.3)  # ring saturation ~60 < 90
     hsv = cv2.cvtColor(image, cv2.COLOR_BGR2HSV)
     assert hsv[150, 172, 1] < 90
-    strong_only = find_colour_segments(image, None, PipelineConfig(weak_colour=False), 60)
+    strong_only = find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), 60)
     assert _red_boxes(strong_only) == []
     (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(), 60))
     assert _iou(box, (170, 120, 61, 61)) > 0.9
@@ -66,7 +66,7 @@ def test_faded_sign_is_detected_and_accepted_by_colour(catalogue):
     paste(image, _desaturate(bgr, 0.3), alpha, 300, 150)
     config = PipelineConfig(hough_enabled=False)
     assert detect_pair(image, constant_depth(z), None, CAMERA, POSE, catalogue,
-                       PipelineConfig(hough_enabled=False, weak_colour=False)) == []
+                       PipelineConfig(hough_enabled=False, weak_colour=False, field_pass=False)) == []
     (det,) = detect_pair(image, constant_depth(z), None, CAMERA, POSE, catalogue, config)
     assert det.template_id == "2.30-50" and det.source == "colour" and det.format == "normal"
 
@@ -77,7 +77,7 @@ def test_dim_magenta_tinted_ring_of_a_dull_scene_is_red():
     ring = cv2.cvtColor(np.uint8([[[155, 70, 95]]]), cv2.COLOR_HSV2BGR)[0, 0].tolist()
     cv2.circle(image, (200, 150), 25, ring, -1)
     cv2.circle(image, (200, 150), 20, (150, 150, 150), -1)
-    assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False), 50)) == []
+    assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), 50)) == []
     (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(), 50))
     assert _iou(box, (175, 125, 51, 51)) > 0.85
 
@@ -107,7 +107,7 @@ def test_two_pixel_ring_of_a_small_sign_survives_the_ring_scaled_opening():
     image = _ring_image(24, 2)
     assert ring_open_px(24, PipelineConfig()) == 1 and ring_open_px(60, PipelineConfig()) == 3
     # with a search space whose smallest face is 60 px the usual 3 px opening erases the ring
-    assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False), 60)) == []
+    assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), 60)) == []
     (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False), None))
     assert _iou(box, (188, 138, 25, 25)) > 0.85
 
@@ -212,3 +212,123 @@ def test_scene_pass_reads_the_white_balanced_image_when_asked():
     assert grey < plain.hsv[20:100, 20:100, 1].astype(float).mean() - 5  # the cast's false saturation is gone
     (box,) = _red_boxes(find_colour_segments(cast, None, PipelineConfig(white_balance=True), 60))
     assert _iou(box, (170, 120, 61, 61)) > 0.9
+
+
+def _priority_sign(image, x, y, n, part, yellow=(0, 200, 240), edge=(30, 30, 30)):
+    """A diamond face of ``n`` px at (x, y): thin dark edge, white rim, a yellow diamond ``part`` x the face."""
+    def diamond(size, off):
+        c = off + size // 2
+        return np.array([[c, off], [off + size, c], [c, off + size], [off, c]]) + np.array([x, y])
+
+    cv2.fillPoly(image, [diamond(n, 0)], edge)
+    cv2.fillPoly(image, [diamond(n - 6, 3)], WHITE)
+    inset = int(round(n * (1 - part) / 2))
+    cv2.fillPoly(image, [diamond(n - 2 * inset, inset)], yellow)
+
+
+def test_rim_blending_into_a_white_wall_is_measured_by_the_face_outer_edge(catalogue):
+    from signmapper_core.pipeline.face_extent import edge_rim_bbox, measured_rim_bbox
+
+    image = noisy_background(level=235, sigma=3)  # a white wall: the rim's white runs into it
+    n = 70
+    _priority_sign(image, 100, 60, n, 0.5)
+    (cand,) = [c for c in face_candidates(image, catalogue, hough=False) if c.segment.colour == "yellow"]
+    seg = cand.segment
+    assert measured_rim_bbox(image, seg.bbox, seg.mask, (0.11, 0.11, 0.89, 0.89)) is None
+    face = (100, 60, n + 1, n + 1)
+    assert _iou(edge_rim_bbox(image, seg.bbox, "diamond"), face) > 0.85
+    assert any(_iou(r.bbox, face) > 0.85 and "3.03" in r.template_ids for r in cand.readings)
+
+
+def test_outer_edge_is_not_invented_where_the_yellow_is_the_whole_face():
+    from signmapper_core.pipeline.face_extent import edge_rim_bbox
+
+    image = noisy_background(level=110, sigma=6)
+    c = np.array([[150, 100], [190, 140], [150, 180], [110, 140]])
+    cv2.fillPoly(image, [c], (0, 200, 240))  # a yellow diamond, no rim: grey texture all around
+    assert edge_rim_bbox(image, (110, 100, 81, 81), "diamond") is None
+
+
+def test_orange_yellow_priority_sign_is_found_by_the_scene_pass(catalogue):
+    # Germany's priority road on GTSDB photographs: hue 13-17, below the strong yellow band (16-35)
+    image = noisy_background(level=100, sigma=8)
+    orange = cv2.cvtColor(np.uint8([[[13, 200, 190]]]), cv2.COLOR_HSV2BGR)[0, 0].tolist()
+    _priority_sign(image, 200, 100, 70, 0.5, yellow=orange)
+    strong = find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), None)
+    assert [s for s in strong if s.colour == "yellow"] == []
+    (seg,) = [s for s in find_colour_segments(image, None, PipelineConfig(), None) if s.colour == "yellow"]
+    assert _iou(seg.bbox, (218, 118, 35, 35)) > 0.7
+    face = (200, 100, 71, 71)
+    assert any(_iou(r.bbox, face) > 0.8 and "3.03" in r.template_ids
+               for c in face_candidates(image, catalogue, hough=False) for r in c.readings)
+
+
+def test_scene_pass_keeps_yellow_only_in_a_diamond_outline():
+    # the catalogue's yellow faces are diamonds: a dim yellow disc or panel (a façade, a car) is no face
+    image = noisy_background(level=100, sigma=8)
+    dim_yellow = cv2.cvtColor(np.uint8([[[22, 80, 120]]]), cv2.COLOR_HSV2BGR)[0, 0].tolist()  # below the strong S
+    cv2.circle(image, (150, 150), 30, dim_yellow, -1)
+    cv2.rectangle(image, (300, 120), (370, 180), dim_yellow, -1)
+    c = np.array([[500, 110], [540, 150], [500, 190], [460, 150]])
+    cv2.fillPoly(image, [c], dim_yellow)
+    strong = find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), None)
+    assert [s for s in strong if s.colour == "yellow"] == []
+    (seg,) = [s for s in find_colour_segments(image, None, PipelineConfig(), None) if s.colour == "yellow"]
+    assert _iou(seg.bbox, (460, 110, 81, 81)) > 0.85
+
+
+def test_hough_and_field_images_are_reduced_by_whole_factors_as_far_as_the_smallest_size_allows():
+    from signmapper_core.pipeline.hough import hough_scale
+
+    assert hough_scale(14, 0.5, 6.0) == 0.5  # no depth: the smallest disc is 28 px
+    assert hough_scale(20, 0.5, 6.0) == pytest.approx(1 / 3)  # 4-14 m at Full HD
+    assert hough_scale(100, 0.5, 6.0) == pytest.approx(1 / 16)
+
+
+def test_cleaning_only_the_box_around_a_mask_gives_the_whole_mask_result():
+    from signmapper_core.pipeline.colour import _kernel, clean_mask
+
+    rng = np.random.default_rng(3)
+    for _ in range(50):
+        mask = np.zeros((120, 160), np.uint8)
+        for _ in range(int(rng.integers(0, 5))):
+            centre = (int(rng.integers(0, 160)), int(rng.integers(0, 120)))
+            cv2.circle(mask, centre, int(rng.integers(1, 12)), 255, int(rng.choice([-1, 1, 2])))
+        mask[rng.random(mask.shape) > 0.995] = 255
+        for open_px, close_px in ((3, 5), (1, 5), (2, 1)):
+            whole = mask
+            for op, size in ((cv2.MORPH_OPEN, open_px), (cv2.MORPH_CLOSE, close_px)):
+                if _kernel(size) is not None:
+                    whole = cv2.morphologyEx(whole, op, _kernel(size))
+            assert np.array_equal(clean_mask(mask, open_px, close_px), whole)
+
+
+def test_priority_sign_among_yellow_autumn_leaves_is_kept_by_its_white_rim(catalogue):
+    # the band that tells a face from a patch of background follows the outline: here it lies in the rim
+    image = noisy_background(level=100, sigma=8)
+    leaves = cv2.cvtColor(np.uint8([[[20, 80, 110]]]), cv2.COLOR_HSV2BGR)[0, 0].tolist()  # dim autumn yellow
+    image[60:260, 140:380] = leaves
+    image = np.clip(image.astype(np.int16) + np.random.default_rng(1).normal(0, 4, image.shape), 0, 255).astype(
+        np.uint8)
+    _priority_sign(image, 220, 120, 80, 0.5, yellow=cv2.cvtColor(np.uint8([[[15, 170, 120]]]),
+                                                                 cv2.COLOR_HSV2BGR)[0, 0].tolist())
+    yellow = [s for s in find_colour_segments(image, None, PipelineConfig(), None) if s.colour == "yellow"]
+    assert [s for s in yellow if _iou(s.bbox, (240, 140, 41, 41)) > 0.7]  # the sign's yellow diamond
+    assert not [s for s in yellow if s.bbox[2] > 150]  # the leaves are no face
+
+
+def test_outline_surround_share_reads_the_band_along_the_outline():
+    from signmapper_core.pipeline.colour import Segment, outline_surround_share
+
+    mask = np.zeros((200, 200), np.uint8)
+    diamond = np.zeros((41, 41), np.uint8)
+    cv2.fillPoly(diamond, [np.array([[20, 0], [40, 20], [20, 40], [0, 20]])], 255)
+    seg = Segment("yellow", (80, 80, 41, 41), diamond, np.zeros((0, 1, 2), np.int32), 800, False)
+    mask[80:121, 80:121] = diamond
+    assert outline_surround_share(mask, seg, 0.2) == 0.0
+    mask[60:141, 60:141] = 255  # the colour all around: background
+    assert outline_surround_share(mask, seg, 0.2) == 1.0
+    mask[:] = 0
+    mask[80:121, 80:121] = diamond
+    mask[:, :70] = 255  # a coloured area 10 px beyond the box's left side: outside the band of a 41 px diamond
+    assert outline_surround_share(mask, seg, 0.2) == 0.0

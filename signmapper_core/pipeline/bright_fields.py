@@ -1,0 +1,197 @@
+"""Red-ringed faces found by their white field: the sign carries its own white reference.
+
+In dim light (dusk, shade, an overcast backlight) the red ring of a prohibition or
+danger sign keeps hardly any saturation: its hue drifts with the camera's cast and
+JPEG noise, and no colour threshold separates it from the dark trees around it.
+What survives is the sign's structure: a field brighter than the ring enclosing it.
+So this pass looks for fields by brightness, on a ladder of grey levels (at each,
+the bright connected regions whose box and fill could be a face's field), and keeps
+a field only when
+
+- the band around it (where the ring is) is darker than the field, and
+- that band is red *relative to the field*: the field is white by design, so the
+  ring's colour is judged against it, a white balance local to the sign.
+
+A kept field is a segment like the field the colour pass finds inside a red ring
+(source ``"hole"``), so the face is grown from it by the templates' field extents.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import List, Optional, Tuple
+
+import cv2
+import numpy as np
+
+from .config import PipelineConfig
+from .shape import classify_shape
+
+# shapes of the fields red rings and borders enclose (triangles, discs, the octagon's field is no field:
+# STOP is a red field with white letters)
+FIELD_SHAPES = ("circle", "triangle", "triangle-down")
+
+
+@dataclass(frozen=True)
+class Field:
+    """A white field inside a red ring, in full-image pixels."""
+
+    bbox: Tuple[int, int, int, int]  # x, y, w, h
+    mask: np.ndarray  # uint8 0/255 filled outline in ``bbox``
+    contour: np.ndarray  # outer contour, full-image coordinates
+
+
+def grey_levels(first: int, ratio: float) -> List[int]:
+    """The ladder of grey thresholds: ``first``, then each ``ratio`` times the last, below 255.
+
+    A geometric ladder: a field and its ring differ by a ratio of brightness (their
+    reflectances), whatever the light.
+    """
+    if first < 1 or ratio <= 1.0:
+        raise ValueError(f"grey levels need first >= 1 and ratio > 1, got {first}, {ratio}")
+    levels, level = [], float(first)
+    while level < 255:
+        levels.append(int(round(level)))
+        level = max(level * ratio, level + 1)
+    return levels
+
+
+def _box_ious(box: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """IoU of one box (x, y, w, h) with each row of ``boxes``."""
+    x0 = np.maximum(box[0], boxes[:, 0])
+    y0 = np.maximum(box[1], boxes[:, 1])
+    x1 = np.minimum(box[0] + box[2], boxes[:, 0] + boxes[:, 2])
+    y1 = np.minimum(box[1] + box[3], boxes[:, 1] + boxes[:, 3])
+    inter = np.clip(x1 - x0, 0, None) * np.clip(y1 - y0, 0, None)
+    return inter / (box[2] * box[3] + boxes[:, 2] * boxes[:, 3] - inter)
+
+
+def ring_contrast(image: np.ndarray, bbox, field: np.ndarray, ring_fraction: float) -> Optional[Tuple[float, float,
+                                                                                                      float]]:
+    """(R/G, R/B, brightness) of the band around a field relative to the field itself; None if cut.
+
+    ``field``: uint8 0/255 mask of the field in ``bbox`` (full-image pixels). The band is
+    ``ring_fraction`` x the field's size wide, one pixel off the field's edge (edge pixels
+    mix both). Each channel's band median is divided by its field median: a red ring around a
+    white field gives R/G and R/B above 1 whatever the light's colour, and a brightness ratio
+    below 1.
+    """
+    x, y, w, h = bbox
+    ring = max(2, int(round(ring_fraction * max(w, h))))
+    pad = ring + 2
+    height, width = image.shape[:2]
+    if x - pad < 0 or y - pad < 0 or x + w + pad > width or y + h + pad > height:
+        return None
+    crop = image[y - pad : y + h + pad, x - pad : x + w + pad]
+    mask = np.zeros(crop.shape[:2], np.uint8)
+    mask[pad : pad + h, pad : pad + w] = field
+    edge = cv2.dilate(mask, np.ones((3, 3), np.uint8))
+    outer = cv2.dilate(mask, cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * ring + 3, 2 * ring + 3)))
+    band = cv2.subtract(outer, edge)
+    inner = cv2.erode(mask, np.ones((3, 3), np.uint8))
+    if not cv2.countNonZero(band) or not cv2.countNonZero(inner):
+        return None
+    # medians: the field's pictogram (digits, a truck) and background past a thin ring are minorities
+    b = np.median(crop[band > 0], axis=0) + 1.0
+    f = np.median(crop[inner > 0], axis=0) + 1.0
+    q = b / f  # B, G, R
+    return float(q[2] / q[1]), float(q[2] / q[0]), float(b.sum() / f.sum())
+
+
+def is_red_ring(contrast, config: PipelineConfig, share: float = 1.0) -> bool:
+    """Whether ring-to-field ratios (:func:`ring_contrast`) are those of a red ring around a white field.
+
+    ``share`` < 1 asks for that share of each margin over no contrast (ratios of 1) only: the
+    coarse look at the reduced image, whose means blur ring and field together.
+    """
+    if contrast is None:
+        return False
+    red_green, red_blue, brightness = contrast
+    return (red_green >= 1.0 + share * (config.field_ring_min_red_green - 1.0)
+            and red_blue >= 1.0 + share * (config.field_ring_min_red_blue - 1.0)
+            and brightness <= 1.0 - share * (1.0 - config.field_ring_max_brightness))
+
+
+def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
+                    min_face_px: Optional[float] = None) -> List[Field]:
+    """White fields enclosed by a red ring, found by brightness (the colour step makes them "hole" segments).
+
+    ``search`` (bool, image size) limits where fields may lie; ``min_face_px`` is the
+    smallest face worth finding (its field is ~0.6 of it; never below ``config.field_min_px``).
+    Each bright component is first judged on the reduced image by means (cheap, loose), then
+    at full resolution by medians.
+    """
+    min_field = max(config.field_min_px, 0.6 * (min_face_px or 0))
+    # the reduced image keeps the smallest field field_min_side_px wide (labelling each level costs per pixel);
+    # an integer reduction, which OpenCV averages fast
+    scale = min(config.field_scale, 1.0 / max(1, int(min_field // config.field_min_side_px)))
+    small = image if scale == 1.0 else cv2.resize(image, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA)
+    grey = cv2.cvtColor(small, cv2.COLOR_BGR2GRAY)
+    if search is not None:
+        inside = cv2.resize(search.astype(np.uint8), (grey.shape[1], grey.shape[0]), interpolation=cv2.INTER_NEAREST)
+        grey[inside == 0] = 0
+    height, width = grey.shape
+    min_side = max(3, int(np.floor(min_field * scale)))
+    max_side = int(np.ceil(config.max_face_px * scale))
+    seen = np.zeros((0, 4), np.int64)  # boxes already judged (the same field recurs at neighbouring levels)
+    out: List[Field] = []
+    at_most = np.bincount(grey.ravel(), minlength=256).cumsum()  # pixels at or below each grey value
+    for level in grey_levels(config.field_first_level, config.field_level_ratio):
+        if grey.size - at_most[level] < config.field_min_fill * min_side * min_side or at_most[level] < 4 * min_side:
+            continue  # too few pixels above the level for a field, or below it for a ring around one
+        bright = cv2.compare(grey, level, cv2.CMP_GT)
+        n, labels, stats, _ = cv2.connectedComponentsWithStats(bright, connectivity=4)
+        if n < 2:
+            break
+        xs, ys, ws, hs, areas = stats[1:].T
+        short, long_ = np.minimum(ws, hs), np.maximum(ws, hs)
+        keep = ((short >= min_side) & (long_ <= max_side) & (long_ <= config.field_max_aspect * short)
+                & (areas >= config.field_min_fill * ws * hs) & (areas <= config.field_max_fill * ws * hs)
+                & (xs > 0) & (ys > 0) & (xs + ws < width) & (ys + hs < height))
+        for k in np.flatnonzero(keep) + 1:
+            box = stats[k, :4]
+            if len(seen) and _box_ious(box, seen).max() >= config.field_same_iou:
+                continue  # the same field at a lower level
+            seen = np.vstack([seen, box[None]])
+            box = tuple(int(v) for v in box)
+            if not is_red_ring(_coarse_contrast(small, labels, k, box, config.field_ring_fraction), config,
+                               config.field_coarse_share):
+                continue
+            field = _ring_field(image, labels, k, box, scale, config)
+            if field is not None and not any(_box_ious(np.asarray(field.bbox), np.asarray([f.bbox]))[0]
+                                             >= config.pass_duplicate_iou for f in out):
+                out.append(field)  # the first level that shows a field in its ring stands for it
+    return out
+
+
+def _coarse_contrast(small: np.ndarray, labels: np.ndarray, label: int, box, ring_fraction: float):
+    """:func:`ring_contrast` of component ``label`` on the reduced image, by means; None if cut."""
+    x, y, w, h = box
+    ring = max(1, int(round(ring_fraction * max(w, h))))
+    if x - ring < 0 or y - ring < 0 or x + w + ring > labels.shape[1] or y + h + ring > labels.shape[0]:
+        return None
+    window = (slice(y - ring, y + h + ring), slice(x - ring, x + w + ring))
+    field = cv2.compare(labels[window], float(label), cv2.CMP_EQ)
+    grown = cv2.dilate(field, cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * ring + 1, 2 * ring + 1)))
+    b = np.asarray(cv2.mean(small[window], mask=cv2.subtract(grown, field))[:3]) + 1.0
+    f = np.asarray(cv2.mean(small[window], mask=field)[:3]) + 1.0
+    q = b / f  # B, G, R
+    return float(q[2] / q[1]), float(q[2] / q[0]), float(b.sum() / f.sum())
+
+
+def _ring_field(image, labels, label: int, box, scale: float, config: PipelineConfig) -> Optional[Field]:
+    """One bright component (``label`` in ``labels``, box ``box`` at ``scale``) if it is a field in a red ring."""
+    x, y, w, h = box
+    small = cv2.compare(labels[y : y + h, x : x + w], float(label), cv2.CMP_EQ)
+    contours, _ = cv2.findContours(small, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE, offset=(x, y))
+    contour = max(contours, key=cv2.contourArea)
+    # the outline at full resolution (pixel centres), its box and filled mask
+    contour = np.round((contour.astype(np.float64) + 0.5) / scale - 0.5).astype(np.int32)
+    bbox = cv2.boundingRect(contour)
+    field = np.zeros((bbox[3], bbox[2]), np.uint8)
+    cv2.drawContours(field, [contour], -1, 255, thickness=cv2.FILLED, offset=(-bbox[0], -bbox[1]))
+    if not is_red_ring(ring_contrast(image, bbox, field, config.field_ring_fraction), config):
+        return None
+    if classify_shape(field, config.min_shape_fit, config.shape_fill_window).shape not in FIELD_SHAPES:
+        return None
+    return Field(tuple(int(v) for v in bbox), field, contour)

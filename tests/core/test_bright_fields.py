@@ -1,0 +1,133 @@
+"""The bright-field pass: red-ringed faces in dim light found by their white field."""
+
+import cv2
+import numpy as np
+import pytest
+from pipeline_scenes import WHITE, noisy_background, paste
+
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.pipeline import PipelineConfig
+from signmapper_core.pipeline.bright_fields import grey_levels, is_red_ring, red_ring_fields, ring_contrast
+from signmapper_core.pipeline.candidates import face_candidates
+from signmapper_core.pipeline.colour import find_colour_segments
+
+
+@pytest.fixture(scope="module")
+def catalogue():
+    return load_catalogue()
+
+
+def _iou(a, b):
+    ax, ay, aw, ah = a
+    bx, by, bw, bh = b
+    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
+    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
+    return iw * ih / float(aw * ah + bw * bh - iw * ih)
+
+
+def _at_dusk(bgr, saturation=0.3, gains=(0.21, 0.15, 0.15)):
+    """A face as GTSDB's dusk photographs show it: little saturation left, dark, a blue cast."""
+    hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV).astype(np.float32)
+    hsv[..., 1] *= saturation
+    out = cv2.cvtColor(hsv.astype(np.uint8), cv2.COLOR_HSV2BGR).astype(np.float32) * np.float32(gains)
+    return np.clip(out, 0, 255).astype(np.uint8)
+
+
+def _dusk_scene(catalogue, template_id, n=50, saturation=0.3, x=300, y=150):
+    bgr, alpha = catalogue.render(template_id, n)
+    image = noisy_background(level=22, sigma=4)
+    image = np.clip(image.astype(np.int16) + (6, 1, 0), 0, 255).astype(np.uint8)  # dark blue-grey trees
+    paste(image, _at_dusk(bgr, saturation), alpha, x, y)
+    return cv2.GaussianBlur(image, (3, 3), 0)
+
+
+def test_grey_levels_are_a_geometric_ladder_below_255():
+    assert grey_levels(12, 1.25) == [12, 15, 19, 23, 29, 37, 46, 57, 72, 89, 112, 140, 175, 218]
+    assert grey_levels(250, 2.0) == [250]
+    with pytest.raises(ValueError, match="ratio > 1"):
+        grey_levels(12, 1.0)
+
+
+def test_ring_contrast_reads_the_ring_against_its_own_field():
+    field = np.zeros((40, 40), np.uint8)
+    cv2.circle(field, (20, 20), 19, 255, -1)
+    for ring, field_colour, red in (((40, 40, 120), (150, 150, 150), True),  # red ring, white field
+                                    ((80, 80, 80), (150, 150, 150), False),  # grey ring
+                                    ((60, 30, 40), (120, 60, 60), True),  # the same seen in blue light
+                                    ((120, 40, 40), (150, 150, 150), False)):  # blue ring
+        image = np.full((100, 100, 3), 30, np.uint8)
+        cv2.circle(image, (50, 50), 27, ring, -1)
+        cv2.circle(image, (50, 50), 20, field_colour, -1)
+        contrast = ring_contrast(image, (30, 30, 40, 40), field, PipelineConfig().field_ring_fraction)
+        assert is_red_ring(contrast, PipelineConfig()) is red, (ring, field_colour, contrast)
+    assert ring_contrast(image, (2, 2, 40, 40), field, 0.12) is None  # the band would leave the image
+
+
+@pytest.mark.parametrize("template_id, shape", [("2.30-50", "circle"), ("1.30", "triangle"),
+                                                ("3.02", "triangle-down")])
+def test_dim_ring_without_colour_is_found_by_its_field(catalogue, template_id, shape):
+    n = 50
+    image = _dusk_scene(catalogue, template_id, n)
+    colour_only = PipelineConfig(field_pass=False)
+    assert find_colour_segments(image, None, colour_only, None) == []  # neither the strong nor the scene pass
+    (field,) = find_colour_segments(image, None, PipelineConfig(), None)
+    assert field.colour == "red" and field.source == "hole"
+    x, y, w, h = field.bbox
+    assert 300 < x and 150 < y and x + w < 300 + n and y + h < 150 + n  # inside the ring
+    (candidate,) = face_candidates(image, catalogue, hough=False)
+    assert candidate.shape == shape
+    assert any(_iou(r.bbox, (300, 150, n, n)) > 0.7 and template_id in r.template_ids for r in candidate.readings)
+
+
+def test_grey_ring_around_a_bright_field_is_no_red_face(catalogue):
+    image = _dusk_scene(catalogue, "2.30-50", saturation=0.0)
+    assert red_ring_fields(image, None, PipelineConfig()) == []
+
+
+def test_field_outside_the_search_space_or_too_small_is_not_sought(catalogue):
+    image = _dusk_scene(catalogue, "2.30-50", 50)
+    search = np.ones(image.shape[:2], bool)
+    search[:, 280:370] = False
+    assert red_ring_fields(image, search, PipelineConfig()) == []
+    assert red_ring_fields(image, None, PipelineConfig(field_min_px=45)) == []
+    assert len(red_ring_fields(image, None, PipelineConfig())) == 1
+
+
+def test_bright_field_against_a_bright_sky_is_found_at_a_higher_level(catalogue):
+    # backlit: the sky is brighter than the field, the dark ring still encloses it
+    bgr, alpha = catalogue.render("2.30-50", 50)
+    image = noisy_background(level=215, sigma=4)
+    face = _at_dusk(bgr, saturation=0.35, gains=(0.55, 0.5, 0.5))
+    paste(image, face, alpha, 300, 150)
+    (field,) = red_ring_fields(image, None, PipelineConfig())
+    assert _iou(field.bbox, (304, 154, 42, 42)) > 0.7
+    assert np.count_nonzero(field.mask) > 0.6 * field.bbox[2] * field.bbox[3]
+
+
+def test_field_pass_keeps_no_duplicate_of_a_ring_found_by_colour(catalogue):
+    bgr, alpha = catalogue.render("2.30-50", 50)
+    image = noisy_background()
+    paste(image, bgr, alpha, 300, 150)
+    holes = [s for s in find_colour_segments(image, None, PipelineConfig(), None) if s.source == "hole"]
+    assert len(red_ring_fields(image, None, PipelineConfig())) == 1  # the field is found by brightness too
+    assert len(holes) <= 1  # but the colour pass's field stands for it
+
+
+def test_white_rim_around_yellow_is_not_read_as_a_field(catalogue):
+    image = noisy_background(level=60, sigma=4)
+    cv2.circle(image, (200, 150), 30, WHITE, -1)
+    cv2.circle(image, (200, 150), 20, (0, 200, 240), -1)
+    assert red_ring_fields(image, None, PipelineConfig()) == []
+
+
+def test_fields_are_found_once_per_frame_and_cut_by_the_search_space(catalogue):
+    from signmapper_core.pipeline.colour import ColourFrame
+
+    image = _dusk_scene(catalogue, "2.30-50", 50)
+    config = PipelineConfig()
+    frame = ColourFrame.of(image, config)
+    assert frame.ring_fields(image, config, None) is frame.ring_fields(image, config, None)
+    search = np.ones(image.shape[:2], bool)
+    assert len(find_colour_segments(image, search, config, None, frame)) == 1
+    search[:, 300:350] = False  # the field lies outside the search space
+    assert find_colour_segments(image, search, config, None, frame) == []
