@@ -117,7 +117,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterEnum(self.CLASSIFIER, self.tr("Classifier"), options=[c[1] for c in CLASSIFIERS],
-                                       defaultValue=0),
+                                       defaultValue=0, optional=True),  # models saved before it still run
             "How a face gets its sign type among the candidates its colour and shape leave. The learned network "
             "is trained on synthetic faces of the official SSV drawings; its indicator is a calibrated probability "
             "that the type is right. Template matching is the paper's method; its indicator is the correlation "
