@@ -2,7 +2,7 @@ import cv2
 import numpy as np
 import pytest
 
-from signmapper_core.pipeline.shape import ShapeResult, catalogue_shapes, classify_shape, outline_shapes
+from signmapper_core.pipeline.shape import ShapeResult, classify_shape, outline_shapes
 
 SIZE = 61
 
