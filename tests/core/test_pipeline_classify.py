@@ -73,7 +73,7 @@ def test_network_reads_official_faces_under_blur_noise_and_perspective(catalogue
 
 def test_network_reads_most_faces_of_another_artwork(catalogue, network):
     """Our procedural drawings (other strokes, palette, font) were never trained on. Measured 2026-12-01 with the
-    committed model: 124 of 216 faces (57 %) read right; real photographs do better (README), these drawings
+    committed model: 129 of 216 faces (60 %) read right; real photographs do better (README), these drawings
     differ from the official ones more than most real print runs do. A regression bar, not a goal."""
     right, total = 0, 0
     for k, (font, seed) in enumerate([("duplex", 3), ("simplex", 5)]):
@@ -85,7 +85,7 @@ def test_network_reads_most_faces_of_another_artwork(catalogue, network):
             right += network.classify(image, bbox, _candidates(catalogue, entry.id)).template_id == entry.id
             total += 1
     assert total == 2 * len(catalogue)
-    assert right >= 0.52 * total
+    assert right >= 0.55 * total
 
 
 def test_network_gives_a_non_sign_a_low_indicator(catalogue, network):
