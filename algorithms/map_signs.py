@@ -192,7 +192,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                                          "folder")
         output = self.parameterAsFileOutput(parameters, self.OUTPUT, context)
         if not output.lower().endswith(".gpkg"):
-            raise QgsProcessingException(f"{output}: the output must be a GeoPackage file ending in .gpkg")
+            label = self.parameterDefinition(self.OUTPUT).description()
+            raise QgsProcessingException(f"{label}: {output}: the output must be a GeoPackage file ending in .gpkg")
         self.check_outputs(parameters, context)
         geopackage_tables(output)  # an existing file that is no GeoPackage is refused, not replaced
         near = self.parameterAsDouble(parameters, self.NEAR, context)
@@ -275,8 +276,9 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                 raise QgsProcessingException(f"Cancelled; no output written{unchanged}.") from None
             if isinstance(exc, MappingError):
                 label = self.parameterDefinition(self.MAX_SKIPPED).description()
+                remedy = f", or raise '{label}'" if exc.limit_exceeded else ""  # no share helps when none maps
                 raise QgsProcessingException(f"Mapping failed: {exc}. Nothing written{unchanged}. Repair or remove "
-                                             f"the unreadable files, or raise '{label}'.") from None
+                                             f"the unreadable files{remedy}.") from None
             raise
         if without_svg:
             feedback.pushWarning(f"{len(without_svg)} of {len(catalogue)} templates have no SVG pictogram (e.g. "

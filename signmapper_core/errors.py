@@ -24,7 +24,15 @@ class ImageReadError(DriveFormatError):
 
 
 class MappingError(RuntimeError):
-    """A run whose output could not be trusted, e.g. because too many pairs could not be read."""
+    """A run whose output could not be trusted, e.g. because too many pairs could not be read.
+
+    ``limit_exceeded`` tells a run stopped by the allowed share of skipped pairs
+    (raising the share may help) from one where no pair could be mapped at all (it cannot).
+    """
+
+    def __init__(self, message: str, limit_exceeded: bool = False):
+        super().__init__(message)
+        self.limit_exceeded = limit_exceeded
 
 
 class ImportInputError(ValueError):

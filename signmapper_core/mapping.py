@@ -164,7 +164,7 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
             if len(skipped) > max_skipped_share * total:
                 raise MappingError(f"{len(skipped)} of {total} pairs skipped, more than the "
                                    f"{100 * max_skipped_share:g} % allowed (first: pair {skipped[0].record.id}: "
-                                   f"{skipped[0].error})")
+                                   f"{skipped[0].error})", limit_exceeded=True)
         for detection in result.detections:
             detections.append(Observation(detection, result.record, id=len(detections) + 1))
         report(progress, PAIRS_SHARE * done / max(total, 1),

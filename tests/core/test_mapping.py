@@ -169,14 +169,17 @@ def test_too_many_unreadable_pairs_are_an_error_not_a_thinner_output(drive_dir, 
     for path in images[:4]:
         path.write_bytes(path.read_bytes()[:2000])
     warnings = []
-    with pytest.raises(MappingError, match=r"^4 of 10 pairs skipped, more than the 30 % allowed \(first: pair 000000"):
+    with pytest.raises(MappingError, match=r"^4 of 10 pairs skipped, more than the 30 % allowed \(first: pair 000000"
+                       ) as info:
         map_drive(open_drive(drive), catalogue, PipelineConfig(), warn_skipped=warnings.append,
                   max_skipped_share=0.3)
     assert len(warnings) == 4  # stopped as soon as it was certain, not after all pairs
+    assert info.value.limit_exceeded  # a larger share would let this drive map
     for path in images[4:]:
         path.write_bytes(path.read_bytes()[:2000])
-    with pytest.raises(MappingError, match=r"^no pair could be mapped: 10 of 10 pairs skipped"):
+    with pytest.raises(MappingError, match=r"^no pair could be mapped: 10 of 10 pairs skipped") as info:
         map_drive(open_drive(drive), catalogue, PipelineConfig())
+    assert not info.value.limit_exceeded  # no share helps
 
 
 def test_pairs_without_depth_or_colour_are_warned_about(drive_dir, catalogue, tmp_path):

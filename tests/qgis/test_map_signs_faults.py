@@ -111,6 +111,9 @@ def test_run_where_no_pair_can_be_read_fails_and_keeps_the_old_output(cli_env, s
                                      MAX_SKIPPED=100)
     assert code != 0, log
     assert "Mapping failed: no pair could be mapped: 12 of 12 pairs skipped (first: pair 000000: " in log
+    # no share of skipped pairs helps when none maps: the message does not suggest raising it
+    assert f"Nothing written; {good_output} is as it was. Repair or remove the unreadable files.\n" in log
+    assert "raise 'Largest share" not in log
     assert digest(good_output) == before
     assert not list(tmp_path.glob(".*partial*"))
 
@@ -290,6 +293,19 @@ def test_output_that_is_a_folder_or_unwritable_is_refused_before_the_run(run, sm
     assert not feedback.steps
 
 
+def test_output_that_is_no_geopackage_is_refused_naming_the_parameter(run, small_drive, tmp_path):
+    drive = tmp_path / "drive"
+    shutil.copytree(small_drive, drive)
+    poses = drive / "poses.csv"
+    before = digest(poses)
+    feedback = Recorder()
+    with pytest.raises(QgsProcessingException) as info:
+        run("signmapper:mapsigns", {"DRIVE": str(drive), "OUTPUT": str(poses)}, feedback=feedback)
+    assert message(info) == f"Output GeoPackage: {poses}: the output must be a GeoPackage file ending in .gpkg"
+    assert not feedback.steps
+    assert digest(poses) == before
+
+
 # 9. a cancel is a cancel, wherever it happens
 
 def test_cancel_while_writing_writes_nothing(run, small_drive, good_output):
@@ -397,16 +413,24 @@ def test_broken_truth_csv_does_not_block_mapping(run, tmp_path):
 
 # 8. a compound CRS or a PROJ string reaches the layers
 
-def test_compound_crs_reaches_the_layers(run, tmp_path):
-    drive = make_drive(tmp_path / "drive", n_pairs=2, crs="EPSG:2056+5728")
+LV95_PROJ = ("+proj=somerc +lat_0=46.9524055555556 +lon_0=7.43958333333333 +k_0=1 +x_0=2600000 +y_0=1200000 "
+             "+ellps=bessel +towgs84=674.374,15.056,405.346,0,0,0,0 +units=m +no_defs +type=crs")
+
+
+@pytest.mark.parametrize("crs, words", [
+    ("EPSG:2056+5728", "CRS EPSG:2056+5728: the layers carry its horizontal part EPSG:2056 (QGIS 3.22 has no "
+                       "compound CRS); heights are those of LN02 height"),
+    (LV95_PROJ, f"CRS {LV95_PROJ}: the layers carry it as EPSG:2056"),
+])
+def test_compound_crs_or_proj_string_reaches_the_layers(run, tmp_path, crs, words):
+    drive = make_drive(tmp_path / "drive", n_pairs=2, crs=crs)
     feedback = Recorder()
     out = tmp_path / "x.gpkg"
     run("signmapper:mapsigns", {"DRIVE": str(drive), "OUTPUT": str(out)}, feedback=feedback)
     for layer in ("signs", "detections"):
         crs = QgsVectorLayer(f"{out}|layername={layer}", layer, "ogr").crs()
-        assert crs.isValid() and crs.authid() == "EPSG:2056"
-    assert ("CRS EPSG:2056+5728: the layers carry its horizontal part EPSG:2056 (QGIS 3.22 has no compound CRS); "
-            "heights are those of LN02 height") in feedback.text()
+        assert crs.isValid() and crs.authid() == "EPSG:2056" and not crs.isGeographic()
+    assert words in feedback.text()
     with sqlite3.connect(out) as db:
         assert db.execute("SELECT organization || ':' || organization_coordsys_id FROM gpkg_spatial_ref_sys s "
                           "JOIN gpkg_contents c ON c.srs_id = s.srs_id WHERE c.table_name = 'signs'").fetchone() \
