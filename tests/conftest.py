@@ -44,3 +44,16 @@ def signalo_database(postgres):
         return dsn
 
     return make
+
+
+@pytest.fixture(scope="session")
+def reference_drawing_catalogue(tmp_path_factory):
+    """The Swiss catalogue drawn by our own procedural drawer instead of the official artwork (make catalogue
+    without SVG). Constructed-scene tests of the colour step pin thresholds tuned with these faces and templates;
+    the shipped official catalogue is measured on real photographs (tests/core/test_real_photographs.py)."""
+    from signmapper_core.catalogue import load_catalogue
+    from signmapper_core.catalogue.build import build
+
+    folder = tmp_path_factory.mktemp("reference-catalogue")
+    build(folder, None)
+    return load_catalogue(folder)

@@ -67,7 +67,10 @@ def readings_of(seg: Segment, shapes, catalogue, config: PipelineConfig,
         same = tuple(dict.fromkeys(i for _, ids, entry_shapes in groups.values()
                                    for i, s in zip(ids, entry_shapes) if s == shapes[0]))
         ring = ring_edge_bbox(image, seg.bbox, shapes[0], config) if same else None
-        if ring is not None and all(_box_iou(ring, r.bbox) < config.rim_same_iou for r in readings):
+        # a reading of about this box that holds only some of the ids (another template's extent happening to
+        # match the ring, e.g. a lettered ring) does not stand for the others
+        if ring is not None and not any(_box_iou(ring, r.bbox) >= config.rim_same_iou
+                                        and set(same) <= set(r.template_ids) for r in readings):
             readings.append(FaceReading(ring, same))
     return tuple(readings)
 

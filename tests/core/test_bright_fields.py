@@ -5,7 +5,6 @@ import numpy as np
 import pytest
 from pipeline_scenes import WHITE, noisy_background, paste
 
-from signmapper_core.catalogue import load_catalogue
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.pipeline.bright_fields import grey_levels, is_red_ring, red_ring_fields, ring_contrast
 from signmapper_core.pipeline.candidates import face_candidates
@@ -13,8 +12,8 @@ from signmapper_core.pipeline.colour import find_colour_segments
 
 
 @pytest.fixture(scope="module")
-def catalogue():
-    return load_catalogue()
+def catalogue(reference_drawing_catalogue):
+    return reference_drawing_catalogue  # scenes and templates of our reference drawing (see tests/conftest.py)
 
 
 def _iou(a, b):

@@ -13,15 +13,14 @@ from pipeline_scenes import noisy_background, paste
 from test_bright_fields import _at_dusk
 from test_pipeline_real_conditions import _priority_sign
 
-from signmapper_core.catalogue import load_catalogue
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.pipeline.candidates import face_candidates
 from signmapper_core.pipeline.face_extent import face_bbox, hole_candidates, ring_edge_bbox
 
 
 @pytest.fixture(scope="module")
-def catalogue():
-    return load_catalogue()
+def catalogue(reference_drawing_catalogue):
+    return reference_drawing_catalogue  # scenes and templates of our reference drawing (see tests/conftest.py)
 
 
 def _iou(a, b):

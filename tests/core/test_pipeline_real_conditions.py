@@ -10,7 +10,6 @@ import numpy as np
 import pytest
 from pipeline_scenes import CAMERA, POSE, RED, WHITE, constant_depth, noisy_background, paste, pixels_for
 
-from signmapper_core.catalogue import load_catalogue
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.candidates import face_candidates
 from signmapper_core.pipeline.colour import find_colour_segments, ring_open_px, split_face_merges
@@ -18,8 +17,8 @@ from signmapper_core.pipeline.scene_colour import apply_gains, scene_colour, whi
 
 
 @pytest.fixture(scope="module")
-def catalogue():
-    return load_catalogue()
+def catalogue(reference_drawing_catalogue):
+    return reference_drawing_catalogue  # scenes and templates of our reference drawing (see tests/conftest.py)
 
 
 def _iou(a, b):
