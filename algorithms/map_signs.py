@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import shutil
+from dataclasses import replace
 from pathlib import Path
 
 from qgis.core import (
@@ -28,11 +29,13 @@ from ..gpkg.styles import OutputStyler, embed_default_styles
 from ..signmapper_core import output_schema as schema
 from ..signmapper_core.errors import MappingError
 from ..signmapper_core.output_schema import DETECTIONS, LANGUAGES, SIGNS, OutputContext
+from ..signmapper_core.pipeline.config import default
 from ..signmapper_core.progress import Cancelled, check_cancelled
+from ..signmapper_core.sign_colours import SIGN_COLOURS
 from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise, qgis_crs
 
-COLOURS = ["red", "blue", "yellow"]
+COLOURS = list(SIGN_COLOURS)
 CLASSIFIERS = [("auto", "Automatic: the learned network where the catalogue has one, else template matching"),
                ("cnn", "Learned network (CNN trained on the official drawings)"),
                ("ncc", "Template matching (normalised cross-correlation, Cavegn 2011)")]
@@ -56,10 +59,12 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         "A pair with a corrupt or missing image is logged and skipped; when more than a set share of the pairs "
         "(or all of them) cannot be mapped, the run fails. A failed or cancelled run writes nothing and leaves an "
         "earlier output as it was. Written into an existing GeoPackage, only the layers above are replaced: the "
-        "file's other layers stay."
+        "file's other layers stay. The table 'signmapper_run' records every setting of the run, so 'Settings from "
+        "an earlier output' can map a drive again exactly as then."
     )
 
     DRIVE = "DRIVE"
+    SETTINGS_FROM = "SETTINGS_FROM"
     NEAR = "NEAR"
     FAR = "FAR"
     COLOURS = "COLOURS"
@@ -87,20 +92,32 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
     def initAlgorithm(self, config=None):  # noqa: N802
         self.add_drive_parameter(self.DRIVE)
         self.add_parameter(
+            QgsProcessingParameterFile(self.SETTINGS_FROM, self.tr("Settings from an earlier output"),
+                                       extension="gpkg", optional=True),
+            "A GeoPackage this algorithm wrote: the drive is mapped with the settings its table signmapper_run "
+            "records (every pipeline and fusion setting, classifier, catalogue folder) instead of the defaults. "
+            "A parameter below that you set to something other than its default wins over the record; one left "
+            "at its default (or empty) takes the record's value. Language, crops and the share of unreadable pairs "
+            "are not taken from it.",
+        )
+        self.add_parameter(
             QgsProcessingParameterNumber(self.NEAR, self.tr("Near limit of the depth range [m]"),
-                                         QgsProcessingParameterNumber.Double, 4.0, minValue=0.5, maxValue=100.0),
+                                         QgsProcessingParameterNumber.Double, default("near_m"), minValue=0.5,
+                                         maxValue=100.0),
             "Signs closer than this depth (along the optical axis) are not searched; default 4 m.",
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.FAR, self.tr("Far limit of the depth range [m]"),
-                                         QgsProcessingParameterNumber.Double, 14.0, minValue=1.0, maxValue=200.0),
+                                         QgsProcessingParameterNumber.Double, default("far_m"), minValue=1.0,
+                                         maxValue=200.0),
             "Signs farther than this depth are not searched (they are measured better in a later pair); default "
             "14 m as in Cavegn (2011). On wide streets signs on the far side only come into view beyond 14 m: "
             "about 20 m maps them too, with somewhat larger errors and slower stereo matching.",
         )
         self.add_parameter(
             QgsProcessingParameterEnum(self.COLOURS, self.tr("Sign colours to detect"), options=COLOURS,
-                                       allowMultiple=True, defaultValue=[0, 1, 2]),
+                                       allowMultiple=True,
+                                       defaultValue=[COLOURS.index(c) for c in default("colours")]),
             "Dominant colours segmented in HSV: red (prohibitions, danger, stop), blue (mandatory, information), "
             "yellow (priority road).",
         )
@@ -111,13 +128,15 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.DETECTION_THRESHOLD, self.tr("Detection indicator threshold"),
-                                         QgsProcessingParameterNumber.Double, 0.5, minValue=0.0, maxValue=1.0),
+                                         QgsProcessingParameterNumber.Double, default("detection_threshold"),
+                                         minValue=0.0, maxValue=1.0),
             "Minimum planar share (0-1) of a colour segment for it to count as a sign face.",
             advanced=True,
         )
         self.add_parameter(
             QgsProcessingParameterEnum(self.CLASSIFIER, self.tr("Classifier"), options=[c[1] for c in CLASSIFIERS],
-                                       defaultValue=0, optional=True),  # models saved before it still run
+                                       defaultValue=[c[0] for c in CLASSIFIERS].index(default("classifier")),
+                                       optional=True),  # models saved before it still run
             "How a face gets its sign type among the candidates its colour and shape leave. The learned network "
             "is trained on synthetic faces of the official SSV drawings; its indicator is a calibrated probability "
             "that the type is right. Template matching is the paper's method; its indicator is the correlation "
@@ -126,8 +145,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.CLASSIFICATION_THRESHOLD, self.tr("Classification indicator threshold"),
-                                         QgsProcessingParameterNumber.Double, None, optional=True, minValue=0.0,
-                                         maxValue=1.0),
+                                         QgsProcessingParameterNumber.Double, default("classification_threshold"),
+                                         optional=True, minValue=0.0, maxValue=1.0),
             "Minimum classification indicator (0-1) for status 'accepted'; lower ones get status 'review'. Empty = "
             "the classifier's own: the network's calibrated threshold, 0.6 for template matching.",
             advanced=True,
@@ -180,10 +199,12 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             return False, str(exc)
         return True, ""
 
-    def settings(self, parameters, context):
-        """(drive folder, catalogue, PipelineConfig) of the parameters; QgsProcessingException says what is wrong."""
+    def settings(self, parameters, context, notes=None):
+        """(drive folder, catalogue, PipelineConfig, FusionConfig) of the parameters and, when given, the settings
+        of an earlier output; QgsProcessingException says what is wrong. Notes on the record go to ``notes``."""
         self.require_dependencies()
         from ..signmapper_core.catalogue import load_catalogue
+        from ..signmapper_core.fusion import FusionConfig
         from ..signmapper_core.pipeline import PipelineConfig
 
         folder = self.parameterAsFile(parameters, self.DRIVE, context)
@@ -196,27 +217,39 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             raise QgsProcessingException(f"{label}: {output}: the output must be a GeoPackage file ending in .gpkg")
         self.check_outputs(parameters, context)
         geopackage_tables(output)  # an existing file that is no GeoPackage is refused, not replaced
-        near = self.parameterAsDouble(parameters, self.NEAR, context)
-        far = self.parameterAsDouble(parameters, self.FAR, context)
-        if near >= far:
-            labels = [self.parameterDefinition(n).description() for n in (self.NEAR, self.FAR)]
-            raise QgsProcessingException(f"{labels[0]} ({near:g} m) must be less than {labels[1]} ({far:g} m).")
+        earlier = self.earlier_settings(parameters, context, notes)
         colours = [COLOURS[i] for i in self.parameterAsEnums(parameters, self.COLOURS, context)]
         if not colours:
             raise QgsProcessingException("Choose at least one sign colour to detect.")
         catalogue_dir = self.parameterAsFile(parameters, self.CATALOGUE, context) or None
+        if catalogue_dir is None and earlier is not None and earlier.catalogue:
+            catalogue_dir = earlier.catalogue
+            if not Path(catalogue_dir).is_dir():
+                labels = [self.parameterDefinition(n).description() for n in (self.SETTINGS_FROM, self.CATALOGUE)]
+                raise QgsProcessingException(f"{labels[0]}: its catalogue folder {catalogue_dir} does not exist "
+                                             f"here; set '{labels[1]}'")
         try:
             catalogue = load_catalogue(catalogue_dir)
         except Exception as exc:  # the catalogue's own errors name the file
             raise QgsProcessingException(f"Template catalogue: {exc}") from exc
+        chosen = {
+            "near_m": self.parameterAsDouble(parameters, self.NEAR, context),
+            "far_m": self.parameterAsDouble(parameters, self.FAR, context),
+            "colours": tuple(colours),
+            "exclude": tuple(self.excluded_ids(parameters, context, catalogue)),
+            "detection_threshold": self.parameterAsDouble(parameters, self.DETECTION_THRESHOLD, context),
+            "classification_threshold": self.optional_number(parameters, self.CLASSIFICATION_THRESHOLD, context),
+            "classifier": CLASSIFIERS[self.parameterAsEnum(parameters, self.CLASSIFIER, context)][0],
+        }
+        if earlier is not None:  # what the user changed from the dialog's defaults wins over the record
+            chosen = {k: v for k, v in chosen.items() if not _is_default(k, v)}
+        base = earlier.config if earlier is not None else PipelineConfig()
+        near, far = chosen.get("near_m", base.near_m), chosen.get("far_m", base.far_m)
+        if near >= far:
+            labels = [self.parameterDefinition(n).description() for n in (self.NEAR, self.FAR)]
+            raise QgsProcessingException(f"{labels[0]} ({near:g} m) must be less than {labels[1]} ({far:g} m).")
         try:
-            config = PipelineConfig(
-                near_m=near, far_m=far, colours=tuple(colours),
-                exclude=tuple(self.excluded_ids(parameters, context, catalogue)),
-                detection_threshold=self.parameterAsDouble(parameters, self.DETECTION_THRESHOLD, context),
-                classification_threshold=self.optional_number(parameters, self.CLASSIFICATION_THRESHOLD, context),
-                classifier=CLASSIFIERS[self.parameterAsEnum(parameters, self.CLASSIFIER, context)][0],
-            )
+            config = replace(base, **chosen)
         except ValueError as exc:
             raise QgsProcessingException(str(exc)) from exc
         from ..signmapper_core.pipeline.classifiers import ClassifierError, classifier_for
@@ -225,7 +258,20 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             classifier_for(catalogue, config)  # a missing or broken model is said before any work
         except ClassifierError as exc:
             raise QgsProcessingException(f"Classifier: {exc}") from exc
-        return folder, catalogue, config
+        return folder, catalogue, config, earlier.fusion if earlier is not None else FusionConfig()
+
+    def earlier_settings(self, parameters, context, notes=None):
+        """The ``RunSettings`` of the earlier output given, or None; its problems as QgsProcessingException."""
+        path = self.parameterAsFile(parameters, self.SETTINGS_FROM, context)
+        if not path:
+            return None
+        from ..signmapper_core.run_settings import RunRecordError, load_run_settings
+
+        label = self.parameterDefinition(self.SETTINGS_FROM).description()
+        try:
+            return load_run_settings(path, notes.append if notes is not None else None)
+        except RunRecordError as exc:
+            raise QgsProcessingException(f"{label}: {exc}") from exc
 
     @staticmethod
     def report_classifier(catalogue, config, feedback) -> None:
@@ -243,7 +289,13 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         return self.parameterAsDouble(parameters, name, context)
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
-        folder, catalogue, config = self.settings(parameters, context)
+        notes = []
+        folder, catalogue, config, fusion = self.settings(parameters, context, notes)
+        for note in notes:
+            feedback.pushWarning(note)
+        if self.parameterAsFile(parameters, self.SETTINGS_FROM, context):
+            feedback.pushInfo(f"Settings from {self.parameterAsFile(parameters, self.SETTINGS_FROM, context)}, "
+                              "with the parameters set to something other than their defaults")
         feedback.pushInfo(f"Validating drive {folder}")
         try:
             drive = open_drive_or_raise(folder, CoreFeedback(feedback, 0, 5))
@@ -259,7 +311,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         crops = CropFolder(output.target) if self.parameterAsBoolean(parameters, self.CROPS, context) else None
         max_skipped = self.parameterAsDouble(parameters, self.MAX_SKIPPED, context) / 100.0
         try:
-            result = self.map(drive, catalogue, config, feedback, max_skipped)
+            result = self.map(drive, catalogue, config, feedback, max_skipped, fusion)
             out = self.output_context(drive, catalogue, language, result, crops, feedback)
             self.write_layers(output, result, out, feedback)
             output.write_run_table(schema.run_record(result, out))
@@ -331,7 +383,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         return ids
 
     @staticmethod
-    def map(drive, catalogue, config, feedback, max_skipped: float = 1.0):
+    def map(drive, catalogue, config, feedback, max_skipped: float = 1.0, fusion=None):
         """The core's map_drive with the algorithm's progress bar, cancel button and log.
 
         ``Cancelled`` and ``MappingError`` (too many pairs skipped) reach the caller, which discards its output.
@@ -340,7 +392,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
 
         steps = CoreFeedback(feedback, 5, 92)
         result = map_drive(drive, catalogue, config, steps.progress, steps.is_cancelled, steps.warn,
-                           max_skipped_share=max_skipped)
+                           fusion=fusion, max_skipped_share=max_skipped)
         if result.skipped:
             feedback.pushWarning(f"{result.failure_summary()}; see the messages above")
         return result
@@ -381,3 +433,10 @@ class CropFolder:
     def discard(self) -> None:
         if self.partial.exists():
             shutil.rmtree(self.partial)
+
+
+def _is_default(name: str, value) -> bool:
+    """Whether a dialog value is the setting's default (colours in any order): then an earlier run's value wins."""
+    if name == "colours":
+        return set(value) == set(default(name))
+    return value == default(name)

@@ -25,12 +25,11 @@ from qgis.core import (
     QgsLayerMetadata,
     QgsProcessingException,
     QgsVectorFileWriter,
-    QgsVectorLayer,
     QgsWkbTypes,
 )
 from qgis.PyQt.QtCore import QVariant
 
-from ..signmapper_core.output_schema import DETECTIONS, RUN_TABLE, SIGNS, decode_run_value, encode_run_value
+from ..signmapper_core.output_schema import DETECTIONS, RUN_TABLE, SIGNS, encode_run_value
 
 OUR_TABLES = (SIGNS, DETECTIONS, RUN_TABLE)
 STYLE_TABLE = "layer_styles"  # QGIS's styles of every layer in the file: kept, minus our layers' old ones
@@ -143,14 +142,11 @@ def layer_uri(path: str, layer: str) -> str:
 
 def read_run_table(path: str) -> dict:
     """The run table of the GeoPackage ``path`` as written (``output_schema.RUN_KEYS``); {} where there is none."""
+    from ..signmapper_core.run_settings import RunRecordError, read_run_record
+
     if not path:
         return {}
-    table = QgsVectorLayer(layer_uri(path, RUN_TABLE), RUN_TABLE, "ogr")
-    if not table.isValid():
+    try:
+        return read_run_record(path)
+    except RunRecordError:
         return {}
-    values = {}
-    for feature in table.getFeatures():
-        key, text = feature["key"], feature["value"]
-        if isinstance(key, str) and isinstance(text, str):
-            values[key] = decode_run_value(key, text)
-    return values

@@ -68,6 +68,7 @@ class MappingResult:
     load_seconds: float = 0.0  # of which decoding the files
     classifier_name: str = ""  # the strategy that ran ("cnn" or "ncc")
     classification_threshold: Optional[float] = None  # the indicator "accepted" needed in this run
+    fusion: FusionConfig = field(default_factory=FusionConfig)  # as fused, with that indicator
     run_id: str = field(default_factory=lambda: str(uuid.uuid4()))  # recorded by exports to recognise the run
 
     def detections_of(self, sign: FusedSign) -> list[Observation]:
@@ -141,6 +142,7 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
 
     Skipped pairs, and pairs without usable depth or colour, are passed to
     ``warn_skipped`` as they happen; skipped pairs are listed in the result.
+    ``fusion``'s ``accept_classification`` is replaced by the classifier's threshold (``config`` may set it).
     ``Cancelled`` is raised when ``is_cancelled()`` turns true; ``MappingError``
     as soon as more than ``max_skipped_share`` (0..1) of the pairs are skipped,
     and when no pair could be mapped at all.
@@ -149,8 +151,7 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
 
     classifier = classifier_for(catalogue, config)  # a missing or broken model fails here, before any pair
     accept = accept_threshold(classifier, config)
-    if fusion is None:
-        fusion = FusionConfig(accept_classification=accept)
+    fusion = replace(fusion or FusionConfig(), accept_classification=accept)  # always the classifier's
     detections, skipped, seconds, load_seconds, total = [], [], 0.0, 0.0, len(drive.pairs)
     for done, result in enumerate(map_pairs(drive, catalogue, config, is_cancelled), start=1):
         seconds += result.seconds
@@ -178,7 +179,7 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     set_mounting_heights(drive, signs)
     report(progress, 1.0, f"{len(detections)} detections fused into {len(signs)} signs")
     return MappingResult(drive, catalogue, config, detections, signs, skipped, seconds, load_seconds,
-                         classifier.name, accept)
+                         classifier.name, accept, fusion)
 
 
 def search_half_size(drive: Drive, config) -> int:

@@ -267,6 +267,12 @@ def template_values(layer: str, entry, format_name: str, language: str = DEFAULT
             if f.template is not None}
 
 
+def _run_settings():
+    from . import run_settings
+
+    return run_settings
+
+
 @dataclass(frozen=True)
 class RunKey:
     """One row of the run table: how a mapping result gives it, and whether the value is JSON or plain text."""
@@ -294,6 +300,13 @@ RUN_KEYS = (
            "calibrated one unless set).", lambda r: r.classification_threshold),
     RunKey("run_id", "Identifier of this run (a UUID): exports record it, so the same run is never written twice.",
            lambda r: r.run_id, True),
+    RunKey("settings_version", "Version of the recorded settings' meaning (run_settings.SETTINGS_VERSION).",
+           lambda r: _run_settings().SETTINGS_VERSION),
+    RunKey("pipeline", "Every setting of the detection pipeline (PipelineConfig) as a JSON object: with fusion, "
+           "what 'Settings from an earlier output' maps a drive again with.",
+           lambda r: _run_settings().settings_dict(r.config)),
+    RunKey("fusion", "Every setting of fusing detections into signs (FusionConfig) as a JSON object.",
+           lambda r: _run_settings().settings_dict(r.fusion)),
 )
 # what the writer chose, not the mapping: read from the OutputContext
 OUTPUT_RUN_KEYS = (

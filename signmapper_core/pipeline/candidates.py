@@ -96,9 +96,7 @@ def weak_rim_circles(image: np.ndarray, config: PipelineConfig, taken: Sequence[
     r_min, r_max = max(3, config.hough_min_face_px // 2), max(4, config.max_face_px // 2)
     out = []
     scale = hough_scale(r_min, config.hough_scale, config.hough_min_radius_px)
-    for seg in hough_segments(image, search, r_min, r_max, (), scale, config.hough_circularity,
-                              config.hough_edge_threshold, config.border_margin_px,
-                              config.hough_tint_min_saturation):
+    for seg in hough_segments(image, search, r_min, r_max, scale, config):
         if (seg.colour in config.colours or seg.colour == "white") and not any(
                 _box_iou(seg.bbox, box) >= 0.5 for box in taken):
             out.append(seg)

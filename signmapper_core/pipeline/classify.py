@@ -149,40 +149,34 @@ def classify_segment(
     bbox,
     catalogue,
     template_ids: Sequence[str],
-    scales: Sequence[float] = (0.92, 1.0, 1.08),
-    shift_fraction: float = 0.08,
-    max_px: int = 96,
-    coarse_px: int = 32,
-    keep: int = 6,
-    tie_margin: float = 0.04,
-    inner_fraction: float = 0.14,
+    config,
 ) -> ClassificationResult:
     """Best-matching template among ``template_ids`` for the face in ``bbox`` of ``image``.
 
-    Coarse to fine: all candidates are compared at ``coarse_px`` without scale
-    search, the best ``keep`` at up to ``max_px`` with the scale and shift search.
-    Candidates within ``tie_margin`` of the best (speed limits differing in one
-    digit: the rim dominates the whole-face score) are decided on the pictogram
-    field alone, the face without its outer ``inner_fraction``
-    (:func:`inner_field_distance`).
+    Coarse to fine (``config``, a PipelineConfig): all candidates are compared at
+    ``coarse_template_px`` without scale search, the best ``coarse_keep`` at up
+    to ``max_template_px`` with the scale and shift search. Candidates within
+    ``tie_margin`` of the best are decided on the pictogram field alone, the
+    face without its outer ``inner_fraction`` (:func:`inner_field_distance`).
     """
+    scales, shift_fraction, keep = config.scales, config.shift_fraction, config.coarse_keep
     if not template_ids:
         return ClassificationResult(None, 0.0)
     ids = list(dict.fromkeys(template_ids))
     if len(ids) > keep:
-        region, _, (w, h) = crop_for_matching(image, bbox, (1.0,), shift_fraction, coarse_px)
+        region, _, (w, h) = crop_for_matching(image, bbox, (1.0,), shift_fraction, config.coarse_template_px)
         region = cv2.GaussianBlur(region, (3, 3), 0)
         coarse = {tid: _best_over_scales(region, w, h, catalogue, tid, (1.0,))[0] for tid in ids}
         ids = sorted(ids, key=coarse.get, reverse=True)[:keep]
-    region, factor, (w, h) = crop_for_matching(image, bbox, scales, shift_fraction, max_px)
+    region, factor, (w, h) = crop_for_matching(image, bbox, scales, shift_fraction, config.max_template_px)
     region = cv2.GaussianBlur(region, (3, 3), 0)  # both sides slightly smoothed: less aliasing
     fine = {tid: _best_over_scales(region, w, h, catalogue, tid, scales) for tid in ids}
     scores = {tid: float(r[0]) for tid, r in fine.items()}
     ranked = sorted(ids, key=scores.get, reverse=True)
     best_id = ranked[0]
-    close = [t for t in ranked if scores[t] >= scores[best_id] - tie_margin]
+    close = [t for t in ranked if scores[t] >= scores[best_id] - config.tie_margin]
     if len(close) > 1:
-        distance = {t: inner_field_distance(region, catalogue, t, fine[t][3], fine[t][2], inner_fraction)
+        distance = {t: inner_field_distance(region, catalogue, t, fine[t][3], fine[t][2], config.inner_fraction)
                     for t in close}
         best_id = min(close, key=distance.get)
     score, scale, loc, (tw, th) = fine[best_id]
@@ -191,11 +185,11 @@ def classify_segment(
     return ClassificationResult(best_id, float(np.clip(score, 0.0, 1.0)), scores, scale, shift)
 
 
-def surround_score(image: np.ndarray, face, catalogue, template_id: str, extent) -> float:
+def surround_score(image: np.ndarray, face, catalogue, template_id: str, extent, grow: float) -> float:
     """NCC of a template's face outside its coloured part, at the face box without search.
 
     Tells a zone panel (white field and text around the red ring) from a round
-    sign on a wall: only the pixels outside the (slightly grown) colour part count.
+    sign on a wall: only the pixels outside the colour part, grown by ``grow`` of the face, count.
     """
     x, y, w, h = face
     height, width = image.shape[:2]
@@ -203,7 +197,6 @@ def surround_score(image: np.ndarray, face, catalogue, template_id: str, extent)
         return -1.0
     tmpl, alpha = template_at(catalogue, template_id, w, h)
     fx0, fy0, fx1, fy1 = extent
-    grow = 0.04
     alpha[max(0, int((fy0 - grow) * h)) : int(np.ceil((fy1 + grow) * h)),
           max(0, int((fx0 - grow) * w)) : int(np.ceil((fx1 + grow) * w))] = 0
     if np.count_nonzero(alpha) < 16:

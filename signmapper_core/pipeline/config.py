@@ -1,33 +1,22 @@
 """Settings of the detection pipeline, one frozen dataclass so a run is reproducible.
 
 Defaults follow Cavegn (2011): a 4-14 m search space in front of the camera and
-HSV thresholds for the three sign colours. Hue is OpenCV's 0-179 scale.
+HSV thresholds for the sign colours (``sign_colours``). Hue is OpenCV's 0-179
+scale. Every threshold of a step is a field here, with its reason; the step
+functions take them from the config and declare no defaults of their own. A
+run's output records every field (``run_settings``), so the run can be repeated
+from its output.
 """
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 from typing import Dict, Optional, Tuple
 
-# (hue_lo, hue_hi, sat_lo, sat_hi, val_lo, val_hi); several ranges per colour are OR-ed.
-HsvRange = Tuple[int, int, int, int, int, int]
+from ..sign_colours import HOUGH_TINT_HUES, HSV_RANGES, SIGN_COLOURS, WEAK_HUES, HsvRange
 
-DEFAULT_HSV_RANGES: Dict[str, Tuple[HsvRange, ...]] = {
-    # red wraps around hue 0, so it needs both ends of the hue circle
-    "red": ((0, 10, 90, 255, 50, 255), (165, 179, 90, 255, 50, 255)),
-    "blue": ((100, 130, 110, 255, 40, 255),),
-    "yellow": ((16, 35, 110, 255, 90, 255),),
-}
-
-# Hue bands of the weak (scene-adaptive) pass; its saturation/value floors come from the scene.
-# Faded or dimly lit red rings on real photographs (GTSDB tune split) drift to magenta: hue 150-165
-# held ~40 % of their ring pixels, where hardly any background is. Germany's priority road (3.03) is
-# orange-yellow: hue 13-17 on most GTSDB photographs, below the strong band's 16.
-WEAK_HUES: Dict[str, Tuple[Tuple[int, int], ...]] = {
-    "red": ((0, 10), (150, 179)),
-    "blue": ((98, 132),),
-    "yellow": ((11, 35),),
-}
+DEFAULT_HSV_RANGES = HSV_RANGES  # the name the steps' tests use
 
 
 @dataclass(frozen=True)
@@ -36,7 +25,7 @@ class PipelineConfig:
 
     near_m: float = 4.0
     far_m: float = 14.0
-    colours: Tuple[str, ...] = ("red", "blue", "yellow")
+    colours: Tuple[str, ...] = SIGN_COLOURS
     exclude: Tuple[str, ...] = ()
     detection_threshold: float = 0.5  # planar share of a segment needed to keep it
     classification_threshold: Optional[float] = None  # indicator needed for "accepted"; None = the classifier's own
@@ -168,6 +157,10 @@ class PipelineConfig:
     sgbm_row_margin_px: int = 24  # margin around candidates, rows and columns
     sgbm_far_factor: float = 2.0  # search disparities down to far*2: far points then match outside the range
     sgbm_uniqueness: int = 15
+    # colour candidates whose box height cannot be a face (or a coloured part of one) anywhere in the depth range
+    # get no stereo rows: taller than this x the tallest format at the near limit (perspective, rims)...
+    sgbm_band_max_height: float = 1.3
+    sgbm_band_min_height: float = 0.5  # ...or shorter than this x the lowest format at the far limit (a half face)
 
     # planarity (detection indicator)
     planarity_window_px: int = 7
@@ -176,6 +169,12 @@ class PipelineConfig:
     # signs fell below 0.5 at 0.6 px on a synthetic drive, 3% at 1.0 px)
     max_slant_deg: float = 45.0  # signs face the road, roughly along the optical axis
     min_depth_coverage: float = 0.3  # share of a segment's pixels needing a valid depth
+    # depths farther than this share from the segment's median are matching artefacts (SGBM gives a sign's left
+    # edge the background's depth) or background through the outline; a slanted face stays within a few per cent.
+    # None: all depths count
+    max_depth_deviation: Optional[float] = 0.25
+    face_depth_slack: float = 0.2  # a face centre's plane depth is used within near x (1 - this) .. far x (1 + this)
+    # (a face reaching past the range's limits); beyond, the segment's measured depth is used
 
     # classification
     min_surround_score: float = 0.5  # a panel reading needs its part outside the colour segment to match
@@ -183,6 +182,13 @@ class PipelineConfig:
     scales: Tuple[float, ...] = (0.92, 1.0, 1.08)
     shift_fraction: float = 0.08  # shift search, as a fraction of the segment size
     max_template_px: int = 96  # larger segments are compared downscaled
+    coarse_template_px: int = 32  # with many candidates, all are first compared at this size without search...
+    coarse_keep: int = 6  # ...and only this many best go on to the full scale and shift search
+    tie_margin: float = 0.04  # candidates this close to the best score are decided on the pictogram field alone:
+    # speed limits differing in one digit score alike on the whole face, where the rim dominates
+    inner_fraction: float = 0.14  # that field is the face without this outer share (the rim)
+    surround_grow: float = 0.04  # a panel's part outside its colour part is read without this margin of the face
+    # around the colour part (its blurred edge would count as surround)
 
     # Hough fallback for faded or white/grey round signs
     hough_enabled: bool = True
@@ -197,6 +203,10 @@ class PipelineConfig:
     # a Hough ring is named by the hue of its pixels at least this saturated: below the colour step's weak
     # floor (weak_sat_min) so a rim too pale for it is still read as red/blue, above grey noise (~10)
     hough_tint_min_saturation: int = 22
+    hough_tint_hues: Dict[str, Tuple[Tuple[int, int], ...]] = field(default_factory=lambda: dict(HOUGH_TINT_HUES))
+    hough_tint_min_share: float = 0.25  # share of the ring's pixels a tint needs to name it; else white
+    hough_strong_ring_share: float = 0.5  # a Hough find whose ring is this much in full colour is a colour find
+    # the colour step lost (an attachment spoiled its outline) and may be accepted; others stay at hough_max_status
 
     def __post_init__(self):
         if not 0 < self.near_m < self.far_m:
@@ -208,3 +218,11 @@ class PipelineConfig:
         unknown = set(self.colours) - set(self.hsv_ranges)
         if unknown:
             raise ValueError(f"no HSV thresholds for colours {sorted(unknown)}")
+
+
+def default(name: str):
+    """The default of setting ``name``, without building a config (front ends offer it as theirs)."""
+    for f in dataclasses.fields(PipelineConfig):
+        if f.name == name:
+            return f.default_factory() if f.default is dataclasses.MISSING else f.default
+    raise KeyError(f"PipelineConfig has no setting '{name}'")

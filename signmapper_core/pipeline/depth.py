@@ -96,22 +96,20 @@ def sgbm_depth(
     left: np.ndarray,
     right: np.ndarray,
     camera: Camera,
-    near_m: float,
-    far_m: float,
-    scale: float = 0.5,
-    block_size: int = 5,
+    config,
     row_bands: Optional[Iterable[Tuple[int, int]]] = None,
-    far_factor: float = 2.0,
-    uniqueness: int = 15,
     windows: Optional[Iterable[Tuple[int, int, int, int]]] = None,
 ) -> np.ndarray:
-    """Depth Z = fx*B/d (float32, NaN where unmatched) of the left image.
+    """Depth Z = fx*B/d (float32, NaN where unmatched) of the left image, with ``config``'s depth range and
+    SGBM settings (a PipelineConfig).
 
     ``row_bands``: full-resolution [start, stop) rows to match; ``windows``: (x0, y0, x1, y1)
     regions to match instead (:func:`match_windows`; a window's columns left of its largest
     disparity are context, their depth is not kept unless the window starts at the image's edge).
     Pixels outside stay NaN. Neither: the whole image.
     """
+    near_m, far_m, scale, far_factor = config.near_m, config.far_m, config.sgbm_scale, config.sgbm_far_factor
+    block_size, uniqueness = config.sgbm_block_size, config.sgbm_uniqueness
     height, width = left.shape[:2]
     depth = np.full((height, width), np.nan, dtype=np.float32)
     if windows is None:

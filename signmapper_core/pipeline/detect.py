@@ -182,8 +182,7 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     if not fits:
         return None
     tolerance = config.sgbm_planarity_tolerance_px if matched else config.planarity_tolerance_px
-    planarity = segment_planarity(camera, depth, seg.bbox, seg.surface_mask, config.planarity_window_px,
-                                  tolerance, config.max_slant_deg, config.min_depth_coverage)
+    planarity = segment_planarity(camera, depth, seg.bbox, seg.surface_mask, config, tolerance)
     if planarity.indicator < config.detection_threshold:
         return None
     # A reading that grows the segment into a larger face (a zone panel around its red ring) wins
@@ -199,7 +198,8 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
             continue
         if catalogue[cls.template_id].shape in same_shapes:  # the face is the segment (maybe with a rim)
             readings.append((match, face, cls))
-        elif surround_score(left, face, catalogue, cls.template_id, ext) >= config.min_surround_score:
+        elif surround_score(left, face, catalogue, cls.template_id, ext, config.surround_grow) >= \
+                config.min_surround_score:
             panels.append((match, face, cls))
     good_panels = [r for r in panels if r[2].score >= accept]
     pool = good_panels or readings or panels
@@ -218,11 +218,13 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
         # spoiled its outline); faded or white ones stay for review
         x, y, w, h = seg.bbox
         ranges = config.hsv_ranges.get(seg.colour)
-        strong = ranges is not None and ring_colour_share(left[y : y + h, x : x + w], seg.mask, ranges) >= 0.5
+        strong = ranges is not None and ring_colour_share(left[y : y + h, x : x + w], seg.mask, ranges) >= \
+            config.hough_strong_ring_share
         status = status if strong else config.hough_max_status
     u, v = bbox_centre(face)
     z = planarity.depth_at(camera, u, v)
-    if not (np.isfinite(z) and config.near_m * 0.8 <= z <= config.far_m * 1.2):
+    slack = config.face_depth_slack
+    if not (np.isfinite(z) and config.near_m * (1.0 - slack) <= z <= config.far_m * (1.0 + slack)):
         z = size.depth_m
     entry = catalogue[cls.template_id]
     return Detection(
@@ -282,8 +284,8 @@ def _ensure_depth(left, depth, right, camera, catalogue, config: PipelineConfig,
         # of a panel) anywhere in the search space are left out.
         segs = colour_segments(left, None, config, roi, smallest_face_px(camera, catalogue, config), frame)
         heights = [h for e in catalogue for (_, h) in e.formats.values()] or [0.4, 1.5]
-        max_px = 1.3 * max(heights) * camera.fy / config.near_m
-        min_px = 0.5 * min(heights) * camera.fy / config.far_m
+        max_px = config.sgbm_band_max_height * max(heights) * camera.fy / config.near_m
+        min_px = config.sgbm_band_min_height * min(heights) * camera.fy / config.far_m
         boxes = [s.bbox for s in segs if min_px <= s.bbox[3] <= max_px]
         if config.sgbm_columns_only:
             reach = largest_disparity_px(camera, config.near_m, config.far_m, config.sgbm_scale,
@@ -293,8 +295,7 @@ def _ensure_depth(left, depth, right, camera, catalogue, config: PipelineConfig,
         bands = merge_row_bands([(y, y + h) for _, y, _, h in boxes], left.shape[0], config.sgbm_row_margin_px)
     if not bands:
         return np.full(left.shape[:2], np.nan, dtype=np.float32)
-    return sgbm_depth(left, right, camera, config.near_m, config.far_m, config.sgbm_scale,
-                      config.sgbm_block_size, bands, config.sgbm_far_factor, config.sgbm_uniqueness, windows)
+    return sgbm_depth(left, right, camera, config, bands, windows)
 
 
 class _Timer:
@@ -371,9 +372,7 @@ def _hough_detections(left, depth, search, camera, pose, catalogue, config: Pipe
         taken = [d.bbox for d in found]
         sub = search[y0:y1, x0:x1]
         scale = hough_scale(r_min, config.hough_scale, config.hough_min_radius_px)
-        for seg in hough_segments(left[y0:y1, x0:x1], sub, r_min, r_max, (), scale,
-                                  config.hough_circularity, config.hough_edge_threshold, config.border_margin_px,
-                                  config.hough_tint_min_saturation):
+        for seg in hough_segments(left[y0:y1, x0:x1], sub, r_min, r_max, scale, config):
             seg = _shift_segment(seg, x0, y0)
             cu, cv = bbox_centre(seg.bbox)
             if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken):

@@ -16,11 +16,9 @@ import cv2
 import numpy as np
 
 from .colour import Segment, hsv_mask
+from .config import PipelineConfig
 
-# Hue bins (OpenCV 0-179) for naming the weak colour of a Hough circle's ring.
-# Dim red rings drift to magenta (hue 150-165 on GTSDB photographs), as in config.WEAK_HUES.
 HOUGH_DP = 1.5
-WEAK_HUES = {"red": ((0, 10), (150, 179)), "yellow": ((16, 35),), "blue": ((95, 135),)}
 
 
 def radius_range_px(fx: float, near_m: float, far_m: float, diameters_m: Sequence[float], slack: float = 0.2):
@@ -41,11 +39,10 @@ def find_circles(
     search_mask: np.ndarray,
     r_min: int,
     r_max: int,
-    scale: float = 0.5,
-    circularity: float = 0.85,
-    edge_threshold: float = 150.0,
+    scale: float,
+    config: PipelineConfig,
 ) -> np.ndarray:
-    """Circles (N, 3) as (u, v, r) in full-image pixels, found in the search space."""
+    """Circles (N, 3) as (u, v, r) in full-image pixels, found in the search space (image at ``scale``)."""
     grey = cv2.cvtColor(bgr, cv2.COLOR_BGR2GRAY) if bgr.ndim == 3 else bgr.copy()
     mask = search_mask.astype(np.uint8) * 255
     if scale != 1.0:
@@ -57,8 +54,8 @@ def find_circles(
     grey[mask < 128] = 0
     lo, hi = max(2, int(r_min * scale)), max(3, int(np.ceil(r_max * scale)))
     circles = cv2.HoughCircles(
-        grey, cv2.HOUGH_GRADIENT_ALT, dp=HOUGH_DP, minDist=max(4, lo), param1=edge_threshold,
-        param2=circularity, minRadius=lo, maxRadius=hi,
+        grey, cv2.HOUGH_GRADIENT_ALT, dp=HOUGH_DP, minDist=max(4, lo), param1=config.hough_edge_threshold,
+        param2=config.hough_circularity, minRadius=lo, maxRadius=hi,
     )
     if circles is None:
         return np.zeros((0, 3))
@@ -78,16 +75,17 @@ def ring_colour_share(bgr: np.ndarray, mask: np.ndarray, ranges) -> float:
     return float(np.count_nonzero(hsv_mask(cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV), ranges)[ring])) / ring.sum()
 
 
-def weak_colour(bgr: np.ndarray, mask: np.ndarray, min_saturation: int = 40, min_share: float = 0.25) -> str:
-    """Dominant weak colour of the outer ring of a disc mask: red/blue/yellow, else white."""
+def weak_colour(bgr: np.ndarray, mask: np.ndarray, config: PipelineConfig) -> str:
+    """Dominant weak colour of the outer ring of a disc mask (``config.hough_tint_hues``): red/blue/yellow, else
+    white."""
     ring = outer_ring(mask)
     hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
     pixels = hsv[ring > 0]
     if pixels.size == 0:
         return "white"
-    tinted = pixels[pixels[:, 1] >= min_saturation]
-    best, best_share = "white", min_share
-    for name, ranges in WEAK_HUES.items():
+    tinted = pixels[pixels[:, 1] >= config.hough_tint_min_saturation]
+    best, best_share = "white", config.hough_tint_min_share
+    for name, ranges in config.hough_tint_hues.items():
         hit = np.zeros(len(tinted), bool)
         for h0, h1 in ranges:
             hit |= (tinted[:, 0] >= h0) & (tinted[:, 0] <= h1)
@@ -97,22 +95,21 @@ def weak_colour(bgr: np.ndarray, mask: np.ndarray, min_saturation: int = 40, min
     return best
 
 
-def circle_segment(bgr: np.ndarray, u: float, v: float, r: float, border_margin_px: int = 2,
-                   tint_min_saturation: int = 40) -> Optional[Segment]:
+def circle_segment(bgr: np.ndarray, u: float, v: float, r: float, config: PipelineConfig) -> Optional[Segment]:
     """A Hough circle as a segment (disc mask in its box), its colour from the ring."""
     height, width = bgr.shape[:2]
     x0, y0 = int(round(u - r)), int(round(v - r))
     size = int(round(2 * r)) + 1
     if size < 3:
         return None
-    m = border_margin_px
+    m = config.border_margin_px
     touches = x0 <= m or y0 <= m or x0 + size >= width - m or y0 + size >= height - m
     if x0 < 0 or y0 < 0 or x0 + size > width or y0 + size > height:
         return None
     mask = np.zeros((size, size), np.uint8)
     cv2.circle(mask, (size // 2, size // 2), size // 2, 255, -1)
     crop = bgr[y0 : y0 + size, x0 : x0 + size]
-    colour = weak_colour(crop, mask, tint_min_saturation)
+    colour = weak_colour(crop, mask, config)
     contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
     return Segment(colour, (x0, y0, size, size), mask, contours[0] + np.array([x0, y0]),
                    int(np.count_nonzero(mask)), touches, source="hough")
@@ -123,21 +120,18 @@ def hough_segments(
     search_mask: np.ndarray,
     r_min: int,
     r_max: int,
+    scale: float,
+    config: PipelineConfig,
     taken: Sequence[tuple] = (),
-    scale: float = 0.5,
-    circularity: float = 0.85,
-    edge_threshold: float = 150.0,
-    border_margin_px: int = 2,
-    tint_min_saturation: int = 40,
 ) -> List[Segment]:
     """Round-sign segments from Hough circles whose centre is not inside a ``taken`` box."""
     out = []
     if not search_mask.any():
         return out
-    for u, v, r in find_circles(bgr, search_mask, r_min, r_max, scale, circularity, edge_threshold):
+    for u, v, r in find_circles(bgr, search_mask, r_min, r_max, scale, config):
         if any(x <= u < x + w and y <= v < y + h for x, y, w, h in taken):
             continue
-        seg = circle_segment(bgr, u, v, r, border_margin_px, tint_min_saturation)
+        seg = circle_segment(bgr, u, v, r, config)
         if seg is not None:
             out.append(seg)
     return out

@@ -105,13 +105,17 @@ def segment_planarity(
     depth: np.ndarray,
     bbox,
     mask: np.ndarray,
-    window: int = 7,
-    tolerance_px: float = 0.6,
-    max_slant_deg: float = 45.0,
-    min_coverage: float = 0.3,
-    max_depth_deviation: Optional[float] = 0.25,
+    config,
+    tolerance_px: float,
 ) -> PlanarityResult:
-    """Detection indicator of a segment (filled ``mask`` inside ``bbox``) from the depth map."""
+    """Detection indicator of a segment (filled ``mask`` inside ``bbox``) from the depth map.
+
+    ``config`` (a PipelineConfig) gives the planarity settings; ``tolerance_px`` is the
+    residual allowed for the depth's kind (given or matched: ``planarity_tolerance_px``,
+    ``sgbm_planarity_tolerance_px``).
+    """
+    window, max_slant_deg = config.planarity_window_px, config.max_slant_deg
+    min_coverage, max_depth_deviation = config.min_depth_coverage, config.max_depth_deviation
     x, y, w, h = bbox
     z = depth[y : y + h, x : x + w].astype(np.float64)
     inside = mask > 0

@@ -1,5 +1,6 @@
 """Mapping a whole drive with the core: one result with detections, signs, id links, heights; skip and cancel."""
 
+import json
 import shutil
 from pathlib import Path
 
@@ -13,6 +14,7 @@ from signmapper_core.geometry import world_to_pixel
 from signmapper_core.mapping import detect_at, load_pair, manual_sign, map_drive
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.progress import Cancelled
+from signmapper_core.run_settings import run_settings
 from signmapper_core.simulate import SimulationConfig, generate_drive
 
 
@@ -66,6 +68,9 @@ def test_run_record_names_drive_catalogue_and_settings(mapped, drive_dir):
     record = mapped[0].run_record()
     assert Path(record["drive"]) == drive_dir.resolve() and record["crs"] == "EPSG:2056"
     assert (record["near_m"], record["far_m"], record["colours"]) == (4.0, 14.0, ["red", "blue", "yellow"])
+    settings = run_settings(json.loads(json.dumps(record)), "record")  # the whole configuration, as JSON
+    assert settings.config == mapped[0].config and settings.fusion == mapped[0].fusion
+    assert settings.fusion.accept_classification == record["classification_threshold"]
 
 
 def test_corrupt_pair_is_skipped_with_a_warning_naming_it(drive_dir, catalogue, tmp_path):

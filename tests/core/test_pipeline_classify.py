@@ -5,8 +5,10 @@ from pipeline_scenes import noisy_background, paste
 
 from signmapper_core.catalogue import FaceStyle, load_catalogue, render_face
 from signmapper_core.pipeline.classify import classify_segment
-from signmapper_core.pipeline.config import DEFAULT_HSV_RANGES
+from signmapper_core.pipeline.config import DEFAULT_HSV_RANGES, PipelineConfig
 from signmapper_core.pipeline.face_extent import candidate_entries, colour_extent
+
+CONFIG = PipelineConfig()
 
 ALL_COLOURS = ("red", "blue", "yellow", "white")
 
@@ -48,7 +50,7 @@ def test_template_under_blur_noise_and_perspective_is_recognised(catalogue, temp
     bgr, alpha = catalogue.render(template_id, size_px)
     bgr, alpha = _perspective(bgr, alpha)
     image, bbox = _degraded_scene(bgr, alpha, seed=size_px)
-    result = classify_segment(image, bbox, catalogue, _candidates(catalogue, template_id))
+    result = classify_segment(image, bbox, catalogue, _candidates(catalogue, template_id), CONFIG)
     assert result.template_id == template_id
     assert result.score > 0.8
 
@@ -121,20 +123,20 @@ def test_network_classifies_boxes_past_the_image_edge(catalogue, network, bbox):
 def test_a_non_sign_scores_low(catalogue):
     image = noisy_background(200, 200, seed=5)
     cv2.circle(image, (90, 80), 30, (40, 40, 200), -1)  # a plain red disc: no white field, no pictogram
-    result = classify_segment(image, (60, 50, 61, 61), catalogue, _candidates(catalogue, "2.30-50"))
+    result = classify_segment(image, (60, 50, 61, 61), catalogue, _candidates(catalogue, "2.30-50"), CONFIG)
     assert result.score < 0.6
 
 
 def test_no_candidates_gives_no_template(catalogue):
     image = noisy_background(100, 100)
-    assert classify_segment(image, (10, 10, 40, 40), catalogue, []).template_id is None
+    assert classify_segment(image, (10, 10, 40, 40), catalogue, [], CONFIG).template_id is None
 
 
 def test_face_at_the_image_border_is_matched_without_error(catalogue):
     bgr, alpha = catalogue.render("2.30-50", 60)
     image = noisy_background(120, 120)
     paste(image, bgr, alpha, 0, 0)
-    result = classify_segment(image, (0, 0, 60, 60), catalogue, _candidates(catalogue, "2.30-50"))
+    result = classify_segment(image, (0, 0, 60, 60), catalogue, _candidates(catalogue, "2.30-50"), CONFIG)
     assert result.template_id == "2.30-50"
 
 
@@ -156,11 +158,11 @@ def test_surround_tells_a_zone_panel_from_a_round_sign_on_a_wall(catalogue):
     panel_bgr, panel_alpha = catalogue.render("2.59.1", (60, 90))
     panel = noisy_background(200, 200, seed=1)
     paste(panel, panel_bgr, panel_alpha, 50, 40)
-    assert surround_score(panel, (50, 40, 60, 90), catalogue, "2.59.1", extent) > 0.8
+    assert surround_score(panel, (50, 40, 60, 90), catalogue, "2.59.1", extent, CONFIG.surround_grow) > 0.8
     disc_bgr, disc_alpha = catalogue.render("2.30-30", 52)  # where the panel's ring would be
     wall = noisy_background(200, 200, seed=1)
     paste(wall, disc_bgr, disc_alpha, 50 + int(extent[0] * 60), 40 + int(extent[1] * 90))
-    assert surround_score(wall, (50, 40, 60, 90), catalogue, "2.59.1", extent) < 0.3
+    assert surround_score(wall, (50, 40, 60, 90), catalogue, "2.59.1", extent, CONFIG.surround_grow) < 0.3
 
 
 def test_pole_across_a_flat_field_sign_does_not_read_as_stripes():
@@ -174,5 +176,5 @@ def test_pole_across_a_flat_field_sign_does_not_read_as_stripes():
     scene = cv2.GaussianBlur(scene, (3, 3), 0)
     # tie_margin=1 hands every decision to the close-call rule, which is what this test is about
     result = classify_segment(scene, (25, 25, face.shape[1], face.shape[0]), catalogue, ["3.03", "3.04"],
-                              tie_margin=1.0)
+                              PipelineConfig(tie_margin=1.0))
     assert result.template_id == "3.03", result.scores

@@ -1,8 +1,11 @@
+from dataclasses import replace
+
 import cv2
 import numpy as np
 import pytest
 from pipeline_scenes import CAMERA
 
+from signmapper_core.pipeline.config import PipelineConfig
 from signmapper_core.pipeline.depth import (
     disparity_range,
     largest_disparity_px,
@@ -10,6 +13,8 @@ from signmapper_core.pipeline.depth import (
     merge_row_bands,
     sgbm_depth,
 )
+
+CONFIG = PipelineConfig()  # the depth range 4-14 m and SGBM settings of a run
 
 
 def _textured_pair(disparity, seed=0):
@@ -36,7 +41,7 @@ def test_sgbm_depth_of_a_textured_plane(scale):
     z_true = 6.0
     disparity = int(round(CAMERA.fx * CAMERA.baseline_m / z_true))  # 90 px
     left, right = _textured_pair(disparity)
-    depth = sgbm_depth(left, right, CAMERA, 4.0, 14.0, scale=scale)
+    depth = sgbm_depth(left, right, CAMERA, replace(CONFIG, sgbm_scale=scale))
     usable = depth[20:-20, 100:-20]  # columns left of the disparity (90 px) have no match
     valid = np.isfinite(usable)
     assert valid.mean() > 0.9
@@ -49,7 +54,7 @@ def test_plane_beyond_the_far_limit_does_not_enter_the_search_space():
     # onto a wrong disparity inside the 4-14 m range
     disparity = int(round(CAMERA.fx * CAMERA.baseline_m / 30.0))
     left, right = _textured_pair(disparity, seed=1)
-    depth = sgbm_depth(left, right, CAMERA, 4.0, 14.0, scale=0.5)
+    depth = sgbm_depth(left, right, CAMERA, CONFIG)
     usable = depth[20:-20, 20:-20]
     assert np.mean((usable >= 4.0) & (usable <= 14.0)) < 0.05
 
@@ -57,7 +62,7 @@ def test_plane_beyond_the_far_limit_does_not_enter_the_search_space():
 def test_columns_left_of_the_largest_disparity_are_matched():
     disparity = 90  # 6 m
     left, right = _textured_pair(disparity)
-    depth = sgbm_depth(left, right, CAMERA, 4.0, 14.0, scale=0.5)
+    depth = sgbm_depth(left, right, CAMERA, CONFIG)
     strip = depth[20:-20, 100:150]  # inside the disparity range width: empty without left padding
     assert np.mean(np.abs(strip - 6.0) < 0.15) > 0.9
 
@@ -65,7 +70,7 @@ def test_columns_left_of_the_largest_disparity_are_matched():
 def test_sgbm_on_row_bands_leaves_other_rows_nan():
     disparity = 90
     left, right = _textured_pair(disparity)
-    depth = sgbm_depth(left, right, CAMERA, 4.0, 14.0, scale=0.5, row_bands=[(100, 160)])
+    depth = sgbm_depth(left, right, CAMERA, CONFIG, row_bands=[(100, 160)])
     assert np.isnan(depth[:100]).all() and np.isnan(depth[160:]).all()
     band = depth[100:160, 160:-20]
     assert np.nanmedian(band) == pytest.approx(6.0, rel=0.01)
@@ -91,8 +96,8 @@ def test_sgbm_on_windows_matches_them_like_the_whole_rows_and_leaves_the_rest_na
     reach = largest_disparity_px(CAMERA, 4.0, 14.0, 0.5, 2.0)
     assert reach >= CAMERA.fx * CAMERA.baseline_m / 4.0
     (window,) = match_windows([(400, 120, 60, 40)], CAMERA.width, CAMERA.height, 10, 10, reach)
-    depth = sgbm_depth(left, right, CAMERA, 4.0, 14.0, scale=0.5, far_factor=2.0, windows=[window])
-    rows = sgbm_depth(left, right, CAMERA, 4.0, 14.0, scale=0.5, far_factor=2.0, row_bands=[(110, 170)])
+    depth = sgbm_depth(left, right, CAMERA, CONFIG, windows=[window])
+    rows = sgbm_depth(left, right, CAMERA, CONFIG, row_bands=[(110, 170)])
     kept = np.isfinite(depth)
     ys, xs = np.nonzero(kept)
     assert (ys.min(), ys.max() + 1) == (110, 170) and (xs.min(), xs.max() + 1) == (390, 470)

@@ -8,6 +8,8 @@ from signmapper_core.catalogue import load_catalogue
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.classify import classify_segment, crop_for_matching, padded_crop
 
+CONFIG = PipelineConfig()
+
 H, W = CAMERA.height, CAMERA.width
 SIDE = pixels_for(0.6, 8.0)  # a 0.60 m disc at 8 m
 INSET = 4  # px between the face and the border: more than border_margin_px, so the segment is not cut
@@ -55,7 +57,7 @@ def test_classification_of_a_box_past_the_border_pads_instead_of_failing(catalog
     region, factor, size = crop_for_matching(image, BOXES[name], (0.92, 1.0, 1.08), 0.08, 96)
     margin = int(np.ceil(0.04 * max(w, h, 1) + 0.08 * max(w, h, 1))) + 2
     assert region.shape == (max(h, 1) + 2 * margin, max(w, 1) + 2 * margin, 3)
-    result = classify_segment(image, BOXES[name], catalogue, ["2.30-50", "2.30-60", "2.01", "1.01"])
+    result = classify_segment(image, BOXES[name], catalogue, ["2.30-50", "2.30-60", "2.01", "1.01"], CONFIG)
     assert result.template_id is not None and 0.0 <= result.score <= 1.0
 
 
@@ -63,7 +65,7 @@ def test_half_visible_face_at_the_left_border_still_matches_its_template(catalog
     bgr, alpha = catalogue.render("2.30-50", 60)
     image = noisy_background()
     paste(image, bgr, alpha, -12, 150)  # a fifth of the face beyond the border
-    result = classify_segment(image, (-12, 150, 60, 60), catalogue, ["2.30-50", "1.01", "2.01", "4.17"])
+    result = classify_segment(image, (-12, 150, 60, 60), catalogue, ["2.30-50", "1.01", "2.01", "4.17"], CONFIG)
     assert result.template_id == "2.30-50"
 
 

@@ -2,8 +2,11 @@ import cv2
 import numpy as np
 from pipeline_scenes import CAMERA, noisy_background, pixels_for
 
+from signmapper_core.pipeline.config import PipelineConfig
 from signmapper_core.pipeline.hough import find_circles, hough_segments, radius_range_px, weak_colour
 from signmapper_core.pipeline.search_space import search_space_mask
+
+CONFIG = PipelineConfig()
 
 
 def _scene(ring_bgr, field_bgr, u=300, v=180, z=7.0):
@@ -27,7 +30,7 @@ def test_faded_red_ring_is_found_and_named_red():
     faded_red = (120, 115, 165)  # saturation ~ 80: below the red threshold of the colour step
     image, depth, r = _scene(faded_red, (200, 200, 200))
     search = search_space_mask(depth, 4.0, 14.0)
-    segs = hough_segments(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6]))
+    segs = hough_segments(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6]), 0.5, CONFIG)
     assert len(segs) >= 1
     best = min(segs, key=lambda s: abs(s.bbox[0] + s.bbox[2] / 2 - 300) + abs(s.bbox[1] + s.bbox[3] / 2 - 180))
     x, y, w, h = best.bbox
@@ -38,18 +41,18 @@ def test_faded_red_ring_is_found_and_named_red():
 def test_white_round_sign_is_found_from_the_depth_edge():
     image, depth, r = _scene((160, 160, 160), (160, 160, 160))  # same grey as the background
     search = search_space_mask(depth, 4.0, 14.0)
-    circles = find_circles(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6]))
+    circles = find_circles(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6]), 0.5, CONFIG)
     assert any(abs(u - 300) < 4 and abs(v - 180) < 4 and abs(rr - r) < 4 for u, v, rr in circles)
 
 
 def test_nothing_in_the_search_space_means_no_circles():
     image, depth, _ = _scene((120, 115, 165), (200, 200, 200), z=20.0)
     search = search_space_mask(depth, 4.0, 14.0)
-    assert hough_segments(image, search, 10, 60) == []
+    assert hough_segments(image, search, 10, 60, 0.5, CONFIG) == []
 
 
 def test_weak_colour_of_grey_ring_is_white():
     patch = np.full((41, 41, 3), 180, np.uint8)
     mask = np.zeros((41, 41), np.uint8)
     cv2.circle(mask, (20, 20), 20, 255, -1)
-    assert weak_colour(patch, mask) == "white"
+    assert weak_colour(patch, mask, CONFIG) == "white"

@@ -1,10 +1,16 @@
+from dataclasses import replace
+
 import cv2
 import numpy as np
 import pytest
 from pipeline_scenes import CAMERA
 
 from signmapper_core.geometry import Camera
+from signmapper_core.pipeline.config import PipelineConfig
 from signmapper_core.pipeline.planarity import segment_planarity
+
+CONFIG = PipelineConfig()
+GIVEN = CONFIG.planarity_tolerance_px  # the residual allowed with given depth maps
 
 BBOX = (300, 150, 60, 60)
 H, W = CAMERA.height, CAMERA.width
@@ -26,7 +32,7 @@ def _plane_depth(normal, distance):
 def test_flat_sign_facing_the_camera_is_planar():
     depth = np.full((H, W), 25.0, np.float32)
     depth[150:210, 300:360] = 8.0  # the sign in front of a far background
-    result = segment_planarity(CAMERA, depth, BBOX, _disc())
+    result = segment_planarity(CAMERA, depth, BBOX, _disc(), CONFIG, GIVEN)
     assert result.indicator > 0.97
     assert result.depth_at(CAMERA, 329.5, 179.5) == pytest.approx(8.0, rel=1e-3)
 
@@ -35,13 +41,13 @@ def test_noisy_flat_sign_with_holes_is_still_planar():
     rng = np.random.default_rng(0)
     depth = (8.0 + rng.normal(0, 0.02, (H, W))).astype(np.float32)  # ~2 cm noise
     depth[rng.random((H, W)) < 0.1] = np.nan
-    assert segment_planarity(CAMERA, depth, BBOX, _disc()).indicator > 0.9
+    assert segment_planarity(CAMERA, depth, BBOX, _disc(), CONFIG, GIVEN).indicator > 0.9
 
 
 def test_sign_turned_20_degrees_is_planar():
     a = np.radians(20)
     depth = _plane_depth((np.sin(a), 0, np.cos(a)), 8.0 * np.cos(a))
-    result = segment_planarity(CAMERA, depth, BBOX, _disc())
+    result = segment_planarity(CAMERA, depth, BBOX, _disc(), CONFIG, GIVEN)
     assert result.indicator > 0.95
     assert result.slant_deg == pytest.approx(20.0, abs=0.5)
 
@@ -49,7 +55,7 @@ def test_sign_turned_20_degrees_is_planar():
 def test_patch_on_a_facade_along_the_road_is_not_planar_enough():
     a = np.radians(70)  # a wall nearly parallel to the driving direction
     depth = _plane_depth((np.sin(a), 0, np.cos(a)), 8.0 * np.cos(a))
-    assert segment_planarity(CAMERA, depth, BBOX, _disc()).indicator < 0.1
+    assert segment_planarity(CAMERA, depth, BBOX, _disc(), CONFIG, GIVEN).indicator < 0.1
 
 
 def test_patch_on_a_curved_surface_is_not_planar():
@@ -67,20 +73,21 @@ def test_patch_on_a_curved_surface_is_not_planar():
     side = int(0.6 * cam.fx / 6.0)
     bbox = (int(cam.cx - side / 2), 450, side, side)
     mask = np.full((side, side), 255, np.uint8)
-    assert segment_planarity(cam, depth, bbox, mask).indicator < 0.4
+    assert segment_planarity(cam, depth, bbox, mask, CONFIG, GIVEN).indicator < 0.4
     flat = (fb / (fb / 6.0 + np.random.default_rng(1).normal(0, 0.25, depth.shape))).astype(np.float32)
-    assert segment_planarity(cam, flat, bbox, mask).indicator > 0.9  # same noise, flat: a sign
+    assert segment_planarity(cam, flat, bbox, mask, CONFIG, GIVEN).indicator > 0.9  # same noise, flat: a sign
 
 
 def test_segment_without_enough_depth_has_indicator_zero():
     depth = np.full((H, W), np.nan, np.float32)
     depth[150:160, 300:360] = 8.0  # one sixth of the box has depth
-    result = segment_planarity(CAMERA, depth, BBOX, np.full((60, 60), 255, np.uint8))
+    result = segment_planarity(CAMERA, depth, BBOX, np.full((60, 60), 255, np.uint8), CONFIG, GIVEN)
     assert result.indicator == 0.0 and result.plane is None
 
 
 def test_empty_mask_has_indicator_zero():
-    result = segment_planarity(CAMERA, np.full((H, W), 8.0, np.float32), BBOX, np.zeros((60, 60), np.uint8))
+    result = segment_planarity(CAMERA, np.full((H, W), 8.0, np.float32), BBOX, np.zeros((60, 60), np.uint8), CONFIG,
+                               GIVEN)
     assert result.indicator == 0.0
 
 
@@ -88,5 +95,6 @@ def test_background_depth_on_the_signs_edge_is_ignored():
     # SGBM gives a sign's left edge the depth of the background behind it
     depth = np.full((H, W), 8.0, np.float32)
     depth[150:210, 300:315] = 30.0
-    assert segment_planarity(CAMERA, depth, BBOX, _disc()).indicator > 0.95
-    assert segment_planarity(CAMERA, depth, BBOX, _disc(), max_depth_deviation=None).indicator < 0.9
+    assert segment_planarity(CAMERA, depth, BBOX, _disc(), CONFIG, GIVEN).indicator > 0.95
+    assert segment_planarity(CAMERA, depth, BBOX, _disc(), replace(CONFIG, max_depth_deviation=None),
+                             GIVEN).indicator < 0.9

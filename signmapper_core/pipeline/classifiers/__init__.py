@@ -30,9 +30,7 @@ def make_classifier(name: str, catalogue, config=None):
         name = "cnn" if model_card_path(catalogue.folder).is_file() else "ncc"
     if name == "cnn":
         return LearnedClassifier.for_catalogue(catalogue)
-    if config is None:
-        return NccClassifier(catalogue)
-    return NccClassifier(catalogue, config.scales, config.shift_fraction, config.max_template_px)
+    return NccClassifier(catalogue, config)
 
 
 @lru_cache(maxsize=4)

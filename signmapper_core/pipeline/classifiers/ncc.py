@@ -17,15 +17,15 @@ class NccClassifier:
     min_score = 0.35  # below this no template resembles the segment: not reported
     marginal_min_score = 0.5  # a loose or oblique outline must resemble its template clearly
 
-    def __init__(self, catalogue, scales=(0.92, 1.0, 1.08), shift_fraction: float = 0.08, max_template_px: int = 96):
+    def __init__(self, catalogue, config=None):
+        """``config``: the PipelineConfig whose classification settings apply (None: the defaults)."""
+        from ..config import PipelineConfig
+
         self.catalogue = catalogue
-        self.scales = tuple(scales)
-        self.shift_fraction = shift_fraction
-        self.max_template_px = max_template_px
+        self.config = config if config is not None else PipelineConfig()
 
     def knows(self, template_ids: Sequence[str]) -> bool:
         return all(t in self.catalogue for t in template_ids)
 
     def classify(self, image: np.ndarray, bbox, candidate_ids: Sequence[str]) -> ClassificationResult:
-        return classify_segment(image, bbox, self.catalogue, candidate_ids, self.scales, self.shift_fraction,
-                                self.max_template_px)
+        return classify_segment(image, bbox, self.catalogue, candidate_ids, self.config)

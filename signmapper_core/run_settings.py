@@ -1,0 +1,123 @@
+"""A run's settings saved whole in its output's run table, and read back to map a drive again with them.
+
+The run table (``output_schema.RUN_KEYS``) holds every field of the
+``PipelineConfig`` (key ``pipeline``) and of the ``FusionConfig`` (key
+``fusion``) as JSON, with ``settings_version``. :func:`load_run_settings`
+turns the run table of an earlier output back into those objects, so a drive
+can be mapped again exactly as it was (``mapsigns``' "Settings from an earlier
+output"). Settings this version does not know are reported and ignored;
+settings the record lacks (added after it was written) keep their defaults; a
+record of another settings version is refused, since its values may mean
+something else.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import sqlite3
+from contextlib import closing
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable, Optional
+
+from .output_schema import RUN_TABLE, decode_run_value
+
+SETTINGS_VERSION = 1  # raise when a setting changes its meaning or unit: older records are then refused
+SQLITE_HEADER = b"SQLite format 3\x00"
+
+Warn = Callable[[str], None]
+
+
+class RunRecordError(ValueError):
+    """An earlier output's run record cannot give the settings; the message names the file and why."""
+
+
+def settings_dict(settings) -> dict:
+    """Field name -> JSON-ready value of a settings dataclass (tuples become lists)."""
+    return json.loads(json.dumps(dataclasses.asdict(settings)))
+
+
+def _frozen(value):
+    """JSON lists back to the tuples the settings dataclasses hold (they are frozen and hashable)."""
+    if isinstance(value, list):
+        return tuple(_frozen(v) for v in value)
+    if isinstance(value, dict):
+        return {k: _frozen(v) for k, v in value.items()}
+    return value
+
+
+def settings_of(cls, data: dict, where: str, warn: Optional[Warn] = None):
+    """An instance of the settings dataclass ``cls`` from ``data`` (a :func:`settings_dict`).
+
+    Keys ``cls`` does not have are passed to ``warn`` and ignored; missing ones
+    keep their defaults. Values the class refuses raise :class:`RunRecordError`
+    naming ``where``.
+    """
+    if not isinstance(data, dict):
+        raise RunRecordError(f"{where}: expected a JSON object of settings, found {type(data).__name__}")
+    known = {f.name for f in dataclasses.fields(cls)}
+    unknown = sorted(set(data) - known)
+    if unknown and warn is not None:
+        warn(f"{where}: ignored settings this version does not know: {', '.join(unknown)}")
+    try:
+        return cls(**{k: _frozen(v) for k, v in data.items() if k in known})
+    except (TypeError, ValueError) as exc:
+        raise RunRecordError(f"{where}: {exc}") from exc
+
+
+def read_run_record(path) -> dict:
+    """Key -> value of the run table of the GeoPackage ``path`` (values decoded as written).
+
+    Raises :class:`RunRecordError` when the file is missing, no GeoPackage, or has no run table.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise RunRecordError(f"{path}: no such file")
+    with open(path, "rb") as fh:
+        if fh.read(len(SQLITE_HEADER)) != SQLITE_HEADER:
+            raise RunRecordError(f"{path}: not a GeoPackage")
+    try:
+        with closing(sqlite3.connect(f"{path.resolve().as_uri()}?mode=ro", uri=True)) as db:
+            tables = {row[0] for row in db.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
+            if RUN_TABLE not in tables:
+                raise RunRecordError(f"{path}: no table '{RUN_TABLE}': not an output of Sign Mapper's "
+                                     "'Map traffic signs'")
+            rows = db.execute(f'SELECT "key", "value" FROM "{RUN_TABLE}"').fetchall()
+    except sqlite3.Error as exc:
+        raise RunRecordError(f"{path}: cannot read its table '{RUN_TABLE}': {exc}") from exc
+    return {key: decode_run_value(key, text) for key, text in rows if isinstance(key, str) and isinstance(text, str)}
+
+
+@dataclass(frozen=True)
+class RunSettings:
+    """What an earlier run was mapped with: its pipeline and fusion settings and its catalogue folder."""
+
+    config: Any  # pipeline.PipelineConfig
+    fusion: Any  # fusion.FusionConfig
+    catalogue: Optional[str]  # folder as recorded; None when the record names none
+    software: str = ""
+
+
+def run_settings(record: dict, where: str, warn: Optional[Warn] = None) -> RunSettings:
+    """The settings of a run record (:func:`read_run_record`); ``where`` names it in messages."""
+    from .fusion import FusionConfig
+    from .pipeline.config import PipelineConfig
+
+    software = record.get("software", "an unknown program")
+    version = record.get("settings_version")
+    if version is None or "pipeline" not in record:
+        raise RunRecordError(f"{where}: written by {software}, which recorded only some of its settings (no "
+                             "'settings_version'); map the drive again with this version to record them all")
+    if version != SETTINGS_VERSION:
+        raise RunRecordError(f"{where}: settings version {version} (written by {software}); this version of Sign "
+                             f"Mapper reads version {SETTINGS_VERSION} only")
+    config = settings_of(PipelineConfig, record["pipeline"], f"{where}, pipeline settings", warn)
+    fusion = settings_of(FusionConfig, record.get("fusion", {}), f"{where}, fusion settings", warn)
+    catalogue = record.get("catalogue")
+    return RunSettings(config, fusion, str(catalogue) if catalogue else None, str(software))
+
+
+def load_run_settings(path, warn: Optional[Warn] = None) -> RunSettings:
+    """The settings an earlier output at ``path`` was mapped with; :class:`RunRecordError` says what is wrong."""
+    return run_settings(read_run_record(path), str(path), warn)

@@ -1,0 +1,43 @@
+"""The sign colours, declared once: the HSV thresholds of each colour the pipeline segments.
+
+``PipelineConfig`` takes its defaults from here and ``mapsigns`` offers these
+colours as its choices, so adding a sign colour is a row in each table below
+(and a test). Hue is OpenCV's 0-179 scale. Kept apart from ``pipeline`` so the
+QGIS side can list the colours without importing OpenCV.
+"""
+
+from __future__ import annotations
+
+from typing import Dict, Tuple
+
+# (hue_lo, hue_hi, sat_lo, sat_hi, val_lo, val_hi); several ranges per colour are OR-ed.
+HsvRange = Tuple[int, int, int, int, int, int]
+HueBands = Tuple[Tuple[int, int], ...]
+
+# Cavegn (2011)'s thresholds of the strong pass
+HSV_RANGES: Dict[str, Tuple[HsvRange, ...]] = {
+    # red wraps around hue 0, so it needs both ends of the hue circle
+    "red": ((0, 10, 90, 255, 50, 255), (165, 179, 90, 255, 50, 255)),
+    "blue": ((100, 130, 110, 255, 40, 255),),
+    "yellow": ((16, 35, 110, 255, 90, 255),),
+}
+
+# Hue bands of the weak (scene-adaptive) pass; its saturation/value floors come from the scene.
+# Faded or dimly lit red rings on real photographs (GTSDB tune split) drift to magenta: hue 150-165
+# held ~40 % of their ring pixels, where hardly any background is. Germany's priority road (3.03) is
+# orange-yellow: hue 13-17 on most GTSDB photographs, below the strong band's 16.
+WEAK_HUES: Dict[str, HueBands] = {
+    "red": ((0, 10), (150, 179)),
+    "blue": ((98, 132),),
+    "yellow": ((11, 35),),
+}
+
+# Hue bands naming the tint of a Hough circle's ring (a faded ring, not a scene pass's segment: any
+# saturation above the tint floor counts, so the bands are the strong ones widened for blue)
+HOUGH_TINT_HUES: Dict[str, HueBands] = {
+    "red": ((0, 10), (150, 179)),
+    "yellow": ((16, 35),),
+    "blue": ((95, 135),),
+}
+
+SIGN_COLOURS: Tuple[str, ...] = tuple(HSV_RANGES)  # the colours a run may segment, in the order offered
