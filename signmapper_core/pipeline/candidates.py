@@ -119,7 +119,7 @@ def colour_step(image: np.ndarray, catalogue, config: Optional[PipelineConfig] =
     """(all segments looked at, the face candidates among them): :func:`face_candidates` with its cost."""
     config = config or PipelineConfig()
     segments = find_colour_segments(image, search, config, None)
-    segments = faces_with_split_pieces_merged(segments, config.min_shape_fit)
+    segments = faces_with_split_pieces_merged(segments, config)
     out = []
     for seg in segments:
         candidate = _candidate(seg, catalogue, config, image)

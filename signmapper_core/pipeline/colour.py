@@ -374,11 +374,12 @@ def merge_segments(a: Segment, b: Segment) -> Segment:
                    a.touches_border or b.touches_border, a.source, 1.0, pieces)
 
 
-def merge_candidates(segments: Sequence[Segment], max_gap_fraction: float = 0.35) -> List[Segment]:
+def merge_candidates(segments: Sequence[Segment], max_gap_fraction: float) -> List[Segment]:
     """Merged segments of same-coloured pieces close to each other, for faces split by an occluder.
 
     Two pieces qualify when the gap between their boxes is at most ``max_gap_fraction``
-    of the merged box's size and the merged box is not elongated beyond 2:1.
+    of the merged box's size (``PipelineConfig.merge_max_gap``) and the merged box is not
+    elongated beyond 2:1.
     """
     out = []
     for i, a in enumerate(segments):
@@ -400,16 +401,18 @@ def _span_overlap(a0: int, a1: int, b0: int, b1: int) -> float:
     return max(0, min(a1, b1) - max(a0, b0)) / float(max(1, min(a1 - a0, b1 - b0)))
 
 
-def split_face_merges(segments: Sequence[Segment], min_fit: float, max_gap_fraction: float = 0.35,
-                      min_span_overlap: float = 0.6, min_gain: float = 0.05) -> List[Tuple[Segment, int, int]]:
+def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment, int, int]]:
     """(merged, i, j) for pairs of pieces that together make a better sign outline than either alone.
 
     A white bar (no entry, 2.02) or a pole in front cuts a face into two pieces
     stacked along one axis: their boxes overlap along the other axis by at least
-    ``min_span_overlap`` and the gap between them is small. The hull of both is
-    kept when its outline fits an ideal shape (``min_fit``) better, by ``min_gain``,
-    than each piece does: the whole face is then judged before its pieces.
+    ``config.split_min_span_overlap`` and the gap between them is small (``merge_max_gap``).
+    The hull of both is kept when its outline fits an ideal shape (``min_shape_fit``)
+    better, by ``split_min_gain``, than each piece does: the whole face is then judged
+    before its pieces.
     """
+    min_fit, max_gap_fraction = config.min_shape_fit, config.merge_max_gap
+    min_span_overlap, min_gain = config.split_min_span_overlap, config.split_min_gain
     fits: dict = {}
 
     def fit_of(k: int) -> float:
@@ -440,8 +443,8 @@ def split_face_merges(segments: Sequence[Segment], min_fit: float, max_gap_fract
     return out
 
 
-def faces_with_split_pieces_merged(segments: Sequence[Segment], min_fit: float) -> List[Segment]:
+def faces_with_split_pieces_merged(segments: Sequence[Segment], config) -> List[Segment]:
     """The segments with each pair of pieces of one split face replaced by the merged face."""
-    merges = split_face_merges(segments, min_fit)
+    merges = split_face_merges(segments, config)
     used = {k for _, i, j in merges for k in (i, j)}
     return [m for m, _, _ in merges] + [s for k, s in enumerate(segments) if k not in used]

@@ -46,6 +46,11 @@ class PipelineConfig:
     search_grow_px: int = 31  # with SGBM depth the search space is grown by this much instead
     border_margin_px: int = 2  # segments this close to the image border are cut and rejected
     max_merge_pieces: int = 40  # rejected segments tried in pairs (faces split by an occluder)
+    merge_max_gap: float = 0.35  # two pieces of one face are at most this x the merged box's size apart
+    # a bar (2.02) or a pole cuts a face into pieces stacked along one axis: they overlap along the other by this
+    # share of the shorter one...
+    split_min_span_overlap: float = 0.6
+    split_min_gain: float = 0.05  # ...and their hull fits an ideal outline this much better than either piece
     # scene-adaptive colour (scene_colour.py): a second pass with saturation/value floors from the image
     # remove the scene's colour cast before the scene pass reads hues. Off by default: on GTSDB's tune split it
     # found 1 more of 127 signs (casts there stay under 6 %), but on synthetic drives, whose exposure model
@@ -128,11 +133,13 @@ class PipelineConfig:
     ring_edge_max_scale: float = 1.8  # widest ring sought around a field: face / field (Swiss circles 1.21,
     # triangles 1.4-1.56; GTSDB tune split: 1.4-1.9 to the annotated box)
     rim_same_iou: float = 0.8  # a measured face box overlapping an earlier reading this much is that reading
+    rim_scale_step: float = 1.03  # the outline is laid at scales this factor apart (3 %: a pixel at 33 px)
 
     # shape
     min_shape_fit: float = 0.68  # IoU with the best ideal outline; real triangles with rounded corners
     # and perspective fit 0.69-0.72 (GTSDB tune split: 0.72 -> 0.68 found 2.3 % more faces)
     confident_shape_fit: float = 0.72  # below it (or off the usual fill window) an outline is marginal...
+    confident_fill_window: float = 0.15  # (that window: this close to the ideal fill ratio of its shape)
     marginal_shape_min_score: Optional[float] = None  # ...and is reported only with this indicator (None = the
     # classifier's own: NCC 0.5 instead of 0.35, the network its acceptance threshold);
     # so is a round face sized by its larger axis: a search-space cut of two stacked triangles (41 x 62 px)
@@ -205,6 +212,8 @@ class PipelineConfig:
     hough_tint_min_saturation: int = 22
     hough_tint_hues: Dict[str, Tuple[Tuple[int, int], ...]] = field(default_factory=lambda: dict(HOUGH_TINT_HUES))
     hough_tint_min_share: float = 0.25  # share of the ring's pixels a tint needs to name it; else white
+    same_sign_max_iou: float = 0.3  # detections of one pair overlapping more (or holding the other's centre) are
+    # one sign found twice, or a part of it found as a sign: the best is kept
     hough_strong_ring_share: float = 0.5  # a Hough find whose ring is this much in full colour is a colour find
     # the colour step lost (an attachment spoiled its outline) and may be accepted; others stay at hough_max_status
 

@@ -135,7 +135,7 @@ def segment_outline(seg: Segment, config: PipelineConfig) -> Tuple[Tuple[str, ..
     result = classify_shape(seg.mask, config.min_shape_fit, config.shape_fill_window)
     shapes = outline_shapes(result, config.shape_ambiguity, config.min_shape_fit)
     marginal = bool(shapes) and (result.fit < config.confident_shape_fit
-                                 or abs(result.fill_ratio - IDEAL_FILL[shapes[0]]) > 0.15)
+                                 or abs(result.fill_ratio - IDEAL_FILL[shapes[0]]) > config.confident_fill_window)
     return shapes, marginal
 
 
@@ -252,7 +252,7 @@ def _centre_inside(a, b) -> bool:
     return x <= cu < x + w and y <= cv < y + h
 
 
-def suppress_overlaps(detections: Sequence[Detection], max_iou: float = 0.3) -> List[Detection]:
+def suppress_overlaps(detections: Sequence[Detection], max_iou: float) -> List[Detection]:
     """Keep the best of overlapping detections (one sign found twice, or a part of it found as a sign)."""
     ranked = sorted(detections, key=lambda d: d.detection_indicator * d.classification_indicator, reverse=True)
     kept: List[Detection] = []
@@ -337,7 +337,7 @@ def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig,
     with timer("segments"):
         # faces split by a bar (no entry) or a pole: the whole face is judged before its pieces
         taken = set()
-        for seg, i, j in split_face_merges(segments, config.min_shape_fit):
+        for seg, i, j in split_face_merges(segments, config):
             det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config, matched)
             if det is not None:
                 detections.append(det)
@@ -352,14 +352,14 @@ def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig,
             elif not seg.touches_border:
                 rejected.append(seg)
         # pieces that fail alone are also tried together when no whole outline formed (a branch cut them)
-        for seg in merge_candidates(rejected[: config.max_merge_pieces]):
+        for seg in merge_candidates(rejected[: config.max_merge_pieces], config.merge_max_gap):
             det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config, matched)
             if det is not None:
                 detections.append(det)
     with timer("hough"):
         detections += _hough_detections(left, depth, search, camera, pose, catalogue, config, roi, detections,
                                         matched)
-    return suppress_overlaps(detections)
+    return suppress_overlaps(detections, config.same_sign_max_iou)
 
 
 def _hough_detections(left, depth, search, camera, pose, catalogue, config: PipelineConfig, roi: Roi,

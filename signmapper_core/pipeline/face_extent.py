@@ -237,22 +237,23 @@ def outline_edge_profile(image: np.ndarray, segment_bbox, shape: str, scales: np
     return out
 
 
-def edge_rim_bbox(image: np.ndarray, segment_bbox, shape: str, max_scale: float = 2.4, inner_scale: float = 1.12,
-                  min_contrast: float = 3.0, noise: float = 8.0, border_scale: float = 1.15, blur_px: float = 1.5,
-                  step: float = 1.03) -> Optional[Tuple[int, int, int, int]]:
+def edge_rim_bbox(image: np.ndarray, segment_bbox, shape: str, max_scale: float,
+                  config) -> Optional[Tuple[int, int, int, int]]:
     """The face box of a coloured part inside a rim, from the face's outer edge; None if no clear edge.
 
     The part's box is scaled about its centre from 1 to ``max_scale`` (geometric steps of
-    ``step``), the ideal outline of ``shape`` laid at each scale: the part's own edge is the
-    strongest within ``inner_scale``, then the rim (a plain band, weak edges), then the face's
-    outer edge. The outer edge is the local maximum beyond the part whose strength is at least
-    ``min_contrast`` x the weakest between them (+ ``noise``, Sobel units: ~2 grey levels);
-    where a dark border line follows within ``border_scale``, its outer edge.
+    ``config.rim_scale_step``), the ideal outline of ``shape`` laid at each scale: the part's own
+    edge is the strongest within ``rim_inner_scale``, then the rim (a plain band, weak edges), then
+    the face's outer edge. The outer edge is the local maximum beyond the part whose strength is at
+    least ``rim_edge_contrast`` x the weakest between them (+ ``rim_edge_noise``, Sobel units: ~2 grey
+    levels); where a dark border line follows within ``rim_border_scale``, its outer edge.
     Works where the white rim blends into a white wall or sky (the black border line
     still is an edge), which :func:`measured_rim_bbox` cannot measure. A small part's colour
-    segment misses the blurred edge of its colour, ``blur_px`` on each side: both scale limits
+    segment misses the blurred edge of its colour, ``rim_blur_px`` on each side: both scale limits
     grow by that share of the part.
     """
+    inner_scale, min_contrast, noise = config.rim_inner_scale, config.rim_edge_contrast, config.rim_edge_noise
+    border_scale, blur_px, step = config.rim_border_scale, config.rim_blur_px, config.rim_scale_step
     x, y, w, h = segment_bbox
     blur = 2.0 * blur_px / max(1, min(w, h))
     max_scale, inner_scale = max_scale * (1.0 + blur), inner_scale + blur
@@ -293,9 +294,7 @@ def rim_face_bboxes(image: np.ndarray, segment_bbox, segment_mask: np.ndarray, e
     """
     boxes = [face_bbox(segment_bbox, extent)]
     for box in (measured_rim_bbox(image, segment_bbox, segment_mask, extent, config.min_shape_fit),
-                edge_rim_bbox(image, segment_bbox, shape, config.rim_max_scale, config.rim_inner_scale,
-                              config.rim_edge_contrast, config.rim_edge_noise, config.rim_border_scale,
-                              config.rim_blur_px)):
+                edge_rim_bbox(image, segment_bbox, shape, config.rim_max_scale, config)):
         if box is not None and all(_box_iou(box, b) < config.rim_same_iou for b in boxes):
             boxes.append(box)
     return boxes[1:]
@@ -305,5 +304,4 @@ def ring_edge_bbox(image: np.ndarray, field_bbox, shape: str, config) -> Optiona
     """The face box of a field inside a ring, from the ring's outer edge (:func:`edge_rim_bbox` with the
     field as the part and the ring as the plain band); None if no clear edge. Ring widths differ between
     designs (Germany's prohibition signs: face ~1.35 x field with their white border, the Swiss 1.21)."""
-    return edge_rim_bbox(image, field_bbox, shape, config.ring_edge_max_scale, config.rim_inner_scale,
-                         config.rim_edge_contrast, config.rim_edge_noise, config.rim_border_scale, config.rim_blur_px)
+    return edge_rim_bbox(image, field_bbox, shape, config.ring_edge_max_scale, config)

@@ -150,7 +150,7 @@ def test_overlapping_detections_keep_the_best():
 
     whole, part, other = det((100, 100, 60, 60), 0.9), det((110, 110, 20, 20), 0.6), det((300, 100, 60, 60), 0.8)
     same = det((102, 101, 60, 58), 0.7)
-    kept = suppress_overlaps([part, same, whole, other])
+    kept = suppress_overlaps([part, same, whole, other], PipelineConfig().same_sign_max_iou)
     assert kept == [whole, other]  # a part inside a sign and the same sign found twice go
 
 

@@ -15,6 +15,8 @@ from signmapper_core.pipeline.candidates import face_candidates
 from signmapper_core.pipeline.colour import find_colour_segments, ring_open_px, split_face_merges
 from signmapper_core.pipeline.scene_colour import apply_gains, scene_colour, white_balance_gains
 
+CONFIG = PipelineConfig()
+
 
 @pytest.fixture(scope="module")
 def catalogue(reference_drawing_catalogue):
@@ -127,7 +129,7 @@ def test_no_entry_split_by_its_bar_is_one_face_before_its_halves_are_judged(cata
     segments = find_colour_segments(image, None, PipelineConfig(), None)
     halves = [s for s in segments if s.colour == "red" and s.source == "colour"]
     assert len(halves) == 2 and all(s.bbox[3] < 0.6 * n for s in halves)
-    ((merged, i, j),) = split_face_merges(segments, PipelineConfig().min_shape_fit)
+    ((merged, i, j),) = split_face_merges(segments, PipelineConfig())
     assert _iou(merged.bbox, (300, 150, n, n)) > 0.9
     candidates = face_candidates(image, catalogue, hough=False)
     on_face = [c for c in candidates if _iou(c.segment.bbox, (300, 150, n, n)) > 0.3 or
@@ -235,7 +237,7 @@ def test_rim_blending_into_a_white_wall_is_measured_by_the_face_outer_edge(catal
     seg = cand.segment
     assert measured_rim_bbox(image, seg.bbox, seg.mask, (0.11, 0.11, 0.89, 0.89)) is None
     face = (100, 60, n + 1, n + 1)
-    assert _iou(edge_rim_bbox(image, seg.bbox, "diamond"), face) > 0.85
+    assert _iou(edge_rim_bbox(image, seg.bbox, "diamond", CONFIG.rim_max_scale, CONFIG), face) > 0.85
     assert any(_iou(r.bbox, face) > 0.85 and "3.03" in r.template_ids for r in cand.readings)
 
 
@@ -245,7 +247,7 @@ def test_outer_edge_is_not_invented_where_the_yellow_is_the_whole_face():
     image = noisy_background(level=110, sigma=6)
     c = np.array([[150, 100], [190, 140], [150, 180], [110, 140]])
     cv2.fillPoly(image, [c], (0, 200, 240))  # a yellow diamond, no rim: grey texture all around
-    assert edge_rim_bbox(image, (110, 100, 81, 81), "diamond") is None
+    assert edge_rim_bbox(image, (110, 100, 81, 81), "diamond", CONFIG.rim_max_scale, CONFIG) is None
 
 
 def test_orange_yellow_priority_sign_is_found_by_the_scene_pass(catalogue):
