@@ -16,6 +16,7 @@ from __future__ import annotations
 import time as _time
 import traceback as _traceback
 import uuid
+from contextlib import closing
 from dataclasses import dataclass, field, replace
 from typing import Iterator, Optional
 
@@ -26,6 +27,7 @@ from .errors import DriveFormatError, MappingError
 from .fusion import FusedSign, FusionConfig, Observation, azimuth_deg, fuse_observations
 from .mounting import camera_height_above_road, mounting_height
 from .output_schema import MANUAL, run_record
+from .pair_pool import worker_count
 from .plausibility import pair_warnings
 from .progress import CancelCheck, ProgressCallback, WarnCallback, check_cancelled, report, warn
 
@@ -92,28 +94,42 @@ def load_pair(drive: Drive, record: PairRecord):
     return left, depth, right
 
 
-def map_pairs(drive: Drive, catalogue, config, is_cancelled: Optional[CancelCheck] = None) -> Iterator[PairResult]:
-    """Yield a :class:`PairResult` per pair in driving order; raises ``Cancelled`` between pairs."""
-    from .pipeline import detect_pair  # OpenCV is imported only when mapping actually runs
+def map_pair(drive: Drive, record: PairRecord, catalogue, config, detect=None) -> PairResult:
+    """The detections of one pair, or why it was skipped (files unreadable, or the detection raised)."""
+    if detect is None:
+        from .pipeline import detect_pair as detect  # OpenCV is imported only when mapping actually runs
+    start = _time.perf_counter()
+    try:
+        left, depth, right = load_pair(drive, record)
+    except DriveFormatError as exc:  # the readers report unreadable files as ImageReadError
+        return PairResult(record, error=str(exc), seconds=_time.perf_counter() - start, stage=READ)
+    loaded = _time.perf_counter()
+    try:
+        detections = detect(left, depth, right, drive.camera, record.pose, catalogue, config)
+    except Exception as exc:  # noqa: BLE001 - one pair's failure is reported, the run goes on
+        return PairResult(record, error=f"detection failed: {type(exc).__name__}: {exc}",
+                          seconds=_time.perf_counter() - start, load_seconds=loaded - start, stage=DETECT,
+                          traceback=_traceback.format_exc())
+    return PairResult(record, detections, seconds=_time.perf_counter() - start, load_seconds=loaded - start,
+                      warnings=pair_warnings(record, left, depth))
 
+
+def map_pairs(drive: Drive, catalogue, config, is_cancelled: Optional[CancelCheck] = None, workers: int = 1,
+              detect=None) -> Iterator[PairResult]:
+    """Yield a :class:`PairResult` per pair in driving order; raises ``Cancelled`` between pairs.
+
+    ``workers`` > 1 maps the pairs in that many processes (:mod:`pair_pool`), the
+    results still in driving order. ``detect`` replaces ``pipeline.detect_pair``
+    (a module-level function, so worker processes can import it).
+    """
+    if workers > 1:
+        from .pair_pool import pooled_pairs
+
+        yield from pooled_pairs(drive, catalogue, config, workers, is_cancelled, detect)
+        return
     for record in drive.pairs:
         check_cancelled(is_cancelled, f"mapping drive {drive.root}")
-        start = _time.perf_counter()
-        try:
-            left, depth, right = load_pair(drive, record)
-        except DriveFormatError as exc:  # the readers report unreadable files as ImageReadError
-            yield PairResult(record, error=str(exc), seconds=_time.perf_counter() - start, stage=READ)
-            continue
-        loaded = _time.perf_counter()
-        try:
-            detections = detect_pair(left, depth, right, drive.camera, record.pose, catalogue, config)
-        except Exception as exc:  # noqa: BLE001 - one pair's failure is reported, the run goes on
-            yield PairResult(record, error=f"detection failed: {type(exc).__name__}: {exc}",
-                             seconds=_time.perf_counter() - start, load_seconds=loaded - start, stage=DETECT,
-                             traceback=_traceback.format_exc())
-            continue
-        yield PairResult(record, detections, seconds=_time.perf_counter() - start, load_seconds=loaded - start,
-                         warnings=pair_warnings(record, left, depth))
+        yield map_pair(drive, record, catalogue, config, detect)
 
 
 def failure_summary(skipped: list[PairResult], total: int) -> Optional[str]:
@@ -137,7 +153,8 @@ def set_mounting_heights(drive: Drive, signs: list[FusedSign]) -> None:
 
 def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallback] = None,
               is_cancelled: Optional[CancelCheck] = None, warn_skipped: Optional[WarnCallback] = None,
-              fusion: Optional[FusionConfig] = None, max_skipped_share: float = 1.0) -> MappingResult:
+              fusion: Optional[FusionConfig] = None, max_skipped_share: float = 1.0,
+              workers: Optional[int] = None, detect=None) -> MappingResult:
     """Detect the signs of every pair, fuse them into physical signs and give each its mounting height.
 
     Skipped pairs, and pairs without usable depth or colour, are passed to
@@ -145,7 +162,9 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     ``fusion``'s ``accept_classification`` is replaced by the classifier's threshold (``config`` may set it).
     ``Cancelled`` is raised when ``is_cancelled()`` turns true; ``MappingError``
     as soon as more than ``max_skipped_share`` (0..1) of the pairs are skipped,
-    and when no pair could be mapped at all.
+    and when no pair could be mapped at all. ``workers``: processes mapping the
+    pairs (None or 0 = all cores; 1 = in this process); the result does not
+    depend on it. ``detect``: see :func:`map_pairs`.
     """
     from .pipeline.classifiers import accept_threshold, classifier_for
 
@@ -153,23 +172,25 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     accept = accept_threshold(classifier, config)
     fusion = replace(fusion or FusionConfig(), accept_classification=accept)  # always the classifier's
     detections, skipped, seconds, load_seconds, total = [], [], 0.0, 0.0, len(drive.pairs)
-    for done, result in enumerate(map_pairs(drive, catalogue, config, is_cancelled), start=1):
-        seconds += result.seconds
-        load_seconds += result.load_seconds
-        for message in result.warnings:
-            warn(warn_skipped, message)
-        if result.error:
-            skipped.append(result)
-            trace = f"\n{result.traceback}" if result.traceback else ""
-            warn(warn_skipped, f"Skipped pair {result.record.id}: {result.error}{trace}")
-            if len(skipped) > max_skipped_share * total:
-                raise MappingError(f"{len(skipped)} of {total} pairs skipped, more than the "
-                                   f"{100 * max_skipped_share:g} % allowed (first: pair {skipped[0].record.id}: "
-                                   f"{skipped[0].error})", limit_exceeded=True)
-        for detection in result.detections:
-            detections.append(Observation(detection, result.record, id=len(detections) + 1))
-        report(progress, PAIRS_SHARE * done / max(total, 1),
-               f"Pair {result.record.id}: {len(result.detections)} signs ({result.seconds:.2f} s)")
+    workers = worker_count(workers, total)
+    with closing(map_pairs(drive, catalogue, config, is_cancelled, workers, detect)) as results:
+        for done, result in enumerate(results, start=1):  # closing: a pool stops when the loop raises
+            seconds += result.seconds
+            load_seconds += result.load_seconds
+            for message in result.warnings:
+                warn(warn_skipped, message)
+            if result.error:
+                skipped.append(result)
+                trace = f"\n{result.traceback}" if result.traceback else ""
+                warn(warn_skipped, f"Skipped pair {result.record.id}: {result.error}{trace}")
+                if len(skipped) > max_skipped_share * total:
+                    raise MappingError(f"{len(skipped)} of {total} pairs skipped, more than the "
+                                       f"{100 * max_skipped_share:g} % allowed (first: pair "
+                                       f"{skipped[0].record.id}: {skipped[0].error})", limit_exceeded=True)
+            for detection in result.detections:
+                detections.append(Observation(detection, result.record, id=len(detections) + 1))
+            report(progress, PAIRS_SHARE * done / max(total, 1),
+                   f"Pair {result.record.id}: {len(result.detections)} signs ({result.seconds:.2f} s)")
     check_cancelled(is_cancelled, f"mapping drive {drive.root}")
     if total and len(skipped) == total:
         raise MappingError(f"no pair could be mapped: {total} of {total} pairs skipped (first: pair "

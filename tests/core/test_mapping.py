@@ -86,7 +86,8 @@ def test_corrupt_pair_is_skipped_with_a_warning_naming_it(drive_dir, catalogue, 
 
 
 def _failing_at(pair_index, drive_dir, monkeypatch):
-    """detect_pair raising deep inside for one pair, as a bug met by unusual pixels would."""
+    """detect_pair raising deep inside for one pair, as a bug met by unusual pixels would (in this process:
+    map with workers=1; test_pair_pool has the same in worker processes)."""
     import signmapper_core.pipeline as pipeline
 
     real, failing = pipeline.detect_pair, open_drive(drive_dir).pairs[pair_index].pose
@@ -103,7 +104,7 @@ def test_pair_whose_detection_raises_is_skipped_with_its_traceback_and_the_run_g
         drive_dir, catalogue, mapped, monkeypatch):
     _failing_at(4, drive_dir, monkeypatch)
     warnings = []
-    result = map_drive(open_drive(drive_dir), catalogue, PipelineConfig(), warn_skipped=warnings.append)
+    result = map_drive(open_drive(drive_dir), catalogue, PipelineConfig(), warn_skipped=warnings.append, workers=1)
     (failed,) = result.skipped
     assert failed.record.id == "000004" and failed.stage == "detect"
     assert failed.error == "detection failed: IndexError: list index out of range"
@@ -123,7 +124,7 @@ def test_summary_counts_unreadable_pairs_and_detection_errors_apart(drive_dir, c
     broken = sorted((drive / "left").iterdir())[7]
     broken.write_bytes(broken.read_bytes()[:2000])
     _failing_at(2, drive_dir, monkeypatch)
-    result = map_drive(open_drive(drive), catalogue, PipelineConfig())
+    result = map_drive(open_drive(drive), catalogue, PipelineConfig(), workers=1)
     assert [(r.record.id, r.stage) for r in result.skipped] == [("000002", "detect"), (broken.stem, "read")]
     assert result.skipped[1].traceback is None
     assert result.failure_summary() == "2 of 10 pairs skipped: 1 unreadable, 1 detection error"

@@ -1,0 +1,118 @@
+"""Pairs mapped in worker processes, their results handed back in driving order.
+
+Pairs are independent until fusion, so each worker process decodes and detects
+whole pairs on its own (its own OpenCV, its own classifier network, loaded once
+per process by ``classifiers.classifier_for``). The caller consumes the results
+in driving order, exactly as from the in-process loop, so progress, cancel,
+skipped-pair reporting and the output do not depend on the number of workers.
+Only a few pairs are in flight at a time (``AHEAD`` per worker): memory stays
+flat however long the drive is.
+
+Workers are started with ``spawn`` (not ``fork``): a QGIS process has Qt and
+OpenCV threads that a forked child would inherit half-locked. Inside QGIS,
+``sys.executable`` is the QGIS binary, so the workers' Python is looked up
+(:func:`python_executable`).
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import sys
+from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures import TimeoutError as FutureTimeout
+from pathlib import Path
+from typing import Callable, Iterator, Optional
+
+from .progress import CancelCheck, check_cancelled
+
+AHEAD = 2  # pairs queued per worker beyond the one it is working on
+POLL_S = 0.1  # how often the cancel button is asked while waiting for a pair
+OPENCV_THREADS_PER_WORKER = 1  # n workers x 1 thread: the cores are shared out by processes, not threads
+
+_worker_state: dict = {}  # in a worker process: drive, catalogue, config and detector of the run
+
+
+def available_cores() -> int:
+    """Cores this process may run on (its affinity, not the machine's count)."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def worker_count(requested: Optional[int], pairs: int) -> int:
+    """Workers to start: ``requested`` (None or 0 = all available cores), never more than there are pairs."""
+    if requested is not None and requested < 0:
+        raise ValueError(f"worker processes must be 0 (all cores) or more, not {requested}")
+    wanted = available_cores() if not requested else requested
+    return max(1, min(wanted, pairs))
+
+
+def python_executable() -> str:
+    """The Python interpreter that runs worker processes.
+
+    ``sys.executable`` unless it is an application embedding Python (QGIS,
+    qgis_process): then the interpreter of the same installation.
+    """
+    if Path(sys.executable).name.lower().startswith("python"):
+        return sys.executable
+    version = f"{sys.version_info.major}.{sys.version_info.minor}"
+    candidates = [getattr(sys, "_base_executable", ""),
+                  Path(sys.exec_prefix) / "bin" / f"python{version}", Path(sys.exec_prefix) / "bin" / "python3",
+                  Path(sys.exec_prefix) / "python.exe", Path(sys.exec_prefix) / "apps" / "Python3" / "python.exe"]
+    for candidate in candidates:
+        if candidate and Path(candidate).name.lower().startswith("python") and Path(candidate).is_file():
+            return str(candidate)
+    raise RuntimeError(f"no Python interpreter found for worker processes next to {sys.executable} "
+                       f"(looked for {', '.join(str(c) for c in candidates if c)}); map with 1 worker process")
+
+
+def _start_worker(drive, catalogue, config, detect: Optional[Callable], opencv_threads: int) -> None:
+    import cv2
+
+    cv2.setNumThreads(opencv_threads)
+    _worker_state.update(drive=drive, catalogue=catalogue, config=config, detect=detect)
+
+
+def _map_in_worker(index: int):
+    from .mapping import map_pair
+
+    state = _worker_state
+    return map_pair(state["drive"], state["drive"].pairs[index], state["catalogue"], state["config"],
+                    state["detect"])
+
+
+def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[CancelCheck] = None,
+                 detect: Optional[Callable] = None) -> Iterator:
+    """Yield a ``mapping.PairResult`` per pair in driving order, mapped by ``workers`` processes.
+
+    ``detect`` (None = ``pipeline.detect_pair``) must be importable by name in a
+    fresh process (a module-level function). ``Cancelled`` is raised between pairs
+    and while waiting for one; queued pairs are dropped, the pairs being mapped
+    finish and the workers stop before it propagates (so nothing runs on).
+    """
+    context = multiprocessing.get_context("spawn")
+    context.set_executable(python_executable())
+    what = f"mapping drive {drive.root}"
+    pairs = drive.pairs
+    executor = ProcessPoolExecutor(workers, mp_context=context, initializer=_start_worker,
+                                   initargs=(drive, catalogue, config, detect, OPENCV_THREADS_PER_WORKER))
+    try:
+        pending, submitted = {}, 0
+        for index in range(len(pairs)):
+            while submitted < len(pairs) and submitted < index + workers * (1 + AHEAD):
+                pending[submitted] = executor.submit(_map_in_worker, submitted)
+                submitted += 1
+            future = pending.pop(index)
+            while True:
+                check_cancelled(is_cancelled, what)
+                try:
+                    result = future.result(timeout=POLL_S)
+                    break
+                except FutureTimeout:
+                    continue
+            result.record = pairs[index]  # the caller's record, not the worker's copy
+            yield result
+    finally:
+        executor.shutdown(wait=True, cancel_futures=True)

@@ -1,0 +1,108 @@
+"""Pairs mapped in worker processes: the same result as in one process, cancel stops them, a failing pair is
+reported with its traceback."""
+
+import functools
+import multiprocessing
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+from drive_fixtures import SMALL_SYNTHETIC
+from failing_detection import detect_failing_at
+
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.drive import open_drive
+from signmapper_core.mapping import map_drive
+from signmapper_core.pair_pool import available_cores, python_executable, worker_count
+from signmapper_core.pipeline import PipelineConfig
+from signmapper_core.progress import Cancelled
+from signmapper_core.simulate import SimulationConfig, generate_drive
+
+
+@pytest.fixture(scope="module")
+def stereo_drive(tmp_path_factory) -> Path:
+    """JPEG pairs without depth maps: depth by SGBM, as with real drives."""
+    out = tmp_path_factory.mktemp("pool") / "drive"
+    generate_drive(out, SimulationConfig(pairs=10, seed=11, write_depth=False, **SMALL_SYNTHETIC))
+    return out
+
+
+@pytest.fixture(scope="module")
+def catalogue():
+    return load_catalogue()
+
+
+@pytest.fixture(scope="module")
+def one_worker(stereo_drive, catalogue):
+    return map_drive(open_drive(stereo_drive), catalogue, PipelineConfig(), workers=1)
+
+
+def _run(drive_dir, catalogue, **kwargs):
+    progress, warnings = [], []
+    result = map_drive(open_drive(drive_dir), catalogue, PipelineConfig(), progress=lambda f, m: progress.append(m),
+                       warn_skipped=warnings.append, **kwargs)
+    return result, progress, warnings
+
+
+def test_two_workers_give_the_same_detections_and_signs_as_one(stereo_drive, catalogue, one_worker):
+    pooled, progress, warnings = _run(stereo_drive, catalogue, workers=2)
+    assert len(one_worker.signs) >= 2 and not pooled.skipped and not warnings
+    assert [(o.id, o.pair_id, o.template_id, o.sign_id, o.status) for o in pooled.detections] == \
+        [(o.id, o.pair_id, o.template_id, o.sign_id, o.status) for o in one_worker.detections]
+    for a, b in zip(pooled.detections, one_worker.detections):
+        assert np.abs(a.position - b.position).max() < 0.001
+        assert a.classification_indicator == pytest.approx(b.classification_indicator, abs=1e-6)
+    assert [(s.sign_id, s.template_id, s.n_obs, s.format) for s in pooled.signs] == \
+        [(s.sign_id, s.template_id, s.n_obs, s.format) for s in one_worker.signs]
+    for a, b in zip(pooled.signs, one_worker.signs):
+        assert np.abs(a.position - b.position).max() < 0.001
+    # progress in driving order, one message per pair, as with one worker
+    pair_ids = [m.split(":")[0].split()[1] for m in progress if m.startswith("Pair ")]
+    assert pair_ids == [r.id for r in open_drive(stereo_drive).pairs]
+
+
+def test_cancel_mid_run_stops_the_workers(stereo_drive, catalogue):
+    seen = []
+    with pytest.raises(Cancelled, match="mapping drive"):
+        map_drive(open_drive(stereo_drive), catalogue, PipelineConfig(), progress=lambda f, m: seen.append(m),
+                  is_cancelled=lambda: len(seen) >= 3, workers=2)
+    assert len([m for m in seen if m.startswith("Pair ")]) == 3
+    assert multiprocessing.active_children() == []  # no worker left running
+
+
+def test_pair_failing_in_a_worker_is_reported_with_its_traceback_and_the_run_goes_on(stereo_drive, catalogue,
+                                                                                     one_worker):
+    failing = open_drive(stereo_drive).pairs[3]
+    result, _, warnings = _run(stereo_drive, catalogue, workers=2,
+                               detect=functools.partial(detect_failing_at, failing.pose))
+    (failed,) = result.skipped
+    assert failed.record.id == failing.id and failed.stage == "detect"
+    assert failed.error == "detection failed: IndexError: list index out of range"
+    assert "Traceback (most recent call last)" in failed.traceback and "detect_failing_at" in failed.traceback
+    (warning,) = warnings
+    assert warning.startswith(f"Skipped pair {failing.id}: detection failed: IndexError")
+    assert failed.traceback in warning
+    assert [o.pair_id for o in result.detections] == [o.pair_id for o in one_worker.detections
+                                                     if o.pair_id != failing.id]
+
+
+def test_unreadable_pair_is_skipped_by_a_worker_like_in_process(stereo_drive, catalogue, tmp_path):
+    drive = tmp_path / "corrupt"
+    shutil.copytree(stereo_drive, drive)
+    broken = sorted((drive / "right").iterdir())[2]
+    broken.write_bytes(broken.read_bytes()[:2000])
+    pooled, _, warnings = _run(drive, catalogue, workers=2)
+    alone, _, _ = _run(drive, catalogue, workers=1)
+    assert [(r.record.id, r.stage, r.error) for r in pooled.skipped] == \
+        [(r.record.id, r.stage, r.error) for r in alone.skipped] == [(broken.stem, "read", alone.skipped[0].error)]
+    assert broken.name in warnings[0]
+    assert [o.pair_id for o in pooled.detections] == [o.pair_id for o in alone.detections]
+
+
+def test_worker_count_defaults_to_all_cores_and_never_exceeds_the_pairs():
+    assert worker_count(None, 1000) == worker_count(0, 1000) == available_cores()
+    assert worker_count(8, 3) == 3 and worker_count(2, 0) == 1
+    with pytest.raises(ValueError, match="0 \\(all cores\\) or more, not -1"):
+        worker_count(-1, 10)
+    assert Path(python_executable()).name.startswith("python")
