@@ -76,6 +76,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
     LANGUAGE = "LANGUAGE"
     CROPS = "CROPS"
     MAX_SKIPPED = "MAX_SKIPPED"
+    WORKERS = "WORKERS"
     OUTPUT = "OUTPUT"
     DETECTIONS = "DETECTIONS"
     SIGNS = "SIGNS"
@@ -176,6 +177,16 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             "this share of the drive is skipped the run fails (as soon as that is certain) and writes nothing, "
             "since the output would lack their signs without a word. A run where no pair can be mapped always "
             "fails.",
+            advanced=True,
+        )
+        self.add_parameter(
+            QgsProcessingParameterNumber(self.WORKERS, self.tr("Worker processes"),
+                                         QgsProcessingParameterNumber.Integer, 0, optional=True, minValue=0,
+                                         maxValue=256),  # optional: models saved before it still run
+            "Processes mapping the stereo pairs side by side, each on its own core; 0 = all cores of this "
+            "computer, 1 = in the QGIS process. The output is the same whatever the number; fewer leave cores "
+            "free for other work while a long drive maps. Each process holds its own pair images and "
+            "classifier (about 200 MB at Full HD).",
             advanced=True,
         )
         self.add_parameter(
@@ -310,8 +321,9 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         unchanged = f"; {output.target} is as it was" if output.target.exists() else ""
         crops = CropFolder(output.target) if self.parameterAsBoolean(parameters, self.CROPS, context) else None
         max_skipped = self.parameterAsDouble(parameters, self.MAX_SKIPPED, context) / 100.0
+        workers = self.parameterAsInt(parameters, self.WORKERS, context) if parameters.get(self.WORKERS) else 0
         try:
-            result = self.map(drive, catalogue, config, feedback, max_skipped, fusion)
+            result = self.map(drive, catalogue, config, feedback, max_skipped, fusion, workers)
             out = self.output_context(drive, catalogue, language, result, crops, feedback)
             self.write_layers(output, result, out, feedback)
             output.write_run_table(schema.run_record(result, out))
@@ -383,16 +395,17 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         return ids
 
     @staticmethod
-    def map(drive, catalogue, config, feedback, max_skipped: float = 1.0, fusion=None):
+    def map(drive, catalogue, config, feedback, max_skipped: float = 1.0, fusion=None, workers: int = 0):
         """The core's map_drive with the algorithm's progress bar, cancel button and log.
 
         ``Cancelled`` and ``MappingError`` (too many pairs skipped) reach the caller, which discards its output.
+        ``workers``: processes mapping the pairs (0 = all cores).
         """
         from ..signmapper_core.mapping import map_drive
 
         steps = CoreFeedback(feedback, 5, 92)
         result = map_drive(drive, catalogue, config, steps.progress, steps.is_cancelled, steps.warn,
-                           fusion=fusion, max_skipped_share=max_skipped)
+                           fusion=fusion, max_skipped_share=max_skipped, workers=workers)
         if result.skipped:
             feedback.pushWarning(f"{result.failure_summary()}; see the messages above")
         return result

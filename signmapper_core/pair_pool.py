@@ -50,22 +50,20 @@ def worker_count(requested: Optional[int], pairs: int) -> int:
 
 
 def python_executable() -> str:
-    """The Python interpreter that runs worker processes.
+    """The Python interpreter that runs worker processes: the one of the installation running this code.
 
-    ``sys.executable`` unless it is an application embedding Python (QGIS,
-    qgis_process): then the interpreter of the same installation.
+    Not simply ``sys.executable``: in an application embedding Python (QGIS,
+    qgis_process) that is the application, or whatever 'python3' the PATH finds.
     """
-    if Path(sys.executable).name.lower().startswith("python"):
-        return sys.executable
     version = f"{sys.version_info.major}.{sys.version_info.minor}"
-    candidates = [getattr(sys, "_base_executable", ""),
-                  Path(sys.exec_prefix) / "bin" / f"python{version}", Path(sys.exec_prefix) / "bin" / "python3",
-                  Path(sys.exec_prefix) / "python.exe", Path(sys.exec_prefix) / "apps" / "Python3" / "python.exe"]
+    prefix = Path(sys.exec_prefix)
+    candidates = [prefix / "bin" / f"python{version}", prefix / "bin" / "python3", prefix / "python.exe",
+                  Path(sys.executable)]
     for candidate in candidates:
-        if candidate and Path(candidate).name.lower().startswith("python") and Path(candidate).is_file():
+        if candidate.name.lower().startswith("python") and candidate.is_file():
             return str(candidate)
-    raise RuntimeError(f"no Python interpreter found for worker processes next to {sys.executable} "
-                       f"(looked for {', '.join(str(c) for c in candidates if c)}); map with 1 worker process")
+    raise RuntimeError(f"no Python interpreter found for worker processes in {prefix} "
+                       f"(looked for {', '.join(str(c) for c in candidates)}); map with 1 worker process")
 
 
 def _start_worker(drive, catalogue, config, detect: Optional[Callable], opencv_threads: int) -> None:

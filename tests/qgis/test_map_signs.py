@@ -158,7 +158,7 @@ def test_tuning_parameters_are_advanced(registered_plugin):
     advanced = {p.name() for p in alg.parameterDefinitions()
                 if p.flags() & QgsProcessingParameterDefinition.FlagAdvanced}
     assert advanced == {"EXCLUDE", "DETECTION_THRESHOLD", "CLASSIFIER", "CLASSIFICATION_THRESHOLD", "CATALOGUE",
-                        "LANGUAGE", "MAX_SKIPPED"}
+                        "LANGUAGE", "MAX_SKIPPED", "WORKERS"}
 
 
 def test_corrupt_pair_is_logged_and_skipped(run, small_drive, tmp_path):
@@ -202,8 +202,8 @@ def test_pair_whose_detection_raises_is_logged_with_its_traceback_and_the_run_go
         def pushWarning(self, warning):  # noqa: N802
             warnings.append(warning)
 
-    out = tmp_path / "failing.gpkg"
-    run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out)}, feedback=Recorder())
+    out = tmp_path / "failing.gpkg"  # in this process, where the patch is (tests/core/test_pair_pool: in workers)
+    run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out), "WORKERS": 1}, feedback=Recorder())
     assert read_detections(out).featureCount() > 0
     (error,) = errors
     assert error.startswith("Skipped pair 000004: detection failed: ZeroDivisionError: bad pixels\nTraceback")
@@ -212,13 +212,17 @@ def test_pair_whose_detection_raises_is_logged_with_its_traceback_and_the_run_go
     assert any(w.startswith(f"1 of {n} pairs skipped: 1 detection error") for w in warnings), warnings
 
 
-def test_cancel_writes_nothing(run, small_drive, tmp_path):
+@pytest.mark.parametrize("workers", [1, 2])
+def test_cancel_writes_nothing(run, small_drive, tmp_path, workers):
+    import multiprocessing
+
     out = tmp_path / "cancelled.gpkg"
     feedback = QgsProcessingFeedback()
     feedback.progressChanged.connect(lambda p: feedback.cancel() if p > 20 else None)
     with pytest.raises(QgsProcessingException, match="Cancelled"):
-        run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out)}, feedback=feedback)
-    assert not out.exists()
+        run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out), "WORKERS": workers},
+            feedback=feedback)
+    assert not out.exists() and multiprocessing.active_children() == []
     assert not list(tmp_path.glob("*.gpkg")) and not list(tmp_path.glob(".*partial*"))
 
 
