@@ -1,13 +1,18 @@
-"""Pairs per second and peak memory of the mapping pipeline on a Full-HD drive.
+"""Pairs per second and memory of mapping a drive end to end, from the JPEG files, against the naive baseline.
 
-    python bench/bench_mapping.py [--pairs 20] [--seed 2001]
+    python bench/bench_mapping.py [--pairs 20] [--seed 2001] [--long 1000]
 
-Runs three ways over the same synthetic drive (generated once with true depth
-maps, cached under build/drives/), each in its own process so peak RSS is its own:
-  given-depth   depth/<id>.npy from the drive, no stereo matching
-  sgbm          depth by SGBM with the disparity range from the 4-14 m search space
-  baseline      full-frame, full-resolution SGBM over disparities 0..256 (the naive
-                approach), then the same pipeline on that depth
+A synthetic Full-HD drive of JPEG stereo pairs without depth maps (generated once,
+cached under build/drives/) is mapped three ways, each in its own process so its
+memory is its own, all timed by the wall clock from the first JPEG decoded to the
+fused signs (worker start-up, decoding, SGBM, detection and fusion included):
+  pipeline-1    ``map_drive`` with 1 worker (in the process)
+  pipeline-all  ``map_drive`` with a worker process per core
+  baseline      decoding the same JPEG pairs and full-frame, full-resolution SGBM
+                over disparities 0..256 (no detection at all), a worker per core
+``--long N`` then maps a drive of N pairs (the drive's pairs repeated under new ids)
+with all workers and prints the resident memory of the main process plus its
+workers as it goes: memory must stay flat with drive length.
 The vehicle records 5 pairs/s; faster than that keeps up with the drive.
 """
 
@@ -15,16 +20,18 @@ from __future__ import annotations
 
 import argparse
 import json
+import multiprocessing
 import resource
 import subprocess
 import sys
 import time
+from dataclasses import replace
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-MODES = ("given-depth", "sgbm", "baseline")
+MODES = ("pipeline-1", "pipeline-all", "baseline")
 
 
 def baseline_depth(left, right, camera):
@@ -43,65 +50,113 @@ def baseline_depth(left, right, camera):
     return camera.depth_from_disparity(np.where(disp > 0, disp, np.nan)).astype(np.float32)
 
 
-def run_mode(mode: str, folder: Path) -> dict:
-    from dataclasses import replace
+def baseline_detect(left, depth, right, camera, pose, catalogue, config):
+    """The baseline as a detector for ``map_drive``: the full-frame depth, no detections."""
+    baseline_depth(left, right, camera)
+    return []
+
+
+def rss_mb(pid="self", key="VmRSS") -> float:
+    """Resident (VmRSS) or peak resident (VmHWM) memory of a process in MB, from /proc."""
+    try:
+        for line in Path(f"/proc/{pid}/status").read_text().splitlines():
+            if line.startswith(key + ":"):
+                return int(line.split()[1]) / 1024.0
+    except OSError:  # a worker that just ended
+        pass
+    return 0.0
+
+
+def total_rss_mb() -> float:
+    """This process and its worker processes together."""
+    return rss_mb() + sum(rss_mb(p.pid) for p in multiprocessing.active_children())
+
+
+def repeated(drive, pairs: int):
+    """The drive's pairs repeated under new ids up to ``pairs`` pairs: a long drive without more files."""
+    records = [replace(r, index=i, id=f"{i:07d}") for i, r in
+               ((i, drive.pairs[i % len(drive.pairs)]) for i in range(pairs))]
+    return replace(drive, pairs=records)
+
+
+def run_mode(mode: str, folder: Path, long_pairs: int = 0) -> dict:
+    from bench_mapping import baseline_detect as baseline  # by module name, so worker processes can import it
 
     from signmapper_core.catalogue import load_catalogue
     from signmapper_core.drive import open_drive
-    from signmapper_core.mapping import load_pair, map_drive
-    from signmapper_core.pipeline import PipelineConfig, detect_pair
+    from signmapper_core.mapping import map_drive
+    from signmapper_core.pair_pool import available_cores
+    from signmapper_core.pipeline import PipelineConfig
 
     drive = open_drive(folder)
-    catalogue = load_catalogue()
-    config = PipelineConfig()
-    if mode != "given-depth":  # as with real data: depth from the stereo pair
-        drive = replace(drive, pairs=[replace(r, depth_path=None) for r in drive.pairs])
-    if mode != "baseline":
-        result = map_drive(drive, catalogue, config)
-        # decoding the JPEGs is not the pipeline's time; fusing the whole drive takes milliseconds
-        detections, seconds = len(result.detections), result.seconds - result.load_seconds
-    else:
-        detections, seconds = 0, 0.0
-        for record in drive.pairs:
-            left, _, right = load_pair(drive, record)
-            start = time.perf_counter()
-            depth = baseline_depth(left, right, drive.camera)
-            detections += len(detect_pair(left, depth, right, drive.camera, record.pose, catalogue, config))
-            seconds += time.perf_counter() - start
-    peak_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
-    return {"mode": mode, "pairs": len(drive.pairs), "seconds": seconds, "detections": detections,
-            "peak_rss_mb": peak_mb}
+    if long_pairs:
+        drive = repeated(drive, long_pairs)
+    workers = 1 if mode == "pipeline-1" else available_cores()
+    samples = {}
+
+    def progress(fraction, message):
+        if message.startswith("Pair "):
+            done = len(samples) + 1
+            samples[done] = total_rss_mb() if done in (1, 100, 500, 1000, 2000, 5000, 10000) else None
+
+    start = time.perf_counter()
+    result = map_drive(drive, load_catalogue(), PipelineConfig(), progress=progress, workers=workers,
+                       detect=baseline if mode == "baseline" else None)
+    seconds = time.perf_counter() - start
+    own = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    worker = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024.0 if workers > 1 else 0.0
+    return {"mode": mode, "pairs": len(drive.pairs), "workers": workers, "seconds": seconds,
+            "detections": len(result.detections), "signs": len(result.signs), "peak_rss_mb": own,
+            "peak_worker_rss_mb": worker, "rss_mb": {k: v for k, v in samples.items() if v is not None}}
 
 
 def drive_folder(seed: int, pairs: int) -> Path:
     from signmapper_core.simulate import SimulationConfig, generate_drive
 
-    out = REPO / "build" / "drives" / f"seed{seed}-{pairs}-depth"
+    out = REPO / "build" / "drives" / f"seed{seed}-{pairs}-stereo"
     if not (out / "poses.csv").exists():
         print(f"generating {out} ...", flush=True)
-        generate_drive(out, SimulationConfig(pairs=pairs, seed=seed, write_depth=True))
+        generate_drive(out, SimulationConfig(pairs=pairs, seed=seed, write_depth=False))
     return out
+
+
+def child(mode: str, folder: Path, long_pairs: int = 0) -> dict:
+    command = [sys.executable, __file__, "--mode", mode, "--drive", str(folder), "--long", str(long_pairs)]
+    out = subprocess.run(command, capture_output=True, text=True, check=True)
+    return json.loads(out.stdout.strip().splitlines()[-1])
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--pairs", type=int, default=20)
+    parser.add_argument("--pairs", type=int, default=20, help="pairs of the generated drive (>= 100 for figures)")
     parser.add_argument("--seed", type=int, default=2001)
+    parser.add_argument("--long", type=int, default=0, metavar="N",
+                        help="then map N pairs (the drive repeated) with all workers and print memory as it goes")
     parser.add_argument("--mode", choices=MODES, help=argparse.SUPPRESS)  # child process
     parser.add_argument("--drive", type=Path, help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.mode:
-        print(json.dumps(run_mode(args.mode, args.drive)))
+        print(json.dumps(run_mode(args.mode, args.drive, args.long)))
         return 0
     folder = drive_folder(args.seed, args.pairs)
-    print(f"drive {folder}: 1920x1080, {args.pairs} pairs; 2 cores; vehicle records 5 pairs/s")
-    print(f"{'mode':<12} {'pairs/s':>8} {'s/pair':>8} {'detections':>10} {'peak RSS MB':>12}")
-    for mode in MODES:
-        out = subprocess.run([sys.executable, __file__, "--mode", mode, "--drive", str(folder)],
-                             capture_output=True, text=True, check=True)
-        r = json.loads(out.stdout.strip().splitlines()[-1])
-        print(f"{mode:<12} {r['pairs'] / r['seconds']:8.2f} {r['seconds'] / r['pairs']:8.3f} "
-              f"{r['detections']:10d} {r['peak_rss_mb']:12.0f}", flush=True)
+    print(f"drive {folder}: 1920x1080 JPEG pairs, no depth maps, {args.pairs} pairs; "
+          f"{multiprocessing.cpu_count()} cores; the vehicle records 5 pairs/s")
+    print(f"{'mode':<13} {'workers':>7} {'pairs/s':>8} {'x baseline':>10} {'detections':>10} {'signs':>6} "
+          f"{'peak RSS MB (main + largest worker)':>36}")
+    results = {mode: child(mode, folder) for mode in MODES}
+    base = results["baseline"]["pairs"] / results["baseline"]["seconds"]
+    for mode, r in results.items():
+        rate = r["pairs"] / r["seconds"]
+        peak = f"{r['peak_rss_mb']:.0f}" + (f" + {r['workers']} x {r['peak_worker_rss_mb']:.0f}"
+                                            if r["workers"] > 1 else "")
+        print(f"{mode:<13} {r['workers']:7d} {rate:8.2f} {rate / base:10.2f} {r['detections']:10d} "
+              f"{r['signs']:6d} {peak:>36}", flush=True)
+    if args.long:
+        r = child("pipeline-all", folder, args.long)
+        memory = ", ".join(f"{k} pairs {v:.0f} MB" for k, v in r["rss_mb"].items())
+        print(f"long drive, {r['pairs']} pairs ({args.pairs} repeated), {r['workers']} workers: "
+              f"{r['pairs'] / r['seconds']:.2f} pairs/s; resident memory of main + workers after {memory}; "
+              f"peak {r['peak_rss_mb']:.0f} MB main + {r['workers']} x {r['peak_worker_rss_mb']:.0f} MB")
     return 0
 
 

@@ -21,9 +21,12 @@ import os
 import sys
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures import TimeoutError as FutureTimeout
+from concurrent.futures.process import BrokenProcessPool
+from dataclasses import replace
 from pathlib import Path
 from typing import Callable, Iterator, Optional
 
+from .errors import MappingError
 from .progress import CancelCheck, check_cancelled
 
 AHEAD = 2  # pairs queued per worker beyond the one it is working on
@@ -94,8 +97,10 @@ def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[
     context.set_executable(python_executable())
     what = f"mapping drive {drive.root}"
     pairs = drive.pairs
+    # the workers read pairs: the ground truth and what was wrong with it (an exception) stay here
+    pairs_only = replace(drive, truth=None, truth_error=None, warnings=[])
     executor = ProcessPoolExecutor(workers, mp_context=context, initializer=_start_worker,
-                                   initargs=(drive, catalogue, config, detect, OPENCV_THREADS_PER_WORKER))
+                                   initargs=(pairs_only, catalogue, config, detect, OPENCV_THREADS_PER_WORKER))
     try:
         pending, submitted = {}, 0
         for index in range(len(pairs)):
@@ -110,6 +115,10 @@ def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[
                     break
                 except FutureTimeout:
                     continue
+                except BrokenProcessPool as exc:  # killed (out of memory) or crashed inside native code
+                    raise MappingError(f"a worker process ended abruptly while mapping pair {pairs[index].id} of "
+                                       f"{drive.root} (out of memory, or a crash: see the log above); mapping with "
+                                       f"1 worker process shows which pair") from exc
             result.record = pairs[index]  # the caller's record, not the worker's copy
             yield result
     finally:

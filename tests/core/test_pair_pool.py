@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from drive_fixtures import SMALL_SYNTHETIC
-from failing_detection import detect_failing_at
+from failing_detection import detect_failing_at, exit_at
 
 from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive import open_drive
@@ -106,3 +106,13 @@ def test_worker_count_defaults_to_all_cores_and_never_exceeds_the_pairs():
     with pytest.raises(ValueError, match="0 \\(all cores\\) or more, not -1"):
         worker_count(-1, 10)
     assert Path(python_executable()).name.startswith("python")
+
+
+def test_a_worker_that_dies_is_a_mapping_error_naming_the_pair(stereo_drive, catalogue):
+    from signmapper_core.errors import MappingError
+
+    failing = open_drive(stereo_drive).pairs[2]
+    with pytest.raises(MappingError, match=f"a worker process ended abruptly while mapping pair {failing.id} of "):
+        map_drive(open_drive(stereo_drive), catalogue, PipelineConfig(), workers=2,
+                  detect=functools.partial(exit_at, failing.pose))
+    assert multiprocessing.active_children() == []

@@ -1,0 +1,60 @@
+"""Where the time of mapping one pair goes: cProfile over ``mapping.map_pair`` (decoding included), one process.
+
+    python bench/profile_pair.py [--drive build/drives/seed2001-100-stereo] [--pairs 10] [--top 25]
+
+Profiles the first ``--pairs`` pairs of a drive (JPEG pairs, depth by SGBM) after
+one warm-up pair (classifier loaded, OpenCV initialised), with OpenCV on one
+thread as in a worker process, and prints the functions with the most time spent
+inside them and below them, in seconds per pair.
+"""
+
+from __future__ import annotations
+
+import argparse
+import cProfile
+import pstats
+import sys
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--drive", type=Path, default=REPO / "build" / "drives" / "seed2001-100-stereo")
+    parser.add_argument("--pairs", type=int, default=10)
+    parser.add_argument("--top", type=int, default=25)
+    args = parser.parse_args()
+    import cv2
+
+    from signmapper_core.catalogue import load_catalogue
+    from signmapper_core.drive import open_drive
+    from signmapper_core.mapping import map_pair
+    from signmapper_core.pipeline import PipelineConfig
+
+    cv2.setNumThreads(1)
+    drive, catalogue, config = open_drive(args.drive), load_catalogue(), PipelineConfig()
+    map_pair(drive, drive.pairs[0], catalogue, config)  # warm-up
+    records = drive.pairs[1: 1 + args.pairs]
+    profiler = cProfile.Profile()
+    profiler.enable()
+    for record in records:
+        map_pair(drive, record, catalogue, config)
+    profiler.disable()
+    stats = pstats.Stats(profiler)
+    total = stats.total_tt / len(records)
+    print(f"{len(records)} pairs of {args.drive.name}, {total * 1000:.0f} ms per pair (one thread)")
+    rows = []
+    for (path, line, name), (_, calls, own, cumulative, _) in stats.stats.items():
+        where = f"{Path(path).name}:{name}" if line else name
+        rows.append((cumulative, own, calls, where))
+    print(f"{'ms/pair (with callees)':>22} {'ms/pair (own)':>14} {'calls/pair':>10}  function")
+    for cumulative, own, calls, where in sorted(rows, reverse=True)[: args.top]:
+        print(f"{cumulative * 1000 / len(records):22.1f} {own * 1000 / len(records):14.1f} "
+              f"{calls / len(records):10.1f}  {where}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
