@@ -186,7 +186,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             "Processes mapping the stereo pairs side by side, each on its own core; 0 = all cores of this "
             "computer, 1 = in the QGIS process. The output is the same whatever the number; fewer leave cores "
             "free for other work while a long drive maps. Each process holds its own pair images and "
-            "classifier (about 200 MB at Full HD).",
+            "classifier (about 270 MB at Full HD).",
             advanced=True,
         )
         self.add_parameter(
