@@ -38,6 +38,7 @@ sys.path.insert(0, str(REPO))
 
 from signmapper_core.catalogue import load_catalogue  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
+from signmapper_core.pipeline.boxes import box_iou  # noqa: E402
 from signmapper_core.validation import load_manifest, load_scene_list, read_bgr  # noqa: E402
 
 SMALL_PX = 30
@@ -151,15 +152,6 @@ def run_classify(args, catalogue, config: PipelineConfig) -> int:
     return 0
 
 
-def _iou(a, b) -> float:
-    ax, ay, aw, ah = a
-    bx, by, bw, bh = b
-    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
-    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
-    inter = iw * ih
-    return inter / float(aw * ah + bw * bh - inter) if inter else 0.0
-
-
 def _centre_in(a, b) -> bool:
     cx, cy = a[0] + a[2] / 2.0, a[1] + a[3] / 2.0
     return b[0] <= cx < b[0] + b[2] and b[1] <= cy < b[1] + b[3]
@@ -206,12 +198,12 @@ def run_detect(args, catalogue, config: PipelineConfig) -> int:
         truth = by_image.get(scene.image, [])
         labelled = [s.bbox for s in truth] + other.get(scene.image.relative_to(args.data).as_posix(), [])
         for sign in truth:
-            on = any(_iou(b, sign.bbox) >= 0.3 or _centre_in(b, sign.bbox) for b, _ in segments)
-            found = any(_iou(face, sign.bbox) >= 0.5 and sign.ssv_id in ids
+            on = any(box_iou(b, sign.bbox) >= 0.3 or _centre_in(b, sign.bbox) for b, _ in segments)
+            found = any(box_iou(face, sign.bbox) >= 0.5 and sign.ssv_id in ids
                         for _, readings in segments for face, ids in readings)
             records.append({"sign": sign, "on": on, "found": found})
         with_cands = [b for b, readings in segments if readings]
-        away = [b for b in with_cands if not any(_iou(b, t) > 0 for t in labelled)]
+        away = [b for b in with_cands if not any(box_iou(b, t) > 0 for t in labelled)]
         per_image.append((scene, len(segments), len(with_cands), len(away)))
     seconds = time.perf_counter() - start
     print(f"detect (colour step, no depth) on {args.data / 'scenes_images.csv'}: split={args.split}, "

@@ -16,6 +16,7 @@ from typing import List, Optional, Sequence, Tuple
 
 import numpy as np
 
+from .boxes import box_iou
 from .colour import Segment, faces_with_split_pieces_merged, find_colour_segments
 from .config import PipelineConfig
 from .detect import segment_candidates, segment_shapes
@@ -69,19 +70,10 @@ def readings_of(seg: Segment, shapes, catalogue, config: PipelineConfig,
         ring = ring_edge_bbox(image, seg.bbox, shapes[0], config) if same else None
         # a reading of about this box that holds only some of the ids (another template's extent happening to
         # match the ring, e.g. a lettered ring) does not stand for the others
-        if ring is not None and not any(_box_iou(ring, r.bbox) >= config.rim_same_iou
+        if ring is not None and not any(box_iou(ring, r.bbox) >= config.rim_same_iou
                                         and set(same) <= set(r.template_ids) for r in readings):
             readings.append(FaceReading(ring, same))
     return tuple(readings)
-
-
-def _box_iou(a, b) -> float:
-    ax, ay, aw, ah = a
-    bx, by, bw, bh = b
-    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
-    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
-    inter = iw * ih
-    return inter / float(aw * ah + bw * bh - inter) if inter else 0.0
 
 
 def weak_rim_circles(image: np.ndarray, config: PipelineConfig, taken: Sequence[Tuple[int, int, int, int]],
@@ -98,7 +90,7 @@ def weak_rim_circles(image: np.ndarray, config: PipelineConfig, taken: Sequence[
     scale = hough_scale(r_min, config.hough_scale, config.hough_min_radius_px)
     for seg in hough_segments(image, search, r_min, r_max, scale, config):
         if (seg.colour in config.colours or seg.colour == "white") and not any(
-                _box_iou(seg.bbox, box) >= 0.5 for box in taken):
+                box_iou(seg.bbox, box) >= 0.5 for box in taken):
             out.append(seg)
     return out
 

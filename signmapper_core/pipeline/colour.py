@@ -27,6 +27,7 @@ from typing import Dict, Iterable, List, Optional, Sequence, Tuple
 import cv2
 import numpy as np
 
+from .boxes import box_iou
 from .bright_fields import red_ring_fields
 from .config import HsvRange, PipelineConfig
 from .scene_colour import apply_gains, chroma_at_least, scene_colour
@@ -178,15 +179,6 @@ def segments_from_mask(
     return out
 
 
-def _box_iou(a, b) -> float:
-    ax, ay, aw, ah = a
-    bx, by, bw, bh = b
-    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
-    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
-    inter = iw * ih
-    return inter / float(aw * ah + bw * bh - inter) if inter else 0.0
-
-
 def ring_open_px(face_px: float, config: PipelineConfig) -> int:
     """Opening that keeps the ring of a ``face_px`` face: at most ring width - 1, at most the usual one."""
     ring_px = config.ring_fraction * face_px
@@ -304,14 +296,14 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
                     continue  # part of a larger coloured area (sky, hedge, façade), not a face of its own
                 if weak and not _weak_outline(seg, colour, config):
                     continue  # the scene pass's extra segments must look like a face to be worth depth
-                if any(o.colour == colour and _box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou for o in out):
+                if any(o.colour == colour and box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou for o in out):
                     continue
                 out.append(seg)
     if config.field_pass and "red" in config.colours:
         for seg in frame.ring_fields(image, config, small_face_px):
             if search is not None and inside_share(seg, search) < 0.5:
                 continue  # a field mostly outside the search space
-            if not any(o.colour == "red" and (_box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou
+            if not any(o.colour == "red" and (box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou
                                               or _field_of(seg.bbox, o.bbox)) for o in out):
                 out.append(seg)
     return out

@@ -17,6 +17,7 @@ import numpy as np
 
 from ..face_normal import world_face_normal
 from ..geometry import Camera, Pose
+from .boxes import box_iou
 from .classifiers import accept_threshold, classifier_for, marginal_min_score, min_score
 from .classify import surround_score
 from .colour import ColourFrame, Segment, find_colour_segments, merge_candidates, split_face_merges
@@ -237,15 +238,6 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     )
 
 
-def _iou(a, b) -> float:
-    ax, ay, aw, ah = a
-    bx, by, bw, bh = b
-    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
-    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
-    inter = iw * ih
-    return inter / float(aw * ah + bw * bh - inter) if inter else 0.0
-
-
 def _centre_inside(a, b) -> bool:
     x, y, w, h = b
     cu, cv = bbox_centre(a)
@@ -257,7 +249,7 @@ def suppress_overlaps(detections: Sequence[Detection], max_iou: float) -> List[D
     ranked = sorted(detections, key=lambda d: d.detection_indicator * d.classification_indicator, reverse=True)
     kept: List[Detection] = []
     for det in ranked:
-        if all(_iou(det.bbox, k.bbox) <= max_iou and not _centre_inside(det.bbox, k.bbox)
+        if all(box_iou(det.bbox, k.bbox) <= max_iou and not _centre_inside(det.bbox, k.bbox)
                and not _centre_inside(k.bbox, det.bbox) for k in kept):
             kept.append(det)
     return kept

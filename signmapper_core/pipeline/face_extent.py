@@ -17,6 +17,7 @@ from typing import Dict, Iterable, List, Optional, Tuple
 import cv2
 import numpy as np
 
+from .boxes import box_iou
 from .classify import canonical_template
 from .colour import hsv_mask
 from .shape import classify_shape
@@ -277,15 +278,6 @@ def edge_rim_bbox(image: np.ndarray, segment_bbox, shape: str, max_scale: float,
     return (int(round(x + w / 2.0 - fw / 2.0)), int(round(y + h / 2.0 - fh / 2.0)), int(round(fw)), int(round(fh)))
 
 
-def _box_iou(a, b) -> float:
-    ax, ay, aw, ah = a
-    bx, by, bw, bh = b
-    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
-    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
-    inter = iw * ih
-    return inter / float(aw * ah + bw * bh - inter) if inter else 0.0
-
-
 def rim_face_bboxes(image: np.ndarray, segment_bbox, segment_mask: np.ndarray, extent: Extent, shape: str,
                     config) -> List[Tuple[int, int, int, int]]:
     """Face boxes of a coloured part inside a rim measured in the image, beyond the template's own
@@ -295,7 +287,7 @@ def rim_face_bboxes(image: np.ndarray, segment_bbox, segment_mask: np.ndarray, e
     boxes = [face_bbox(segment_bbox, extent)]
     for box in (measured_rim_bbox(image, segment_bbox, segment_mask, extent, config.min_shape_fit),
                 edge_rim_bbox(image, segment_bbox, shape, config.rim_max_scale, config)):
-        if box is not None and all(_box_iou(box, b) < config.rim_same_iou for b in boxes):
+        if box is not None and all(box_iou(box, b) < config.rim_same_iou for b in boxes):
             boxes.append(box)
     return boxes[1:]
 
