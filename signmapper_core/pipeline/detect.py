@@ -18,21 +18,22 @@ import numpy as np
 from ..face_normal import world_face_normal
 from ..geometry import Camera, Pose
 from .boxes import box_iou
-from .classifiers import accept_threshold, classifier_for, marginal_min_score, min_score
+from .classifiers import accept_threshold, marginal_min_score, min_score
 from .classify import surround_score
 from .colour import ColourFrame, Segment, find_colour_segments, merge_candidates, split_face_merges
 from .config import PipelineConfig
-from .depth import largest_disparity_px, match_windows, merge_row_bands, sgbm_depth
+from .depth_sources import depth_source_for
 from .detection import Detection
 from .face_extent import FULL, candidate_entries, face_bbox, hole_candidates, rim_face_bboxes
 from .hough import hough_scale, hough_segments, radius_range_px, ring_colour_share
 from .locate import bbox_centre, locate
+from .pair_context import PairContext
 from .planarity import segment_planarity
-from .search_space import close_holes, grow, search_space_mask
+from .search_space import search_space_mask
 from .shape import IDEAL_FILL, catalogue_shapes, classify_shape, outline_shapes
 from .sizing import measure_segment, metric_size, round_to_format
 
-Roi = Tuple[int, int, int, int]  # x0, y0, x1, y1 (exclusive)
+Box = Tuple[int, int, int, int]  # x, y, w, h
 
 
 def _entry_name(entry) -> str:
@@ -45,24 +46,28 @@ def _shift_segment(seg: Segment, dx: int, dy: int) -> Segment:
     return replace(seg, bbox=(x + dx, y + dy, w, h), contour=seg.contour + np.array([dx, dy]))
 
 
-def colour_segments(left: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig, roi: Roi,
-                    small_face_px: Optional[float] = None, frame: Optional[ColourFrame] = None) -> List[Segment]:
-    """Colour segments inside ``roi`` in full-image coordinates; cut ones are flagged ``touches_border``.
+def colour_segments(pair: PairContext, search: Optional[np.ndarray], frame: ColourFrame) -> List[Segment]:
+    """Colour segments inside the pair's roi in full-image coordinates; cut ones are flagged ``touches_border``.
 
-    ``small_face_px``: the smallest face the search space can hold (sets the small-ring pass);
-    None without depth (``config.min_face_px``). ``frame``: the :class:`ColourFrame` of the roi.
+    ``search``: the search-space mask that cuts the colour masks (None: the whole roi).
+    The small-ring pass looks for the smallest face the search space can hold.
+    ``frame``: the :class:`ColourFrame` of the roi.
     """
-    x0, y0, x1, y1 = roi
-    crop = left[y0:y1, x0:x1]
-    segs = find_colour_segments(crop, None if search is None else search[y0:y1, x0:x1], config, small_face_px,
-                                frame)
+    x0, y0, x1, y1 = pair.roi
+    crop = pair.left[y0:y1, x0:x1]
+    segs = find_colour_segments(crop, None if search is None else search[y0:y1, x0:x1], pair.config,
+                                pair.smallest_face_px, frame)
     return [_shift_segment(seg, x0, y0) for seg in segs]
 
 
-def smallest_face_px(camera: Camera, catalogue, config: PipelineConfig) -> float:
-    """Pixels of the smallest side of any format at the far limit: the smallest face worth finding."""
-    sides = [min(f) for e in catalogue.filter(exclude=tuple(config.exclude)) for f in e.formats.values()]
-    return (min(sides) if sides else 0.4) * min(camera.fx, camera.fy) / config.far_m
+def stereo_candidate_boxes(pair: PairContext, frame: ColourFrame) -> List[Box]:
+    """Boxes of the colour segments, found before depth, that could be a face (or half of one, a coloured
+    part of a panel) somewhere in the search space: where stereo matching is worth running."""
+    config, camera = pair.config, pair.camera
+    heights = [h for e in pair.catalogue for (_, h) in e.formats.values()] or [0.4, 1.5]
+    max_px = config.sgbm_band_max_height * max(heights) * camera.fy / config.near_m
+    min_px = config.sgbm_band_min_height * min(heights) * camera.fy / config.far_m
+    return [s.bbox for s in colour_segments(pair, None, frame) if min_px <= s.bbox[3] <= max_px]
 
 
 def round_face_diameter_px(seg: Segment) -> float:
@@ -83,19 +88,18 @@ def round_face_diameter_px(seg: Segment) -> float:
 ROUND_SHAPES = ("circle", "octagon")
 
 
-def size_to_format(seg: Segment, candidates, depth_m: float, camera: Camera, catalogue, config: PipelineConfig,
-                   shape: Optional[str] = None, image: Optional[np.ndarray] = None):
+def size_to_format(seg: Segment, candidates, depth_m: float, shape: Optional[str], pair: PairContext):
     """[(SizeMatch, face bbox, candidate ids, extent)] of every face reading whose size fits a format.
 
     A round ``shape`` is sized by its diameter (:func:`round_face_diameter_px`), so a disc
-    seen at an angle still fits its format. With ``image``, a face whose coloured part sits
-    inside a white rim is also read with the rim measured in the image
-    (:func:`.face_extent.rim_face_bboxes`).
+    seen at an angle still fits its format. A face whose coloured part sits inside a white
+    rim is also read with the rim measured in the left image (:func:`.face_extent.rim_face_bboxes`).
 
     ``candidates``: (entry, colour extent) pairs, grouped by extent so that a
     coloured part inside a white rim or panel is sized as the whole face. Each
     group is a different reading of where the face is; classification decides.
     """
+    camera, catalogue, config = pair.camera, pair.catalogue, pair.config
     groups = {}
     for entry, ext in candidates:
         groups.setdefault(tuple(round(v, 2) for v in ext), (ext, []))[1].append(entry)
@@ -106,8 +110,8 @@ def size_to_format(seg: Segment, candidates, depth_m: float, camera: Camera, cat
     for ext, group in groups.values():
         faces = [face_bbox(seg.bbox, ext)]
         rimmed = [e for e in group if e.shape == shape]
-        if image is not None and ext != FULL and rimmed and seg.source == "colour":
-            faces += rim_face_bboxes(image, seg.bbox, seg.mask, ext, shape, config)  # rims drawn otherwise
+        if ext != FULL and rimmed and seg.source == "colour":
+            faces += rim_face_bboxes(pair.left, seg.bbox, seg.mask, ext, shape, config)  # rims drawn otherwise
         for face in faces:
             entries = group if face is faces[0] else rimmed
             if diameter is not None and ext == FULL:  # an oblique disc: both axes are its diameter
@@ -161,12 +165,12 @@ def segment_candidates(seg: Segment, shape, catalogue, config: PipelineConfig):
                              config.exclude)
 
 
-def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, catalogue,
-                     config: PipelineConfig, matched: bool = False) -> Optional[Detection]:
+def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Optional[Detection]:
     """Steps 4-8 for one segment; None when it is rejected (cut, no shape, no format, not planar).
 
-    ``matched``: the depth comes from SGBM, so planarity allows for its noise.
+    ``depth``: the pair's depth map; planarity allows for the noise of its depth source.
     """
+    left, camera, pose, catalogue, config = pair.left, pair.camera, pair.pose, pair.catalogue, pair.config
     if seg.touches_border:
         return None
     shapes, marginal = segment_outline(seg, config)
@@ -179,11 +183,11 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     size = measure_segment(camera, depth, seg.bbox, seg.surface_mask, config.near_m, config.far_m)
     if size is None:
         return None
-    fits = size_to_format(seg, candidates, size.depth_m, camera, catalogue, config, shape, left)
+    fits = size_to_format(seg, candidates, size.depth_m, shape, pair)
     if not fits:
         return None
-    tolerance = config.sgbm_planarity_tolerance_px if matched else config.planarity_tolerance_px
-    planarity = segment_planarity(camera, depth, seg.bbox, seg.surface_mask, config, tolerance)
+    planarity = segment_planarity(camera, depth, seg.bbox, seg.surface_mask, config,
+                                  pair.depth_source.planarity_tolerance_px(config))
     if planarity.indicator < config.detection_threshold:
         return None
     # A reading that grows the segment into a larger face (a zone panel around its red ring) wins
@@ -191,7 +195,7 @@ def evaluate_segment(seg: Segment, left, depth, camera: Camera, pose: Pose, cata
     # higher, and the panel reading alone scores ~0.65 on any round sign.
     readings, panels = [], []
     same_shapes = {c for s in shapes for c in catalogue_shapes(s, seg.bbox[2], seg.bbox[3])}
-    classifier = classifier_for(catalogue, config)
+    classifier = pair.classifier
     accept = accept_threshold(classifier, config)
     for match, face, ids, ext in fits:
         cls = classifier.classify(left, face, ids)
@@ -261,35 +265,6 @@ def _round_diameters(catalogue, config: PipelineConfig) -> List[float]:
     return diam or [0.4, 0.6]
 
 
-def _ensure_depth(left, depth, right, camera, catalogue, config: PipelineConfig, roi: Roi,
-                  frame: Optional[ColourFrame] = None) -> np.ndarray:
-    """The given depth, or SGBM depth over the rows (or windows) that can hold a sign in ``roi``."""
-    if depth is not None:
-        return np.asarray(depth, dtype=np.float32)
-    if right is None:
-        raise ValueError("no depth map and no right image: cannot compute depth")
-    x0, y0, x1, y1 = roi
-    bands, windows = [(y0, y1)], None
-    if config.sgbm_rows_only:
-        # Colour candidates before depth: match only their rows, or only windows around them (the Hough
-        # fallback then sees only these). Segments that cannot be a face (or half of one, a coloured part
-        # of a panel) anywhere in the search space are left out.
-        segs = colour_segments(left, None, config, roi, smallest_face_px(camera, catalogue, config), frame)
-        heights = [h for e in catalogue for (_, h) in e.formats.values()] or [0.4, 1.5]
-        max_px = config.sgbm_band_max_height * max(heights) * camera.fy / config.near_m
-        min_px = config.sgbm_band_min_height * min(heights) * camera.fy / config.far_m
-        boxes = [s.bbox for s in segs if min_px <= s.bbox[3] <= max_px]
-        if config.sgbm_columns_only:
-            reach = largest_disparity_px(camera, config.near_m, config.far_m, config.sgbm_scale,
-                                         config.sgbm_far_factor)
-            windows = match_windows(boxes, left.shape[1], left.shape[0], config.sgbm_row_margin_px,
-                                    config.sgbm_row_margin_px, reach)
-        bands = merge_row_bands([(y, y + h) for _, y, _, h in boxes], left.shape[0], config.sgbm_row_margin_px)
-    if not bands:
-        return np.full(left.shape[:2], np.nan, dtype=np.float32)
-    return sgbm_depth(left, right, camera, config, bands, windows)
-
-
 class _Timer:
     """Accumulates seconds per step into a dict (or does nothing without one)."""
 
@@ -308,29 +283,29 @@ class _Timer:
             self.sink[step] = self.sink.get(step, 0.0) + time.perf_counter() - start
 
 
-def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig, roi: Roi,
-            timings: Optional[dict] = None) -> List[Detection]:
+def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]:
     timer = _Timer(timings)
-    matched = depth is None
-    x0, y0, x1, y1 = roi
+    left, config, source = pair.left, pair.config, pair.depth_source
+    x0, y0, x1, y1 = pair.roi
     with timer("colour"):
         frame = ColourFrame.of(left[y0:y1, x0:x1], config)
+        # colour candidates before depth, for a source that matches only around them
+        boxes = stereo_candidate_boxes(pair, frame) if source.wants_candidate_boxes(config) else None
     with timer("depth"):
-        depth = _ensure_depth(left, depth, right, camera, catalogue, config, roi, frame)
+        depth = source.depth_map(left, pair.camera, config, pair.roi, boxes)
     search = search_space_mask(depth, config.near_m, config.far_m)
-    if (x0, y0, x1, y1) != (0, 0, left.shape[1], left.shape[0]):
+    if not pair.is_whole_image:
         inside = np.zeros_like(search)
         inside[y0:y1, x0:x1] = True
         search &= inside
     detections = []
     with timer("colour"):
-        cut = grow(search, config.search_grow_px) if matched else close_holes(search, config.search_close_px)
-        segments = colour_segments(left, cut, config, roi, smallest_face_px(camera, catalogue, config), frame)
+        segments = colour_segments(pair, source.search_cut(search, config), frame)
     with timer("segments"):
         # faces split by a bar (no entry) or a pole: the whole face is judged before its pieces
         taken = set()
         for seg, i, j in split_face_merges(segments, config):
-            det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config, matched)
+            det = evaluate_segment(seg, pair, depth)
             if det is not None:
                 detections.append(det)
                 taken.update((i, j))
@@ -338,38 +313,39 @@ def _detect(left, depth, right, camera, pose, catalogue, config: PipelineConfig,
         for k, seg in enumerate(segments):
             if k in taken:
                 continue
-            det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config, matched)
+            det = evaluate_segment(seg, pair, depth)
             if det is not None:
                 detections.append(det)
             elif not seg.touches_border:
                 rejected.append(seg)
         # pieces that fail alone are also tried together when no whole outline formed (a branch cut them)
         for seg in merge_candidates(rejected[: config.max_merge_pieces], config.merge_max_gap):
-            det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config, matched)
+            det = evaluate_segment(seg, pair, depth)
             if det is not None:
                 detections.append(det)
     with timer("hough"):
-        detections += _hough_detections(left, depth, search, camera, pose, catalogue, config, roi, detections,
-                                        matched)
+        detections += _hough_detections(pair, depth, search, detections)
     return suppress_overlaps(detections, config.same_sign_max_iou)
 
 
-def _hough_detections(left, depth, search, camera, pose, catalogue, config: PipelineConfig, roi: Roi,
-                      found: Sequence[Detection], matched: bool) -> List[Detection]:
+def _hough_detections(pair: PairContext, depth: np.ndarray, search: np.ndarray,
+                      found: Sequence[Detection]) -> List[Detection]:
     """Round signs from Hough circles whose centre is not inside an already found sign."""
-    x0, y0, x1, y1 = roi
+    config = pair.config
+    x0, y0, x1, y1 = pair.roi
     detections: List[Detection] = []
     if config.hough_enabled:
-        r_min, r_max = radius_range_px(camera.fx, config.near_m, config.far_m, _round_diameters(catalogue, config))
+        r_min, r_max = radius_range_px(pair.camera.fx, config.near_m, config.far_m,
+                                       _round_diameters(pair.catalogue, config))
         taken = [d.bbox for d in found]
         sub = search[y0:y1, x0:x1]
         scale = hough_scale(r_min, config.hough_scale, config.hough_min_radius_px)
-        for seg in hough_segments(left[y0:y1, x0:x1], sub, r_min, r_max, scale, config):
+        for seg in hough_segments(pair.left[y0:y1, x0:x1], sub, r_min, r_max, scale, config):
             seg = _shift_segment(seg, x0, y0)
             cu, cv = bbox_centre(seg.bbox)
             if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken):
                 continue
-            det = evaluate_segment(seg, left, depth, camera, pose, catalogue, config, matched)
+            det = evaluate_segment(seg, pair, depth)
             if det is not None:
                 detections.append(det)
     return detections
@@ -383,9 +359,8 @@ def detect_pair(left, depth, right, camera: Camera, pose: Pose, catalogue,
     ``left``/``right`` with the disparity range of the configured search space.
     ``timings``: optional dict that receives the seconds spent per step.
     """
-    config = config or PipelineConfig()
-    height, width = left.shape[:2]
-    return _detect(left, depth, right, camera, pose, catalogue, config, (0, 0, width, height), timings)
+    pair = PairContext.whole(left, camera, pose, catalogue, config or PipelineConfig(), depth_source_for(depth, right))
+    return detect(pair, timings)
 
 
 def detect_in_window(left, depth, right, camera: Camera, pose: Pose, catalogue, config: Optional[PipelineConfig],
@@ -403,7 +378,7 @@ def detect_in_window(left, depth, right, camera: Camera, pose: Pose, catalogue, 
            min(width, int(cu + half_size_px) + 1), min(height, int(cv + half_size_px) + 1))
     if roi[2] <= roi[0] or roi[3] <= roi[1]:
         return None
-    found = _detect(left, depth, right, camera, pose, catalogue, config, roi)
+    found = detect(PairContext(left, camera, pose, catalogue, config, depth_source_for(depth, right), roi))
     if not found:
         return None
 

@@ -1,0 +1,52 @@
+"""What the detection steps of one stereo pair share: its image, camera, pose, depth source, settings,
+catalogue and classifier, so each step takes the pair and what it works on instead of ten arguments."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Tuple
+
+import numpy as np
+
+from ..geometry import Camera, Pose
+from .classifiers import classifier_for
+from .config import PipelineConfig
+from .depth_sources import DepthSource
+
+Roi = Tuple[int, int, int, int]  # x0, y0, x1, y1 (exclusive)
+
+
+@dataclass(frozen=True, eq=False)
+class PairContext:
+    """One stereo pair (or a window of it, ``roi``) as the detection steps see it."""
+
+    left: np.ndarray  # BGR uint8
+    camera: Camera
+    pose: Pose
+    catalogue: object
+    config: PipelineConfig
+    depth_source: DepthSource
+    roi: Roi
+
+    @classmethod
+    def whole(cls, left, camera, pose, catalogue, config, depth_source) -> PairContext:
+        """The whole pair: the roi is the left image."""
+        height, width = left.shape[:2]
+        return cls(left, camera, pose, catalogue, config, depth_source, (0, 0, width, height))
+
+    @property
+    def is_whole_image(self) -> bool:
+        return self.roi == (0, 0, self.left.shape[1], self.left.shape[0])
+
+    @cached_property
+    def classifier(self):
+        """The classifier ``config.classifier`` names for the catalogue (:func:`.classifiers.classifier_for`)."""
+        return classifier_for(self.catalogue, self.config)
+
+    @cached_property
+    def smallest_face_px(self) -> float:
+        """Pixels of the smallest side of any format at the far limit: the smallest face worth finding."""
+        config = self.config
+        sides = [min(f) for e in self.catalogue.filter(exclude=tuple(config.exclude)) for f in e.formats.values()]
+        return (min(sides) if sides else 0.4) * min(self.camera.fx, self.camera.fy) / config.far_m
