@@ -26,8 +26,6 @@ class ClassificationResult:
     template_id: Optional[str]
     score: float  # best NCC, the classification indicator (clipped to 0..1)
     scores: Dict[str, float] = field(default_factory=dict)
-    scale: float = 1.0
-    shift_px: Tuple[int, int] = (0, 0)
 
 
 def canonical_template(catalogue, template_id: str) -> tuple:
@@ -168,7 +166,7 @@ def classify_segment(
         region = cv2.GaussianBlur(region, (3, 3), 0)
         coarse = {tid: _best_over_scales(region, w, h, catalogue, tid, (1.0,))[0] for tid in ids}
         ids = sorted(ids, key=coarse.get, reverse=True)[:keep]
-    region, factor, (w, h) = crop_for_matching(image, bbox, scales, shift_fraction, config.max_template_px)
+    region, _, (w, h) = crop_for_matching(image, bbox, scales, shift_fraction, config.max_template_px)
     region = cv2.GaussianBlur(region, (3, 3), 0)  # both sides slightly smoothed: less aliasing
     fine = {tid: _best_over_scales(region, w, h, catalogue, tid, scales) for tid in ids}
     scores = {tid: float(r[0]) for tid, r in fine.items()}
@@ -179,10 +177,7 @@ def classify_segment(
         distance = {t: inner_field_distance(region, catalogue, t, fine[t][3], fine[t][2], config.inner_fraction)
                     for t in close}
         best_id = min(close, key=distance.get)
-    score, scale, loc, (tw, th) = fine[best_id]
-    centre = ((region.shape[1] - tw) / 2.0, (region.shape[0] - th) / 2.0)
-    shift = (int(round((loc[0] - centre[0]) / factor)), int(round((loc[1] - centre[1]) / factor)))
-    return ClassificationResult(best_id, float(np.clip(score, 0.0, 1.0)), scores, scale, shift)
+    return ClassificationResult(best_id, float(np.clip(fine[best_id][0], 0.0, 1.0)), scores)
 
 
 def surround_score(image: np.ndarray, face, catalogue, template_id: str, extent, grow: float) -> float:

@@ -57,12 +57,6 @@ class Segment:
         """The pixels known to lie on the face: ``depth_mask`` if set, else ``mask``."""
         return self.mask if self.depth_mask is None else self.depth_mask
 
-    @property
-    def centroid(self) -> Tuple[float, float]:
-        """(u, v) of the filled outline's centroid in full-image pixels."""
-        ys, xs = np.nonzero(self.mask)
-        return float(xs.mean() + self.bbox[0]), float(ys.mean() + self.bbox[1])
-
 
 def hsv_mask(hsv: np.ndarray, ranges: Sequence[HsvRange]) -> np.ndarray:
     """uint8 0/255 mask of pixels inside any of the HSV ranges."""
