@@ -1,13 +1,16 @@
 """How long operations report progress and learn they are cancelled: one protocol for the whole core.
 
-``open_drive``, ``map_drive`` and ``generate_drive`` each take
+``open_drive``, ``map_drive``, ``generate_drive`` and ``import_drive`` each take
+(``write_sign_crops`` the last two)
 
 - ``progress(fraction, message)``: ``fraction`` of the whole operation done (0..1)
   and what it is doing, in words;
 - ``is_cancelled() -> bool``: asked between steps; when it turns true the
   operation raises :class:`Cancelled` and leaves nothing half-done behind;
-- where input can be skipped (``map_drive``), ``warn(message)``: something was
-  skipped and the operation goes on.
+- where input can be skipped (``map_drive``, ``import_drive``, ``write_sign_crops``),
+  ``warn(message)``: something was skipped and the operation goes on.
+
+They call them through :func:`report`, :func:`check_cancelled` and :func:`warn`.
 
 All are optional. Front ends adapt their own feedback to it once
 (``algorithms/base.py`` for QGIS Processing).

@@ -3,9 +3,12 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Callable, Dict, Optional, Tuple
+from typing import Dict, Optional, Tuple
 
 import cv2
+
+from .progress import CancelCheck, WarnCallback, check_cancelled
+from .progress import warn as send_warning
 
 Rect = Tuple[int, int, int, int]  # x, y, w, h
 JPEG_QUALITY = 90
@@ -27,12 +30,14 @@ def crop_name(sign_id: int) -> str:
     return f"sign_{sign_id:05d}.jpg"
 
 
-def write_sign_crops(drive, signs, folder: Path, is_cancelled: Optional[Callable[[], bool]] = None,
-                     warn: Optional[Callable[[str], None]] = None) -> Dict[int, str]:
+def write_sign_crops(drive, signs, folder: Path, is_cancelled: Optional[CancelCheck] = None,
+                     warn: Optional[WarnCallback] = None) -> Dict[int, str]:
     """One JPEG per sign from its best observation's left image; sign_id -> file name in ``folder``.
 
     Signs seen best in the same pair share one decode. A pair that cannot be
     read any more costs only its signs' crops (reported through ``warn``).
+    Raises ``Cancelled`` between pairs when ``is_cancelled()`` turns true (the
+    caller discards the folder).
     """
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
@@ -41,19 +46,17 @@ def write_sign_crops(drive, signs, folder: Path, is_cancelled: Optional[Callable
         by_pair.setdefault(sign.best.pair_id, []).append(sign)
     written = {}
     for pair_id, pair_signs in by_pair.items():
-        if is_cancelled is not None and is_cancelled():
-            break
+        check_cancelled(is_cancelled, "writing sign crops")
         try:
             left = drive.load_left(drive.pair(pair_id))
         except Exception as exc:  # noqa: BLE001 - a crop is a convenience: report and go on
-            if warn is not None:
-                warn(f"No crops for the signs of pair {pair_id}: {exc}")
+            send_warning(warn, f"No crops for the signs of pair {pair_id}: {exc}")
             continue
         for sign in pair_signs:
             x, y, w, h = crop_box(sign.best.bbox, (left.shape[1], left.shape[0]))
             name = crop_name(sign.sign_id)
             if cv2.imwrite(str(folder / name), left[y:y + h, x:x + w], [cv2.IMWRITE_JPEG_QUALITY, JPEG_QUALITY]):
                 written[sign.sign_id] = name
-            elif warn is not None:
-                warn(f"Could not write {folder / name}")
+            else:
+                send_warning(warn, f"Could not write {folder / name}")
     return written

@@ -5,8 +5,9 @@
 poses the images were rendered from (poses.csv holds them with GNSS/INS noise).
 """
 
+from ..progress import Cancelled
 from .config import LEGACY_FACES, SimulationConfig, SimulationSummary
-from .generator import Cancelled, generate_drive, recorded_poses, true_poses
+from .generator import generate_drive, recorded_poses, true_poses
 
 __all__ = ["LEGACY_FACES", "Cancelled", "SimulationConfig", "SimulationSummary", "generate_drive", "recorded_poses",
            "true_poses"]

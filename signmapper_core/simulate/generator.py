@@ -18,7 +18,7 @@ import numpy as np
 from ..atomic_folder import remove_stale_partials, writing_folder  # noqa: F401 (re-exported)
 from ..drive_writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
 from ..geometry import Pose
-from ..progress import Cancelled
+from ..progress import CancelCheck, ProgressCallback, check_cancelled, report
 from . import textures as tx
 from .config import SimulationConfig, SimulationSummary
 from .faces import FaceOptions, sign_kinds
@@ -111,13 +111,13 @@ def render_pair(config: SimulationConfig, scene: Scene, rasterizer: Rasterizer, 
 
 
 def generate_drive(out_dir, config: SimulationConfig | None = None,
-                   progress: Callable[[float, str], None] | None = None,
-                   is_cancelled: Callable[[], bool] | None = None,
+                   progress: ProgressCallback | None = None,
+                   is_cancelled: CancelCheck | None = None,
                    before_commit: Callable[[list], None] | None = None) -> SimulationSummary:
     """Write a synthetic drive (drive-format v1 with truth.csv) into ``out_dir``.
 
     ``out_dir`` must not exist or be an empty folder. Returns a summary with the
-    true poses the images were rendered from. Raises :class:`Cancelled` when
+    true poses the images were rendered from. Raises :class:`~signmapper_core.progress.Cancelled` when
     ``is_cancelled()`` turns true; nothing is left behind then.
     ``before_commit(truth)`` is called with the truth signs once every file is
     written, before the drive takes its name: a caller's own outputs (the truth
@@ -127,10 +127,8 @@ def generate_drive(out_dir, config: SimulationConfig | None = None,
     config.validate()
     out_dir = Path(out_dir)
     started = time.perf_counter()
-    report = progress or (lambda _f, _m: None)
-    cancelled = is_cancelled or (lambda: False)
     with writing_folder(out_dir) as tmp:
-        report(0.0, "laying out the street")
+        report(progress, 0.0, "laying out the street")
         street = make_street(config)
         scene = make_scene(config, street)
         camera = config.camera()
@@ -144,19 +142,17 @@ def generate_drive(out_dir, config: SimulationConfig | None = None,
         rasterizer = Rasterizer(camera, cache)
         ids = [f"{i:06d}" for i in range(config.pairs)]
         for i, pose in enumerate(poses):
-            if cancelled():
-                raise Cancelled("synthetic drive cancelled")
+            check_cancelled(is_cancelled, "synthetic drive")
             left, right, depth = render_pair(config, scene, rasterizer, pose, float(s_cam[i]), i)
             write_pair(tmp, ids[i], left, right, depth if config.write_depth else None,
                        jpeg_quality=config.jpeg_quality)
             cache.evict_before(float(s_cam[i]) - LOOK_BEHIND_M)
-            report((i + 1) / config.pairs, f"pair {i + 1} of {config.pairs}")
+            report(progress, (i + 1) / config.pairs, f"pair {i + 1} of {config.pairs}")
         times = [i / config.rate_hz for i in range(config.pairs)]
         write_poses_csv(tmp, zip(ids, times, noisy))
         truth = scene.truth
         write_truth_csv(tmp, truth)
-        if cancelled():
-            raise Cancelled("synthetic drive cancelled")
+        check_cancelled(is_cancelled, "synthetic drive")
         if before_commit is not None:
             before_commit(truth)
     size = sum(f.stat().st_size for f in out_dir.rglob("*") if f.is_file())

@@ -11,6 +11,7 @@ from drive_fixtures import make_drive
 from signmapper_core.drive import open_drive
 from signmapper_core.drive_clock import drive_start
 from signmapper_core.errors import DriveFormatError
+from signmapper_core.progress import Cancelled
 from signmapper_core.sign_crops import crop_box, write_sign_crops
 
 
@@ -60,3 +61,17 @@ def test_a_crop_per_sign_is_the_region_around_its_box_in_the_best_pair(tmp_path)
     left = drive.load_left(drive.pair("000001"))[y:y + h, x:x + w]
     assert np.abs(crop.astype(int) - left.astype(int)).mean() < 3
     assert crop_box((0, 0, 4, 4), (64, 48), min_px=120) == (0, 0, 64, 48)  # clipped to the image
+
+
+def test_writing_crops_stops_with_cancelled_like_every_long_operation(tmp_path):
+    drive = open_drive(make_drive(tmp_path / "d", n_pairs=2))
+    signs = [_Sign(1, "000001", (20, 10, 8, 8)), _Sign(2, "000000", (0, 0, 4, 4))]
+    asked = []
+
+    def is_cancelled():  # cancelled after the first pair's crops
+        asked.append(1)
+        return len(asked) > 1
+
+    with pytest.raises(Cancelled, match="writing sign crops cancelled"):
+        write_sign_crops(drive, signs, tmp_path / "crops", is_cancelled)
+    assert sorted(p.name for p in (tmp_path / "crops").iterdir()) == ["sign_00001.jpg"]
