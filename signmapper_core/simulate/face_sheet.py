@@ -16,7 +16,7 @@ import cv2
 import numpy as np
 
 from .faces import FaceOptions, draw_sign_face, pick_format, sign_kinds
-from .layout import _face_shape
+from .sign_poles import face_shape
 
 VARIATIONS = ("face_print", "face_sheeting", "face_wear", "face_dirt", "face_marks", "face_dents")
 FX = 1750.0
@@ -31,7 +31,7 @@ def sheet_faces(seed: int, count: int, options: FaceOptions, weathering: bool = 
         kind = kinds[int(rng.integers(len(kinds)))]
         _name, w_m, h_m = pick_format(kind, rng)
         size_px = int(np.clip(FX * max(w_m, h_m) / 3.0, 48, 640))
-        fh, fw = _face_shape(size_px, w_m, h_m)
+        fh, fw = face_shape(size_px, w_m, h_m)
         face = draw_sign_face(kind.template_id, (fw, fh), w_m, rng, options, weathering, weathering)
         notes: list = []
         bgr, alpha = face.pixels(notes)

@@ -3,10 +3,16 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from signmapper_core.simulate import SimulationConfig
+from signmapper_core.simulate.distractors import facade_distractor
+from signmapper_core.simulate.faces import FaceOptions, sign_kinds
 from signmapper_core.simulate.generator import _vehicle_positions, make_scene, make_street
 from signmapper_core.simulate.layout import CARRIAGEWAY, PARKING_LEFT
+from signmapper_core.simulate.scene_pieces import Pieces, TextureKeys
+from signmapper_core.simulate.sign_poles import PanelLook, sign_pole
+from signmapper_core.simulate.street_body import buildings
 
 
 def texture_kinds(scene) -> set[str]:
@@ -66,3 +72,38 @@ def test_distractors_and_densities():
     bare = make_scene(SimulationConfig(pairs=150, seed=9, sign_density=0, distractor_density=0))
     assert bare.truth == []
     assert not texture_kinds(bare) & {"car", "cone", "shop", "patch", "logo", "face"}
+
+
+def _pole(form, seed=3):
+    street = make_street(SimulationConfig(pairs=10, seed=seed))
+    pieces = Pieces(street, TextureKeys(seed))
+    look = PanelLook(1750.0, FaceOptions(), weathering=False, shadows=False, occlusion=False)
+    placed = sign_pole(pieces, look, 30.0, sign_kinds(), np.random.default_rng(seed), 1, form)
+    return street, pieces, placed
+
+
+def test_each_pole_form_places_its_panels_from_explicit_inputs():
+    _street, pieces, (single,) = _pole("single")
+    assert single.truth is not None and len(pieces.surfaces) == 2 + 2  # face, back, two crossed pole quads
+    _street, _pieces, (low, high) = _pole("stacked")
+    assert 0.65 <= high.centre[2] - low.centre[2] <= 1.0 and low.truth and high.truth
+    street, _pieces, (front, back) = _pole("back-to-back")
+    assert front.truth is not None and back.truth is None
+    _street, _pieces, (away,) = _pole("away")
+    assert away.truth is None
+    street, _pieces, (overhead,) = _pole("overhead")
+    assert CARRIAGEWAY[0] < street_coords(street, overhead.centre)[1] < CARRIAGEWAY[1]
+    with pytest.raises(ValueError, match="unknown pole form 'sideways'"):
+        _pole("sideways")
+
+
+def test_shop_signs_hang_only_on_the_facades_they_are_given():
+    street = make_street(SimulationConfig(pairs=30, seed=4))
+    pieces = Pieces(street, TextureKeys(4))
+    facades = buildings(pieces, street.length)
+    assert facades and all(f.s1 > f.s0 and f.side in (1, -1) for f in facades)
+    before = len(pieces.surfaces)
+    facade_distractor(pieces, facades[3].s0 + 2.0, "red", "shop", np.random.default_rng(0), [])
+    assert len(pieces.surfaces) == before  # no façade given: nothing hung
+    facade_distractor(pieces, facades[3].s0 + 2.0, "red", "shop", np.random.default_rng(0), facades[3:4])
+    assert len(pieces.surfaces) == before + 1

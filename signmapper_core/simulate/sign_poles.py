@@ -1,0 +1,167 @@
+"""Sign panels on their poles (single, stacked, back to back, overhead, turned away), and what may
+stand between a sign and the approaching vehicle."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..drive import TruthSign
+from . import textures as tx
+from .faces import FaceOptions, SignKind, draw_sign_face, pick_format
+from .scene_pieces import CARRIAGEWAY, KERB_H, PARKING_LEFT, SIDEWALK_RIGHT, UP, Pieces
+from .surfaces import Surface, Texture, TextureSource, rect_surface
+
+POLE_FORMS = ("single", "stacked", "back-to-back", "overhead", "away")
+
+
+@dataclass
+class PlacedSign:
+    """A sign panel as laid out: truth row when its face looks towards the vehicle."""
+
+    truth: TruthSign | None
+    colour: str
+    centre: np.ndarray
+    surfaces: list[Surface] = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class PanelLook:
+    """What every panel of a scene shares: the focal length its face texture is sized for, the face
+    options, and the realism switches that touch signs."""
+
+    fx: float
+    face_options: FaceOptions
+    weathering: bool
+    shadows: bool
+    occlusion: bool  # a branch or pole may stand in front of a sign
+
+
+def face_shape(size_px: int, w_m: float, h_m: float) -> tuple[int, int]:
+    """(height, width) in pixels of a face texture whose longer side is ``size_px``."""
+    if w_m >= h_m:
+        return max(1, int(round(size_px * h_m / w_m))), size_px
+    return size_px, max(1, int(round(size_px * w_m / h_m)))
+
+
+def sign_panel(pieces: Pieces, look: PanelLook, kind: SignKind, centre, facing_deg, tilt_deg, fmt, s,
+               towards_vehicle: bool) -> PlacedSign:
+    """Face and grey back of one panel (truth if it faces the vehicle)."""
+    _name, w_m, h_m = fmt
+    phi, tau = np.radians(facing_deg), np.radians(tilt_deg)
+    n_h = np.array([np.sin(phi), np.cos(phi), 0.0])
+    normal = n_h * np.cos(tau) + UP * np.sin(tau)
+    right = np.array([-np.cos(phi), np.sin(phi), 0.0])
+    up = UP * np.cos(tau) - n_h * np.sin(tau)
+    size_px = int(np.clip(look.fx * max(w_m, h_m) / 3.0, 48, 640))
+    fh, fw = face_shape(size_px, w_m, h_m)
+    key, rng = pieces.keys.key("face")
+    sign_face = draw_sign_face(kind.template_id, (fw, fh), float(w_m), rng, look.face_options, look.weathering,
+                               look.shadows)
+
+    def make_face():
+        return Texture(*sign_face.pixels())
+
+    face_src = TextureSource(key, fw, fh, make_face)
+    corner = centre - right * w_m / 2 + up * h_m / 2
+    face = rect_surface(corner, right * w_m, -up * h_m, face_src, two_sided=False, s_range=(s - 2, s + 2))
+    bkey, brng = pieces.keys.key("back")
+
+    def make_back():
+        return Texture(*sign_face.back(brng))
+
+    back_src = TextureSource(bkey, fw, fh, make_back)
+    b_corner = centre - normal * 0.012 + right * w_m / 2 + up * h_m / 2
+    back = rect_surface(b_corner, -right * w_m, -up * h_m, back_src, two_sided=False, s_range=(s - 2, s + 2))
+    pieces.surfaces += [face, back]
+    truth = None
+    if towards_vehicle:
+        truth = TruthSign("", kind.template_id, float(centre[0]), float(centre[1]), float(centre[2]),
+                          float(w_m), float(h_m), float(facing_deg % 360.0))
+    return PlacedSign(truth, kind.colour, centre, [face, back])
+
+
+def sign_pole(pieces: Pieces, look: PanelLook, s, kinds, rng, side, form: str = "single") -> list[PlacedSign]:
+    """A pole with its panels (``form``: one of ``POLE_FORMS``); right-side signs face approaching traffic,
+    ``away`` ones the other way (distractors, not in the truth)."""
+    if form not in POLE_FORMS:
+        raise ValueError(f"unknown pole form {form!r}; choose one of {', '.join(POLE_FORMS)}")
+    away = form == "away"
+    st = pieces.street
+    heading = np.degrees(st.heading(s))
+    first = kinds[int(rng.integers(len(kinds)))]
+    fmt = pick_format(first, rng)
+    w_m, h_m = fmt[1], fmt[2]
+    yaw = rng.uniform(-4, 4) + side * rng.uniform(0, 6)  # turned a little towards the road
+    facing = heading + 180.0 - yaw if not away else heading + rng.uniform(-4, 4)
+    tilt = rng.uniform(-3, 3)
+    if form == "overhead":
+        l_c = CARRIAGEWAY[1] / 2 + rng.uniform(-0.6, 0.6)
+        lower = rng.uniform(4.3, 4.7)
+        centre = st.point(s, l_c, lower + h_m / 2)
+        placed = [sign_panel(pieces, look, first, centre, facing, tilt, fmt, s, True)]
+        pole_l = SIDEWALK_RIGHT[0] + 0.5
+        top = lower + h_m + 0.3
+        pieces.crossed(st.point(s + 0.05, pole_l, KERB_H), 0.12, top - KERB_H + 0.1, None, None, s, (120, 125, 125))
+        arm_a, arm_b = st.point(s + 0.05, l_c - w_m / 2 - 0.2, top), st.point(s + 0.05, pole_l, top)
+        pieces.wall(arm_a, arm_b, top - 0.1, top, None, (120, 125, 125), (s - 2, s + 2))
+        return placed
+    edge = CARRIAGEWAY[1] if side > 0 else PARKING_LEFT[0]
+    offset = rng.uniform(0.3, 2.0)
+    l_c = edge + side * (offset + w_m / 2)
+    lower = rng.uniform(0.6, 2.5)
+    ground = KERB_H
+    centres = [(first, fmt, lower + h_m / 2)]
+    if form == "stacked":
+        second = kinds[int(rng.integers(len(kinds)))]
+        fmt2 = pick_format(second, rng)
+        # about 0.7 m between the panel centres, never overlapping
+        gap = max(0.7, (h_m + fmt2[2]) / 2 + 0.05)
+        centres.append((second, fmt2, lower + h_m / 2 + gap))
+    top = 0.0
+    placed = []
+    for kind, f, h_c in centres:
+        centre = st.point(s, l_c, ground + h_c)
+        placed.append(sign_panel(pieces, look, kind, centre, facing, tilt + rng.uniform(-1, 1), f, s, not away))
+        top = max(top, h_c + f[2] / 2)
+    if form == "back-to-back":
+        other = kinds[int(rng.integers(len(kinds)))]
+        f = pick_format(other, rng)
+        n_h = np.array([np.sin(np.radians(facing)), np.cos(np.radians(facing)), 0.0])
+        centre = st.point(s, l_c, ground + lower + h_m / 2) - n_h * 0.08
+        placed.append(sign_panel(pieces, look, other, centre, facing + 180.0, tilt, f, s, False))
+    n_h = np.array([np.sin(np.radians(facing)), np.cos(np.radians(facing)), 0.0])
+    pole_base = st.point(s, l_c, ground) - n_h * 0.04
+    pieces.crossed(pole_base, 0.06, top + 0.1, None, None, s, (140, 145, 145))
+    if look.occlusion and rng.random() < 0.2:
+        occluder(pieces, s, l_c, max(w_m, h_m), ground + lower + h_m / 2, rng)
+    return placed
+
+
+def occluder(pieces: Pieces, s, l_sign, size_m, h_sign, rng) -> None:
+    """A branch or a pole between the sign and the approaching vehicle, covering part of it.
+
+    Placed next to the line of sight from about 9 m, offset so that it hides
+    roughly a quarter to a half of the face rather than all of it.
+    """
+    d_before = rng.uniform(1.0, 2.5)
+    l_cam = CARRIAGEWAY[1] / 2
+    frac = d_before / 9.0  # where the line of sight from ~9 m crosses
+    l_sight = l_sign + (l_cam - l_sign) * frac
+    h_sight = h_sign + (2.4 - h_sign) * frac
+    apparent = size_m * (1 - frac)  # the face's size where the occluder stands
+    if rng.random() < 0.5:
+        l_o = l_sight + rng.choice([-1.0, 1.0]) * rng.uniform(0.1, 0.35) * apparent
+        base = pieces.street.point(s - d_before, l_o, KERB_H)
+        pieces.crossed(base, 0.1, h_sign + 2.0, None, None, s - d_before, (95, 100, 100))
+    else:
+        key, trng = pieces.keys.key("branch")
+        n = 64
+        dark = bool(rng.random() < 0.5)
+        size = rng.uniform(0.5, 0.8)
+        src = TextureSource(key, n, n, lambda: tx.foliage(trng, n, n, dark=dark))
+        ang = rng.uniform(0, 2 * np.pi)
+        shift = (size / 2 + apparent / 2) * rng.uniform(0.55, 0.8)
+        centre = pieces.street.point(s - d_before, l_sight + shift * np.cos(ang), h_sight + shift * np.sin(ang))
+        pieces.crossed(centre - UP * size / 2, size, size, src, src, s - d_before)
