@@ -16,6 +16,7 @@ from signmapper_core.pipeline.classifiers.face_patch import face_patch
 
 from .backgrounds import BackgroundPool
 from .camera_effects import blur, lighting, resolution_loss, sensor_noise_and_jpeg
+from .face_variants import MIRROR_SAFE, mirrored, pictogram_scaled, speed_limit_face, speed_limit_number
 from .face_wear import wear_face
 
 WORK_PX = 192  # faces are worn at this size, then shrunk by pyramid steps to about twice the target size
@@ -139,8 +140,21 @@ class SampleMaker:
             canvas = canvas * np.clip(rng.normal(1, 0.12, 3), 0.7, 1.3)
         return canvas
 
+    def _design(self, tid, rng):
+        """The official drawing of ``tid`` or, as often, another design of the same sign (face_variants)."""
+        face, alpha = self.masters[tid]
+        number = speed_limit_number(tid)
+        if number is not None and "2.01" in self.masters and rng.random() < 0.4:
+            ring, alpha = self.masters["2.01"]
+            face = speed_limit_face(ring, alpha, number, rng)
+        elif tid in MIRROR_SAFE and rng.random() < 0.5:
+            face, alpha = mirrored(face, alpha)
+        if rng.random() < 0.3:
+            face = pictogram_scaled(face, alpha, rng)
+        return face, alpha
+
     def _place_sign(self, canvas, tid, size_px, centre, rng, worn=True):
-        face, alpha = _shrink(*self.masters[tid], size_px)
+        face, alpha = _shrink(*self._design(tid, rng), size_px)
         if worn:
             face = wear_face(face, alpha, rng)
         hom = view_homography(face.shape[1], face.shape[0], size_px, centre, rng)

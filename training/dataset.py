@@ -28,9 +28,21 @@ def _make(job):
     return _maker.sign_sample(_maker.class_ids[label], rng)
 
 
-def labels_for(n_classes: int, per_class: int, background: int, seed: int) -> np.ndarray:
-    """Balanced labels in a seeded order; -1 is the background class."""
-    labels = np.concatenate([np.repeat(np.arange(n_classes), per_class), np.full(background, -1)])
+# Signs that differ from a common one only by small lettering are rarer on the road than it: 2.30.1 (the
+# general 50 at town entries, "GENERELL" on the ring) is seen far less often than 2.30-50. Sampled at this
+# share of the others, a ring whose lettering the camera cannot resolve reads as the common sign.
+CLASS_SHARE = {"2.30.1": 0.35}
+
+
+def class_shares(class_ids) -> list:
+    return [CLASS_SHARE.get(t, 1.0) for t in class_ids]
+
+
+def labels_for(n_classes: int, per_class: int, background: int, seed: int, shares=None) -> np.ndarray:
+    """Labels in a seeded order, ``per_class`` of each class times its share; -1 is the background class."""
+    shares = [1.0] * n_classes if shares is None else list(shares)
+    counts = [max(1, int(round(per_class * s))) for s in shares]
+    labels = np.concatenate([np.repeat(np.arange(n_classes), counts), np.full(background, -1)])
     return np.random.default_rng(seed).permutation(labels)
 
 

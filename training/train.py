@@ -24,7 +24,7 @@ from signmapper_core.catalogue import DEFAULT_CATALOGUE_DIR, load_catalogue
 from signmapper_core.pipeline.classifiers.face_patch import standardise
 from signmapper_core.pipeline.classifiers.learned import BACKGROUND, CARD_FORMAT, MODEL_DIR
 
-from .dataset import generate, labels_for
+from .dataset import class_shares, generate, labels_for
 from .model import SignNet
 
 
@@ -160,7 +160,7 @@ def train(args) -> dict:
         return generate(args.catalogue, class_ids[:-1], lab, seed, args.input_px, args.margin, args.workers,
                         lambda i, n: log(f"  generated {i}/{n}"))
 
-    train_labels = labels_for(background, args.per_class, args.background, args.seed)
+    train_labels = labels_for(background, args.per_class, args.background, args.seed, class_shares(class_ids[:-1]))
     val_labels = labels_for(background, args.val_per_class, args.val_per_class * 4, args.seed + 1000)
     log(f"{background} classes + background; generating {len(train_labels)} training and {len(val_labels)} "
         f"validation patches")
