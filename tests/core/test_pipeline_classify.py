@@ -75,8 +75,9 @@ def test_network_reads_official_faces_under_blur_noise_and_perspective(catalogue
 
 def test_network_reads_most_faces_of_another_artwork(catalogue, network):
     """Our procedural drawings (other strokes, palette, font) were never trained on. Measured 2026-12-01 with the
-    committed model: 129 of 216 faces (60 %) read right; real photographs do better (README), these drawings
-    differ from the official ones more than most real print runs do. A regression bar, not a goal."""
+    committed model: 155 of 216 faces (72 %) read right (the model before: 129, 60 %); real photographs do better
+    (README), these drawings differ from the official ones more than most real print runs do. A regression bar,
+    not a goal."""
     right, total = 0, 0
     for k, (font, seed) in enumerate([("duplex", 3), ("simplex", 5)]):
         style = FaceStyle(stroke_scale=1.1, rim_scale=0.9, palette_jitter=0.5, font=font, detail_jitter=0.3,
@@ -87,7 +88,7 @@ def test_network_reads_most_faces_of_another_artwork(catalogue, network):
             right += network.classify(image, bbox, _candidates(catalogue, entry.id)).template_id == entry.id
             total += 1
     assert total == 2 * len(catalogue)
-    assert right >= 0.55 * total
+    assert right >= 0.66 * total
 
 
 def test_network_gives_a_non_sign_a_low_indicator(catalogue, network):
