@@ -116,9 +116,10 @@ def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[
                 except FutureTimeout:
                     continue
                 except BrokenProcessPool as exc:  # killed (out of memory) or crashed inside native code
-                    raise MappingError(f"a worker process ended abruptly while mapping pair {pairs[index].id} of "
-                                       f"{drive.root} (out of memory, or a crash: see the log above); mapping with "
-                                       f"1 worker process shows which pair") from exc
+                    # every unfinished future fails alike: the pair that killed its worker is one of those in flight
+                    raise MappingError(f"a worker process ended abruptly while mapping pairs {pairs[index].id} to "
+                                       f"{pairs[submitted - 1].id} of {drive.root} (out of memory, or a crash: see "
+                                       f"the log above); mapping with 1 worker process shows which pair") from exc
             result.record = pairs[index]  # the caller's record, not the worker's copy
             yield result
     finally:
