@@ -393,12 +393,15 @@ def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment
     A white bar (no entry, 2.02) or a pole in front cuts a face into two pieces
     stacked along one axis: their boxes overlap along the other axis by at least
     ``config.split_min_span_overlap`` and the gap between them is small (``merge_max_gap``).
+    A bar along the diagonal (end of the priority road, 3.04) leaves two halves
+    offset along both axes, overlapping along each by ``split_min_diagonal_overlap``.
     The hull of both is kept when its outline fits an ideal shape (``min_shape_fit``)
     better, by ``split_min_gain``, than each piece does: the whole face is then judged
     before its pieces.
     """
     min_fit, max_gap_fraction = config.min_shape_fit, config.merge_max_gap
     min_span_overlap, min_gain = config.split_min_span_overlap, config.split_min_gain
+    min_diagonal = config.split_min_diagonal_overlap
     fits: dict = {}
 
     def fit_of(k: int) -> float:
@@ -418,9 +421,10 @@ def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment
             w, h = max(ax + aw, bx + bw) - x0, max(ay + ah, by + bh) - y0
             if box_gap(a.bbox, b.bbox) > max_gap_fraction * max(w, h) or max(w, h) > 2 * min(w, h):
                 continue
-            stacked = _span_overlap(ax, ax + aw, bx, bx + bw) >= min_span_overlap  # one above the other
-            beside = _span_overlap(ay, ay + ah, by, by + bh) >= min_span_overlap
-            if not (stacked or beside):
+            across = _span_overlap(ax, ax + aw, bx, bx + bw)  # of the columns: one above the other
+            along = _span_overlap(ay, ay + ah, by, by + bh)  # of the rows: side by side
+            diagonal = min(across, along) >= min_diagonal
+            if not (across >= min_span_overlap or along >= min_span_overlap or diagonal):
                 continue
             merged = merge_segments(a, b)
             result = classify_shape(merged.mask, min_fit)

@@ -50,6 +50,9 @@ class PipelineConfig:
     # a bar (2.02) or a pole cuts a face into pieces stacked along one axis: they overlap along the other by this
     # share of the shorter one...
     split_min_span_overlap: float = 0.6
+    # a bar along the diagonal (3.04, end of the priority road) cuts a diamond's colour into two halves offset
+    # along both axes: their boxes overlap by about half along each (a clean 3.04: 0.48 and 0.48)
+    split_min_diagonal_overlap: float = 0.3
     split_min_gain: float = 0.05  # ...and their hull fits an ideal outline this much better than either piece
     # scene-adaptive colour (scene_colour.py): a second pass with saturation/value floors from the image
     # remove the scene's colour cast before the scene pass reads hues. Off by default: on GTSDB's tune split it

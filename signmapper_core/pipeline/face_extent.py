@@ -32,7 +32,9 @@ def colour_part(catalogue, template_id: str, colour: str, hsv_ranges) -> Tuple[O
 
     The extent is the colour's bounding box as fractions of the face box; the
     shape is that of the filled outline of the colour's pixels, as the colour
-    step would see it.
+    step would see it: where a bar cuts the colour into pieces that fit no
+    outline alone (3.04's halves), the hull of all pieces, as the colour step
+    merges them (``colour.split_face_merges``).
     """
     key = (id(catalogue), template_id, colour)
     hit = _cache.get(key)
@@ -54,6 +56,11 @@ def colour_part(catalogue, template_id: str, colour: str, hsv_ranges) -> Tuple[O
             cv2.drawContours(filled, contours, -1, 255, thickness=cv2.FILLED)
             part = filled[ys.min() : ys.max() + 1, xs.min() : xs.max() + 1]
             shape = classify_shape(part).shape
+            if shape is None and len(contours) > 1:
+                hull = cv2.convexHull(np.vstack([c.reshape(-1, 2) for c in contours]))
+                merged = np.zeros_like(mask)
+                cv2.drawContours(merged, [hull], -1, 255, thickness=cv2.FILLED)
+                shape = classify_shape(merged[ys.min() : ys.max() + 1, xs.min() : xs.max() + 1]).shape
     _cache[key] = (catalogue, (extent, shape))
     return extent, shape
 
