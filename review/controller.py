@@ -112,7 +112,7 @@ class ReviewController(QObject):
             self.dock.show_empty("Select a feature of a Sign Mapper 'signs', 'detections' or 'changes' layer")
             self.dock.set_pairs([])
             self.dock.set_navigation_enabled(False)
-            self.dock.progress.setVisible(False)
+            self.dock.set_progress(0, 0, 0)  # nothing to review: no progress bar
             if self.map_progress is not None:
                 self.map_progress.clear()
             return

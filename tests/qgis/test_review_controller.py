@@ -478,6 +478,8 @@ def test_review_progress_in_the_dock_and_on_the_map(review, gpkg):
     wait_idle(controller)
     assert dock.progress.text() == f"{to_review - 1} to review · 1 of {total} reviewed"
     assert controller.map_progress.text.endswith(f"{to_review - 1} to review · 1 of {total} reviewed")
+    controller.set_layer(None)  # no Sign Mapper layer: no progress in the dock
+    assert not dock.progress.isVisibleTo(dock)
 
 
 def test_an_added_sign_shows_its_one_observation_and_undo_leaves_no_stale_image(review, tmp_path, drive_dir,
