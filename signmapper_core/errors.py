@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 
-class DriveFormatError(ValueError):
-    """A drive folder breaks ``drive-format.md``; the message names file, line and field."""
+class InputFileError(ValueError):
+    """An input file is missing, malformed or contradicts another; the message names the file (and line and
+    field where there is one) and what is wrong. ``reason`` is the message without the place."""
 
     def __init__(self, path, message: str, line: int | None = None, field: str | None = None):
         self.path = str(path)
@@ -17,6 +18,10 @@ class DriveFormatError(ValueError):
         if field is not None:
             where += f", field '{field}'"
         super().__init__(f"{where}: {message}")
+
+
+class DriveFormatError(InputFileError):
+    """A drive folder breaks ``drive-format.md``; the message names file, line and field."""
 
 
 class ImageReadError(DriveFormatError):
@@ -35,21 +40,8 @@ class MappingError(RuntimeError):
         self.limit_exceeded = limit_exceeded
 
 
-class ImportInputError(ValueError):
+class ImportInputError(InputFileError):
     """An importer's input (images, calibration, poses, CRS) is missing, malformed or contradicts another input.
 
-    The message names the file (and line and field where there is one) and what is wrong, as
-    :class:`DriveFormatError` does for drive folders.
+    Not a :class:`DriveFormatError`: the drive folder is what the import writes, not what it reads.
     """
-
-    def __init__(self, path, message: str, line: int | None = None, field: str | None = None):
-        self.path = str(path)
-        self.line = line
-        self.field = field
-        self.reason = message
-        where = self.path
-        if line is not None:
-            where += f", line {line}"
-        if field is not None:
-            where += f", field '{field}'"
-        super().__init__(f"{where}: {message}")

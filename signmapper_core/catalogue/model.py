@@ -17,6 +17,7 @@ from typing import Iterable, Iterator
 import cv2
 import numpy as np
 
+from ..errors import InputFileError
 from .faces import pixel_size
 
 DEFAULT_CATALOGUE_DIR = Path(__file__).resolve().parents[2] / "templates" / "ch"
@@ -29,12 +30,8 @@ ID_PATTERN = re.compile(r"^[0-9A-Za-z]+(\.[0-9A-Za-z]+)*(-[0-9A-Za-z.]+)?$")
 _INTACT: dict[str, tuple[int, int]] = {}
 
 
-class CatalogueError(ValueError):
+class CatalogueError(InputFileError):
     """A catalogue folder is malformed; the message names the file and the entry."""
-
-    def __init__(self, path, message: str):
-        self.path = str(path)
-        super().__init__(f"{self.path}: {message}")
 
 
 @dataclass(frozen=True)

@@ -29,6 +29,8 @@ from typing import Iterable, List, Optional, Sequence, Tuple
 import cv2
 import numpy as np
 
+from ..errors import InputFileError
+
 MANIFEST_COLUMNS = ("image", "x0", "y0", "x1", "y1", "ssv_id", "group", "split", "source")
 IMAGE_LIST_COLUMNS = ("image", "width", "height", "split", "source", "signs")
 GROUPS = ("same", "differs")
@@ -36,20 +38,8 @@ SPLITS = ("tune", "report")
 _ID_PATTERN = re.compile(r"^[0-9A-Za-z]+(\.[0-9A-Za-z]+)*(-[0-9A-Za-z.]+)?$")
 
 
-class ManifestError(ValueError):
+class ManifestError(InputFileError):
     """A manifest or one of its images is unusable; the message names file, line and field."""
-
-    def __init__(self, path, message: str, line: Optional[int] = None, field: Optional[str] = None):
-        self.path = str(path)
-        self.line = line
-        self.field = field
-        self.reason = message
-        where = self.path
-        if line is not None:
-            where += f", line {line}"
-        if field is not None:
-            where += f", field '{field}'"
-        super().__init__(f"{where}: {message}")
 
 
 def read_bgr(path) -> np.ndarray:

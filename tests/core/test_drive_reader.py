@@ -257,3 +257,20 @@ def test_truncated_jpeg_is_an_error_not_a_grey_picture(tmp_path):
     assert drive.load_left(drive.pairs[0]).shape == (48, 64, 3)
     with pytest.raises(ImageReadError, match="truncated JPEG"):
         drive.load_left(drive.pairs[1])
+
+
+def test_input_errors_name_the_place_the_same_way_and_stay_apart():
+    from signmapper_core.catalogue.model import CatalogueError
+    from signmapper_core.errors import ImportInputError, InputFileError
+    from signmapper_core.validation.realset import ManifestError
+
+    for cls in (DriveFormatError, ImportInputError, ManifestError):
+        error = cls("poses.csv", "heading is not a number", line=3, field="heading")
+        assert str(error) == "poses.csv, line 3, field 'heading': heading is not a number"
+        assert isinstance(error, InputFileError) and isinstance(error, ValueError)
+        assert (error.path, error.line, error.field, error.reason) == ("poses.csv", 3, "heading",
+                                                                      "heading is not a number")
+    assert str(CatalogueError("catalogue.json", "entry 1.01: no formats")) == "catalogue.json: entry 1.01: no formats"
+    # an import's input is not the drive folder: catching one does not catch the other
+    assert not isinstance(ImportInputError("a", "b"), DriveFormatError)
+    assert not isinstance(ManifestError("a", "b"), DriveFormatError)

@@ -18,6 +18,7 @@ from typing import Sequence
 import cv2
 import numpy as np
 
+from ...errors import InputFileError
 from ..classify import ClassificationResult
 from .face_patch import face_patch, standardise
 
@@ -26,12 +27,8 @@ BACKGROUND = "__background__"
 MODEL_DIR = "classifier"
 
 
-class ClassifierError(ValueError):
+class ClassifierError(InputFileError):
     """A classifier model folder is missing or malformed; the message names the file and the field."""
-
-    def __init__(self, path, message: str):
-        self.path = str(path)
-        super().__init__(f"{path}: {message}")
 
 
 @dataclass(frozen=True)
