@@ -11,13 +11,13 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Optional
 
-from qgis.PyQt.QtCore import QObject
 from qgis.PyQt.sip import isdeleted
 
 from ..gpkg.output import read_run_table
 from ..ui.template_picker import TemplateChoice
 from .background import BackgroundRunner, Jobs
 from .decisions import DecisionTaker
+from .dock_controller import DockController
 from .drive_locator import DriveLocator
 from .images import ImageLoader
 from .items import read_item, review_progress
@@ -27,12 +27,11 @@ from .progress_on_map import ReviewProgressItem
 from .session import ReviewSession
 
 
-class ReviewController(QObject):
+class ReviewController(DockController):
     """Connects the review dock to the current Sign Mapper layer, its drive and the catalogue."""
 
     def __init__(self, iface, dock, ask_drive_folder=None, settings=None, parent=None):
-        super().__init__(parent)
-        self.iface, self.dock = iface, dock
+        super().__init__(iface, dock, parent)
         self.locator = DriveLocator(ask_drive_folder, settings)
         self.background = BackgroundRunner(self)
         self.session = ReviewSession(dock.show_message)
@@ -44,17 +43,14 @@ class ReviewController(QObject):
         self.map_progress = ReviewProgressItem(iface.mapCanvas()) if iface is not None else None
         self._catalogues = {}  # catalogue folder (None = bundled) -> Catalogue
         self._catalogue_key = None
-        self._active = False
         d, n = self.decisions, self.navigator
-        self._dock_connections = [
+        self.connect_dock([
             (dock.acceptRequested, d.accept), (dock.rejectRequested, d.reject),
             (dock.reclassifyRequested, d.reclassify), (dock.undoRequested, d.undo_last),
             (dock.addSignClicked, d.add_sign), (dock.nextRequested, n.next), (dock.previousRequested, n.previous),
             (dock.nextReviewRequested, n.next_review), (dock.zoomRequested, n.zoom_to_feature),
             (dock.pairRequested, self.images.show_pair), (dock.observationRequested, self.images.show_observation),
-        ]
-        for signal, slot in self._dock_connections:
-            signal.connect(slot)
+        ])
 
     # what tests and the plugin read
     @property
@@ -74,27 +70,11 @@ class ReviewController(QObject):
         return self.session.drive
 
     # life cycle --------------------------------------------------------------------------------------
-    def activate(self) -> None:
-        """Start following the current layer (the dock became visible)."""
-        if self._active:
-            return
-        self._active = True
-        self.iface.currentLayerChanged.connect(self.set_layer)
-        self.set_layer(self.iface.activeLayer())
-
-    def deactivate(self) -> None:
-        if not self._active:
-            return
-        self._active = False
-        self.iface.currentLayerChanged.disconnect(self.set_layer)
+    def stop_following(self) -> None:
         self._unfollow_layer()
 
-    def shutdown(self) -> None:
-        """Disconnect everything and wait for running jobs (plugin unload)."""
-        self.deactivate()
-        for signal, slot in self._dock_connections:
-            signal.disconnect(slot)
-        self._dock_connections = []
+    def release(self) -> None:
+        """Wait for running jobs; the review progress leaves the map."""
         self.background.shutdown()
         if self.map_progress is not None:
             self.iface.mapCanvas().scene().removeItem(self.map_progress)

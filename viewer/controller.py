@@ -13,11 +13,12 @@ from pathlib import Path
 from typing import Callable, Optional
 
 from qgis.core import QgsCoordinateReferenceSystem, QgsCoordinateTransform, QgsPointXY, QgsProject, QgsVectorLayer
-from qgis.PyQt.QtCore import QObject, QTimer
+from qgis.PyQt.QtCore import QTimer
 from qgis.PyQt.sip import isdeleted
 
 from ..gpkg.output import layer_uri, read_run_table
 from ..review.background import BackgroundRunner
+from ..review.dock_controller import DockController
 from ..review.drive_locator import DriveLocator
 from ..review.layers import gpkg_source, layer_kind
 from ..signmapper_core.output_schema import DETECTIONS, SIGNS
@@ -30,11 +31,11 @@ PLAY_INTERVAL_MS = 100  # 10 frames/s, twice the 5 pairs/s a vehicle records
 PICK_TOLERANCE_PX = 8  # a click this close to a trajectory point opens that pair
 
 
-class DriveViewerController(QObject):
+class DriveViewerController(DockController):
     def __init__(self, iface, dock, ask_drive_folder=None, settings=None,
                  add_sign: Optional[Callable[[QgsVectorLayer, str, float, float], None]] = None, parent=None):
-        super().__init__(parent)
-        self.iface, self.dock, self.add_sign_callback = iface, dock, add_sign
+        super().__init__(iface, dock, parent)
+        self.add_sign_callback = add_sign
         self.locator = DriveLocator(ask_drive_folder, settings)
         self.runner = BackgroundRunner(self)
         self.drive = None
@@ -51,36 +52,19 @@ class DriveViewerController(QObject):
         self.timer = QTimer(self)
         self.timer.setInterval(PLAY_INTERVAL_MS)
         self.timer.timeout.connect(self._tick)
-        self._active = False
-        self._connections = [
+        self.connect_dock([
             (dock.frameRequested, self.go_to), (dock.playToggled, self.play), (dock.boxClicked, self.select_box),
             (dock.addSignClicked, self.add_sign), (dock.pickOnMapToggled, self.pick_on_map),
-        ]
-        for signal, slot in self._connections:
-            signal.connect(slot)
+        ])
 
     # life cycle --------------------------------------------------------------------------------------
-    def activate(self) -> None:
-        if self._active:
-            return
-        self._active = True
-        self.iface.currentLayerChanged.connect(self.set_layer)
-        self.set_layer(self.iface.activeLayer())
-
-    def deactivate(self) -> None:
-        if not self._active:
-            return
-        self._active = False
-        self.iface.currentLayerChanged.disconnect(self.set_layer)
+    def stop_following(self) -> None:
+        """A hidden viewer stops playing and picking; the vehicle leaves the map."""
         self.play(False)
         self.pick_on_map(False)
         self.vehicle.hide()
 
-    def shutdown(self) -> None:
-        self.deactivate()
-        for signal, slot in self._connections:
-            signal.disconnect(slot)
-        self._connections = []
+    def release(self) -> None:
         if self.frames is not None:
             self.frames.clear()
         self.runner.shutdown()
