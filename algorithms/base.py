@@ -78,14 +78,20 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         )
 
     def checkParameterValues(self, parameters, context):  # noqa: N802
-        """QGIS's own checks, then the outputs: no folder, writable, not an input (``output_paths``)."""
+        """QGIS's own checks, then ours (:meth:`check_inputs`), before the run starts."""
         ok, message = super().checkParameterValues(parameters, context)
         if not ok:
             return ok, message
-        from .output_paths import output_problem
+        try:
+            self.check_inputs(parameters, context)
+        except QgsProcessingException as exc:
+            return False, str(exc)
+        return True, ""
 
-        problem = output_problem(self, parameters, context)
-        return (False, problem) if problem else (True, "")
+    def check_inputs(self, parameters, context) -> None:
+        """QgsProcessingException naming what is wrong: the outputs (no folder, writable, not an input,
+        ``output_paths``), and in algorithms that read their inputs up front, those too."""
+        self.check_outputs(parameters, context)
 
     def check_outputs(self, parameters, context) -> None:
         """The output check of ``checkParameterValues`` at the start of a run (models may skip the former)."""

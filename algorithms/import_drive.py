@@ -191,16 +191,9 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
         self.addOutput(QgsProcessingOutputNumber(self.VERTICAL_DISPARITY,
                                                  self.tr("Mean vertical disparity of the first pair [px]")))
 
-    def checkParameterValues(self, parameters, context):  # noqa: N802
+    def check_inputs(self, parameters, context) -> None:
         """Every input read and checked before the run: folders, calibration, poses, CRSs, outputs."""
-        ok, message = super().checkParameterValues(parameters, context)
-        if not ok:
-            return ok, message
-        try:
-            self.settings(parameters, context)
-        except QgsProcessingException as exc:
-            return False, str(exc)
-        return True, ""
+        self.settings(parameters, context)
 
     def settings(self, parameters, context, check: bool = True):
         """(DriveSource, ImportOptions, output folder) of the parameters; QgsProcessingException says what is wrong.

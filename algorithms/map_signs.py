@@ -199,16 +199,9 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         self.addOutput(QgsProcessingOutputVectorLayer(self.DETECTIONS, self.tr("Detections"),
                                                       QgsProcessing.TypeVectorPoint))
 
-    def checkParameterValues(self, parameters, context):  # noqa: N802
+    def check_inputs(self, parameters, context) -> None:
         """Catch wrong inputs before the run: drive folder, outputs, depth range, colours, catalogue, exclusions."""
-        ok, message = super().checkParameterValues(parameters, context)
-        if not ok:
-            return ok, message
-        try:
-            self.settings(parameters, context)
-        except QgsProcessingException as exc:
-            return False, str(exc)
-        return True, ""
+        self.settings(parameters, context)
 
     def settings(self, parameters, context, notes=None):
         """(drive folder, catalogue, PipelineConfig, FusionConfig) of the parameters and, when given, the settings
