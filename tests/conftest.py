@@ -47,6 +47,23 @@ def signalo_database(postgres):
 
 
 @pytest.fixture(scope="session")
+def shipped_catalogue():
+    """The catalogue the plugin ships (official artwork, with its network where there is one)."""
+    from signmapper_core.catalogue import load_catalogue
+
+    return load_catalogue()
+
+
+@pytest.fixture(scope="module")
+def catalogue(request):
+    """The catalogue a test module's scenes and templates come from: the shipped one, or where the module
+    sets ``CATALOGUE = "reference drawing"`` the one its thresholds were tuned with (below)."""
+    if getattr(request.module, "CATALOGUE", "shipped") == "reference drawing":
+        return request.getfixturevalue("reference_drawing_catalogue")
+    return request.getfixturevalue("shipped_catalogue")
+
+
+@pytest.fixture(scope="session")
 def reference_drawing_catalogue(tmp_path_factory):
     """The Swiss catalogue drawn by our own procedural drawer instead of the official artwork (make catalogue
     without SVG). Constructed-scene tests of the colour step pin thresholds tuned with these faces and templates;

@@ -6,22 +6,12 @@ import pytest
 from pipeline_scenes import WHITE, noisy_background, paste
 
 from signmapper_core.pipeline import PipelineConfig
+from signmapper_core.pipeline.boxes import box_iou
 from signmapper_core.pipeline.bright_fields import grey_levels, is_red_ring, red_ring_fields, ring_contrast
 from signmapper_core.pipeline.candidates import face_candidates
 from signmapper_core.pipeline.colour import find_colour_segments
 
-
-@pytest.fixture(scope="module")
-def catalogue(reference_drawing_catalogue):
-    return reference_drawing_catalogue  # scenes and templates of our reference drawing (see tests/conftest.py)
-
-
-def _iou(a, b):
-    ax, ay, aw, ah = a
-    bx, by, bw, bh = b
-    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
-    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
-    return iw * ih / float(aw * ah + bw * bh - iw * ih)
+CATALOGUE = "reference drawing"  # scenes and templates of our reference drawing (tests/conftest.py)
 
 
 def _at_dusk(bgr, saturation=0.3, gains=(0.21, 0.15, 0.15)):
@@ -75,7 +65,7 @@ def test_dim_ring_without_colour_is_found_by_its_field(catalogue, template_id, s
     assert 300 < x and 150 < y and x + w < 300 + n and y + h < 150 + n  # inside the ring
     (candidate,) = face_candidates(image, catalogue, hough=False)
     assert candidate.shape == shape
-    assert any(_iou(r.bbox, (300, 150, n, n)) > 0.7 and template_id in r.template_ids for r in candidate.readings)
+    assert any(box_iou(r.bbox, (300, 150, n, n)) > 0.7 and template_id in r.template_ids for r in candidate.readings)
 
 
 def test_grey_ring_around_a_bright_field_is_no_red_face(catalogue):
@@ -99,7 +89,7 @@ def test_bright_field_against_a_bright_sky_is_found_at_a_higher_level(catalogue)
     face = _at_dusk(bgr, saturation=0.35, gains=(0.55, 0.5, 0.5))
     paste(image, face, alpha, 300, 150)
     (field,) = red_ring_fields(image, None, PipelineConfig())
-    assert _iou(field.bbox, (304, 154, 42, 42)) > 0.7
+    assert box_iou(field.bbox, (304, 154, 42, 42)) > 0.7
     assert np.count_nonzero(field.mask) > 0.6 * field.bbox[2] * field.bbox[3]
 
 

@@ -4,7 +4,6 @@ import numpy as np
 import pytest
 from pipeline_scenes import CAMERA, POSE, constant_depth, sign_scene
 
-from signmapper_core.catalogue import load_catalogue
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.depth_sources import GivenDepth, StereoMatching, depth_source_for
 from signmapper_core.pipeline.detect import detect
@@ -12,11 +11,6 @@ from signmapper_core.pipeline.pair_context import PairContext
 
 CONFIG = PipelineConfig()
 FORWARD, RIGHT, DOWN = POSE.rotation[:, 2], POSE.rotation[:, 0], POSE.rotation[:, 1]
-
-
-@pytest.fixture(scope="module")
-def catalogue():
-    return load_catalogue()
 
 
 def test_the_source_is_the_given_depth_else_matching_of_the_right_image():

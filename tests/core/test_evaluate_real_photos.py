@@ -15,7 +15,6 @@ import cv2
 import numpy as np
 import pytest
 
-from signmapper_core.catalogue import load_catalogue
 from signmapper_core.validation import IMAGE_LIST_COLUMNS, MANIFEST_COLUMNS, load_manifest, load_scene_list
 
 REPO = Path(__file__).resolve().parents[2]
@@ -30,11 +29,6 @@ def _script(relpath: str):
 
 evaluate = _script("scripts/evaluate_real_photos.py")
 make_subset = _script("scripts/realset/make_subset.py")
-
-
-@pytest.fixture(scope="module")
-def catalogue():
-    return load_catalogue()
 
 
 def _paste(canvas: np.ndarray, catalogue, template_id: str, x: int, y: int, size: int):

@@ -14,21 +14,11 @@ from test_bright_fields import _at_dusk
 from test_pipeline_real_conditions import _priority_sign
 
 from signmapper_core.pipeline import PipelineConfig
+from signmapper_core.pipeline.boxes import box_iou
 from signmapper_core.pipeline.candidates import face_candidates
 from signmapper_core.pipeline.face_extent import face_bbox, hole_candidates, ring_edge_bbox
 
-
-@pytest.fixture(scope="module")
-def catalogue(reference_drawing_catalogue):
-    return reference_drawing_catalogue  # scenes and templates of our reference drawing (see tests/conftest.py)
-
-
-def _iou(a, b):
-    ax, ay, aw, ah = a
-    bx, by, bw, bh = b
-    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
-    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
-    return iw * ih / float(aw * ah + bw * bh - iw * ih)
+CATALOGUE = "reference drawing"  # scenes and templates of our reference drawing (tests/conftest.py)
 
 
 def _bordered_disc_at_dusk(catalogue, template_id, n, border, x=300, y=150):
@@ -58,10 +48,10 @@ def test_field_inside_a_bordered_ring_gets_the_face_box_of_the_ring_outer_edge(c
     # the Swiss ring around the field misses the border: no reading from the template's extent matches
     extents = [ext for entry, ext in hole_candidates(catalogue, "red", ("circle",), PipelineConfig().hsv_ranges,
                                                      ("red", "blue", "white")) if entry.id == template_id]
-    assert extents and max(_iou(face_bbox(field.bbox, ext), face) for ext in extents) < 0.65
+    assert extents and max(box_iou(face_bbox(field.bbox, ext), face) for ext in extents) < 0.65
     ring = ring_edge_bbox(image, field.bbox, "circle", PipelineConfig())
-    assert _iou(ring, face) > 0.85
-    assert any(_iou(r.bbox, face) > 0.85 and template_id in r.template_ids for r in candidate.readings)
+    assert box_iou(ring, face) > 0.85
+    assert any(box_iou(r.bbox, face) > 0.85 and template_id in r.template_ids for r in candidate.readings)
 
 
 def test_ring_edge_of_a_swiss_face_is_its_own_edge(catalogue):
@@ -74,8 +64,8 @@ def test_ring_edge_of_a_swiss_face_is_its_own_edge(catalogue):
     (candidate,) = face_candidates(image, catalogue, hough=False)
     assert candidate.segment.source == "hole"
     ring = ring_edge_bbox(image, candidate.segment.bbox, "circle", PipelineConfig())
-    assert ring is None or _iou(ring, (300, 150, n, n)) > 0.8
-    assert all(_iou(r.bbox, (300, 150, n, n)) > 0.7 for r in candidate.readings if "2.30-50" in r.template_ids)
+    assert ring is None or box_iou(ring, (300, 150, n, n)) > 0.8
+    assert all(box_iou(r.bbox, (300, 150, n, n)) > 0.7 for r in candidate.readings if "2.30-50" in r.template_ids)
 
 
 def test_ring_edge_is_not_invented_on_plain_background():
@@ -91,7 +81,7 @@ def test_thirty_pixel_priority_road_is_a_face_candidate_by_its_small_yellow_part
     face = (200, 100, 31, 31)
 
     def best(config):
-        return max((_iou(r.bbox, face) for c in face_candidates(image, catalogue, config, hough=False)
+        return max((box_iou(r.bbox, face) for c in face_candidates(image, catalogue, config, hough=False)
                     if c.segment.colour == "yellow" for r in c.readings if "3.03" in r.template_ids), default=0.0)
 
     assert best(PipelineConfig(min_part_px={})) == 0.0
@@ -106,7 +96,7 @@ def test_blurred_small_part_still_reaches_the_face_outer_edge(catalogue):
     face = (200, 100, 31, 31)
 
     def best(config):
-        return max((_iou(r.bbox, face) for c in face_candidates(image, catalogue, config, hough=False)
+        return max((box_iou(r.bbox, face) for c in face_candidates(image, catalogue, config, hough=False)
                     if c.segment.colour == "yellow" for r in c.readings if "3.03" in r.template_ids), default=0.0)
 
     assert best(PipelineConfig(rim_blur_px=0.0)) < 0.6

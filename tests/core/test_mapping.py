@@ -8,7 +8,6 @@ import numpy as np
 import pytest
 from drive_fixtures import SMALL_SYNTHETIC
 
-from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive import open_drive
 from signmapper_core.geometry import world_to_pixel
 from signmapper_core.mapping import detect_at, load_pair, manual_sign, map_drive
@@ -23,11 +22,6 @@ def drive_dir(tmp_path_factory) -> Path:
     out = tmp_path_factory.mktemp("mapping") / "drive"
     generate_drive(out, SimulationConfig(pairs=10, seed=11, write_depth=True, **SMALL_SYNTHETIC))
     return out
-
-
-@pytest.fixture(scope="module")
-def catalogue():
-    return load_catalogue()
 
 
 @pytest.fixture(scope="module")

@@ -12,7 +12,6 @@ import pytest
 from drive_fixtures import SMALL_SYNTHETIC
 from failing_detection import detect_failing_at, exit_at
 
-from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive import open_drive
 from signmapper_core.mapping import map_drive
 from signmapper_core.pair_pool import available_cores, python_executable, worker_count
@@ -27,11 +26,6 @@ def stereo_drive(tmp_path_factory) -> Path:
     out = tmp_path_factory.mktemp("pool") / "drive"
     generate_drive(out, SimulationConfig(pairs=10, seed=11, write_depth=False, **SMALL_SYNTHETIC))
     return out
-
-
-@pytest.fixture(scope="module")
-def catalogue():
-    return load_catalogue()
 
 
 @pytest.fixture(scope="module")

@@ -13,11 +13,6 @@ CONFIG = PipelineConfig()
 ALL_COLOURS = ("red", "blue", "yellow", "white")
 
 
-@pytest.fixture(scope="module")
-def catalogue():
-    return load_catalogue()
-
-
 def _candidates(catalogue, template_id):
     entry = catalogue[template_id]
     shapes = ("square", "rectangle") if entry.shape in ("square", "rectangle") else (entry.shape,)

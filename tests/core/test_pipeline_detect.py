@@ -3,15 +3,9 @@ import numpy as np
 import pytest
 from pipeline_scenes import CAMERA, POSE, constant_depth, noisy_background, paste, sign_scene
 
-from signmapper_core.catalogue import load_catalogue
 from signmapper_core.pipeline import Detection, PipelineConfig, detect_in_window, detect_pair
 
 FORWARD, RIGHT, DOWN = POSE.rotation[:, 2], POSE.rotation[:, 0], POSE.rotation[:, 1]
-
-
-@pytest.fixture(scope="module")
-def catalogue():
-    return load_catalogue()
 
 
 def _world(ahead, right, up):

@@ -4,7 +4,6 @@ import numpy as np
 import pytest
 from pipeline_scenes import CAMERA, POSE, constant_depth, noisy_background, paste, pixels_for
 
-from signmapper_core.catalogue import load_catalogue
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.classify import classify_segment, crop_for_matching, padded_crop
 
@@ -18,11 +17,6 @@ PLACES = {
     "top-left": (INSET, INSET), "top-right": (W - SIDE - INSET, INSET),
     "bottom-left": (INSET, H - SIDE - INSET), "bottom-right": (W - SIDE - INSET, H - SIDE - INSET),
 }
-
-
-@pytest.fixture(scope="module")
-def catalogue():
-    return load_catalogue()
 
 
 @pytest.mark.parametrize("place", PLACES)

@@ -11,6 +11,7 @@ import pytest
 from pipeline_scenes import CAMERA, POSE, RED, WHITE, constant_depth, noisy_background, paste, pixels_for
 
 from signmapper_core.pipeline import PipelineConfig, detect_pair
+from signmapper_core.pipeline.boxes import box_iou
 from signmapper_core.pipeline.candidates import face_candidates
 from signmapper_core.pipeline.colour import find_colour_segments, ring_open_px, split_face_merges
 from signmapper_core.pipeline.scene_colour import apply_gains, scene_colour, white_balance_gains
@@ -18,17 +19,7 @@ from signmapper_core.pipeline.scene_colour import apply_gains, scene_colour, whi
 CONFIG = PipelineConfig()
 
 
-@pytest.fixture(scope="module")
-def catalogue(reference_drawing_catalogue):
-    return reference_drawing_catalogue  # scenes and templates of our reference drawing (see tests/conftest.py)
-
-
-def _iou(a, b):
-    ax, ay, aw, ah = a
-    bx, by, bw, bh = b
-    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
-    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
-    return iw * ih / float(aw * ah + bw * bh - iw * ih)
+CATALOGUE = "reference drawing"  # scenes and templates of our reference drawing (tests/conftest.py)
 
 
 def _desaturate(bgr, factor):
@@ -56,7 +47,7 @@ def test_faded_ring_below_the_strong_saturation_floor_is_found_by_the_scene_pass
     strong_only = find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), 60)
     assert _red_boxes(strong_only) == []
     (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(), 60))
-    assert _iou(box, (170, 120, 61, 61)) > 0.9
+    assert box_iou(box, (170, 120, 61, 61)) > 0.9
 
 
 def test_faded_sign_is_detected_and_accepted_by_colour(catalogue):
@@ -80,7 +71,7 @@ def test_dim_magenta_tinted_ring_of_a_dull_scene_is_red():
     cv2.circle(image, (200, 150), 20, (150, 150, 150), -1)
     assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), 50)) == []
     (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(), 50))
-    assert _iou(box, (175, 125, 51, 51)) > 0.85
+    assert box_iou(box, (175, 125, 51, 51)) > 0.85
 
 
 def test_scene_floors_follow_the_scene_saturation():
@@ -110,7 +101,7 @@ def test_two_pixel_ring_of_a_small_sign_survives_the_ring_scaled_opening():
     # with a search space whose smallest face is 60 px the usual 3 px opening erases the ring
     assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), 60)) == []
     (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False), None))
-    assert _iou(box, (188, 138, 25, 25)) > 0.85
+    assert box_iou(box, (188, 138, 25, 25)) > 0.85
 
 
 def _no_entry_split_by_its_bar(catalogue, n):
@@ -130,15 +121,15 @@ def test_no_entry_split_by_its_bar_is_one_face_before_its_halves_are_judged(cata
     halves = [s for s in segments if s.colour == "red" and s.source == "colour"]
     assert len(halves) == 2 and all(s.bbox[3] < 0.6 * n for s in halves)
     ((merged, i, j),) = split_face_merges(segments, PipelineConfig())
-    assert _iou(merged.bbox, (300, 150, n, n)) > 0.9
+    assert box_iou(merged.bbox, (300, 150, n, n)) > 0.9
     candidates = face_candidates(image, catalogue, hough=False)
-    on_face = [c for c in candidates if _iou(c.segment.bbox, (300, 150, n, n)) > 0.3 or
+    on_face = [c for c in candidates if box_iou(c.segment.bbox, (300, 150, n, n)) > 0.3 or
                (300 <= c.segment.bbox[0] < 300 + n and 150 <= c.segment.bbox[1] < 150 + n)]
     assert len(on_face) == 1  # the halves are no candidates of their own
     assert on_face[0].shape == "circle" and "2.02" in on_face[0].template_ids
     (det,) = detect_pair(image, constant_depth(0.6 * CAMERA.fx / n), None, CAMERA, POSE, catalogue,
                          PipelineConfig())
-    assert det.template_id == "2.02" and det.format == "normal" and _iou(det.bbox, (300, 150, n, n)) > 0.9
+    assert det.template_id == "2.02" and det.format == "normal" and box_iou(det.bbox, (300, 150, n, n)) > 0.9
 
 
 @pytest.mark.parametrize("ratio", [0.85, 0.7, 0.6])
@@ -165,10 +156,10 @@ def test_ring_touching_a_red_neighbour_is_found_by_its_field(catalogue):
     (field,) = [s for s in segments if s.source == "hole"]
     candidates = face_candidates(image, catalogue, hough=False)
     readings = [r for c in candidates if c.segment.source == "hole" for r in c.readings]
-    assert any(_iou(r.bbox, (300, 150, n, n)) > 0.8 and "2.30-50" in r.template_ids for r in readings)
+    assert any(box_iou(r.bbox, (300, 150, n, n)) > 0.8 and "2.30-50" in r.template_ids for r in readings)
     (det,) = detect_pair(image, constant_depth(0.6 * CAMERA.fx / n), None, CAMERA, POSE, catalogue,
                          PipelineConfig(hough_enabled=False))
-    assert det.template_id == "2.30-50" and _iou(det.bbox, (300, 150, n, n)) > 0.8
+    assert det.template_id == "2.30-50" and box_iou(det.bbox, (300, 150, n, n)) > 0.8
 
 
 def test_rim_too_pale_for_any_colour_pass_is_found_by_hough_and_named_red(catalogue):
@@ -178,7 +169,7 @@ def test_rim_too_pale_for_any_colour_pass_is_found_by_hough_and_named_red(catalo
     paste(image, _desaturate(bgr, 0.12), alpha, 300, 150)  # ring saturation ~25
     assert [c for c in face_candidates(image, catalogue, hough=False) if c.segment.colour == "red"] == []
     hough = [c for c in face_candidates(image, catalogue) if c.segment.source == "hough"]
-    (circle,) = [c for c in hough if _iou(c.segment.bbox, (300, 150, n, n)) > 0.7]
+    (circle,) = [c for c in hough if box_iou(c.segment.bbox, (300, 150, n, n)) > 0.7]
     assert circle.segment.colour == "red" and "2.30-50" in circle.template_ids
 
 
@@ -194,9 +185,9 @@ def test_wide_white_rim_of_a_priority_sign_is_measured_in_the_image(catalogue):
                       [40 + inset, 40 + n // 2]])
     cv2.fillPoly(image, [inner], (0, 200, 240))  # yellow
     (cand,) = [c for c in face_candidates(image, catalogue, hough=False) if c.segment.colour == "yellow"]
-    assert cand.shape == "diamond" and _iou(cand.segment.bbox, (60, 60, 41, 41)) > 0.8
+    assert cand.shape == "diamond" and box_iou(cand.segment.bbox, (60, 60, 41, 41)) > 0.8
     readings = [r for r in cand.readings if "3.03" in r.template_ids]
-    assert max(_iou(r.bbox, (40, 40, n + 1, n + 1)) for r in readings) > 0.85
+    assert max(box_iou(r.bbox, (40, 40, n + 1, n + 1)) for r in readings) > 0.85
 
 
 def test_scene_pass_reads_the_white_balanced_image_when_asked():
@@ -212,7 +203,7 @@ def test_scene_pass_reads_the_white_balanced_image_when_asked():
     grey = balanced.hsv_weak[20:100, 20:100, 1].astype(float).mean()
     assert grey < plain.hsv[20:100, 20:100, 1].astype(float).mean() - 5  # the cast's false saturation is gone
     (box,) = _red_boxes(find_colour_segments(cast, None, PipelineConfig(white_balance=True), 60))
-    assert _iou(box, (170, 120, 61, 61)) > 0.9
+    assert box_iou(box, (170, 120, 61, 61)) > 0.9
 
 
 def _priority_sign(image, x, y, n, part, yellow=(0, 200, 240), edge=(30, 30, 30)):
@@ -237,8 +228,8 @@ def test_rim_blending_into_a_white_wall_is_measured_by_the_face_outer_edge(catal
     seg = cand.segment
     assert measured_rim_bbox(image, seg.bbox, seg.mask, (0.11, 0.11, 0.89, 0.89)) is None
     face = (100, 60, n + 1, n + 1)
-    assert _iou(edge_rim_bbox(image, seg.bbox, "diamond", CONFIG.rim_max_scale, CONFIG), face) > 0.85
-    assert any(_iou(r.bbox, face) > 0.85 and "3.03" in r.template_ids for r in cand.readings)
+    assert box_iou(edge_rim_bbox(image, seg.bbox, "diamond", CONFIG.rim_max_scale, CONFIG), face) > 0.85
+    assert any(box_iou(r.bbox, face) > 0.85 and "3.03" in r.template_ids for r in cand.readings)
 
 
 def test_outer_edge_is_not_invented_where_the_yellow_is_the_whole_face():
@@ -258,9 +249,9 @@ def test_orange_yellow_priority_sign_is_found_by_the_scene_pass(catalogue):
     strong = find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), None)
     assert [s for s in strong if s.colour == "yellow"] == []
     (seg,) = [s for s in find_colour_segments(image, None, PipelineConfig(), None) if s.colour == "yellow"]
-    assert _iou(seg.bbox, (218, 118, 35, 35)) > 0.7
+    assert box_iou(seg.bbox, (218, 118, 35, 35)) > 0.7
     face = (200, 100, 71, 71)
-    assert any(_iou(r.bbox, face) > 0.8 and "3.03" in r.template_ids
+    assert any(box_iou(r.bbox, face) > 0.8 and "3.03" in r.template_ids
                for c in face_candidates(image, catalogue, hough=False) for r in c.readings)
 
 
@@ -275,7 +266,7 @@ def test_scene_pass_keeps_yellow_only_in_a_diamond_outline():
     strong = find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), None)
     assert [s for s in strong if s.colour == "yellow"] == []
     (seg,) = [s for s in find_colour_segments(image, None, PipelineConfig(), None) if s.colour == "yellow"]
-    assert _iou(seg.bbox, (460, 110, 81, 81)) > 0.85
+    assert box_iou(seg.bbox, (460, 110, 81, 81)) > 0.85
 
 
 def test_hough_and_field_images_are_reduced_by_whole_factors_as_far_as_the_smallest_size_allows():
@@ -314,7 +305,7 @@ def test_priority_sign_among_yellow_autumn_leaves_is_kept_by_its_white_rim(catal
     _priority_sign(image, 220, 120, 80, 0.5, yellow=cv2.cvtColor(np.uint8([[[15, 170, 120]]]),
                                                                  cv2.COLOR_HSV2BGR)[0, 0].tolist())
     yellow = [s for s in find_colour_segments(image, None, PipelineConfig(), None) if s.colour == "yellow"]
-    assert [s for s in yellow if _iou(s.bbox, (240, 140, 41, 41)) > 0.7]  # the sign's yellow diamond
+    assert [s for s in yellow if box_iou(s.bbox, (240, 140, 41, 41)) > 0.7]  # the sign's yellow diamond
     assert not [s for s in yellow if s.bbox[2] > 150]  # the leaves are no face
 
 

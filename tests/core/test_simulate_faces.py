@@ -8,7 +8,6 @@ import cv2
 import numpy as np
 import pytest
 
-from signmapper_core.catalogue import load_catalogue
 from signmapper_core.simulate import (
     LEGACY_FACES,
     SimulationConfig,
@@ -36,11 +35,6 @@ SIGNS = ("2.30-50", "1.14", "4.08", "3.03")
 NCC_FLOOR = 0.8
 ALL_OFF = dict(face_print=False, face_sheeting=False, face_wear=False, face_dirt=False, face_marks=False,
                face_dents=False)
-
-
-@pytest.fixture(scope="module")
-def catalogue():
-    return load_catalogue()
 
 
 def face_size(catalogue, template_id: str, longer: int = SIZE) -> tuple[int, int]:
