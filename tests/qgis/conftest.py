@@ -37,6 +37,14 @@ def registered_plugin(sign_mapper, qgis_processing):
     plugin.unload()
 
 
+@pytest.fixture
+def run(registered_plugin):
+    """``processing.run`` with the plugin's algorithms registered."""
+    import processing
+
+    return processing.run
+
+
 @pytest.fixture(scope="session")
 def small_drive(tmp_path_factory) -> Path:
     """12 half-HD pairs with true depth maps (seed 11): the drive mapsigns tests and the golden file use."""

@@ -5,13 +5,6 @@ from drive_fixtures import make_drive, rewrite_line
 from qgis.core import QgsProcessingException, QgsVectorLayer, QgsWkbTypes
 
 
-@pytest.fixture
-def run(registered_plugin):
-    import processing
-
-    return processing.run
-
-
 def test_trajectory_points_and_track(run, tmp_path):
     drive = make_drive(tmp_path / "drive", n_pairs=5)
     out, track = tmp_path / "traj.gpkg", tmp_path / "track.gpkg"

@@ -21,13 +21,6 @@ REF = [("s1", "2.01", 2600010.0, 1200004.0, 402.0), ("s2", "3.03", 2600020.0, 11
        ("s3", "2.30-50", 2600030.0, 1200004.0, 401.8), ("s4", "1.22", 2600040.0, 1199996.0, 402.2)]
 
 
-@pytest.fixture
-def run(registered_plugin):
-    import processing
-
-    return processing.run
-
-
 def point_layer(rows, name, status=None):
     layer = QgsVectorLayer("PointZ?crs=EPSG:2056&field=template_id:string&field=status:string", name, "memory")
     features = []

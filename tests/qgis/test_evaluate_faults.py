@@ -3,31 +3,10 @@
 import hashlib
 
 import pytest
-from qgis.core import QgsProcessingException, QgsProcessingFeedback, QgsVectorLayer
+from qgis.core import QgsProcessingException, QgsVectorLayer
 from qgis_process_runner import enable_plugin, qgis_process_env, run_algorithm
+from recorder import Recorder
 from test_evaluate import REF, eastward_trajectory, point_layer
-
-
-class Recorder(QgsProcessingFeedback):
-    def __init__(self):
-        super().__init__()
-        self.lines = []
-
-    def reportError(self, error, fatalError=False):  # noqa: N802, N803
-        self.lines.append(error)
-
-    def pushInfo(self, info):  # noqa: N802
-        self.lines.append(info)
-
-    def text(self) -> str:
-        return "\n".join(self.lines)
-
-
-@pytest.fixture
-def run(registered_plugin):
-    import processing
-
-    return processing.run
 
 
 def digest(path) -> str:

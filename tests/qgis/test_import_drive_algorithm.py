@@ -17,13 +17,6 @@ from qgis.core import (
 from signmapper_core.drive import open_drive
 
 
-@pytest.fixture
-def run(registered_plugin):
-    import processing
-
-    return processing.run
-
-
 @pytest.fixture(scope="module")
 def survey(tmp_path_factory):
     return make_survey(tmp_path_factory.mktemp("survey"), pairs=3)

@@ -16,13 +16,6 @@ from qgis.PyQt.QtCore import QVariant
 from signmapper_core.drive import open_drive
 
 
-@pytest.fixture
-def run(registered_plugin):
-    import processing
-
-    return processing.run
-
-
 @pytest.fixture(scope="module")
 def mapped(small_drive, tmp_path_factory, sign_mapper, qgis_processing):
     """The small drive mapped once for the module: (signs GeoPackage, drive)."""

@@ -5,17 +5,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from drive_fixtures import SMALL_SYNTHETIC as SMALL
+from model_chain import synthetic_drive_then_map_signs
 from qgis.core import (
     QgsFeature,
     QgsGeometry,
     QgsMapRendererParallelJob,
     QgsMapSettings,
     QgsPointXY,
-    QgsProcessingModelAlgorithm,
-    QgsProcessingModelChildAlgorithm,
-    QgsProcessingModelChildParameterSource,
-    QgsProcessingModelOutput,
     QgsProject,
     QgsRectangle,
     QgsVectorLayer,
@@ -197,24 +193,7 @@ def test_run_and_load_results_gives_styled_layers(registered_plugin, small_drive
 def test_a_model_run_loads_styled_layers(registered_plugin, tmp_path, clean_project):
     import processing
 
-    model = QgsProcessingModelAlgorithm("chain", "tests")
-    sim = QgsProcessingModelChildAlgorithm("signmapper:syntheticdrive")
-    sim.setChildId("sim")
-    for name, value in {"PAIRS": 6, "SEED": 12, "WRITE_DEPTH": True, "WIDTH": SMALL["width"],
-                        "HEIGHT": SMALL["height"], "FX": SMALL["fx"]}.items():
-        sim.addParameterSources(name, [QgsProcessingModelChildParameterSource.fromStaticValue(value)])
-    sim.addParameterSources("OUTPUT", [QgsProcessingModelChildParameterSource.fromStaticValue(str(tmp_path / "d"))])
-    mapper = QgsProcessingModelChildAlgorithm("signmapper:mapsigns")
-    mapper.setChildId("map")
-    mapper.addParameterSources("DRIVE", [QgsProcessingModelChildParameterSource.fromChildOutput("sim", "OUTPUT")])
-    mapper.addParameterSources("LANGUAGE", [QgsProcessingModelChildParameterSource.fromStaticValue(1)])  # en
-    output = QgsProcessingModelOutput("gpkg", "Mapped signs")
-    output.setChildId("map")
-    output.setChildOutputName("OUTPUT")
-    mapper.setModelOutputs({"gpkg": output})
-    model.addChildAlgorithm(sim)
-    model.addChildAlgorithm(mapper)
-    model.updateDestinationParameters()
+    model = synthetic_drive_then_map_signs(tmp_path / "d", {"LANGUAGE": 1})  # en
     processing.runAndLoadResults(model, {"map:gpkg": str(tmp_path / "chain.gpkg")})
     signs = [layer for layer in clean_project.mapLayers().values() if layer.source().endswith("layername=signs")]
     assert signs, [layer.source() for layer in clean_project.mapLayers().values()]

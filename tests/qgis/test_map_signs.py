@@ -4,27 +4,16 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from drive_fixtures import SMALL_SYNTHETIC as SMALL
+from model_chain import synthetic_drive_then_map_signs
 from qgis.core import (
     QgsProcessingException,
     QgsProcessingFeedback,
-    QgsProcessingModelAlgorithm,
-    QgsProcessingModelChildAlgorithm,
-    QgsProcessingModelChildParameterSource,
-    QgsProcessingModelOutput,
     QgsVectorLayer,
     QgsWkbTypes,
 )
 from qgis_process_runner import enable_plugin, qgis_process_env, run_algorithm
 
 from signmapper_core.drive import open_drive
-
-
-@pytest.fixture
-def run(registered_plugin):
-    import processing
-
-    return processing.run
 
 
 def read_detections(path):
@@ -227,23 +216,7 @@ def test_cancel_writes_nothing(run, small_drive, tmp_path, workers):
 
 
 def test_model_chains_synthetic_drive_into_map_signs(run, tmp_path):
-    model = QgsProcessingModelAlgorithm("chain", "tests")
-    sim = QgsProcessingModelChildAlgorithm("signmapper:syntheticdrive")
-    sim.setChildId("sim")
-    for name, value in {"PAIRS": 6, "SEED": 12, "WRITE_DEPTH": True, "WIDTH": SMALL["width"],
-                        "HEIGHT": SMALL["height"], "FX": SMALL["fx"]}.items():
-        sim.addParameterSources(name, [QgsProcessingModelChildParameterSource.fromStaticValue(value)])
-    sim.addParameterSources("OUTPUT", [QgsProcessingModelChildParameterSource.fromStaticValue(str(tmp_path / "d"))])
-    mapper = QgsProcessingModelChildAlgorithm("signmapper:mapsigns")
-    mapper.setChildId("map")
-    mapper.addParameterSources("DRIVE", [QgsProcessingModelChildParameterSource.fromChildOutput("sim", "OUTPUT")])
-    output = QgsProcessingModelOutput("gpkg", "Mapped signs")
-    output.setChildId("map")
-    output.setChildOutputName("OUTPUT")
-    mapper.setModelOutputs({"gpkg": output})
-    model.addChildAlgorithm(sim)
-    model.addChildAlgorithm(mapper)
-    model.updateDestinationParameters()
+    model = synthetic_drive_then_map_signs(tmp_path / "d")
     out = tmp_path / "chain.gpkg"
     result = run(model, {"map:gpkg": str(out)})
     assert Path(result["map:gpkg"]) == out

@@ -19,41 +19,13 @@ from qgis.core import (
     QgsGeometry,
     QgsPointXY,
     QgsProcessingException,
-    QgsProcessingFeedback,
     QgsVectorFileWriter,
     QgsVectorLayer,
 )
 from qgis_process_runner import enable_plugin, qgis_process_env, run_algorithm
+from recorder import Recorder
 
 CATALOGUE = Path(__file__).resolve().parents[2] / "templates" / "ch"
-
-
-class Recorder(QgsProcessingFeedback):
-    """Everything the algorithm tells the user: log lines, warnings, errors and progress texts."""
-
-    def __init__(self):
-        super().__init__()
-        self.lines, self.steps = [], []
-        self.progressChanged.connect(lambda p: self.steps.append(p))
-
-    def reportError(self, error, fatalError=False):  # noqa: N802, N803
-        self.lines.append(error)
-
-    def pushWarning(self, warning):  # noqa: N802
-        self.lines.append(warning)
-
-    def pushInfo(self, info):  # noqa: N802
-        self.lines.append(info)
-
-    def text(self) -> str:
-        return "\n".join(self.lines)
-
-
-@pytest.fixture
-def run(registered_plugin):
-    import processing
-
-    return processing.run
 
 
 @pytest.fixture(scope="module")

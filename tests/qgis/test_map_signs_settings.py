@@ -6,7 +6,8 @@ import sqlite3
 from contextlib import closing
 
 import pytest
-from qgis.core import QgsProcessingException, QgsProcessingFeedback, QgsVectorLayer
+from qgis.core import QgsProcessingException, QgsVectorLayer
+from recorder import Recorder
 
 from signmapper_core.fusion import FusionConfig
 from signmapper_core.pipeline import PipelineConfig
@@ -43,15 +44,6 @@ def signs(path):
 
 def without_run_id(record):
     return {k: v for k, v in record.items() if k != "run_id"}
-
-
-class Recorder(QgsProcessingFeedback):
-    def __init__(self):
-        super().__init__()
-        self.warnings = []
-
-    def pushWarning(self, warning):  # noqa: N802
-        self.warnings.append(warning)
 
 
 def test_the_run_table_holds_the_whole_configuration_and_reads_back(earlier):

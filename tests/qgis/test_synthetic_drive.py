@@ -8,13 +8,6 @@ from signmapper_core.drive import open_drive
 SMALL = {"PAIRS": 4, "SEED": 5, "WIDTH": 480, "HEIGHT": 270, "FX": 437.5}
 
 
-@pytest.fixture
-def run(registered_plugin):
-    import processing
-
-    return processing.run
-
-
 def test_writes_a_valid_drive_and_its_truth_layer(run, tmp_path):
     out = tmp_path / "drive"
     result = run("signmapper:syntheticdrive", {**SMALL, "OUTPUT": str(out), "TRUTH": "memory:"})
