@@ -1,19 +1,11 @@
-"""Writing Sign Mapper's GeoPackages without ever leaving a half-written file.
+"""Writing Sign Mapper's GeoPackages from QGIS without ever leaving a half-written file.
 
-Layers go into a hidden ``.<name>.partial.gpkg`` beside the target; only a
-completed run moves it over the target (an atomic rename on one file system).
-A failed or cancelled run deletes the partial file and leaves any earlier
-output untouched. An existing GeoPackage holding layers we did not write (the
-user's own) is copied into the partial file first, so only our layers are
-replaced; a file of that name that is no GeoPackage is refused.
+The partial file, its commit and the layers of an existing file that are kept
+are the core's (``signmapper_core.geopackage_file``, shared with the QGIS-free
+writer ``signmapper_core.gpkg_writer``); QGIS writes the layers into it.
 """
 
 from __future__ import annotations
-
-import os
-import sqlite3
-from contextlib import closing
-from pathlib import Path
 
 from qgis.core import (
     QgsCoordinateReferenceSystem,
@@ -29,11 +21,9 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QVariant
 
-from ..signmapper_core.output_schema import DETECTIONS, RUN_TABLE, SIGNS, encode_run_value
-
-OUR_TABLES = (SIGNS, DETECTIONS, RUN_TABLE)
-STYLE_TABLE = "layer_styles"  # QGIS's styles of every layer in the file: kept, minus our layers' old ones
-SQLITE_HEADER = b"SQLite format 3\x00"
+from ..signmapper_core import geopackage_file
+from ..signmapper_core.geopackage_file import OutputFileError, PartialGeoPackage
+from ..signmapper_core.output_schema import RUN_TABLE, encode_run_value
 
 
 def geopackage_tables(path) -> list[str] | None:
@@ -41,51 +31,25 @@ def geopackage_tables(path) -> list[str] | None:
 
     Raises QgsProcessingException when the file exists but is no GeoPackage: it is not ours to replace.
     """
-    path = Path(path)
-    if not path.is_file() or path.stat().st_size == 0:
-        return None
-    refused = f"{path} exists and is not a GeoPackage; it is left as it is: choose another file name"
-    with open(path, "rb") as fh:
-        if fh.read(len(SQLITE_HEADER)) != SQLITE_HEADER:
-            raise QgsProcessingException(refused)
     try:
-        with closing(sqlite3.connect(f"{path.resolve().as_uri()}?mode=ro", uri=True)) as db:
-            return [row[0] for row in db.execute("SELECT table_name FROM gpkg_contents")]
-    except sqlite3.Error as exc:
-        raise QgsProcessingException(f"{refused} ({exc})") from exc
+        return geopackage_file.geopackage_tables(path)
+    except OutputFileError as exc:
+        raise QgsProcessingException(str(exc)) from exc
 
 
-class AtomicGeoPackage:
-    """A GeoPackage built layer by layer in a partial file, committed at the end.
+class AtomicGeoPackage(PartialGeoPackage):
+    """A GeoPackage built layer by layer by QGIS in a partial file, committed at the end.
 
     ``kept`` lists the layers of an existing target that are not ours: they are
     carried over unchanged.
     """
 
     def __init__(self, target: str):
-        self.target = Path(target)
-        if self.target.suffix.lower() != ".gpkg":
-            raise QgsProcessingException(f"{self.target}: the output must be a GeoPackage file ending in .gpkg")
-        self.partial = self.target.with_name(f".{self.target.stem}.partial.gpkg")
+        try:
+            super().__init__(target)
+        except OutputFileError as exc:
+            raise QgsProcessingException(str(exc)) from exc
         self._layers = 0
-        self.discard()
-        self.kept = [t for t in geopackage_tables(self.target) or [] if t not in OUR_TABLES + (STYLE_TABLE,)]
-        if self.kept:
-            self._copy_target()
-
-    def _copy_target(self) -> None:
-        """The target's contents into the partial file (SQLite's backup: consistent even with a WAL).
-
-        Our layers' old default styles are dropped from the copy: saving a style over an existing one of
-        the same name hangs QGIS 3.22 when run headless (it opens a window no one can answer).
-        """
-        uri = f"{self.target.resolve().as_uri()}?mode=ro"
-        with closing(sqlite3.connect(uri, uri=True)) as source, closing(sqlite3.connect(self.partial)) as copy:
-            source.backup(copy)
-            if copy.execute("SELECT 1 FROM sqlite_master WHERE name = ?", (STYLE_TABLE,)).fetchone():
-                marks = ", ".join("?" * len(OUR_TABLES))
-                copy.execute(f"DELETE FROM {STYLE_TABLE} WHERE f_table_name IN ({marks})", OUR_TABLES)
-                copy.commit()
 
     def open_layer(self, name: str, fields: QgsFields, wkb_type, crs: QgsCoordinateReferenceSystem,
                    abstract: str = "") -> QgsVectorFileWriter:
@@ -94,7 +58,7 @@ class AtomicGeoPackage:
         options.driverName = "GPKG"
         options.layerName = name
         options.fileEncoding = "UTF-8"
-        first = self._layers == 0 and not self.kept
+        first = self._layers == 0 and self.starts_empty
         options.actionOnExistingFile = (
             QgsVectorFileWriter.CreateOrOverwriteFile if first else QgsVectorFileWriter.CreateOrOverwriteLayer
         )
@@ -124,16 +88,6 @@ class AtomicGeoPackage:
             feature.setAttributes([key, encode_run_value(value)])
             writer.addFeature(feature, QgsFeatureSink.FastInsert)
         del writer
-
-    def commit(self) -> str:
-        os.replace(self.partial, self.target)
-        return str(self.target)
-
-    def discard(self) -> None:
-        for suffix in ("", "-journal", "-wal", "-shm"):
-            path = Path(str(self.partial) + suffix)
-            if path.exists():
-                path.unlink()
 
 
 def layer_uri(path: str, layer: str) -> str:

@@ -45,3 +45,8 @@ class ImportInputError(InputFileError):
 
     Not a :class:`DriveFormatError`: the drive folder is what the import writes, not what it reads.
     """
+
+
+class ClusterError(RuntimeError):
+    """A Dask cluster cannot map the drive: Dask missing, no scheduler at the address, no worker or a worker
+    without the core, the scheduler lost; the message names the address and what to do."""

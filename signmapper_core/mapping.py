@@ -115,13 +115,20 @@ def map_pair(drive: Drive, record: PairRecord, catalogue, config, detect=None) -
 
 
 def map_pairs(drive: Drive, catalogue, config, is_cancelled: Optional[CancelCheck] = None, workers: int = 1,
-              detect=None) -> Iterator[PairResult]:
+              detect=None, scheduler=None) -> Iterator[PairResult]:
     """Yield a :class:`PairResult` per pair in driving order; raises ``Cancelled`` between pairs.
 
-    ``workers`` > 1 maps the pairs in that many processes (:mod:`pair_pool`), the
-    results still in driving order. ``detect`` replaces ``pipeline.detect_pair``
-    (a module-level function, so worker processes can import it).
+    ``scheduler`` (a Dask scheduler address or a connected ``distributed.Client``)
+    maps the pairs on that cluster (:mod:`dask_pairs`); else ``workers`` > 1 maps
+    them in that many processes (:mod:`pair_pool`); the results are in driving
+    order either way. ``detect`` replaces ``pipeline.detect_pair`` (a
+    module-level function, so worker processes can import it).
     """
+    if scheduler is not None:
+        from .dask_pairs import dask_pairs  # Dask is imported only when a cluster is asked for
+
+        yield from dask_pairs(drive, catalogue, config, scheduler, is_cancelled, detect)
+        return
     if workers > 1:
         from .pair_pool import pooled_pairs
 
@@ -154,7 +161,7 @@ def set_mounting_heights(drive: Drive, signs: list[FusedSign]) -> None:
 def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallback] = None,
               is_cancelled: Optional[CancelCheck] = None, warn_skipped: Optional[WarnCallback] = None,
               fusion: Optional[FusionConfig] = None, max_skipped_share: float = 1.0,
-              workers: Optional[int] = None, detect=None) -> MappingResult:
+              workers: Optional[int] = None, detect=None, scheduler=None) -> MappingResult:
     """Detect the signs of every pair, fuse them into physical signs and give each its mounting height.
 
     Skipped pairs, and pairs without usable depth or colour, are passed to
@@ -164,7 +171,11 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     as soon as more than ``max_skipped_share`` (0..1) of the pairs are skipped,
     and when no pair could be mapped at all. ``workers``: processes mapping the
     pairs (None or 0 = all cores; 1 = in this process); the result does not
-    depend on it. ``detect``: see :func:`map_pairs`.
+    depend on it. ``scheduler``: a Dask scheduler address (``tcp://HOST:PORT``)
+    or a connected ``distributed.Client``: the pairs are mapped on that cluster
+    instead (``workers`` is then not used), with the same result; fusion runs
+    here. ``ClusterError`` when the cluster cannot be used, before any pair.
+    ``detect``: see :func:`map_pairs`.
     """
     from .pipeline.classifiers import accept_threshold, classifier_for
 
@@ -173,7 +184,7 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     fusion = replace(fusion or FusionConfig(), accept_classification=accept)  # always the classifier's
     detections, skipped, seconds, load_seconds, total = [], [], 0.0, 0.0, len(drive.pairs)
     workers = worker_count(workers, total)
-    with closing(map_pairs(drive, catalogue, config, is_cancelled, workers, detect)) as results:
+    with closing(map_pairs(drive, catalogue, config, is_cancelled, workers, detect, scheduler)) as results:
         for done, result in enumerate(results, start=1):  # closing: a pool stops when the loop raises
             seconds += result.seconds
             load_seconds += result.load_seconds

@@ -1,0 +1,167 @@
+"""Pairs mapped on a Dask cluster (``dask.distributed``), their results handed back in driving order.
+
+The second implementation of the seam :mod:`pair_pool` offers: ``map_pairs``
+yields one ``PairResult`` per pair in driving order, whoever mapped it, so
+progress, cancel, skipped-pair reporting and fusion (once, at the end, in this
+process) stay as they are. A task per pair reads the pair's files from the path
+all machines share and sends back only its detections (:mod:`cluster_task`);
+a few pairs per worker thread are in flight at a time, so a drive of millions of
+pairs holds a few futures, not millions. A worker that dies is replaced (its
+nanny) and its pairs rerun elsewhere by the scheduler; a pair that kills
+workers again and again is a ``MappingError`` naming it. Cancel cancels every
+task of the run on the cluster before ``Cancelled`` propagates.
+
+Dask is optional: it is imported only here, only when a scheduler is given.
+"""
+
+from __future__ import annotations
+
+import re
+import uuid
+from typing import Iterator, Optional
+
+from . import __version__
+from .cluster_task import pair_job, pair_result, worker_function
+from .errors import ClusterError, MappingError
+from .pair_pool import AHEAD, POLL_S, python_executable
+from .progress import CancelCheck, check_cancelled
+
+# the pins of requirements-dask.txt (a test keeps them equal): what the error for a missing Dask installs
+DASK_PACKAGES = ("dask==2026.8.0", "distributed==2026.8.0")
+CONNECT_TIMEOUT_S = 10.0  # to reach the scheduler, and for a worker to be there
+REFRESH_PAIRS = 32  # the cluster's thread count is asked again after this many pairs (workers come and go)
+ADDRESS = re.compile(r"(tcp|tls)://(\[[0-9A-Fa-f:.]+\]|[^\s:/\[\]]+):(\d{1,5})")
+
+
+def install_command() -> str:
+    """The pip command that installs Dask for the Python running this code."""
+    try:
+        python = python_executable()
+    except RuntimeError:
+        python = "python3"
+    return f"{python} -m pip install {' '.join(DASK_PACKAGES)}"
+
+
+def require_distributed():
+    """The ``distributed`` module, or a ``ClusterError`` naming the package and the command that installs it."""
+    try:
+        import distributed
+    except ImportError as exc:
+        raise ClusterError(f"mapping on a Dask cluster needs the Python package 'distributed' (Dask), which this "
+                           f"Python cannot import ({exc}); install it with: {install_command()}") from None
+    return distributed
+
+
+def scheduler_address(text: str) -> str:
+    """``text`` as a scheduler address ``tcp://HOST:PORT`` (a bare ``HOST:PORT`` means tcp); ``ClusterError`` if
+    it is none."""
+    address = (text or "").strip()
+    if "://" not in address:
+        address = f"tcp://{address}"
+    match = ADDRESS.fullmatch(address)
+    if not match or not 0 < int(match.group(3)) < 65536:
+        raise ClusterError(f"Dask scheduler address '{text}': expected tcp://HOST:PORT, e.g. tcp://10.0.0.5:8786 "
+                           "(what 'dask scheduler' prints as 'Scheduler at')")
+    return address
+
+
+def connect(address: str, timeout_s: float = CONNECT_TIMEOUT_S):
+    """A ``distributed.Client`` of the scheduler at ``address`` whose workers can run the core.
+
+    ``ClusterError`` before any work when Dask is missing, the address is malformed, the scheduler cannot be
+    reached within ``timeout_s``, no worker joins within it, or a worker cannot import the core and OpenCV or
+    runs another version of it.
+    """
+    address = scheduler_address(address)
+    distributed = require_distributed()
+    try:
+        client = distributed.Client(address, timeout=timeout_s, set_as_default=False)
+    except (OSError, TimeoutError) as exc:
+        raise ClusterError(f"the Dask scheduler {address} cannot be reached (waited {timeout_s:g} s: {exc}); start "
+                           "it with 'dask scheduler' on that machine and check the address, the port and the "
+                           "firewall") from None
+    try:
+        check_workers(client, timeout_s)
+    except BaseException:
+        client.close()
+        raise
+    return client
+
+
+def check_workers(client, timeout_s: float = CONNECT_TIMEOUT_S) -> None:
+    """``ClusterError`` unless a worker is connected and every worker runs this version of the core."""
+    address = client.scheduler.address
+    try:
+        client.wait_for_workers(1, timeout=timeout_s)
+    except TimeoutError:
+        raise ClusterError(f"no Dask worker is connected to the scheduler {address} (waited {timeout_s:g} s); start "
+                           f"workers with 'dask worker {address}' (see docs/scale-out.md)") from None
+    answers = client.run(worker_function("worker_report"), on_error="return")
+    for worker, answer in sorted(answers.items()):
+        if isinstance(answer, BaseException):
+            raise ClusterError(f"Dask worker {worker} cannot run Sign Mapper's core: {type(answer).__name__}: "
+                               f"{answer}; each worker needs the plugin folder on its PYTHONPATH (the package "
+                               "signmapper_core) and OpenCV (see docs/scale-out.md)")
+        if answer.get("version") != __version__:
+            raise ClusterError(f"Dask worker {worker} runs Sign Mapper core {answer.get('version')}, this client "
+                               f"{__version__}: install the same plugin version on every machine")
+
+
+def dask_pairs(drive, catalogue, config, scheduler, is_cancelled: Optional[CancelCheck] = None,
+               detect=None) -> Iterator:
+    """Yield a ``mapping.PairResult`` per pair in driving order, the pairs mapped on a Dask cluster.
+
+    ``scheduler``: the scheduler's address (a client is connected for this drive and closed after it) or a
+    connected ``distributed.Client`` (left open: one connection for many drives). ``detect`` (None =
+    ``pipeline.detect_pair``) must be importable by name on the workers. ``Cancelled`` is raised between pairs
+    and while waiting for one, after every task of this run was cancelled on the cluster.
+    """
+    client = connect(scheduler) if isinstance(scheduler, str) else scheduler
+    own = isinstance(scheduler, str)
+    what = f"mapping drive {drive.root}"
+    pairs = drive.pairs
+    task = worker_function("map_pair_task")
+    run = uuid.uuid4().hex[:12]
+    pending: dict = {}
+    try:
+        submitted, window = 0, 0
+        for index, record in enumerate(pairs):
+            if index % REFRESH_PAIRS == 0:
+                window = max(2, sum(client.nthreads().values()) * (1 + AHEAD))
+            while submitted < len(pairs) and submitted < index + window:
+                job = pair_job(drive, pairs[submitted], catalogue, config, detect)
+                pending[submitted] = client.submit(task, job, key=f"signmapper-pair-{run}-{submitted}",
+                                                   pure=False)
+                submitted += 1
+            data = _result(pending[index], record, drive, client, is_cancelled, what)
+            pending.pop(index).release()  # the worker may forget it: only a window of pairs is held anywhere
+            yield pair_result(data, record)
+    finally:
+        if pending:
+            client.cancel(list(pending.values()), force=True)
+        if own:
+            client.close()
+
+
+def _result(future, record, drive, client, is_cancelled, what):
+    """The answer of one pair's task, asking ``is_cancelled`` every POLL_S; cluster failures as errors."""
+    from distributed import KilledWorker
+    from distributed.client import FutureCancelledError
+
+    while True:
+        check_cancelled(is_cancelled, what)
+        try:
+            return future.result(timeout=POLL_S)
+        except TimeoutError:
+            continue
+        except KilledWorker as exc:
+            raise MappingError(f"Dask workers died repeatedly while mapping pair {record.id} of {drive.root} (out "
+                               f"of memory, or a crash: see the workers' logs): {exc}") from exc
+        except FutureCancelledError as exc:
+            raise ClusterError(f"the Dask scheduler {client.scheduler.address} dropped pair {record.id} of "
+                               f"{drive.root} (scheduler restarted or connection lost): {exc}") from exc
+        except (MappingError, ClusterError):
+            raise
+        except Exception as exc:  # noqa: BLE001 - the task itself failed on the worker (map_pair catches the rest)
+            raise ClusterError(f"pair {record.id} of {drive.root} could not run on a Dask worker: "
+                               f"{type(exc).__name__}: {exc}") from exc
