@@ -59,7 +59,7 @@ apt:
 
 venv: $(VENV)/.installed
 
-$(VENV)/.installed: requirements.txt requirements-dev.txt
+$(VENV)/.installed: requirements.txt requirements-dev.txt requirements-dask.txt
 	$(SYSTEM_PYTHON) -m venv --system-site-packages $(VENV)
 	$(PY) -m pip install -q -r requirements-dev.txt
 	$(PY) -c "import cv2, numpy, qgis.core; print('OpenCV', cv2.__version__, 'numpy', numpy.__version__)"

@@ -65,13 +65,14 @@ def scheduler_address(text: str) -> str:
     return address
 
 
-def connect(address: str, timeout_s: float = CONNECT_TIMEOUT_S):
+def connect(address: str, timeout_s: Optional[float] = None):
     """A ``distributed.Client`` of the scheduler at ``address`` whose workers can run the core.
 
     ``ClusterError`` before any work when Dask is missing, the address is malformed, the scheduler cannot be
     reached within ``timeout_s``, no worker joins within it, or a worker cannot import the core and OpenCV or
     runs another version of it.
     """
+    timeout_s = CONNECT_TIMEOUT_S if timeout_s is None else timeout_s
     address = scheduler_address(address)
     distributed = require_distributed()
     try:
@@ -88,8 +89,9 @@ def connect(address: str, timeout_s: float = CONNECT_TIMEOUT_S):
     return client
 
 
-def check_workers(client, timeout_s: float = CONNECT_TIMEOUT_S) -> None:
+def check_workers(client, timeout_s: Optional[float] = None) -> None:
     """``ClusterError`` unless a worker is connected and every worker runs this version of the core."""
+    timeout_s = CONNECT_TIMEOUT_S if timeout_s is None else timeout_s
     address = client.scheduler.address
     try:
         client.wait_for_workers(1, timeout=timeout_s)
