@@ -27,7 +27,7 @@ from ..gpkg.language import qgis_language
 from ..gpkg.output import AtomicGeoPackage, geopackage_tables, layer_uri
 from ..gpkg.styles import OutputStyler, embed_default_styles
 from ..signmapper_core import output_schema as schema
-from ..signmapper_core.errors import MappingError
+from ..signmapper_core.errors import ClusterError, MappingError
 from ..signmapper_core.output_schema import DETECTIONS, LANGUAGES, SIGNS, OutputContext
 from ..signmapper_core.pipeline.config import default
 from ..signmapper_core.progress import Cancelled, check_cancelled
@@ -77,6 +77,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
     CROPS = "CROPS"
     MAX_SKIPPED = "MAX_SKIPPED"
     WORKERS = "WORKERS"
+    SCHEDULER = "SCHEDULER"
     OUTPUT = "OUTPUT"
     DETECTIONS = "DETECTIONS"
     SIGNS = "SIGNS"
@@ -190,6 +191,17 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             advanced=True,
         )
         self.add_parameter(
+            QgsProcessingParameterString(self.SCHEDULER, self.tr("Dask scheduler address"), optional=True),
+            "Map the stereo pairs on a Dask cluster instead of this computer: the address of its scheduler, "
+            "tcp://HOST:PORT as 'dask scheduler' prints it (Worker processes is then not used). Every worker must "
+            "read the drive folder at the same path as here, import the plugin's signmapper_core (the plugin folder "
+            "on its PYTHONPATH) with OpenCV, and run the same plugin version; only the detections come back and the "
+            "signs are fused here, so the output is the same as on this computer. Cancel cancels the cluster's "
+            "tasks. Needs the Python packages dask and distributed (requirements-dask.txt) here and on the "
+            "workers. Empty: this computer's worker processes. See docs/scale-out.md.",
+            advanced=True,
+        )
+        self.add_parameter(
             QgsProcessingParameterFileDestination(self.OUTPUT, self.tr("Output GeoPackage"),
                                                   fileFilter="GeoPackage (*.gpkg)"),
             "GeoPackage to write. Its layers signs and detections and the table signmapper_run are replaced only "
@@ -220,6 +232,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             label = self.parameterDefinition(self.OUTPUT).description()
             raise QgsProcessingException(f"{label}: {output}: the output must be a GeoPackage file ending in .gpkg")
         self.check_outputs(parameters, context)
+        self.scheduler(parameters, context)  # a malformed address is said before the run
         geopackage_tables(output)  # an existing file that is no GeoPackage is refused, not replaced
         earlier = self.earlier_settings(parameters, context, notes)
         colours = [COLOURS[i] for i in self.parameterAsEnums(parameters, self.COLOURS, context)]
@@ -263,6 +276,20 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         except ClassifierError as exc:
             raise QgsProcessingException(f"Classifier: {exc}") from exc
         return folder, catalogue, config, earlier.fusion if earlier is not None else FusionConfig()
+
+    def scheduler(self, parameters, context):
+        """The Dask scheduler address given (``tcp://HOST:PORT``), or None: map on this computer."""
+        text = (self.parameterAsString(parameters, self.SCHEDULER, context) or "").strip()
+        if not text:
+            return None
+        from ..signmapper_core.dask_pairs import scheduler_address  # no Dask import: only the address is read
+        from ..signmapper_core.errors import ClusterError
+
+        try:
+            return scheduler_address(text)
+        except ClusterError as exc:
+            raise QgsProcessingException(f"{self.parameterDefinition(self.SCHEDULER).description()}: {exc}") \
+                from None
 
     def earlier_settings(self, parameters, context, notes=None):
         """The ``RunSettings`` of the earlier output given, or None; its problems as QgsProcessingException."""
@@ -315,8 +342,11 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         crops = CropFolder(output.target) if self.parameterAsBoolean(parameters, self.CROPS, context) else None
         max_skipped = self.parameterAsDouble(parameters, self.MAX_SKIPPED, context) / 100.0
         workers = self.parameterAsInt(parameters, self.WORKERS, context) if parameters.get(self.WORKERS) else 0
+        scheduler = self.scheduler(parameters, context)
+        if scheduler:
+            feedback.pushInfo(f"Mapping the pairs on the Dask cluster of the scheduler {scheduler}")
         try:
-            result = self.map(drive, catalogue, config, feedback, max_skipped, fusion, workers)
+            result = self.map(drive, catalogue, config, feedback, max_skipped, fusion, workers, scheduler)
             out = self.output_context(drive, catalogue, language, result, crops, feedback)
             self.write_layers(output, result, out, feedback)
             output.write_run_table(schema.run_record(result, out))
@@ -336,6 +366,9 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                 remedy = f", or raise '{label}'" if exc.limit_exceeded else ""  # no share helps when none maps
                 raise QgsProcessingException(f"Mapping failed: {exc}. Nothing written{unchanged}. Repair or remove "
                                              f"the unreadable files{remedy}.") from None
+            if isinstance(exc, ClusterError):
+                label = self.parameterDefinition(self.SCHEDULER).description()
+                raise QgsProcessingException(f"{label}: {exc}. Nothing written{unchanged}.") from None
             raise
         if without_svg:
             feedback.pushWarning(f"{len(without_svg)} of {len(catalogue)} templates have no SVG pictogram (e.g. "
@@ -388,17 +421,19 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         return ids
 
     @staticmethod
-    def map(drive, catalogue, config, feedback, max_skipped: float = 1.0, fusion=None, workers: int = 0):
+    def map(drive, catalogue, config, feedback, max_skipped: float = 1.0, fusion=None, workers: int = 0,
+            scheduler=None):
         """The core's map_drive with the algorithm's progress bar, cancel button and log.
 
-        ``Cancelled`` and ``MappingError`` (too many pairs skipped) reach the caller, which discards its output.
-        ``workers``: processes mapping the pairs (0 = all cores).
+        ``Cancelled``, ``MappingError`` (too many pairs skipped) and ``ClusterError`` reach the caller, which
+        discards its output. ``workers``: processes mapping the pairs (0 = all cores); ``scheduler``: a Dask
+        scheduler address instead (the cancel button cancels the cluster's tasks).
         """
         from ..signmapper_core.mapping import map_drive
 
         steps = CoreFeedback(feedback, 5, 92)
         result = map_drive(drive, catalogue, config, steps.progress, steps.is_cancelled, steps.warn,
-                           fusion=fusion, max_skipped_share=max_skipped, workers=workers)
+                           fusion=fusion, max_skipped_share=max_skipped, workers=workers, scheduler=scheduler)
         if result.skipped:
             feedback.pushWarning(f"{result.failure_summary()}; see the messages above")
         return result
