@@ -1,6 +1,6 @@
 """Pairs per second and memory of mapping a drive end to end, from the JPEG files, against the naive baseline.
 
-    python bench/bench_mapping.py [--pairs 20] [--seed 2001] [--long 1000]
+    python bench/bench_mapping.py [--pairs 20] [--seed 2001] [--long 1000] [--dask] [--scheduler tcp://HOST:PORT]
 
 A synthetic Full-HD drive of JPEG stereo pairs without depth maps (generated once,
 cached under build/drives/) is mapped three ways, each in its own process so its
@@ -10,6 +10,10 @@ fused signs (worker start-up, decoding, SGBM, detection and fusion included):
   pipeline-all  ``map_drive`` with a worker process per core
   baseline      decoding the same JPEG pairs and full-frame, full-resolution SGBM
                 over disparities 0..256 (no detection at all), a worker per core
+``--dask`` adds the pairs mapped on a Dask LocalCluster on 127.0.0.1 with 1 and with
+2 worker processes of one thread each (``dask-1``, ``dask-2``: cluster start-up not
+timed, the connection, the workers' first pair with its classifier load and fusion
+in the client are), ``--scheduler ADDRESS`` on a running cluster (``dask-scheduler``).
 ``--long N`` then maps a drive of N pairs (the drive's pairs repeated under new ids)
 with all workers and prints the resident memory of the main process plus its
 workers as it goes: memory must stay flat with drive length.
@@ -32,6 +36,7 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
 MODES = ("pipeline-1", "pipeline-all", "baseline")
+DASK_MODES = ("dask-1", "dask-2")
 
 
 def baseline_depth(left, right, camera):
@@ -79,6 +84,37 @@ def repeated(drive, pairs: int):
     return replace(drive, pairs=records)
 
 
+def run_dask(mode: str, folder: Path, scheduler: str = "") -> dict:
+    """The pairs mapped on a Dask cluster: a LocalCluster of 1 or 2 single-thread workers, or ``scheduler``'s."""
+    from distributed import Client, LocalCluster
+
+    from signmapper_core.catalogue import load_catalogue
+    from signmapper_core.drive import open_drive
+    from signmapper_core.mapping import map_drive
+    from signmapper_core.pipeline import PipelineConfig
+
+    drive = open_drive(folder)
+    cluster = None
+    if not scheduler:
+        cluster = LocalCluster(n_workers=int(mode.split("-")[1]), threads_per_worker=1, processes=True,
+                               host="127.0.0.1", dashboard_address=":0")
+        scheduler = cluster.scheduler_address
+    try:
+        with Client(scheduler, set_as_default=False) as client:
+            workers = len(client.nthreads())
+            start = time.perf_counter()
+            result = map_drive(drive, load_catalogue(), PipelineConfig(), scheduler=client)
+            seconds = time.perf_counter() - start
+            worker_peak = max(client.run(lambda: resource.getrusage(resource.RUSAGE_SELF).ru_maxrss).values())
+    finally:
+        if cluster is not None:
+            cluster.close()
+    return {"mode": mode, "pairs": len(drive.pairs), "workers": workers, "seconds": seconds,
+            "detections": len(result.detections), "signs": len(result.signs),
+            "peak_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0,
+            "peak_worker_rss_mb": worker_peak / 1024.0, "rss_mb": {}}
+
+
 def run_mode(mode: str, folder: Path, long_pairs: int = 0) -> dict:
     from bench_mapping import baseline_detect as baseline  # by module name, so worker processes can import it
 
@@ -120,8 +156,9 @@ def drive_folder(seed: int, pairs: int) -> Path:
     return out
 
 
-def child(mode: str, folder: Path, long_pairs: int = 0) -> dict:
+def child(mode: str, folder: Path, long_pairs: int = 0, scheduler: str = "") -> dict:
     command = [sys.executable, __file__, "--mode", mode, "--drive", str(folder), "--long", str(long_pairs)]
+    command += ["--scheduler", scheduler] if scheduler else []
     out = subprocess.run(command, capture_output=True, text=True, check=True)
     return json.loads(out.stdout.strip().splitlines()[-1])
 
@@ -132,9 +169,17 @@ def main() -> int:
     parser.add_argument("--seed", type=int, default=2001)
     parser.add_argument("--long", type=int, default=0, metavar="N",
                         help="then map N pairs (the drive repeated) with all workers and print memory as it goes")
-    parser.add_argument("--mode", choices=MODES, help=argparse.SUPPRESS)  # child process
+    parser.add_argument("--dask", action="store_true",
+                        help="also map on a Dask LocalCluster (127.0.0.1) of 1 and of 2 worker processes")
+    parser.add_argument("--scheduler", default="", metavar="tcp://HOST:PORT",
+                        help="also map on the running Dask cluster of this scheduler")
+    parser.add_argument("--mode", choices=MODES + DASK_MODES + ("dask-scheduler",),
+                        help=argparse.SUPPRESS)  # child process
     parser.add_argument("--drive", type=Path, help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.mode in DASK_MODES or args.mode == "dask-scheduler":
+        print(json.dumps(run_dask(args.mode, args.drive, args.scheduler)))
+        return 0
     if args.mode:
         print(json.dumps(run_mode(args.mode, args.drive, args.long)))
         return 0
@@ -143,12 +188,14 @@ def main() -> int:
           f"{multiprocessing.cpu_count()} cores; the vehicle records 5 pairs/s")
     print(f"{'mode':<13} {'workers':>7} {'pairs/s':>8} {'x baseline':>10} {'detections':>10} {'signs':>6} "
           f"{'peak RSS MB (main + largest worker)':>36}")
-    results = {mode: child(mode, folder) for mode in MODES}
+    modes = MODES + (DASK_MODES if args.dask else ()) + (("dask-scheduler",) if args.scheduler else ())
+    results = {mode: child(mode, folder, scheduler=args.scheduler if mode == "dask-scheduler" else "")
+               for mode in modes}
     base = results["baseline"]["pairs"] / results["baseline"]["seconds"]
     for mode, r in results.items():
         rate = r["pairs"] / r["seconds"]
         peak = f"{r['peak_rss_mb']:.0f}" + (f" + {r['workers']} x {r['peak_worker_rss_mb']:.0f}"
-                                            if r["workers"] > 1 else "")
+                                            if r["workers"] > 1 or mode.startswith("dask") else "")
         print(f"{mode:<13} {r['workers']:7d} {rate:8.2f} {rate / base:10.2f} {r['detections']:10d} "
               f"{r['signs']:6d} {peak:>36}", flush=True)
     if args.long:

@@ -6,7 +6,8 @@ PYTHONPATH holds the plugin folder), whatever name the client imported it under
 import that package). So neither direction pickles the core's classes: a job is
 a dict of strings, numbers and the settings as JSON-ready dicts; a result is the
 detections as dicts of numbers and arrays. The task function itself is named
-by the workers' module name (:func:`worker_function`). No Dask import here:
+by the workers' module name (:func:`worker_function`); the scheduler unpickles
+each task too, so it imports this module (nothing else of the core). No Dask import here:
 workers import this module, and so does the client, only when a cluster is used.
 """
 
@@ -52,9 +53,14 @@ class _ByName:
 
 def worker_function(name: str):
     """The function ``name`` of this module as the workers import it."""
-    if name not in ("map_pair_task", "worker_report"):
+    if name not in ("map_pair_task", "worker_report", "scheduler_report"):
         raise ValueError(f"no worker function '{name}'")
     return _ByName(name)
+
+
+def scheduler_report() -> dict:
+    """What the scheduler runs: the core's version (it unpickles every task, so it imports this module too)."""
+    return {"version": __version__}
 
 
 def worker_report() -> dict:

@@ -17,18 +17,20 @@ Dask is optional: it is imported only here, only when a scheduler is given.
 from __future__ import annotations
 
 import re
+import time
 import uuid
 from typing import Iterator, Optional
 
 from . import __version__
 from .cluster_task import pair_job, pair_result, worker_function
 from .errors import ClusterError, MappingError
-from .pair_pool import AHEAD, POLL_S, python_executable
+from .pair_pool import AHEAD, python_executable
 from .progress import CancelCheck, check_cancelled
 
 # the pins of requirements-dask.txt (a test keeps them equal): what the error for a missing Dask installs
 DASK_PACKAGES = ("dask==2026.8.0", "distributed==2026.8.0")
 CONNECT_TIMEOUT_S = 10.0  # to reach the scheduler, and for a worker to be there
+WAIT_S = 0.02  # how often a pair's future and the cancel button are looked at while waiting for it
 REFRESH_PAIRS = 32  # the cluster's thread count is asked again after this many pairs (workers come and go)
 ADDRESS = re.compile(r"(tcp|tls)://(\[[0-9A-Fa-f:.]+\]|[^\s:/\[\]]+):(\d{1,5})")
 
@@ -90,9 +92,19 @@ def connect(address: str, timeout_s: Optional[float] = None):
 
 
 def check_workers(client, timeout_s: Optional[float] = None) -> None:
-    """``ClusterError`` unless a worker is connected and every worker runs this version of the core."""
+    """``ClusterError`` unless the scheduler can read our tasks, a worker is connected and every worker runs this
+    version of the core."""
     timeout_s = CONNECT_TIMEOUT_S if timeout_s is None else timeout_s
     address = client.scheduler.address
+    try:
+        answer = client.run_on_scheduler(worker_function("scheduler_report"))
+    except Exception as exc:  # noqa: BLE001 - whatever the scheduler could not do, it cannot read our tasks
+        raise ClusterError(f"the Dask scheduler {address} cannot read Sign Mapper's tasks: {type(exc).__name__}: "
+                           f"{exc}; start it with the plugin folder on its PYTHONPATH (it imports "
+                           "signmapper_core.cluster_task; see docs/scale-out.md)") from None
+    if answer.get("version") != __version__:
+        raise ClusterError(f"the Dask scheduler {address} has Sign Mapper core {answer.get('version')}, this client "
+                           f"{__version__}: install the same plugin version on every machine")
     try:
         client.wait_for_workers(1, timeout=timeout_s)
     except TimeoutError:
@@ -146,24 +158,22 @@ def dask_pairs(drive, catalogue, config, scheduler, is_cancelled: Optional[Cance
 
 
 def _result(future, record, drive, client, is_cancelled, what):
-    """The answer of one pair's task, asking ``is_cancelled`` every POLL_S; cluster failures as errors."""
+    """The answer of one pair's task, asking ``is_cancelled`` every WAIT_S; cluster failures as errors."""
     from distributed import KilledWorker
     from distributed.client import FutureCancelledError
 
-    while True:
+    while not future.done():  # the future's own state, no round trip (result(timeout) races under load)
         check_cancelled(is_cancelled, what)
-        try:
-            return future.result(timeout=POLL_S)
-        except TimeoutError:
-            continue
-        except KilledWorker as exc:
-            raise MappingError(f"Dask workers died repeatedly while mapping pair {record.id} of {drive.root} (out "
-                               f"of memory, or a crash: see the workers' logs): {exc}") from exc
-        except FutureCancelledError as exc:
-            raise ClusterError(f"the Dask scheduler {client.scheduler.address} dropped pair {record.id} of "
-                               f"{drive.root} (scheduler restarted or connection lost): {exc}") from exc
-        except (MappingError, ClusterError):
-            raise
-        except Exception as exc:  # noqa: BLE001 - the task itself failed on the worker (map_pair catches the rest)
-            raise ClusterError(f"pair {record.id} of {drive.root} could not run on a Dask worker: "
-                               f"{type(exc).__name__}: {exc}") from exc
+        time.sleep(WAIT_S)
+    check_cancelled(is_cancelled, what)
+    try:
+        return future.result()
+    except KilledWorker as exc:
+        raise MappingError(f"Dask workers died repeatedly while mapping pair {record.id} of {drive.root} (out of "
+                           f"memory, or a crash: see the workers' logs): {exc}") from exc
+    except FutureCancelledError as exc:
+        raise ClusterError(f"the Dask scheduler {client.scheduler.address} dropped pair {record.id} of "
+                           f"{drive.root} (scheduler restarted or connection lost): {exc}") from exc
+    except Exception as exc:  # noqa: BLE001 - the task itself failed on the worker (map_pair catches the rest)
+        raise ClusterError(f"pair {record.id} of {drive.root} could not run on a Dask worker: "
+                           f"{type(exc).__name__}: {exc}") from exc

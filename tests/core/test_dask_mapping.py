@@ -206,11 +206,38 @@ def test_the_pins_of_the_error_message_are_requirements_dask_and_dev_installs_th
     assert "dask" not in (REPO / "requirements.txt").read_text()  # optional: the plugin runs without it
 
 
-def test_a_worker_of_another_core_version_is_refused_before_any_work(drive_dir, catalogue, client, monkeypatch):
-    from signmapper_core import __version__, dask_pairs
+def test_a_scheduler_or_worker_of_another_core_version_is_refused_before_any_work(client, monkeypatch):
+    from signmapper_core import __version__, cluster_task, dask_pairs
 
-    monkeypatch.setattr(dask_pairs, "__version__", "9.9.9")
+    monkeypatch.setattr(dask_pairs, "__version__", "9.9.9")  # this client
+    with pytest.raises(ClusterError, match=rf"the Dask scheduler tcp://127\.0\.0\.1:\d+ has Sign Mapper core "
+                                           rf"{re.escape(__version__)}, this client 9\.9\.9: install the same "
+                                           "plugin version on every machine"):
+        dask_pairs.check_workers(client)
+    monkeypatch.setattr(cluster_task, "__version__", "9.9.9")  # the LocalCluster's scheduler runs in this process
     with pytest.raises(ClusterError, match=rf"Dask worker tcp://127\.0\.0\.1:\d+ runs Sign Mapper core "
                                            rf"{re.escape(__version__)}, this client 9\.9\.9: install the same "
                                            "plugin version on every machine"):
         dask_pairs.check_workers(client)
+
+
+def test_a_scheduler_that_cannot_import_the_core_is_refused_before_any_work(drive_dir, tmp_path):
+    """The scheduler unpickles every task: started without the plugin folder on its PYTHONPATH it cannot."""
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    scheduler = subprocess.Popen([str(Path(sys.executable).parent / "dask"), "scheduler", "--host", "127.0.0.1",
+                                  "--port", str(port), "--dashboard-address", ":0"], cwd=str(tmp_path), env=env,
+                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        out = tmp_path / "signs.gpkg"
+        done = _command("-m", "signmapper_core.map", str(drive_dir), "--out", str(out), "--scheduler",
+                        f"tcp://127.0.0.1:{port}", "--connect-timeout", "20")
+    finally:
+        scheduler.terminate()
+        scheduler.wait(timeout=30)
+    assert done.returncode == 1
+    assert f"error: the Dask scheduler tcp://127.0.0.1:{port} cannot read Sign Mapper's tasks: ModuleNotFoundError: " \
+           "No module named 'signmapper_core'; start it with the plugin folder on its PYTHONPATH" in done.stderr
+    assert not out.exists()
