@@ -59,8 +59,10 @@ apt:
 
 venv: $(VENV)/.installed
 
+# a .venv that is a link to another checkout's venv (a git worktree) is used as it is: venv cannot recreate it
+# through the link; pip still installs what a changed requirements file adds
 $(VENV)/.installed: requirements.txt requirements-dev.txt requirements-dask.txt
-	$(SYSTEM_PYTHON) -m venv --system-site-packages $(VENV)
+	[ -L $(VENV) ] || $(SYSTEM_PYTHON) -m venv --system-site-packages $(VENV)
 	$(PY) -m pip install -q -r requirements-dev.txt
 	$(PY) -c "import cv2, numpy, qgis.core; print('OpenCV', cv2.__version__, 'numpy', numpy.__version__)"
 	touch $@
