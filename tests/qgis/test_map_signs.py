@@ -147,7 +147,7 @@ def test_tuning_parameters_are_advanced(registered_plugin):
     advanced = {p.name() for p in alg.parameterDefinitions()
                 if p.flags() & QgsProcessingParameterDefinition.FlagAdvanced}
     assert advanced == {"EXCLUDE", "DETECTION_THRESHOLD", "CLASSIFIER", "CLASSIFICATION_THRESHOLD", "CATALOGUE",
-                        "LANGUAGE", "MAX_SKIPPED", "WORKERS"}
+                        "LANGUAGE", "MAX_SKIPPED", "WORKERS", "SCHEDULER"}
 
 
 def test_corrupt_pair_is_logged_and_skipped(run, small_drive, tmp_path):
