@@ -23,13 +23,6 @@ def cluster():
         yield local
 
 
-@pytest.fixture
-def run(registered_plugin):
-    import processing
-
-    return processing.run
-
-
 def test_mapsigns_on_the_cluster_writes_the_same_geopackage_as_on_this_computer(run, small_drive, cluster,
                                                                                tmp_path):
     here, there = tmp_path / "here.gpkg", tmp_path / "there.gpkg"
