@@ -14,7 +14,10 @@ QGIS_PROCESS := qgis_process.bin
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-pip python3-numpy python3-scipy \
                 python3-pyproj python3-shapely python3-pil python3-gdal git \
-                postgresql postgresql-15-postgis-3 python3-psycopg2
+                postgresql postgresql-15-postgis-3 python3-psycopg2 \
+                tesseract-ocr tesseract-ocr-deu tesseract-ocr-fra tesseract-ocr-ita fonts-dejavu-core
+# tesseract-ocr*: reading plate texts (optional for the plugin, needed by the tests);
+# fonts-dejavu-core: the font synthetic drives set plate texts in
 # rsvg-convert: only for make catalogue (rendering the official drawings)
 BUILD_APT_PACKAGES := librsvg2-bin
 

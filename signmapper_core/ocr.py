@@ -1,0 +1,174 @@
+"""Reading the text of plates and panels with Tesseract (Debian's ``tesseract-ocr``), called as a command.
+
+Optional: without the ``tesseract`` command (or without its German, French and
+Italian data) plates are still mapped, only their text stays empty, and
+:class:`OcrUnavailable` says how to install it. All crops of a run are read in
+one call (Tesseract takes a list of images; its TSV output numbers them by
+``page_num``), so the language models are loaded once per run, not per plate.
+Normalising what was read is :mod:`signmapper_core.plate_text`'s job.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import tempfile
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+from typing import List, Optional, Sequence
+
+import numpy as np
+
+LANGUAGES = ("deu", "fra", "ita")
+DEBIAN_PACKAGES = ("tesseract-ocr", "tesseract-ocr-deu", "tesseract-ocr-fra", "tesseract-ocr-ita")
+INSTALL_HINT = "sudo apt-get install " + " ".join(DEBIAN_PACKAGES)
+BASE_TIMEOUT_S = 60.0  # loading three language models on a busy machine takes several seconds
+TIMEOUT_PER_IMAGE_S = 2.0
+CROP_HEIGHT_PX = 120  # a smaller crop is scaled up to this height: 1-3 lines of 30+ px, as Tesseract likes them
+FRAME_SHARE = 0.09  # of the crop's height cut from each side: a plate's printed black frame is no letter
+BORDER_PX = 12
+
+
+class OcrUnavailable(RuntimeError):
+    """Tesseract cannot be run here; the message says why and how to install it."""
+
+
+class OcrError(RuntimeError):
+    """Tesseract ran but failed (timeout, crash, unreadable output)."""
+
+
+@dataclass(frozen=True)
+class Word:
+    text: str
+    confidence: float  # 0..1
+    line: int  # 0-based line of the crop, top to bottom
+
+
+@dataclass(frozen=True)
+class TextReading:
+    """What Tesseract read in one crop: its words by line, and their mean confidence (0..1; 0 when none)."""
+
+    words: tuple
+
+    @property
+    def lines(self) -> List[str]:
+        out = {}
+        for word in self.words:
+            out.setdefault(word.line, []).append(word.text)
+        return [" ".join(out[k]) for k in sorted(out)]
+
+    @property
+    def text(self) -> str:
+        """Lines joined by " / " (as drive-format's truth.csv writes a plate's text)."""
+        return " / ".join(self.lines)
+
+    @property
+    def confidence(self) -> float:
+        return float(np.mean([w.confidence for w in self.words])) if self.words else 0.0
+
+
+@lru_cache(maxsize=4)
+def _languages_of(executable: str) -> tuple:
+    out = subprocess.run([executable, "--list-langs"], capture_output=True, text=True, timeout=30)
+    names = (out.stdout + out.stderr).split()
+    return tuple(lang for lang in LANGUAGES if lang in names)
+
+
+def find_tesseract(executable: Optional[str] = None) -> tuple:
+    """(path of the tesseract command, the plate languages it has); :class:`OcrUnavailable` if it cannot read them.
+
+    ``executable``: a command name or path (default: ``tesseract`` on the PATH).
+    """
+    path = shutil.which(executable or "tesseract")
+    if path is None:
+        raise OcrUnavailable(f"plate texts are not read: the OCR engine Tesseract ('{executable or 'tesseract'}') "
+                             f"is not installed; on Debian or Ubuntu: {INSTALL_HINT}")
+    try:
+        languages = _languages_of(path)
+    except (OSError, subprocess.SubprocessError) as exc:
+        raise OcrUnavailable(f"plate texts are not read: {path} --list-langs failed ({exc}); reinstall it: "
+                             f"{INSTALL_HINT}") from exc
+    if not languages:
+        raise OcrUnavailable(f"plate texts are not read: Tesseract ({path}) has none of the German, French or "
+                             f"Italian language data; on Debian or Ubuntu: {INSTALL_HINT}")
+    return path, languages
+
+
+def prepare_crop(crop: np.ndarray) -> np.ndarray:
+    """A plate crop as Tesseract reads it best: its frame cut off, grey, scaled up to ``CROP_HEIGHT_PX``,
+    a plain border (Tesseract reads nothing at all on a line that touches a frame)."""
+    import cv2
+
+    if crop.ndim == 3:
+        crop = cv2.cvtColor(crop, cv2.COLOR_BGR2GRAY)
+    cut = int(round(FRAME_SHARE * crop.shape[0]))
+    if crop.shape[0] > 2 * cut + 4 and crop.shape[1] > 2 * cut + 4:
+        crop = crop[cut:-cut or None, cut:-cut or None]
+    height = max(crop.shape[0], 1)
+    scale = np.clip(CROP_HEIGHT_PX / height, 1.0, 8.0)
+    grey = cv2.resize(crop, None, fx=scale, fy=scale, interpolation=cv2.INTER_CUBIC)
+    grey = cv2.normalize(grey, None, 0, 255, cv2.NORM_MINMAX)
+    return cv2.copyMakeBorder(grey, BORDER_PX, BORDER_PX, BORDER_PX, BORDER_PX, cv2.BORDER_REPLICATE)
+
+
+def parse_tsv(tsv: str, pages: int) -> List[TextReading]:
+    """Tesseract's TSV output of ``pages`` images as one :class:`TextReading` per image (in input order)."""
+    words: List[list] = [[] for _ in range(pages)]
+    rows = tsv.splitlines()
+    if not rows or not rows[0].startswith("level"):
+        raise OcrError(f"Tesseract's output is not TSV: {tsv[:200]!r}")
+    header = rows[0].split("\t")
+    col = {name: header.index(name) for name in ("level", "page_num", "block_num", "par_num", "line_num",
+                                                 "conf", "text")}
+    line_ids: List[dict] = [{} for _ in range(pages)]
+    for row in rows[1:]:
+        cells = row.split("\t")
+        if len(cells) <= col["text"] or cells[col["level"]] != "5":
+            continue
+        text = cells[col["text"]].strip()
+        if not text:
+            continue
+        page = int(cells[col["page_num"]]) - 1
+        if not 0 <= page < pages:
+            raise OcrError(f"Tesseract's output names image {page + 1} of {pages}")
+        key = tuple(int(cells[col[k]]) for k in ("block_num", "par_num", "line_num"))
+        line = line_ids[page].setdefault(key, len(line_ids[page]))
+        confidence = max(float(cells[col["conf"]]), 0.0) / 100.0
+        words[page].append(Word(text, confidence, line))
+    return [TextReading(tuple(w)) for w in words]
+
+
+def read_texts(crops: Sequence[np.ndarray], executable: Optional[str] = None,
+               timeout_s: Optional[float] = None) -> List[TextReading]:
+    """The text of each plate crop (BGR or grey uint8, the plate's box), read in one Tesseract run.
+
+    :class:`OcrUnavailable`
+    when Tesseract or its language data are missing, :class:`OcrError` when it fails.
+    """
+    if not crops:
+        return []
+    import cv2
+
+    path, languages = find_tesseract(executable)
+    timeout = timeout_s if timeout_s is not None else BASE_TIMEOUT_S + TIMEOUT_PER_IMAGE_S * len(crops)
+    with tempfile.TemporaryDirectory(prefix="signmapper-ocr-") as folder:
+        names = []
+        for i, crop in enumerate(crops):
+            name = Path(folder) / f"{i:05d}.png"
+            if not cv2.imwrite(str(name), prepare_crop(crop)):
+                raise OcrError(f"could not write the crop {name} for Tesseract")
+            names.append(str(name))
+        listing = Path(folder) / "crops.txt"
+        listing.write_text("\n".join(names) + "\n", encoding="utf-8")
+        command = [path, str(listing), "-", "-l", "+".join(languages), "--psm", "6", "tsv"]
+        env = dict(os.environ, OMP_THREAD_LIMIT="1")  # one core: mapping shares the machine
+        try:
+            out = subprocess.run(command, capture_output=True, text=True, timeout=timeout, env=env)
+        except subprocess.TimeoutExpired as exc:
+            raise OcrError(f"Tesseract did not finish reading {len(crops)} plate crops within {timeout:.0f} s") \
+                from exc
+        if out.returncode != 0:
+            raise OcrError(f"Tesseract failed (exit {out.returncode}): {out.stderr.strip()[:300]}")
+    return parse_tsv(out.stdout, len(crops))

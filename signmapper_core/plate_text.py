@@ -1,0 +1,90 @@
+"""What OCR read on a supplementary plate, written the way the plate means it.
+
+Swiss plates (SSV 5.xx) say a few things in German, French or Italian:
+distances ("200 m", "2 km"), times ("7–19 h"), weekday ranges ("Mo–Fr",
+"lu–ve"), exceptions ("ausgenommen Zubringerdienst", "excepté riverains",
+"eccetto bus"). Normalising makes one spelling of each: digits OCR mistook for
+letters in numbers, any dash between numbers or weekdays an en dash, a space
+before the unit, words close to the plates' vocabulary spelt as in it. Lines are
+joined by " / " (the drive format's way of writing a plate's text).
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+from typing import Iterable
+
+EN_DASH = "–"
+WEEKDAYS = {
+    "de": ("Mo", "Di", "Mi", "Do", "Fr", "Sa", "So"),
+    "fr": ("lu", "ma", "me", "je", "ve", "sa", "di"),
+    "it": ("lu", "ma", "me", "gi", "ve", "sa", "do"),
+}
+EXCEPT_WORDS = {"de": "ausgenommen", "fr": "excepté", "it": "eccetto"}
+# Words of Swiss supplementary plates: what a plate's text is spelt against.
+VOCABULARY = (
+    "ausgenommen", "excepté", "eccetto", "Zubringerdienst", "Anwohner", "Velos", "Anstösser",
+    "Landwirtschaft", "Zufahrt", "gestattet", "riverains", "livraisons", "service", "autorisé", "cycles",
+    "servizio", "domicilio", "confinanti", "biciclette", "autorizzato", "Schule", "école", "scuola", "Kinder",
+    "enfants", "bambini", "Gegenverkehr", "Parkieren", "Stationnement", "Parcheggio",
+)
+_LOOKUP = {w.lower(): w for w in VOCABULARY}
+_DIGIT_LOOKALIKES = str.maketrans({"O": "0", "o": "0", "D": "0", "Q": "0", "l": "1", "I": "1", "i": "1", "|": "1",
+                                   "S": "5", "s": "5", "B": "8", "Z": "2", "z": "2", "g": "9"})
+_DASHES = "-–—~_=‐‑‒―"
+_NUMBERLIKE = re.compile(r"^[0-9OoDQlIi|SsBZzg]*[0-9][0-9OoDQlIi|SsBZzg.,:]*$")
+_ALL_DAYS = {d.lower() for days in WEEKDAYS.values() for d in days}
+_CANONICAL_DAY = {d.lower(): d for d in WEEKDAYS["de"]}  # German days are capitalised, others as written
+
+
+def _fix_number(token: str) -> str:
+    """Numbers in a token with letters OCR confused for digits as digits: "2OOm" -> "200m", "7-l9h" -> "7-19h"."""
+    pieces = re.split(rf"([{_DASHES}])", token)
+    for i, piece in enumerate(pieces):
+        unit = re.search(r"(km|m|h)$", piece)
+        number = piece[: unit.start()] if unit and unit.start() > 0 else piece
+        if _NUMBERLIKE.match(number):
+            pieces[i] = number.translate(_DIGIT_LOOKALIKES) + piece[len(number):]
+    return "".join(pieces)
+
+
+def _fix_word(token: str) -> str:
+    """A word of 5+ letters spelt as in the plates' vocabulary when OCR came close (case-insensitive, ratio >= 0.8)."""
+    core = token.strip(".,;:")
+    if len(core) < 5 or not core.isalpha():  # short words ("bus", "Bus", "Mo") are read well and differ by language
+        return token
+    match = difflib.get_close_matches(core.lower(), list(_LOOKUP), n=1, cutoff=0.8)
+    return token.replace(core, _LOOKUP[match[0]]) if match else token
+
+
+def _fix_days(text: str) -> str:
+    def day(name: str) -> str:
+        return _CANONICAL_DAY.get(name.lower(), name) if name[0].isupper() else name
+
+    pattern = re.compile(rf"\b([A-Za-z]{{2}})\s*[{_DASHES}]\s*([A-Za-z]{{2}})\b")
+
+    def replace(match):
+        a, b = match.group(1), match.group(2)
+        if a.lower() in _ALL_DAYS and b.lower() in _ALL_DAYS:
+            return f"{day(a)}{EN_DASH}{day(b)}"
+        return match.group(0)
+
+    return pattern.sub(replace, text)
+
+
+def normalise_line(line: str) -> str:
+    """One line of a plate in its one spelling (see the module docstring)."""
+    tokens = [_fix_word(_fix_number(t)) for t in line.split()]
+    text = " ".join(tokens)
+    text = re.sub(rf"(\d)\s*[{_DASHES}]\s*(\d)", rf"\1{EN_DASH}\2", text)  # 7 - 19 -> 7–19
+    text = re.sub(r"(\d)\s*(km|m|h|Std)\b\.?", r"\1 \2", text)  # 200m -> 200 m, 19h -> 19 h
+    text = re.sub(r"(\d)[.:](\d\d)\b", r"\1.\2", text)  # 7:30 -> 7.30 (Swiss clock times)
+    text = _fix_days(text)
+    return re.sub(r"\s+", " ", text).strip(" .,;:")
+
+
+def normalise_text(lines: Iterable[str]) -> str:
+    """The lines of a plate, each normalised, empty ones dropped, joined by " / "."""
+    kept = [normalise_line(line) for line in lines]
+    return " / ".join(line for line in kept if line)

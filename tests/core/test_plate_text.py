@@ -1,0 +1,96 @@
+"""Reading plate texts: Tesseract on plates set in a real font, normalisation, and a missing engine."""
+
+from __future__ import annotations
+
+import stat
+
+import cv2
+import pytest
+
+from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable, find_tesseract, parse_tsv, read_texts
+from signmapper_core.plate_text import normalise_line, normalise_text
+from signmapper_core.simulate.plate_faces import draw_plate
+
+
+@pytest.mark.parametrize("read, meant", [
+    ("2OOm", "200 m"), ("50 m", "50 m"), ("2 km", "2 km"),
+    ("7-l9h", "7–19 h"), ("7 - 19 h", "7–19 h"), ("22—6 h", "22–6 h"), ("7:30-11.30h", "7.30–11.30 h"),
+    ("Mo-Fr", "Mo–Fr"), ("mo - fr", "mo–fr"), ("lu-ve", "lu–ve"), ("Di~Sa", "Di–Sa"),
+    ("ausgenomnen Zubringerdienst", "ausgenommen Zubringerdienst"), ("excepte riverains", "excepté riverains"),
+    ("eccetto bus", "eccetto bus"), ("Schule.", "Schule"),
+])
+def test_normalised_spelling(read, meant):
+    assert normalise_line(read) == meant
+
+
+def test_words_that_are_not_days_or_numbers_keep_their_dash():
+    assert normalise_line("Ab-Cd") == "Ab-Cd"  # no weekday pair
+    assert normalise_text(["Mo-Fr", "", " 7-19h "]) == "Mo–Fr / 7–19 h"
+
+
+def plate_crop(lines, height_px):
+    """A plate set in DejaVu Sans at 3x, then shrunk to ``height_px`` as a camera sees it."""
+    width = int(height_px * 2.0)
+    big = draw_plate(lines, width * 3, height_px * 3)
+    return cv2.resize(big, (width, height_px), interpolation=cv2.INTER_AREA)
+
+
+PLATES = [["200 m"], ["Mo–Fr", "7–19 h"], ["ausgenommen", "Zubringerdienst"], ["excepté riverains"],
+          ["eccetto bus"], ["lu–ve", "8–18 h"]]
+
+
+def test_tesseract_reads_plates_of_40_px_in_one_run():
+    crops = [plate_crop(lines, 40 if len(lines) == 1 else 48) for lines in PLATES]
+    readings = read_texts(crops)
+    assert len(readings) == len(PLATES)
+    texts = [normalise_text(r.lines) for r in readings]
+    assert texts == [" / ".join(lines) for lines in PLATES]
+    assert all(0.6 <= r.confidence <= 1.0 for r in readings)
+
+
+def test_a_blank_plate_reads_as_no_text():
+    blank = plate_crop([""], 40)
+    (reading,) = read_texts([blank])
+    assert reading.text == "" and reading.confidence == 0.0
+
+
+def test_without_tesseract_the_message_says_how_to_install_it(tmp_path, monkeypatch):
+    monkeypatch.setenv("PATH", str(tmp_path))  # no tesseract on the PATH
+    with pytest.raises(OcrUnavailable) as info:
+        find_tesseract()
+    assert "not installed" in str(info.value) and INSTALL_HINT in str(info.value)
+    with pytest.raises(OcrUnavailable):
+        read_texts([plate_crop(["200 m"], 40)])
+    assert read_texts([]) == []  # nothing to read needs no engine
+
+
+def test_tesseract_without_plate_languages_is_unavailable(tmp_path):
+    fake = tmp_path / "tesseract"
+    fake.write_text("#!/bin/sh\necho 'List of available languages in \"/x\" (2):'\necho eng\necho osd\n")
+    fake.chmod(fake.stat().st_mode | stat.S_IXUSR)
+    with pytest.raises(OcrUnavailable, match="German, French or Italian"):
+        find_tesseract(str(fake))
+
+
+def test_tsv_words_are_grouped_by_image_and_line():
+    header = "level\tpage_num\tblock_num\tpar_num\tline_num\tword_num\tleft\ttop\twidth\theight\tconf\ttext"
+    rows = [header,
+            "5\t1\t1\t1\t1\t1\t0\t0\t9\t9\t90\tMo-Fr",
+            "5\t1\t1\t1\t2\t1\t0\t9\t9\t9\t80\t7-19",
+            "5\t1\t1\t1\t2\t2\t9\t9\t9\t9\t70\th",
+            "4\t2\t1\t1\t1\t0\t0\t0\t9\t9\t-1\t",
+            "5\t3\t1\t1\t1\t1\t0\t0\t9\t9\t-1\t ",
+            "5\t3\t1\t1\t1\t2\t0\t0\t9\t9\t60\tbus"]
+    first, second, third = parse_tsv("\n".join(rows), 3)
+    assert first.lines == ["Mo-Fr", "7-19 h"] and first.confidence == pytest.approx(0.8)
+    assert second.text == "" and third.text == "bus"
+
+
+def test_a_hanging_tesseract_is_stopped_by_the_timeout(tmp_path):
+    from signmapper_core.ocr import OcrError
+
+    fake = tmp_path / "tesseract"
+    fake.write_text("#!/bin/sh\nif [ \"$1\" = --list-langs ]; then echo deu; exit 0; fi\nsleep 30\n")
+    fake.chmod(fake.stat().st_mode | stat.S_IXUSR)
+    with pytest.raises(OcrError, match="did not finish"):
+        read_texts([plate_crop(["200 m"], 40)], executable=str(fake), timeout_s=0.5)
