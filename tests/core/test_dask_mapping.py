@@ -241,3 +241,16 @@ def test_a_scheduler_that_cannot_import_the_core_is_refused_before_any_work(driv
     assert f"error: the Dask scheduler tcp://127.0.0.1:{port} cannot read Sign Mapper's tasks: ModuleNotFoundError: " \
            "No module named 'signmapper_core'; start it with the plugin folder on its PYTHONPATH" in done.stderr
     assert not out.exists()
+
+
+def test_a_worker_started_with_malloc_trim_threshold_takes_image_buffers_from_the_heap_again():
+    """Dask's nanny sets MALLOC_TRIM_THRESHOLD_, which turns glibc's adaptive mmap threshold off (1.6x the time
+    per pair); the task raises the threshold once per worker process, and leaves other processes alone."""
+    probe = "from signmapper_core.cluster_task import heap_for_images; print(heap_for_images(), heap_for_images())"
+    env = {**os.environ, "PYTHONPATH": str(REPO)}
+    env.pop("MALLOC_TRIM_THRESHOLD_", None)
+    plain = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, env=env, check=True)
+    nanny = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True,
+                           env={**env, "MALLOC_TRIM_THRESHOLD_": "65536"})
+    assert plain.stdout.split() == ["False", "False"]
+    assert nanny.stdout.split() == ["True", "True"]
