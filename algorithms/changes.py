@@ -277,6 +277,8 @@ class ChangesAlgorithm(SignMapperAlgorithm):
             inventory, described = self.inventory_from_signalo(parameters, context, drive_crs, catalogue, feedback)
         mapped = []
         for values, xyz in read_signs(layer, drive_crs, context):
+            if values.get("plate_of") is not None:
+                continue  # a supplementary plate is compared with its sign, not as a sign of its own
             box = tuple(values[k] for k in ("bbox_x", "bbox_y", "bbox_w", "bbox_h"))
             mapped.append(MappedSign(values["sign_id"], values["template_id"] or "", np.array(xyz, float),
                                      values["status"] or "", values["azimuth"], values["best_pair_id"] or "",

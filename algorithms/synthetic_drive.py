@@ -127,7 +127,8 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
     def truth_sink(self, parameters, context, crs) -> TruthLayer | None:
         fields = QgsFields()
         for name, kind in (("sign_id", QVariant.String), ("template_id", QVariant.String),
-                           ("width_m", QVariant.Double), ("height_m", QVariant.Double), ("facing", QVariant.Double)):
+                           ("width_m", QVariant.Double), ("height_m", QVariant.Double), ("facing", QVariant.Double),
+                           ("plate_of", QVariant.String), ("text", QVariant.String)):
             fields.append(QgsField(name, kind))
         sink, dest = self.parameterAsSink(parameters, self.TRUTH, context, fields, QgsWkbTypes.PointZ,
                                           QgsCoordinateReferenceSystem(crs))
@@ -154,7 +155,8 @@ class TruthLayer:
         for sign in signs:
             feature = QgsFeature(self.fields)
             feature.setGeometry(QgsGeometry(QgsPoint(sign.easting, sign.northing, sign.height)))
-            feature.setAttributes([sign.sign_id, sign.template_id, sign.width_m, sign.height_m, sign.facing])
+            feature.setAttributes([sign.sign_id, sign.template_id, sign.width_m, sign.height_m, sign.facing,
+                                   sign.plate_of or None, sign.text or None])
             if not self.sink.addFeature(feature, QgsFeatureSink.FastInsert):
                 raise QgsProcessingException(f"{self.dest}: cannot write the ground truth signs")
 

@@ -20,6 +20,7 @@ their default style.
 from __future__ import annotations
 
 import base64
+from types import SimpleNamespace
 
 from qgis.core import (
     QgsCategorizedSymbolRenderer,
@@ -46,6 +47,7 @@ from ..signmapper_core import output_schema as schema
 from ..signmapper_core.catalogue.families import by_family, family_name
 from ..signmapper_core.catalogue.names import sign_name
 from ..signmapper_core.output_schema import DETECTIONS, MANUAL, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
+from ..signmapper_core.plate_formats import PLATE_ID, PLATE_NAMES
 
 PICTOGRAM_MM = 7.0
 REJECTED_OPACITY = 35  # percent: a rejected sign stays visible, faded under its cross
@@ -178,6 +180,10 @@ def signs_renderer(catalogue, language: str = "en") -> QgsRuleBasedRenderer:
                 sign_symbol(face), 0, 0, f'"template_id" = {_quoted(entry.id)}',
                 f"{entry.id} {sign_name(entry, language)}"))
         root.appendChild(group)
+    plates = QgsRuleBasedRenderer.Rule(
+        sign_symbol(_plain_layer(SimpleNamespace(shape="rectangle", colour="white"), PICTOGRAM_MM)), 0, 0,
+        f'"template_id" = {_quoted(PLATE_ID)}', PLATE_NAMES.get(language, PLATE_NAMES["en"]))
+    root.appendChild(plates)
     fallback = QgsMarkerSymbol.createSimple({"name": "circle", "color": "#d52b1e", "size": "3"})
     other = QgsRuleBasedRenderer.Rule(fallback, 0, 0, "", "other")
     other.setIsElse(True)

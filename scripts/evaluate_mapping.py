@@ -10,7 +10,9 @@ detected when at least one detection lies within the matching radius, correctly
 classified when the majority of its detections carry its template id), and the
 fused signs (one feature per physical sign; duplicates = reference signs matched
 by more than one fused sign). Signs in status "review" count like accepted ones;
-the review step decides on them.
+the review step decides on them. Supplementary plates have rows of their own
+(``plate_evaluation``): detected, linked to the right sign, text exactly right
+for plates at least 40 px high.
 """
 
 from __future__ import annotations
@@ -30,6 +32,8 @@ from signmapper_core.drive import open_drive  # noqa: E402
 from signmapper_core.evaluation import combine_reports, evaluate, format_report  # noqa: E402
 from signmapper_core.mapping import map_drive  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
+from signmapper_core.plate_evaluation import PlateFigures, evaluate_plates  # noqa: E402
+from signmapper_core.plate_fusion import is_plate  # noqa: E402
 from signmapper_core.visibility import mappable_signs  # noqa: E402
 
 
@@ -91,6 +95,7 @@ def main(argv=None) -> int:
     all_azimuth_errors = []
     accepted_total, accepted_wrong, accepted_unmatched = 0, 0, 0
     total_pairs, total_seconds = 0, 0.0
+    plate_totals = PlateFigures()
     for folder in folders:
         drive = open_drive(folder, require_truth=True)
         reference = mappable_signs(drive, args.near, args.far)
@@ -99,19 +104,26 @@ def main(argv=None) -> int:
         start = time.perf_counter()
         result = map_drive(drive, catalogue, config, warn_skipped=lambda message: print(message, file=sys.stderr),
                            workers=args.workers)
-        signs, seconds = result.signs, time.perf_counter() - start  # wall clock: workers map side by side
+        seconds = time.perf_counter() - start  # wall clock: workers map side by side
+        signs = [s for s in result.signs if s.plate_of is None]  # plates have their own rows
+        sign_detections = [o for o in result.detections if not is_plate(o)]
         head = f"== {folder} ({len(drive.pairs)} pairs, {len(result.skipped)} skipped, " \
                f"{len(drive.pairs) / max(seconds, 1e-9):.2f} pairs/s)"
-        for kind, items in (("detections", result.detections), ("signs", signs)):
+        for kind, items in (("detections", sign_detections), ("signs", signs)):
             report = evaluate(*positions_ids(items), ref_xyz, ref_ids, traj, args.radius)
             reports[kind].append(report)
             if kind == "signs":
+                plates = evaluate_plates(drive, result.signs, reference, report.match, args.near, args.far,
+                                         args.radius)
+                plate_totals = plates + plate_totals
                 all_azimuth_errors += azimuth_errors(signs, reference, report)
                 n, wrong, unmatched = accepted_but_wrong(signs, reference, report)
                 accepted_total, accepted_wrong, accepted_unmatched = (accepted_total + n, accepted_wrong + wrong,
                                                                       accepted_unmatched + unmatched)
             print(format_report(report, f"{head}: {'per-pair detections' if kind == 'detections' else 'fused signs'}"))
             print()
+        print("\n".join(plates.lines(f"{head}: supplementary plates")))
+        print()
         total_pairs += len(drive.pairs)
         total_seconds += seconds
     print(f"Fused signs with status accepted ({result.classifier_name}, threshold "
@@ -128,6 +140,8 @@ def main(argv=None) -> int:
                                 f"== all {len(folders)} drives, {total_pairs} pairs, "
                                 f"{total_pairs / max(total_seconds, 1e-9):.2f} pairs/s: {kind}"))
             print()
+        print("\n".join(plate_totals.lines(f"== all {len(folders)} drives: supplementary plates")))
+        print()
     return 0
 
 

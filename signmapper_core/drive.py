@@ -34,6 +34,7 @@ from .progress import CancelCheck, ProgressCallback, check_cancelled, report
 FORMAT_ID = "stereo-drive/1"
 POSE_COLUMNS = ("id", "time", "easting", "northing", "height", "heading", "pitch", "roll")
 TRUTH_COLUMNS = ("sign_id", "template_id", "easting", "northing", "height", "width_m", "height_m", "facing")
+TRUTH_OPTIONAL = ("plate_of", "text")  # a supplementary plate's sign, and the text on a plate or panel
 CAMERA_KEYS = ("width", "height", "fx", "fy", "cx", "cy", "baseline_m")
 MAX_ANGLE_DEG = 1e9  # beyond this a double no longer resolves a microdegree: the value is not an angle
 
@@ -63,10 +64,16 @@ class TruthSign:
     width_m: float
     height_m: float
     facing: float
+    plate_of: str = ""  # a supplementary plate: the sign_id of its sign; "" for a sign
+    text: str = ""  # the text printed on a plate or panel, lines joined by " / "
 
     @property
     def position(self) -> np.ndarray:
         return np.array([self.easting, self.northing, self.height])
+
+    @property
+    def is_plate(self) -> bool:
+        return bool(self.plate_of)
 
 
 @dataclass
@@ -228,8 +235,9 @@ def _parse_float(path, line, name, text) -> float:
     return value
 
 
-def _read_csv_rows(path: Path, columns: tuple[str, ...]) -> Iterator[tuple[int, dict]]:
-    """Yield (line number, row) with every required column present and non-empty."""
+def _read_csv_rows(path: Path, columns: tuple[str, ...], optional: tuple[str, ...] = ()) -> Iterator[tuple[int, dict]]:
+    """Yield (line number, row) with every required column present and non-empty; ``optional`` columns are ""
+    where the header lacks them or the cell is empty."""
     if not path.is_file():
         raise DriveFormatError(path, "required file is missing")
     with open(path, newline="", encoding="utf-8-sig") as fh:
@@ -245,6 +253,7 @@ def _read_csv_rows(path: Path, columns: tuple[str, ...]) -> Iterator[tuple[int, 
             if col not in header:
                 raise DriveFormatError(path, f"header lacks required column; found {header}", line=1, field=col)
         index = {col: header.index(col) for col in columns}
+        extra = {col: header.index(col) for col in optional if col in header}
         while True:
             try:
                 raw = next(reader)
@@ -263,6 +272,7 @@ def _read_csv_rows(path: Path, columns: tuple[str, ...]) -> Iterator[tuple[int, 
                 if cell == "":
                     raise DriveFormatError(path, "value is empty", line=line, field=col)
                 row[col] = cell
+            row.update({col: extra.get(col) is not None and raw[extra[col]].strip() or "" for col in optional})
             yield line, row
 
 
@@ -365,7 +375,8 @@ def read_truth(path) -> list[TruthSign]:
     path = Path(path)
     signs = []
     seen: dict[str, int] = {}
-    for line, row in _read_csv_rows(path, TRUTH_COLUMNS):
+    plates = []
+    for line, row in _read_csv_rows(path, TRUTH_COLUMNS, TRUTH_OPTIONAL):
         if row["sign_id"] in seen:
             raise DriveFormatError(
                 path, f"sign_id {row['sign_id']!r} repeats line {seen[row['sign_id']]}", line=line, field="sign_id"
@@ -375,5 +386,11 @@ def read_truth(path) -> list[TruthSign]:
         for k in ("width_m", "height_m"):
             if nums[k] <= 0:
                 raise DriveFormatError(path, f"must be positive, found {row[k]}", line=line, field=k)
-        signs.append(TruthSign(row["sign_id"], row["template_id"], **nums))
+        signs.append(TruthSign(row["sign_id"], row["template_id"], **nums, plate_of=row["plate_of"], text=row["text"]))
+        if row["plate_of"]:
+            plates.append((line, row["plate_of"]))
+    for line, sign_id in plates:
+        if sign_id not in seen:
+            raise DriveFormatError(path, f"plate_of names sign_id {sign_id!r}, which no row has", line=line,
+                                   field="plate_of")
     return signs

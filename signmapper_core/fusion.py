@@ -111,6 +111,9 @@ class FusedSign:
     best: Observation  # the voter with the highest indicators: what the review shows first
     observations: list = field(default_factory=list)
     mount_height_m: Optional[float] = None  # lower edge above the road, set when mapping a drive
+    plate_of: Optional[int] = None  # a supplementary plate: the sign_id of its sign (plate_fusion)
+    text: Optional[str] = None  # a plate's text as read (lines joined by " / "), None when not read
+    text_confidence: Optional[float] = None  # 0..1: OCR confidence and agreement of its readings
 
     @property
     def name(self) -> str:

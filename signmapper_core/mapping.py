@@ -28,6 +28,7 @@ from .fusion import FusedSign, FusionConfig, Observation, azimuth_deg, fuse_obse
 from .mounting import camera_height_above_road, mounting_height
 from .output_schema import MANUAL, run_record
 from .pair_pool import worker_count
+from .plate_fusion import fuse_plates, is_plate, read_plate_texts
 from .plausibility import pair_warnings
 from .progress import CancelCheck, ProgressCallback, WarnCallback, check_cancelled, report, warn
 
@@ -207,7 +208,12 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
         raise MappingError(f"no pair could be mapped: {total} of {total} pairs skipped (first: pair "
                            f"{skipped[0].record.id}: {skipped[0].error})")
     report(progress, PAIRS_SHARE, f"Fusing {len(detections)} detections into signs")
-    signs = fuse_observations(detections, fusion)
+    signs = fuse_observations([o for o in detections if not is_plate(o)], fusion)
+    plates = fuse_plates(detections, signs, fusion)
+    if plates:
+        report(progress, PAIRS_SHARE, f"Reading the text of {len(plates)} supplementary plates")
+        read_plate_texts(plates, warn_skipped)
+    signs += plates
     set_mounting_heights(drive, signs)
     report(progress, 1.0, f"{len(detections)} detections fused into {len(signs)} signs")
     return MappingResult(drive, catalogue, config, detections, signs, skipped, seconds, load_seconds,

@@ -60,7 +60,10 @@ class OutputContext:
 
     def name(self, template_id: str, fallback: str) -> str:
         from .catalogue.names import sign_name
+        from .plate_formats import PLATE_ID, PLATE_NAMES
 
+        if template_id == PLATE_ID:
+            return PLATE_NAMES.get(self.language, PLATE_NAMES["en"])
         if self.catalogue is not None and template_id in self.catalogue:
             return sign_name(self.catalogue[template_id], self.language)
         return fallback
@@ -180,6 +183,15 @@ FIELDS = (
     Field("format", TEXT, "Standard format the measured size was rounded to (e.g. normal, large).",
           template=lambda entry, fmt, lang: fmt, **_both("format"),
           **_names("Format", "Format", "Format", "Formato")),
+    Field("plate_of", INTEGER, "A supplementary plate: the number of the sign it belongs to (signs.sign_id); empty "
+          "for a sign.", sign=lambda s: s.plate_of,
+          **_names("Plate of sign no.", "Zusatztafel zu Signal-Nr.", "Plaque du signal n°", "Tavola del segnale n.")),
+    Field("text", TEXT, "Text of a plate as read by OCR, normalised (\"200 m\", \"7–19 h\", \"Mo–Fr\"), lines "
+          "joined by ' / '; empty when not read (no Tesseract) or not a plate.", sign=lambda s: s.text,
+          **_names("Text", "Text", "Texte", "Testo")),
+    Field("text_confidence", REAL, "Confidence of the text, 0-1: OCR confidence of the readings that agree on it, "
+          "over all readings of the plate.", decimals=3, sign=lambda s: s.text_confidence,
+          **_names("Text confidence", "Textsicherheit", "Fiabilité du texte", "Affidabilità del testo")),
     Field("timestamp", TEXT, "Date and time (ISO 8601) of the pair the sign was seen best in (a detection: its "
           "pair); empty when drive.json does not state the drive's start_time.", contextual=True,
           sign=lambda s, ctx: ctx.timestamp(s.best.time), detection=lambda o, ctx: ctx.timestamp(o.time),

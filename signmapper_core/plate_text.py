@@ -5,7 +5,8 @@ distances ("200 m", "2 km"), times ("7–19 h"), weekday ranges ("Mo–Fr",
 "lu–ve"), exceptions ("ausgenommen Zubringerdienst", "excepté riverains",
 "eccetto bus"). Normalising makes one spelling of each: digits OCR mistook for
 letters in numbers, any dash between numbers or weekdays an en dash, a space
-before the unit, words close to the plates' vocabulary spelt as in it. Lines are
+before the unit (a time range always has its "h"), words close to the plates'
+vocabulary spelt as in it, stray symbols (a frame's edge read as "|") dropped. Lines are
 joined by " / " (the drive format's way of writing a plate's text).
 """
 
@@ -75,12 +76,15 @@ def _fix_days(text: str) -> str:
 
 def normalise_line(line: str) -> str:
     """One line of a plate in its one spelling (see the module docstring)."""
-    tokens = [_fix_word(_fix_number(t)) for t in line.split()]
+    # a token without a letter, digit or dash ("|", "=") is an edge of the frame or dirt, not print
+    tokens = [_fix_word(_fix_number(t)) for t in line.split() if any(c.isalnum() or c in "-–—" for c in t)]
     text = " ".join(tokens)
     text = re.sub(rf"(\d)\s*[{_DASHES}]\s*(\d)", rf"\1{EN_DASH}\2", text)  # 7 - 19 -> 7–19
     text = re.sub(r"(\d)\s*(km|m|h|Std)\b\.?", r"\1 \2", text)  # 200m -> 200 m, 19h -> 19 h
     text = re.sub(r"(\d)[.:](\d\d)\b", r"\1.\2", text)  # 7:30 -> 7.30 (Swiss clock times)
     text = _fix_days(text)
+    # a time range is followed by its unit: the one letter OCR made of a small "h" is that h
+    text = re.sub(rf"^(\d{{1,2}}(?:\.\d\d)?{EN_DASH}\d{{1,2}}(?:\.\d\d)?)(?:\s*[A-Za-z])?$", r"\1 h", text.strip())
     return re.sub(r"\s+", " ", text).strip(" .,;:")
 
 

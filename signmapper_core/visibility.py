@@ -31,14 +31,28 @@ def visible_in_pair(camera, pose, sign, near_m: float, far_m: float, max_face_an
     return cos_angle >= np.cos(np.radians(max_face_angle_deg))
 
 
-def mappable_signs(drive, near_m: float = 4.0, far_m: float = 14.0) -> list:
-    """Truth signs of ``drive`` seen face-on within the depth range in at least one pair."""
+def mappable_signs(drive, near_m: float = 4.0, far_m: float = 14.0, plates: bool = False) -> list:
+    """Truth signs of ``drive`` seen face-on within the depth range in at least one pair.
+
+    Supplementary plates (rows with ``plate_of``) are left out, or with ``plates`` only they are given.
+    """
     if not drive.truth:
         return []
     return [
         sign for sign in drive.truth
-        if any(visible_in_pair(drive.camera, rec.pose, sign, near_m, far_m) for rec in drive.pairs)
+        if sign.is_plate == plates
+        and any(visible_in_pair(drive.camera, rec.pose, sign, near_m, far_m) for rec in drive.pairs)
     ]
+
+
+def largest_view_px(drive, sign, near_m: float = 4.0, far_m: float = 14.0) -> float:
+    """Height in pixels of ``sign``'s face in the pair that sees it largest within the depth range (0 if none)."""
+    best = 0.0
+    for rec in drive.pairs:
+        if visible_in_pair(drive.camera, rec.pose, sign, near_m, far_m):
+            z = world_to_pixel(drive.camera, rec.pose, sign.position)[2]
+            best = max(best, drive.camera.fy * sign.height_m / z)
+    return best
 
 
 def densify(polyline_xy, step_m: float) -> np.ndarray:

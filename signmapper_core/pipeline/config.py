@@ -220,6 +220,22 @@ class PipelineConfig:
     hough_strong_ring_share: float = 0.5  # a Hough find whose ring is this much in full colour is a colour find
     # the colour step lost (an attachment spoiled its outline) and may be accepted; others stay at hough_max_status
 
+    # supplementary plates (pipeline/plates.py): white rectangles of a plate format right below or above a sign
+    find_plates: bool = True
+    plate_max_gap_m: float = 0.12  # between the sign's edge and the plate (both clamped to one pole)
+    plate_min_gap_m: float = 0.03  # a white region reaching further into the sign's box is part of its panel
+    plate_max_saturation: int = 60  # white and grey: a plate in shade is grey, never coloured
+    plate_min_value: int = 100  # floor of its brightness (Otsu's split of the window raises it in the sun)
+    plate_depth_tolerance_m: float = 0.3  # where depth is known, the plate lies in the sign's depth (or 5 %)
+    plate_close_m: float = 0.0  # closing before the holes are filled (0: none; a plate's thin frame must stay)
+    plate_frame_share: float = 0.075  # of a plate's height: its white margin and black frame line (inset)
+    plate_min_fill: float = 0.85  # of its box: a rectangle
+    plate_max_offset: float = 0.35  # centre off the sign's axis, share of the wider of the two
+    plate_size_tolerance: float = 0.2  # relative deviation from a plate format (PLATE_FORMATS)
+    plate_min_ink: float = 0.02  # share of dark pixels (text, pictogram, frame): a blank white region is no plate
+    plate_max_ink: float = 0.5
+    plate_accept_score: float = 0.8  # fill and fit to its format: above, the plate is "accepted"
+
     def __post_init__(self):
         if not 0 < self.near_m < self.far_m:
             raise ValueError(f"need 0 < near_m < far_m, got {self.near_m}, {self.far_m}")

@@ -29,6 +29,7 @@ from .hough import hough_scale, hough_segments, radius_range_px, ring_colour_sha
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
 from .planarity import segment_planarity
+from .plates import find_plates
 from .search_space import search_space_mask
 from .shape import IDEAL_FILL, catalogue_shapes, classify_shape, outline_shapes
 from .sizing import measure_segment, metric_size, round_to_format
@@ -325,7 +326,9 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
                 detections.append(det)
     with timer("hough"):
         detections += _hough_detections(pair, depth, search, detections)
-    return suppress_overlaps(detections, config.same_sign_max_iou)
+    signs = suppress_overlaps(detections, config.same_sign_max_iou)
+    with timer("plates"):  # a window around a click looks for the sign alone
+        return signs + (find_plates(pair, depth, signs) if pair.is_whole_image else [])
 
 
 def _hough_detections(pair: PairContext, depth: np.ndarray, search: np.ndarray,

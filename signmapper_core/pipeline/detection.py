@@ -36,3 +36,10 @@ class Detection:
     source: str = "colour"  # "colour" segmentation or "hough" fallback
     scores: Dict[str, float] = field(default_factory=dict)  # NCC per candidate template
     normal_world: Optional[np.ndarray] = None  # unit face normal (E, N, H) from the fitted plane, towards the camera
+    # a supplementary plate (pipeline/plates.py): the sign's detection it belongs to, and its image for OCR
+    plate_of: Optional[Detection] = None
+    crop: Optional[np.ndarray] = field(default=None, repr=False)
+
+    @property
+    def is_plate(self) -> bool:
+        return self.plate_of is not None

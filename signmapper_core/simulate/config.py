@@ -57,6 +57,9 @@ class SimulationConfig:
     face_marks: bool = True               # stickers and graffiti tags
     face_dents: bool = True               # dents and bends (mild non-planar warp)
     back_mounts: bool = True              # mounting rails and pole clamps on the backs of panels
+    # Supplementary plates (simulate/plate_layout.py): share of sign poles whose lowest sign carries one, with
+    # a text in German, French or Italian; > 0 also puts white text plates on façades as distractors.
+    plate_share: float = 0.5
     # Georeference.
     crs: str = "EPSG:2056"
     start_easting: float = 2600000.0
@@ -85,6 +88,7 @@ class SimulationConfig:
             (1 <= self.jpeg_quality <= 100, "jpeg_quality must be within 1..100"),
             (self.face_artwork in ("mixed", "procedural"), "face_artwork must be 'mixed' or 'procedural'"),
             (0.0 <= self.master_share <= 1.0, "master_share must be within 0..1"),
+            (0.0 <= self.plate_share <= 1.0, "plate_share must be within 0..1"),
         ]
         for ok, message in checks:
             if not ok:

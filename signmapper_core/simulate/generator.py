@@ -85,7 +85,7 @@ def make_scene(config: SimulationConfig, street: Street | None = None) -> Scene:
     realism = {"weathering": config.weathering, "shadows": config.shadows, "occlusion": config.occlusion}
     return build_scene(street, config.seed, float(s_cam[0]), float(s_cam[-1]), config.fx, config.sign_density,
                        config.distractor_density, sign_kinds(), realism,
-                       FaceOptions.from_config(config))
+                       FaceOptions.from_config(config), config.plate_share)
 
 
 def right_pose(pose: Pose, baseline_m: float) -> Pose:

@@ -7,16 +7,20 @@ from the vehicle are distractors (grey backs) and are not in the truth.
 
 The parts, each building one kind of thing onto the scene's :class:`~.scene_pieces.Pieces`:
 ``street_body`` (road, buildings, trees, lamp posts), ``sign_poles`` (panels, poles,
-occluders), ``distractors`` (cars, cones, shop signs, sign backs).
+occluders), ``plate_layout`` (supplementary plates, white text plates on façades),
+``distractors`` (cars, cones, shop signs, sign backs).
 """
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 import numpy as np
 
 from ..drive import TruthSign
 from .distractors import distractors
 from .faces import FaceOptions, SignKind
+from .plate_layout import white_distractors
 from .scene_pieces import CARRIAGEWAY, PARKING_LEFT, SIDEWALK_RIGHT, Pieces, TextureKeys
 from .sign_poles import PanelLook, PlacedSign, sign_pole
 from .street import Street
@@ -56,12 +60,15 @@ class Scene:
 
 def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float, fx: float,
                 sign_density: float, distractor_density: float, kinds: list[SignKind], realism: dict,
-                face_options: FaceOptions | None = None) -> Scene:
-    """Lay out the whole street: road, buildings, signs (where the drive passes them), distractors."""
+                face_options: FaceOptions | None = None, plate_share: float = 0.0) -> Scene:
+    """Lay out the whole street: road, buildings, signs (where the drive passes them), distractors.
+
+    ``plate_share``: share of the poles whose lowest sign carries a supplementary plate (``plate_layout``).
+    """
     keys = TextureKeys(seed)
     pieces = Pieces(street, keys)
     look = PanelLook(fx, face_options or FaceOptions(), realism["weathering"], realism["shadows"],
-                     realism["occlusion"])
+                     realism["occlusion"], plate_share)
     rng = keys.rng(1, 1)
     s_end = street.length
     # signs between 8 m ahead of the first pair and 12 m ahead of the last: each is seen within 4-14 m
@@ -98,16 +105,19 @@ def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float
     if distractor_density > 0:
         signs += distractors(pieces, look, s_cam_first, s_end - 10, distractor_density, keys.rng(1, 3), spots, kinds,
                              facades)
+        if plate_share > 0:
+            white_distractors(pieces, s_cam_first, s_end - 10, distractor_density / 2, keys.rng(1, 31), facades)
     _number_truth(signs)
     return Scene(street, pieces.surfaces, signs)
 
 
 def _number_truth(signs: list[PlacedSign]) -> None:
-    """Truth ids s001, s002, ... in the order the signs were placed."""
+    """Truth ids s001, s002, ... in the order the signs were placed; a plate names its sign's (``plate_of``)."""
     n = 0
     for p in signs:
         if p.truth is not None:
             n += 1
-            t = p.truth
-            p.truth = TruthSign(f"s{n:03d}", t.template_id, t.easting, t.northing, t.height, t.width_m, t.height_m,
-                                t.facing)
+            p.truth = replace(p.truth, sign_id=f"s{n:03d}")
+    for p in signs:
+        if p.truth is not None and p.host is not None:
+            p.truth = replace(p.truth, plate_of=p.host.truth.sign_id)

@@ -10,6 +10,7 @@ import numpy as np
 from ..drive import TruthSign
 from . import textures as tx
 from .faces import FaceOptions, SignKind, draw_sign_face, pick_format
+from .plate_layout import add_plate
 from .scene_pieces import CARRIAGEWAY, KERB_H, PARKING_LEFT, SIDEWALK_RIGHT, UP, Pieces
 from .surfaces import Surface, Texture, TextureSource, rect_surface
 
@@ -24,6 +25,7 @@ class PlacedSign:
     colour: str
     centre: np.ndarray
     surfaces: list[Surface] = field(default_factory=list)
+    host: PlacedSign | None = None  # a supplementary plate: the sign it hangs under
 
 
 @dataclass(frozen=True)
@@ -36,6 +38,7 @@ class PanelLook:
     weathering: bool
     shadows: bool
     occlusion: bool  # a branch or pole may stand in front of a sign
+    plate_share: float = 0.0  # share of poles whose lowest sign carries a supplementary plate (plate_layout)
 
 
 def face_shape(size_px: int, w_m: float, h_m: float) -> tuple[int, int]:
@@ -121,9 +124,12 @@ def sign_pole(pieces: Pieces, look: PanelLook, s, kinds, rng, side, form: str = 
         centres.append((second, fmt2, lower + h_m / 2 + gap))
     top = 0.0
     placed = []
-    for kind, f, h_c in centres:
+    for k, (kind, f, h_c) in enumerate(centres):
         centre = st.point(s, l_c, ground + h_c)
-        placed.append(sign_panel(pieces, look, kind, centre, facing, tilt + rng.uniform(-1, 1), f, s, not away))
+        panel_tilt = tilt + rng.uniform(-1, 1)
+        placed.append(sign_panel(pieces, look, kind, centre, facing, panel_tilt, f, s, not away))
+        if k == 0 and look.plate_share > 0:  # the lowest sign may carry a supplementary plate
+            placed += add_plate(pieces, look, placed[-1], centre, facing, panel_tilt, f, s)
         top = max(top, h_c + f[2] / 2)
     if form == "back-to-back":
         other = kinds[int(rng.integers(len(kinds)))]

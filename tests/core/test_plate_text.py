@@ -18,6 +18,8 @@ from signmapper_core.simulate.plate_faces import draw_plate
     ("Mo-Fr", "Mo–Fr"), ("mo - fr", "mo–fr"), ("lu-ve", "lu–ve"), ("Di~Sa", "Di–Sa"),
     ("ausgenomnen Zubringerdienst", "ausgenommen Zubringerdienst"), ("excepte riverains", "excepté riverains"),
     ("eccetto bus", "eccetto bus"), ("Schule.", "Schule"),
+    ("| 8-20 h", "8–20 h"), ("lu-sa =", "lu–sa"), ("6-18 F", "6–18 h"), ("7-19", "7–19 h"),
+    ("7.30-11.30", "7.30–11.30 h"),
 ])
 def test_normalised_spelling(read, meant):
     assert normalise_line(read) == meant
@@ -25,6 +27,7 @@ def test_normalised_spelling(read, meant):
 
 def test_words_that_are_not_days_or_numbers_keep_their_dash():
     assert normalise_line("Ab-Cd") == "Ab-Cd"  # no weekday pair
+    assert normalise_line("200 m") == "200 m" and normalise_line("Zone 30") == "Zone 30"  # no time range
     assert normalise_text(["Mo-Fr", "", " 7-19h "]) == "Mo–Fr / 7–19 h"
 
 

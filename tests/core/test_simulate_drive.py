@@ -9,6 +9,7 @@ import pytest
 from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive import open_drive
 from signmapper_core.geometry import world_to_pixel
+from signmapper_core.plate_formats import PLATE_FORMATS
 from signmapper_core.simulate import SimulationConfig, generate_drive, true_poses
 from signmapper_core.simulate.generator import right_pose
 
@@ -57,6 +58,9 @@ def test_truth_uses_catalogue_sizes_and_sign_colours(drive):
     summary, d = drive
     catalogue = load_catalogue()
     for sign in d.truth:
+        if sign.is_plate:  # supplementary plates: their own formats (test_simulate_plates.py)
+            assert (sign.width_m, sign.height_m) in PLATE_FORMATS.values() and sign.plate_of
+            continue
         entry = catalogue[sign.template_id]
         assert entry.colour in ("red", "blue", "yellow")
         assert any(abs(w - sign.width_m) < 1e-3 and abs(h - sign.height_m) < 1e-3 for w, h in entry.formats.values())
@@ -77,7 +81,10 @@ def test_truth_centres_project_onto_sign_pixels(drive):
             ui, vi = int(round(float(u))), int(round(float(v)))
             window = img[max(0, vi - r):vi + r + 1, max(0, ui - r):ui + r + 1]
             checks += 1
-            hits += colour_fraction(window, catalogue[sign.template_id].colour) > 0.1
+            if sign.is_plate:  # white, with black text
+                hits += float(np.median(window)) > 150
+            else:
+                hits += colour_fraction(window, catalogue[sign.template_id].colour) > 0.1
             depth_hits += abs(float(depth[vi, ui]) - float(z)) < 0.05
     assert checks >= 5
     assert hits >= 0.8 * checks

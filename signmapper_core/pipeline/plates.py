@@ -1,0 +1,162 @@
+"""Supplementary plates: a white rectangle of a standard plate size right below (or above) a detected sign.
+
+A step after detection: it takes the pair, its depth map and the signs found in
+it, and looks only around each sign, on the same support. A plate is a bright,
+unsaturated region (its black text and frame closed over), as wide as a plate
+format at the sign's depth, within a few centimetres of the sign's lower (or
+upper) edge and centred under it. Where the depth map covers it, the region must
+lie in the sign's depth (a white wall behind is not a plate); where it does not
+(stereo matching runs only around colour candidates), the plate is taken to be
+in the sign's plane, as it is mounted on the same pole. Each plate is a
+:class:`Detection` with ``plate_of`` = its sign's detection and the crop its text
+is read from after fusion (``plate_fusion``).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import List, Optional, Sequence
+
+import cv2
+import numpy as np
+
+from ..plate_formats import PLATE_FORMATS, PLATE_ID, PLATE_NAMES
+from .detection import Detection
+from .locate import bbox_centre, locate
+from .pair_context import PairContext
+
+BELOW, ABOVE = 1, -1
+
+
+def nearest_plate_format(width_m: float, height_m: float, tolerance: float):
+    """(format name, (width_m, height_m), relative error) of the nearest plate format, or None beyond ``tolerance``."""
+    best = None
+    for name, (w, h) in PLATE_FORMATS.items():
+        error = max(abs(math.log(width_m / w)), abs(math.log(height_m / h)))
+        if best is None or error < best[2]:
+            best = (name, (w, h), error)
+    return best if best is not None and best[2] <= math.log(1.0 + tolerance) else None
+
+
+def white_mask(bgr: np.ndarray, max_saturation: int, min_value: int) -> np.ndarray:
+    """Bright unsaturated pixels, the floor raised to Otsu's split of the window's brightness where that is higher
+    (a plate in the sun against a pale sky)."""
+    hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
+    value = hsv[:, :, 2]
+    otsu, _ = cv2.threshold(value, 0, 255, cv2.THRESH_BINARY + cv2.THRESH_OTSU)
+    floor = max(min_value, int(otsu))
+    return ((hsv[:, :, 1] <= max_saturation) & (value >= floor)).astype(np.uint8)
+
+
+def _filled(mask: np.ndarray, close_px: int) -> np.ndarray:
+    """The mask with its letters and frame closed over and its holes filled: the plate's outline."""
+    if close_px > 1:
+        mask = cv2.morphologyEx(mask, cv2.MORPH_CLOSE, cv2.getStructuringElement(cv2.MORPH_RECT, (close_px, close_px)))
+    contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_SIMPLE)
+    filled = np.zeros_like(mask)
+    cv2.drawContours(filled, contours, -1, 1, thickness=cv2.FILLED)
+    return filled
+
+
+def _clipped(box, shape):
+    x, y, w, h = box
+    x0, y0 = max(0, x), max(0, y)
+    return x0, y0, min(shape[1], x + w) - x0, min(shape[0], y + h) - y0
+
+
+def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int, touch_px: float):
+    """(score 0..1, plate format) of a box read as a plate of ``sign``, or None where it cannot be one."""
+    config, camera = pair.config, pair.camera
+    x, y, w, h = sign.bbox
+    bx, by, bw, bh = box
+    px_per_m = camera.fy / z
+    gap_px = (by - (y + h)) if side == BELOW else (y - (by + bh))
+    if not -touch_px <= gap_px <= config.plate_max_gap_m * px_per_m:
+        return None  # reaching into the sign (its panel's white), or too far from it
+    if abs(bx + bw / 2.0 - (x + w / 2.0)) > config.plate_max_offset * max(w, bw):
+        return None
+    fmt = nearest_plate_format(bw * z / camera.fx, bh * z / camera.fy, config.plate_size_tolerance)
+    if fmt is None:
+        return None
+    cx, cy, cw, ch = _clipped(box, pair.left.shape)
+    if cw < 4 or ch < 4:
+        return None
+    grey = cv2.cvtColor(pair.left[cy:cy + ch, cx:cx + cw], cv2.COLOR_BGR2GRAY)
+    ink = float(np.mean(grey < 0.6 * np.median(grey)))  # text, pictogram and frame
+    if not config.plate_min_ink <= ink <= config.plate_max_ink:
+        return None
+    return 1.0 - min(fmt[2] / math.log(1.0 + config.plate_size_tolerance), 1.0) * 0.5, fmt
+
+
+def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: int) -> Optional[Detection]:
+    """The plate right below (``side`` BELOW) or above (ABOVE) one sign, or None."""
+    config, camera = pair.config, pair.camera
+    z = float(sign.depth_m)
+    if not np.isfinite(z) or z <= 0:
+        return None
+    x, y, w, h = sign.bbox
+    px_per_m = camera.fy / z
+    largest_h = max(ph for _, ph in PLATE_FORMATS.values()) * (1.0 + config.size_tolerance)
+    largest_w = max(pw for pw, _ in PLATE_FORMATS.values()) * (1.0 + config.size_tolerance)
+    reach = int(round((config.plate_max_gap_m + largest_h) * px_per_m))
+    half_w = int(round(max(largest_w * camera.fx / z, w) / 2 + 2))
+    cu = x + w / 2.0
+    height, width = pair.left.shape[:2]
+    x0, x1 = max(0, int(cu - half_w)), min(width, int(cu + half_w))
+    # the window holds the sign too: a white region that goes on into the sign's box is part of its panel
+    y0, y1 = (y, y + h + reach) if side == BELOW else (y - reach, y + h)
+    y0, y1 = max(0, y0), min(height, y1)
+    touch_px = max(2.0, config.plate_min_gap_m * px_per_m)
+    if x1 - x0 < 8 or y1 - y0 < 8:
+        return None
+    window = pair.left[y0:y1, x0:x1]
+    mask = white_mask(window, config.plate_max_saturation, config.plate_min_value)
+    near = depth[y0:y1, x0:x1]
+    elsewhere = np.isfinite(near) & (np.abs(near - z) > max(config.plate_depth_tolerance_m, 0.05 * z))
+    mask[elsewhere] = 0
+    filled = _filled(mask, int(round(config.plate_close_m * px_per_m)) | 1)
+    count, _labels, stats, _ = cv2.connectedComponentsWithStats(filled, connectivity=4)
+    best = None
+    for k in range(1, count):
+        bx, by, bw, bh, area = (int(v) for v in stats[k])
+        far_edge_cut = by + bh >= y1 - y0 if side == BELOW else by == 0
+        if bw < 6 or bh < 4 or bx == 0 or bx + bw >= x1 - x0 or far_edge_cut:
+            continue  # cut by the window: part of something larger (a wall, the sky)
+        fill = area / float(bw * bh)
+        if fill < config.plate_min_fill:
+            continue
+        # the region is the whole plate, or the inside of its black frame (its white margin lost in a white
+        # wall behind it, or in the sky): then the plate is that much larger
+        grow = config.plate_frame_share / (1.0 - 2.0 * config.plate_frame_share)
+        for margin in (0.0, grow * bh):
+            box = (int(round(bx + x0 - margin)), int(round(by + y0 - margin)), int(round(bw + 2 * margin)),
+                   int(round(bh + 2 * margin)))
+            reading = _plate_reading(pair, sign, box, z, side, touch_px)
+            if reading is not None and (best is None or fill * reading[0] > best[0]):
+                best = (fill * reading[0], box, reading[1], fill)
+    if best is None:
+        return None
+    score, box, (name, (pw, ph), _), fill = best
+    box = _clipped(box, pair.left.shape)
+    u, v = bbox_centre(box)
+    bx, by, bw, bh = box
+    return Detection(
+        template_id=PLATE_ID, name=PLATE_NAMES["de"], colour="white", shape="rectangle", width_m=pw, height_m=ph,
+        format=name, detection_indicator=float(fill), classification_indicator=float(score),
+        status="accepted" if score >= config.plate_accept_score else "review", u=u, v=v, bbox=box, depth_m=z,
+        position=locate(camera, pair.pose, u, v, z), source="plate", normal_world=sign.normal_world,
+        plate_of=sign, crop=np.ascontiguousarray(pair.left[by:by + bh, bx:bx + bw]),
+    )
+
+
+def find_plates(pair: PairContext, depth: np.ndarray, signs: Sequence[Detection]) -> List[Detection]:
+    """The plates of the detected signs: at most one below and one above each."""
+    if not pair.config.find_plates:
+        return []
+    plates = []
+    for sign in signs:
+        for side in (BELOW, ABOVE):
+            plate = plates_of_sign(pair, depth, sign, side)
+            if plate is not None:
+                plates.append(plate)
+    return plates

@@ -1,0 +1,87 @@
+"""How well a run mapped the supplementary plates of a drive with ground truth: their own rows.
+
+A reference plate (truth row with ``plate_of``) counts when it was in view within
+the depth range (:func:`visibility.mappable_signs`). It is detected when a mapped
+plate lies within the matching radius; its link is right when that mapped plate's
+sign (``plate_of``) is the mapped sign matched to the reference plate's sign; its
+text is right when it equals the reference text exactly. Text is judged on the
+plates that were at least ``min_text_px`` high in the pair that saw them largest.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+
+import numpy as np
+
+from .evaluation import match_to_reference
+from .visibility import largest_view_px, mappable_signs
+
+MIN_TEXT_PX = 40.0
+
+
+@dataclass
+class PlateFigures:
+    reference: int = 0  # plates in view
+    detected: int = 0
+    mapped: int = 0  # mapped plate features
+    false_positives: int = 0  # mapped plates matching no reference plate
+    duplicates: int = 0  # reference plates matched by more than one mapped plate
+    links_right: int = 0  # of the detected
+    readable: int = 0  # reference plates >= min_text_px high
+    readable_detected: int = 0
+    texts_right: int = 0  # of the readable ones: text exactly right
+    texts_read: int = 0  # of the readable detected ones: any text
+
+    def __add__(self, other: PlateFigures) -> PlateFigures:
+        return PlateFigures(*(getattr(self, f.name) + getattr(other, f.name) for f in fields(self)))
+
+    def lines(self, title: str = "") -> list[str]:
+        def share(n, of):
+            return f"{n} of {of} ({100.0 * n / of:.1f} %)" if of else f"{n} (none to count)"
+
+        return [title or "Supplementary plates",
+                f"  reference plates in view        {self.reference}",
+                f"  detected                        {share(self.detected, self.reference)}",
+                f"  linked to the right sign        {share(self.links_right, self.detected)} detected",
+                f"  mapped plate features           {self.mapped}",
+                f"  false positive plates           {self.false_positives}",
+                f"  reference plates with >1 plate  {self.duplicates}",
+                f"  plates >= {MIN_TEXT_PX:.0f} px high           {self.readable} ({self.readable_detected} detected)",
+                f"  text exactly right              {share(self.texts_right, self.readable)} of those >= "
+                f"{MIN_TEXT_PX:.0f} px ({share(self.texts_right, self.readable_detected)} of the detected)"]
+
+
+def evaluate_plates(drive, signs, sign_reference, sign_match, near_m: float = 4.0, far_m: float = 14.0,
+                    radius_m: float = 0.75, min_text_px: float = MIN_TEXT_PX) -> PlateFigures:
+    """Plate figures of one run.
+
+    ``signs``: every fused feature of the run (signs and plates); ``sign_reference``
+    and ``sign_match``: the reference signs the non-plate features were evaluated
+    against and, per non-plate feature in the order of ``signs``, the index of its
+    reference sign or -1 (``EvaluationReport.match``).
+    """
+    reference = mappable_signs(drive, near_m, far_m, plates=True)
+    mapped = [s for s in signs if s.plate_of is not None]
+    sign_truth = {}
+    for sign, ref in zip((s for s in signs if s.plate_of is None), sign_match):
+        sign_truth[sign.sign_id] = sign_reference[ref].sign_id if ref >= 0 else None
+    figures = PlateFigures(reference=len(reference), mapped=len(mapped))
+    match = match_to_reference(np.array([p.position for p in mapped]).reshape(-1, 3),
+                               np.array([r.position for r in reference]).reshape(-1, 3), radius_m)
+    figures.false_positives = int((match < 0).sum())
+    for k, ref in enumerate(reference):
+        found = [mapped[i] for i in np.flatnonzero(match == k)]
+        readable = largest_view_px(drive, ref, near_m, far_m) >= min_text_px
+        figures.readable += readable
+        if not found:
+            continue
+        figures.detected += 1
+        figures.duplicates += len(found) > 1
+        best = max(found, key=lambda p: p.n_obs)
+        figures.links_right += sign_truth.get(best.plate_of) == ref.plate_of
+        if readable:
+            figures.readable_detected += 1
+            figures.texts_read += best.text is not None
+            figures.texts_right += best.text == ref.text
+    return figures

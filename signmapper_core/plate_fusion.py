@@ -1,0 +1,110 @@
+"""Supplementary plates across pairs: one feature per physical plate, linked to its sign, with its text.
+
+The plates found in each pair (``pipeline/plates.py``) are fused like signs
+(the same tracks, gates and robust position, :mod:`fusion`), after the signs,
+so each plate is linked to the fused sign its observations' signs went into
+(by weighted vote: ``plate_of``). Its text is then read from the crops of its
+nearest observations, all plates of a run in one OCR call, and decided by vote
+over what was read (normalised, :mod:`plate_text`); the text confidence is the
+winner's summed OCR confidence over all readings of that plate. Without
+Tesseract the plates are mapped without text, and the run says once how to
+install it.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from typing import Callable, Optional, Sequence
+
+from .fusion import FusedSign, FusionConfig, Observation, _merge_tracks, build_tracks, fuse_track
+from .ocr import OcrError, OcrUnavailable, read_texts
+from .plate_text import normalise_text
+from .progress import WarnCallback, warn
+
+READINGS_PER_PLATE = 3  # the nearest observations' crops are read: more add time, rarely a better text
+
+
+def is_plate(observation: Observation) -> bool:
+    return getattr(observation.detection, "plate_of", None) is not None
+
+
+def fuse_plates(observations: Sequence[Observation], signs: Sequence[FusedSign],
+                config: Optional[FusionConfig] = None) -> list[FusedSign]:
+    """One :class:`FusedSign` per physical plate (``plate_of`` = its sign's id), numbered after ``signs``.
+
+    ``observations``: every observation of the run (signs and plates); the signs'
+    ``sign_id`` must be set (:func:`fusion.fuse_observations`). Each plate
+    observation's ``sign_id`` is set to its plate.
+    """
+    config = config or FusionConfig()
+    sign_of = {id(o.detection): o.sign_id for o in observations if not is_plate(o)}
+    plates = [o for o in observations if is_plate(o)]
+    tracks = _merge_tracks(build_tracks(plates, config), config)
+    tracks.sort(key=lambda t: (t[0].pair_index, t[0].position[0], t[0].position[1]))
+    first = max((s.sign_id for s in signs), default=0) + 1
+    fused = []
+    for number, track in enumerate(tracks, start=first):
+        plate = fuse_track(number, track, config)
+        votes = defaultdict(float)
+        for obs in track:
+            host = sign_of.get(id(obs.detection.plate_of))
+            if host is not None:
+                votes[host] += max(obs.detection_indicator * obs.classification_indicator, 1e-3)
+        plate.plate_of = max(votes, key=votes.get) if votes else None
+        for obs in track:
+            obs.sign_id = number
+        fused.append(plate)
+    return fused
+
+
+def reading_crops(plate: FusedSign, per_plate: int = READINGS_PER_PLATE) -> list:
+    """The crops its text is read from: those of its ``per_plate`` largest (nearest) observations."""
+    seen = sorted((o for o in plate.observations if getattr(o.detection, "crop", None) is not None),
+                  key=lambda o: o.bbox[3], reverse=True)
+    return [o.detection.crop for o in seen[:per_plate]]
+
+
+def vote_text(readings) -> tuple[Optional[str], Optional[float]]:
+    """(text, confidence) of one plate from its readings: the normalised text with the largest summed OCR
+    confidence; confidence = that sum over the number of readings. (None, None) when nothing was read."""
+    weights = defaultdict(float)
+    for reading in readings:
+        text = normalise_text(reading.lines)
+        if text:
+            weights[text] += reading.confidence
+    if not weights:
+        return None, None
+    text = max(weights, key=weights.get)
+    return text, weights[text] / len(readings)
+
+
+def read_plate_texts(plates: Sequence[FusedSign], warn_callback: Optional[WarnCallback] = None,
+                     read: Callable = read_texts) -> int:
+    """Set each plate's ``text`` and ``text_confidence``; returns the number of plates with a text.
+
+    One OCR run for all plates. Without Tesseract (or when it fails) the plates keep
+    no text and ``warn_callback`` hears once why and how to install it.
+    """
+    owners, crops = [], []
+    for k, plate in enumerate(plates):
+        for crop in reading_crops(plate):
+            owners.append(k)
+            crops.append(crop)
+    if not crops:
+        return 0
+    try:
+        readings = read(crops)
+    except OcrUnavailable as exc:
+        warn(warn_callback, f"{len(plates)} supplementary plates mapped without their text: {exc}")
+        return 0
+    except OcrError as exc:
+        warn(warn_callback, f"{len(plates)} supplementary plates mapped without their text: {exc}")
+        return 0
+    by_plate = defaultdict(list)
+    for k, reading in zip(owners, readings):
+        by_plate[k].append(reading)
+    done = 0
+    for k, plate in enumerate(plates):
+        plate.text, plate.text_confidence = vote_text(by_plate.get(k, []))
+        done += plate.text is not None
+    return done

@@ -1,0 +1,212 @@
+"""Supplementary plates: found under (or over) a detected sign, fused across pairs, linked, their text read."""
+
+from __future__ import annotations
+
+import cv2
+import numpy as np
+import pytest
+from pipeline_scenes import noisy_background, paste
+
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.drive import TruthSign, open_drive
+from signmapper_core.drive_writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
+from signmapper_core.evaluation import evaluate
+from signmapper_core.geometry import Camera, Pose, world_to_pixel
+from signmapper_core.mapping import map_drive
+from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable
+from signmapper_core.pipeline import PipelineConfig, detect_pair
+from signmapper_core.plate_evaluation import evaluate_plates
+from signmapper_core.plate_formats import PLATE_ID
+from signmapper_core.plate_fusion import read_plate_texts
+from signmapper_core.simulate.plate_faces import draw_plate
+from signmapper_core.visibility import mappable_signs
+
+CAMERA = Camera(width=960, height=600, fx=1750.0, fy=1750.0, cx=479.5, cy=299.5, baseline_m=0.9)
+HEADING = 90.0  # driving east: forward = +E, right = -N, up = +H
+START = np.array([2600000.0, 1200000.0, 400.0])
+
+
+def pose_at(ahead_m: float) -> Pose:
+    return Pose(*(START + [ahead_m, 0.0, 0.0]), HEADING, 0.0, 0.0)
+
+
+def sign_world(ahead, right, up):
+    return START + np.array([ahead, -right, up])
+
+
+@pytest.fixture(scope="module")
+def catalogue():
+    return load_catalogue()
+
+
+def _quad(world_centre, width_m, height_m, pose):
+    """Pixel box (x, y, w, h) of a face of that size centred at ``world_centre``, facing the camera."""
+    u, v, z = world_to_pixel(CAMERA, pose, world_centre)
+    w, h = int(round(width_m * CAMERA.fx / z)), int(round(height_m * CAMERA.fy / z))
+    return int(round(u - (w - 1) / 2)), int(round(v - (h - 1) / 2)), w, h, float(z)
+
+
+def scene(catalogue, pose, plate_lines=("200 m",), plate_size=(0.60, 0.20), gap_m=0.04, above=False,
+          plate_depth_offset=0.0, seed=0, sign_id="2.30-50", sign_centre=None):
+    """(left, depth, plate box) of a 0.60 m sign with a plate right below (or above) it, depth given."""
+    centre = sign_world(7.0, 1.3, 0.5) if sign_centre is None else sign_centre
+    left = noisy_background(CAMERA.height, CAMERA.width, seed=seed)
+    depth = np.full((CAMERA.height, CAMERA.width), 25.0, np.float32)  # a wall far behind
+    x, y, w, h, z = _quad(centre, 0.60, 0.60, pose)
+    bgr, alpha = catalogue.render(sign_id, (w, h))
+    paste(left, bgr, alpha, x, y)
+    depth[y:y + h, x:x + w][alpha > 127] = z
+    box = None
+    if plate_lines is not None:
+        pw_m, ph_m = plate_size
+        offset = (0.30 + gap_m + ph_m / 2) * (1 if above else -1)
+        px, py, pw, ph, pz = _quad(centre + [0, 0, offset], pw_m, ph_m, pose)
+        plate = cv2.resize(draw_plate(list(plate_lines), pw * 4, ph * 4), (pw, ph), interpolation=cv2.INTER_AREA)
+        left[py:py + ph, px:px + pw] = plate
+        depth[py:py + ph, px:px + pw] = pz + plate_depth_offset
+        box = (px, py, pw, ph)
+    return left, depth, box
+
+
+def _detect(catalogue, left, depth, pose):
+    return detect_pair(left, depth, None, CAMERA, pose, catalogue, PipelineConfig())
+
+
+def _iou(a, b):
+    ax, ay, aw, ah = a
+    bx, by, bw, bh = b
+    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
+    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
+    return iw * ih / float(aw * ah + bw * bh - iw * ih)
+
+
+def test_a_plate_below_a_sign_is_found_and_linked_to_it(catalogue):
+    pose = pose_at(0.0)
+    left, depth, box = scene(catalogue, pose)
+    found = _detect(catalogue, left, depth, pose)
+    signs = [d for d in found if not d.is_plate]
+    plates = [d for d in found if d.is_plate]
+    assert [d.template_id for d in signs] == ["2.30-50"]
+    (plate,) = plates
+    assert plate.plate_of is signs[0]
+    assert plate.template_id == PLATE_ID and plate.format == "normal-1"
+    assert (plate.width_m, plate.height_m) == (0.60, 0.20)
+    assert _iou(plate.bbox, box) > 0.8
+    expected = sign_world(7.0, 1.3, 0.5 - 0.30 - 0.04 - 0.10)
+    assert np.linalg.norm(plate.position - expected) < 0.05
+    assert plate.crop.shape[:2] == (plate.bbox[3], plate.bbox[2])
+
+
+def test_a_two_line_plate_above_a_sign_is_found(catalogue):
+    pose = pose_at(0.0)
+    left, depth, box = scene(catalogue, pose, plate_lines=("Mo–Fr", "7–19 h"), plate_size=(0.60, 0.30), above=True)
+    (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
+    assert plate.format == "normal-2" and _iou(plate.bbox, box) > 0.8
+    assert plate.position[2] > plate.plate_of.position[2] + 0.4
+
+
+@pytest.mark.parametrize("what, kwargs", [
+    ("a white panel 1 m behind the sign's plane", dict(plate_depth_offset=1.0)),
+    ("a white strip of no plate size", dict(plate_size=(1.20, 0.20))),
+    ("a blank white rectangle", dict(plate_lines=("",))),
+    ("a plate 0.4 m below the sign", dict(gap_m=0.40)),
+    ("no plate", dict(plate_lines=None)),
+])
+def test_what_is_not_a_plate_of_the_sign(catalogue, what, kwargs):
+    pose = pose_at(0.0)
+    left, depth, _ = scene(catalogue, pose, **kwargs)
+    if kwargs.get("plate_lines", 1) == ("",):  # no frame either: only white
+        left, depth, box = scene(catalogue, pose, plate_lines=None)
+        box = _quad(sign_world(7.0, 1.3, 0.5 - 0.44), 0.60, 0.20, pose)[:4]
+        x, y, w, h = box
+        left[y:y + h, x:x + w] = 240
+    found = _detect(catalogue, left, depth, pose)
+    assert [d.template_id for d in found if not d.is_plate] == ["2.30-50"], what
+    assert [d for d in found if d.is_plate] == [], what
+
+
+def _write_drive(root, catalogue, lines=("200 m",), n=3):
+    write_drive_json(root, "EPSG:2056", CAMERA, software="tests")
+    poses = [(f"{i:06d}", 0.2 * i, pose_at(0.5 * i)) for i in range(n)]
+    write_poses_csv(root, poses)
+    for i, (pair_id, _t, pose) in enumerate(poses):
+        left, depth, _ = scene(catalogue, pose, plate_lines=lines, seed=i,
+                               sign_centre=sign_world(8.0, 1.3, 0.5))
+        write_pair(root, pair_id, left, None, depth, image_suffix=".png", depth_suffix=".npy")
+    centre = sign_world(8.0, 1.3, 0.5)
+    facing = (HEADING + 180.0) % 360.0
+    plate = centre + [0.0, 0.0, -(0.30 + 0.04 + 0.10)]
+    write_truth_csv(root, [TruthSign("s1", "2.30-50", *centre, 0.6, 0.6, facing),
+                           TruthSign("s2", PLATE_ID, *plate, 0.6, 0.2, facing, plate_of="s1", text=" / ".join(lines)),
+                           TruthSign("s3", PLATE_ID, *(plate + [30.0, 0, 0]), 0.6, 0.2, facing, plate_of="s1",
+                                     text="never in view")])
+    return open_drive(root)
+
+
+def test_a_plate_seen_in_three_pairs_is_one_feature_linked_to_its_sign_with_its_text(catalogue, tmp_path):
+    drive = _write_drive(tmp_path / "drive", catalogue)
+    messages = []
+    result = map_drive(drive, catalogue, PipelineConfig(), warn_skipped=messages.append, workers=1)
+    signs = [s for s in result.signs if s.plate_of is None]
+    plates = [s for s in result.signs if s.plate_of is not None]
+    assert [s.template_id for s in signs] == ["2.30-50"] and len(plates) == 1
+    (sign,), (plate,) = signs, plates
+    assert plate.plate_of == sign.sign_id and plate.sign_id == sign.sign_id + 1
+    assert plate.n_obs == 3 and plate.template_id == PLATE_ID
+    assert plate.text == "200 m" and plate.text_confidence > 0.7
+    plate_detections = [o for o in result.detections if o.sign_id == plate.sign_id]
+    assert len(plate_detections) == 3
+    assert not [m for m in messages if "plate" in m]
+    reference = mappable_signs(drive)
+    report = evaluate([s.position for s in signs], [s.template_id for s in signs], [r.position for r in reference],
+                      [r.template_id for r in reference], [[0, 0], [1, 1]], 0.75)
+    figures = evaluate_plates(drive, result.signs, reference, report.match)
+    assert (figures.reference, figures.detected, figures.links_right, figures.false_positives) == (1, 1, 1, 0)
+    assert (figures.readable, figures.texts_right) == (1, 1)  # 0.2 m at 8 m: 44 px high
+
+
+def test_without_tesseract_plates_are_mapped_and_the_run_says_once_how_to_install_it(catalogue, tmp_path,
+                                                                                     monkeypatch):
+    drive = _write_drive(tmp_path / "drive", catalogue)
+    monkeypatch.setenv("PATH", str(tmp_path))  # no tesseract to be found
+    messages = []
+    result = map_drive(drive, catalogue, PipelineConfig(), warn_skipped=messages.append, workers=1)
+    plates = [s for s in result.signs if s.plate_of is not None]
+    assert len(plates) == 1 and plates[0].text is None and plates[0].text_confidence is None
+    about_plates = [m for m in messages if "plate" in m]
+    assert len(about_plates) == 1 and INSTALL_HINT in about_plates[0]
+
+
+def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
+    from signmapper_core.fusion import FusedSign
+    from signmapper_core.ocr import TextReading, Word
+
+    class Obs:
+        def __init__(self, height):
+            self.bbox = (0, 0, 2 * height, height)
+            self.detection = type("D", (), {"crop": np.full((height, 2 * height, 3), 200, np.uint8)})()
+
+    def plate(heights):
+        return FusedSign(1, PLATE_ID, 0.6, 0.2, "normal-1", np.zeros(3), len(heights), 1.0, 0.0, None, 1.0, 1.0,
+                         "accepted", None, [Obs(h) for h in heights], plate_of=1)
+
+    calls = []
+
+    def fake_read(crops):
+        calls.append([c.shape[0] for c in crops])
+        texts = {50: ("2OOm", 0.9), 45: ("200 m", 0.8), 40: ("ZOO m", 0.3), 30: ("", 0.0), 60: ("Mo-Fr", 0.9)}
+        return [TextReading(tuple(Word(t, c, 0) for t in [texts[c_.shape[0]][0]] if t
+                                  for c in [texts[c_.shape[0]][1]])) for c_ in crops]
+
+    a, b = plate([30, 40, 45, 50]), plate([60])
+    assert read_plate_texts([a, b], read=fake_read) == 2
+    assert calls == [[50, 45, 40, 60]]  # the three nearest of the first, all in one call
+    assert a.text == "200 m" and a.text_confidence == pytest.approx((0.9 + 0.8) / 3)  # "ZOO m" disagrees
+    assert b.text == "Mo–Fr"
+
+    def missing(crops):
+        raise OcrUnavailable(f"no tesseract; {INSTALL_HINT}")
+
+    heard = []
+    assert read_plate_texts([plate([50])], heard.append, read=missing) == 0
+    assert len(heard) == 1 and INSTALL_HINT in heard[0]

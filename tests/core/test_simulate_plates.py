@@ -1,0 +1,76 @@
+"""Synthetic drives with supplementary plates: where they hang, what they say, how truth.csv records them."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from signmapper_core.drive import TruthSign, read_truth
+from signmapper_core.drive_writer import write_truth_csv
+from signmapper_core.errors import DriveFormatError
+from signmapper_core.plate_formats import PLATE_FORMATS, PLATE_ID
+from signmapper_core.plate_text import normalise_text
+from signmapper_core.simulate import SimulationConfig
+from signmapper_core.simulate.generator import make_scene, make_street
+from signmapper_core.simulate.plate_layout import plate_lines
+
+
+def scene_of(seed, plate_share):
+    cfg = SimulationConfig(pairs=120, seed=seed, plate_share=plate_share)
+    return make_scene(cfg, make_street(cfg))
+
+
+def test_plates_hang_right_below_their_sign_facing_the_same_way():
+    truth = scene_of(3, 1.0).truth
+    by_id = {t.sign_id: t for t in truth}
+    plates = [t for t in truth if t.plate_of]
+    assert len(plates) >= 5
+    for plate in plates:
+        sign = by_id[plate.plate_of]
+        assert plate.template_id == PLATE_ID and not sign.plate_of
+        assert (plate.width_m, plate.height_m) in PLATE_FORMATS.values()
+        assert plate.width_m == pytest.approx(min((w for w, _ in PLATE_FORMATS.values()),
+                                                  key=lambda w: abs(w - sign.width_m)))
+        gap = sign.height - sign.height_m / 2 - (plate.height + plate.height_m / 2)
+        assert 0.015 <= gap <= 0.065
+        assert np.hypot(plate.easting - sign.easting, plate.northing - sign.northing) < 0.06  # tilted pole
+        assert plate.facing == pytest.approx(sign.facing)
+        assert plate.text and normalise_text(plate.text.split(" / ")) == plate.text
+
+
+def test_plates_leave_the_rest_of_the_scene_as_it_was():
+    with_plates = scene_of(4, 1.0).truth
+    without = scene_of(4, 0.0).truth
+    signs = [replace(t, sign_id="") for t in with_plates if not t.plate_of]
+    assert signs == [replace(t, sign_id="") for t in without]
+    assert len(with_plates) > len(without)
+
+
+def test_plate_texts_are_spelt_as_normalised_ocr_writes_them_in_three_languages():
+    rng = np.random.default_rng(0)
+    texts = [plate_lines(rng) for _ in range(300)]
+    assert all(normalise_text(lines) == " / ".join(lines) for lines in texts)
+    joined = " ".join(" ".join(lines) for lines in texts)
+    for word in ("ausgenommen", "excepté", "eccetto", " m", " h", "Mo–", "lu–"):
+        assert word in joined
+    assert {len(lines) for lines in texts} == {1, 2}
+
+
+def test_truth_csv_round_trips_plates_and_rejects_a_plate_of_no_sign(tmp_path):
+    sign = TruthSign("s001", "2.30-50", 2600000.0, 1200000.0, 401.0, 0.6, 0.6, 90.0)
+    plate = TruthSign("s002", PLATE_ID, 2600000.0, 1200000.0, 400.5, 0.6, 0.2, 90.0, plate_of="s001",
+                      text="Mo–Fr / 7–19 h")
+    path = write_truth_csv(tmp_path, [sign, plate])
+    assert path.read_text(encoding="utf-8").splitlines()[0].endswith(",plate_of,text")
+    back = read_truth(path)
+    assert back[1].plate_of == "s001" and back[1].text == "Mo–Fr / 7–19 h" and back[1].is_plate
+    assert back[0].plate_of == "" and not back[0].is_plate
+    write_truth_csv(tmp_path, [sign])  # no plate: the columns of version 1 only
+    assert path.read_text().splitlines()[0] == "sign_id,template_id,easting,northing,height,width_m,height_m,facing"
+    assert read_truth(path)[0].text == ""
+    write_truth_csv(tmp_path, [sign, replace(plate, plate_of="s009")])
+    with pytest.raises(DriveFormatError) as info:
+        read_truth(path)
+    assert info.value.line == 3 and info.value.field == "plate_of" and "s009" in str(info.value)
