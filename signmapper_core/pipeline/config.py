@@ -226,6 +226,7 @@ class PipelineConfig:
     plate_min_gap_m: float = 0.03  # a white region reaching further into the sign's box is part of its panel
     plate_max_saturation: int = 60  # white and grey: a plate in shade is grey, never coloured
     plate_min_value: int = 100  # floor of its brightness (Otsu's split of the window raises it in the sun)
+    plate_value_steps: Tuple[int, ...] = (0, 25, 50)  # further floors above that: a plate before a pale wall
     plate_depth_tolerance_m: float = 0.3  # where depth is known, the plate lies in the sign's depth (or 5 %)
     plate_close_m: float = 0.0  # closing before the holes are filled (0: none; a plate's thin frame must stay)
     plate_frame_share: float = 0.075  # of a plate's height: its white margin and black frame line (inset)

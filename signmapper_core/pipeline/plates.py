@@ -38,14 +38,16 @@ def nearest_plate_format(width_m: float, height_m: float, tolerance: float):
     return best if best is not None and best[2] <= math.log(1.0 + tolerance) else None
 
 
-def white_mask(bgr: np.ndarray, max_saturation: int, min_value: int) -> np.ndarray:
-    """Bright unsaturated pixels, the floor raised to Otsu's split of the window's brightness where that is higher
-    (a plate in the sun against a pale sky)."""
+def white_masks(bgr: np.ndarray, max_saturation: int, min_value: int, steps: Sequence[int]) -> List[np.ndarray]:
+    """Bright unsaturated pixels at rising brightness floors: from Otsu's split of the window (or ``min_value``)
+    up by each of ``steps``. A white plate before a pale wall or sky is one region only at a floor between the
+    two, so each floor is looked at (the stable bright regions of MSER, a few levels only)."""
     hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
     value = hsv[:, :, 2]
     otsu, _ = cv2.threshold(value, 0, 255, cv2.THRESH_BINARY + cv2.THRESH_OTSU)
     floor = max(min_value, int(otsu))
-    return ((hsv[:, :, 1] <= max_saturation) & (value >= floor)).astype(np.uint8)
+    grey = hsv[:, :, 1] <= max_saturation
+    return [(grey & (value >= floor + step)).astype(np.uint8) for step in steps if floor + step < 250]
 
 
 def _filled(mask: np.ndarray, close_px: int) -> np.ndarray:
@@ -88,6 +90,34 @@ def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int,
     return 1.0 - min(fmt[2] / math.log(1.0 + config.plate_size_tolerance), 1.0) * 0.5, fmt
 
 
+def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z: float, side: int,
+                 touch_px: float, best):
+    """The best plate reading of the regions of ``mask`` (in the ``window`` x0, y0, x1, y1), or ``best`` if none
+    is better: (score, box, format, fill)."""
+    config = pair.config
+    x0, y0, x1, y1 = window
+    filled = _filled(mask, int(round(config.plate_close_m * pair.camera.fy / z)) | 1)
+    count, _labels, stats, _ = cv2.connectedComponentsWithStats(filled, connectivity=4)
+    for k in range(1, count):
+        bx, by, bw, bh, area = (int(v) for v in stats[k])
+        far_edge_cut = by + bh >= y1 - y0 if side == BELOW else by == 0
+        if bw < 6 or bh < 4 or bx == 0 or bx + bw >= x1 - x0 or far_edge_cut:
+            continue  # cut by the window: part of something larger (a wall, the sky)
+        fill = area / float(bw * bh)
+        if fill < config.plate_min_fill:
+            continue
+        # the region is the whole plate, or the inside of its black frame (its white margin lost in a white
+        # wall behind it, or in the sky): then the plate is that much larger
+        grow = config.plate_frame_share / (1.0 - 2.0 * config.plate_frame_share)
+        for margin in (0.0, grow * bh):
+            box = (int(round(bx + x0 - margin)), int(round(by + y0 - margin)), int(round(bw + 2 * margin)),
+                   int(round(bh + 2 * margin)))
+            reading = _plate_reading(pair, sign, box, z, side, touch_px)
+            if reading is not None and (best is None or fill * reading[0] > best[0]):
+                best = (fill * reading[0], box, reading[1], fill)
+    return best
+
+
 def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: int) -> Optional[Detection]:
     """The plate right below (``side`` BELOW) or above (ABOVE) one sign, or None."""
     config, camera = pair.config, pair.camera
@@ -110,30 +140,12 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     if x1 - x0 < 8 or y1 - y0 < 8:
         return None
     window = pair.left[y0:y1, x0:x1]
-    mask = white_mask(window, config.plate_max_saturation, config.plate_min_value)
     near = depth[y0:y1, x0:x1]
     elsewhere = np.isfinite(near) & (np.abs(near - z) > max(config.plate_depth_tolerance_m, 0.05 * z))
-    mask[elsewhere] = 0
-    filled = _filled(mask, int(round(config.plate_close_m * px_per_m)) | 1)
-    count, _labels, stats, _ = cv2.connectedComponentsWithStats(filled, connectivity=4)
     best = None
-    for k in range(1, count):
-        bx, by, bw, bh, area = (int(v) for v in stats[k])
-        far_edge_cut = by + bh >= y1 - y0 if side == BELOW else by == 0
-        if bw < 6 or bh < 4 or bx == 0 or bx + bw >= x1 - x0 or far_edge_cut:
-            continue  # cut by the window: part of something larger (a wall, the sky)
-        fill = area / float(bw * bh)
-        if fill < config.plate_min_fill:
-            continue
-        # the region is the whole plate, or the inside of its black frame (its white margin lost in a white
-        # wall behind it, or in the sky): then the plate is that much larger
-        grow = config.plate_frame_share / (1.0 - 2.0 * config.plate_frame_share)
-        for margin in (0.0, grow * bh):
-            box = (int(round(bx + x0 - margin)), int(round(by + y0 - margin)), int(round(bw + 2 * margin)),
-                   int(round(bh + 2 * margin)))
-            reading = _plate_reading(pair, sign, box, z, side, touch_px)
-            if reading is not None and (best is None or fill * reading[0] > best[0]):
-                best = (fill * reading[0], box, reading[1], fill)
+    for mask in white_masks(window, config.plate_max_saturation, config.plate_min_value, config.plate_value_steps):
+        mask[elsewhere] = 0
+        best = _best_region(pair, sign, mask, (x0, y0, x1, y1), z, side, touch_px, best)
     if best is None:
         return None
     score, box, (name, (pw, ph), _), fill = best

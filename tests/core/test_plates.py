@@ -125,6 +125,27 @@ def test_what_is_not_a_plate_of_the_sign(catalogue, what, kwargs):
     assert [d for d in found if d.is_plate] == [], what
 
 
+def test_a_plate_before_a_pale_wall_without_depth_is_found_at_a_higher_brightness_floor(catalogue):
+    """A light grey wall right around the plate, its depth unknown (no stereo match on a plain wall): at Otsu's
+    floor plate and wall are one region cut by the window; one floor up the plate stands alone."""
+    pose = pose_at(0.0)
+    left, depth, box = scene(catalogue, pose)
+    x, y, w, h = box
+    wall = (slice(y - 6, y + 3 * h), slice(x - w // 2, x + w + w // 2))
+    pale = np.full(left[wall].shape, 196, np.uint8) + np.random.default_rng(1).integers(0, 6, left[wall].shape,
+                                                                                       dtype=np.uint8)
+    plate = left[y:y + h, x:x + w].copy()
+    left[wall] = pale
+    left[y:y + h, x:x + w] = plate
+    depth[wall] = np.nan
+    depth[y:y + h, x:x + w] = np.nan
+    found = detect_pair(left, depth, None, CAMERA, pose, catalogue, PipelineConfig())
+    (plate_det,) = [d for d in found if d.is_plate]
+    assert _iou(plate_det.bbox, box) > 0.8 and plate_det.format == "normal-1"
+    only_otsu = detect_pair(left, depth, None, CAMERA, pose, catalogue, PipelineConfig(plate_value_steps=(0,)))
+    assert [d for d in only_otsu if d.is_plate] == []
+
+
 def _write_drive(root, catalogue, lines=("200 m",), n=3):
     write_drive_json(root, "EPSG:2056", CAMERA, software="tests")
     poses = [(f"{i:06d}", 0.2 * i, pose_at(0.5 * i)) for i in range(n)]
