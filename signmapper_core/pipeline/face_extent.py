@@ -27,6 +27,27 @@ _cache: Dict[Tuple[int, str, str], tuple] = {}
 Extent = Tuple[float, float, float, float]  # x0, y0, x1, y1 as fractions of the face box
 
 
+def _measured_once(catalogue, key: tuple, measure):
+    """``measure()`` of one template, kept per catalogue object (a template's rendering does not change)."""
+    hit = _cache.get(key)
+    if hit is not None and hit[0] is catalogue:
+        return hit[1]
+    value = measure()
+    _cache[key] = (catalogue, value)
+    return value
+
+
+def _colour_mask(catalogue, template_id: str, colour: str, hsv_ranges) -> Optional[np.ndarray]:
+    """uint8 0/255 mask of the template's pixels the colour step reads as ``colour``, inside its outline;
+    None for a colour without thresholds."""
+    if colour not in hsv_ranges:
+        return None
+    bgr, alpha = canonical_template(catalogue, template_id)
+    mask = hsv_mask(cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV), hsv_ranges[colour])
+    mask[alpha <= 127] = 0
+    return mask
+
+
 def colour_part(catalogue, template_id: str, colour: str, hsv_ranges) -> Tuple[Optional[Extent], Optional[str]]:
     """(extent, outline shape) of the template's ``colour`` pixels; (None, None) if it has none.
 
@@ -36,59 +57,55 @@ def colour_part(catalogue, template_id: str, colour: str, hsv_ranges) -> Tuple[O
     outline alone (3.04's halves), the hull of all pieces, as the colour step
     merges them (``colour.split_face_merges``).
     """
-    key = (id(catalogue), template_id, colour)
-    hit = _cache.get(key)
-    if hit is not None and hit[0] is catalogue:
-        return hit[1]
+    return _measured_once(catalogue, (id(catalogue), template_id, colour),
+                          lambda: _part_of(_colour_mask(catalogue, template_id, colour, hsv_ranges)))
+
+
+def _part_of(mask: Optional[np.ndarray]) -> Tuple[Optional[Extent], Optional[str]]:
     extent, shape = None, None
-    if colour in hsv_ranges:
-        bgr, alpha = canonical_template(catalogue, template_id)
-        mask = hsv_mask(cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV), hsv_ranges[colour])
-        mask[alpha <= 127] = 0
-        ys, xs = np.nonzero(mask)
-        if ys.size > 0.02 * mask.size:
-            h, w = mask.shape
-            extent = (xs.min() / w, ys.min() / h, (xs.max() + 1) / w, (ys.max() + 1) / h)
-            if all(abs(a - b) < 0.03 for a, b in zip(extent, FULL)):
-                extent = FULL  # colour reaches the edge: no correction, avoid rounding noise
-            filled = np.zeros_like(mask)
-            contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
-            cv2.drawContours(filled, contours, -1, 255, thickness=cv2.FILLED)
-            part = filled[ys.min() : ys.max() + 1, xs.min() : xs.max() + 1]
-            shape = classify_shape(part).shape
-            if shape is None and len(contours) > 1:
-                hull = cv2.convexHull(np.vstack([c.reshape(-1, 2) for c in contours]))
-                merged = np.zeros_like(mask)
-                cv2.drawContours(merged, [hull], -1, 255, thickness=cv2.FILLED)
-                shape = classify_shape(merged[ys.min() : ys.max() + 1, xs.min() : xs.max() + 1]).shape
-    _cache[key] = (catalogue, (extent, shape))
+    if mask is None:
+        return extent, shape
+    ys, xs = np.nonzero(mask)
+    if ys.size > 0.02 * mask.size:
+        h, w = mask.shape
+        extent = (xs.min() / w, ys.min() / h, (xs.max() + 1) / w, (ys.max() + 1) / h)
+        if all(abs(a - b) < 0.03 for a, b in zip(extent, FULL)):
+            extent = FULL  # colour reaches the edge: no correction, avoid rounding noise
+        filled = np.zeros_like(mask)
+        contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
+        cv2.drawContours(filled, contours, -1, 255, thickness=cv2.FILLED)
+        part = filled[ys.min() : ys.max() + 1, xs.min() : xs.max() + 1]
+        shape = classify_shape(part).shape
+        if shape is None and len(contours) > 1:
+            hull = cv2.convexHull(np.vstack([c.reshape(-1, 2) for c in contours]))
+            merged = np.zeros_like(mask)
+            cv2.drawContours(merged, [hull], -1, 255, thickness=cv2.FILLED)
+            shape = classify_shape(merged[ys.min() : ys.max() + 1, xs.min() : xs.max() + 1]).shape
     return extent, shape
 
 
 def hole_part(catalogue, template_id: str, colour: str, hsv_ranges) -> Tuple[Optional[Extent], Optional[str]]:
     """(extent, shape) of the largest field the template's ``colour`` encloses (the white field inside a
     red ring or border, the bar of no entry); (None, None) if it encloses none of at least 5 % of the face."""
-    key = (id(catalogue), template_id, "hole:" + colour)
-    hit = _cache.get(key)
-    if hit is not None and hit[0] is catalogue:
-        return hit[1]
+    return _measured_once(catalogue, (id(catalogue), template_id, "hole:" + colour),
+                          lambda: _hole_of(_colour_mask(catalogue, template_id, colour, hsv_ranges)))
+
+
+def _hole_of(mask: Optional[np.ndarray]) -> Tuple[Optional[Extent], Optional[str]]:
     extent, shape = None, None
-    if colour in hsv_ranges:
-        bgr, alpha = canonical_template(catalogue, template_id)
-        mask = hsv_mask(cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV), hsv_ranges[colour])
-        mask[alpha <= 127] = 0
-        contours, hierarchy = cv2.findContours(mask, cv2.RETR_CCOMP, cv2.CHAIN_APPROX_NONE)
-        holes = [c for c, h in zip(contours, hierarchy[0] if hierarchy is not None else []) if h[3] >= 0]
-        h, w = mask.shape
-        if holes:
-            hole = max(holes, key=cv2.contourArea)
-            if cv2.contourArea(hole) >= 0.05 * h * w:
-                x, y, hw, hh = cv2.boundingRect(hole)
-                extent = (x / w, y / h, (x + hw) / w, (y + hh) / h)
-                filled = np.zeros((hh, hw), np.uint8)
-                cv2.drawContours(filled, [hole], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
-                shape = classify_shape(filled).shape
-    _cache[key] = (catalogue, (extent, shape))
+    if mask is None:
+        return extent, shape
+    contours, hierarchy = cv2.findContours(mask, cv2.RETR_CCOMP, cv2.CHAIN_APPROX_NONE)
+    holes = [c for c, h in zip(contours, hierarchy[0] if hierarchy is not None else []) if h[3] >= 0]
+    h, w = mask.shape
+    if holes:
+        hole = max(holes, key=cv2.contourArea)
+        if cv2.contourArea(hole) >= 0.05 * h * w:
+            x, y, hw, hh = cv2.boundingRect(hole)
+            extent = (x / w, y / h, (x + hw) / w, (y + hh) / h)
+            filled = np.zeros((hh, hw), np.uint8)
+            cv2.drawContours(filled, [hole], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
+            shape = classify_shape(filled).shape
     return extent, shape
 
 

@@ -9,7 +9,6 @@ import numpy as np
 import pytest
 from pipeline_scenes import CAMERA, POSE, constant_depth, noisy_background, paste
 
-from signmapper_core.catalogue import load_catalogue
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.boxes import box_iou
 from signmapper_core.pipeline.colour import find_colour_segments, split_face_merges
@@ -17,11 +16,6 @@ from signmapper_core.pipeline.face_extent import colour_part
 
 CONFIG = PipelineConfig()
 SIDE_M = 0.707  # normal format of 3.03 and 3.04
-
-
-@pytest.fixture(scope="module")
-def catalogue():
-    return load_catalogue()
 
 
 def _scene(catalogue, template_id, n):
