@@ -15,6 +15,8 @@ from pathlib import Path
 import cv2
 import numpy as np
 
+from .face_wear import colour_masks
+
 # Pictograms whose mirror image means the same and is no other sign of the catalogue (not the curves
 # 1.01-1.04, narrowing 1.08/1.09, descent and climb 1.10/1.11, oncoming traffic 1.26, overtaking
 # 2.44/2.45, turns 2.42/2.43/2.46, entries 3.07/3.08 or the blue arrows).
@@ -48,17 +50,12 @@ def mirrored(face: np.ndarray, alpha: np.ndarray) -> tuple[np.ndarray, np.ndarra
     return np.ascontiguousarray(face[:, ::-1]), np.ascontiguousarray(alpha[:, ::-1])
 
 
-def _red_mask(face: np.ndarray, alpha: np.ndarray) -> np.ndarray:
-    hsv = cv2.cvtColor(np.clip(face, 0, 255).astype(np.uint8), cv2.COLOR_BGR2HSV)
-    return (alpha > 127) & ((hsv[..., 0] < 12) | (hsv[..., 0] > 165)) & (hsv[..., 1] > 90)
-
-
 def inner_field(face: np.ndarray, alpha: np.ndarray) -> np.ndarray | None:
     """Mask of everything inside the red rim (field and pictogram, red parts of the pictogram included).
 
     None when the face has no red rim around a field (blue, yellow, white faces).
     """
-    red = _red_mask(face, alpha)
+    red, _ = colour_masks(face, alpha)
     if red.sum() < 0.05 * alpha.size:
         return None
     not_red = ((alpha > 127) & ~red).astype(np.uint8)

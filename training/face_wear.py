@@ -104,7 +104,7 @@ def peeling(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np
     return np.where(spots[..., None], metal, face)
 
 
-def _colour_masks(face: np.ndarray, alpha: np.ndarray):
+def colour_masks(face: np.ndarray, alpha: np.ndarray):
     """(red, white) masks of a face: the rim colour of prohibition and danger signs and the field inside."""
     hsv = cv2.cvtColor(np.clip(face, 0, 255).astype(np.uint8), cv2.COLOR_BGR2HSV)
     inside = alpha > 127
@@ -120,7 +120,7 @@ def rim_width(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> 
     their text (a Swiss speed limit's rim is wider than most), which no real
     sign of another print run respects.
     """
-    red, white = _colour_masks(face, alpha)
+    red, white = colour_masks(face, alpha)
     if red.sum() < 0.05 * alpha.size or white.sum() < 0.02 * alpha.size:
         return face
     # the Swiss speed-limit rim is ~17 % of the diameter, Germany's ~9 %: thin by up to ~10 % of the face
