@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import os
 import shutil
-from dataclasses import replace
 from pathlib import Path
 
 from qgis.core import (
@@ -29,13 +28,14 @@ from ..gpkg.styles import OutputStyler, embed_default_styles
 from ..signmapper_core import output_schema as schema
 from ..signmapper_core.errors import ClusterError, MappingError
 from ..signmapper_core.output_schema import DETECTIONS, LANGUAGES, SIGNS, OutputContext
-from ..signmapper_core.pipeline.config import default
+from ..signmapper_core.pipeline.config import default, with_settings
 from ..signmapper_core.progress import Cancelled, check_cancelled
 from ..signmapper_core.sign_colours import SIGN_COLOURS
 from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise, qgis_crs
 
 COLOURS = list(SIGN_COLOURS)
+NEAR_M, FAR_M = ("depth", "near_m"), ("depth", "far_m")  # the settings the depth range parameters set
 CLASSIFIERS = [("auto", "Automatic: the learned network where the catalogue has one, else template matching"),
                ("cnn", "Learned network (CNN trained on the official drawings)"),
                ("ncc", "Template matching (normalised cross-correlation, Cavegn 2011)")]
@@ -104,13 +104,13 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.NEAR, self.tr("Near limit of the depth range [m]"),
-                                         QgsProcessingParameterNumber.Double, default("near_m"), minValue=0.5,
+                                         QgsProcessingParameterNumber.Double, default("depth", "near_m"), minValue=0.5,
                                          maxValue=100.0),
             "Signs closer than this depth (along the optical axis) are not searched; default 4 m.",
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.FAR, self.tr("Far limit of the depth range [m]"),
-                                         QgsProcessingParameterNumber.Double, default("far_m"), minValue=1.0,
+                                         QgsProcessingParameterNumber.Double, default("depth", "far_m"), minValue=1.0,
                                          maxValue=200.0),
             "Signs farther than this depth are not searched (they are measured better in a later pair); default "
             "14 m as in Cavegn (2011). On wide streets signs on the far side only come into view beyond 14 m: "
@@ -119,7 +119,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         self.add_parameter(
             QgsProcessingParameterEnum(self.COLOURS, self.tr("Sign colours to detect"), options=COLOURS,
                                        allowMultiple=True,
-                                       defaultValue=[COLOURS.index(c) for c in default("colours")]),
+                                       defaultValue=[COLOURS.index(c) for c in default("colour", "colours")]),
             "Dominant colours segmented in HSV: red (prohibitions, danger, stop), blue (mandatory, information), "
             "yellow (priority road).",
         )
@@ -130,14 +130,15 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.DETECTION_THRESHOLD, self.tr("Detection indicator threshold"),
-                                         QgsProcessingParameterNumber.Double, default("detection_threshold"),
-                                         minValue=0.0, maxValue=1.0),
+                                         QgsProcessingParameterNumber.Double,
+                                         default("planarity", "detection_threshold"), minValue=0.0, maxValue=1.0),
             "Minimum planar share (0-1) of a colour segment for it to count as a sign face.",
             advanced=True,
         )
         self.add_parameter(
             QgsProcessingParameterEnum(self.CLASSIFIER, self.tr("Classifier"), options=[c[1] for c in CLASSIFIERS],
-                                       defaultValue=[c[0] for c in CLASSIFIERS].index(default("classifier")),
+                                       defaultValue=[c[0] for c in CLASSIFIERS].index(
+                                           default("classification", "classifier")),
                                        optional=True),  # models saved before it still run
             "How a face gets its sign type among the candidates its colour and shape leave. The learned network "
             "is trained on synthetic faces of the official SSV drawings; its indicator is a calibrated probability "
@@ -147,8 +148,9 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.CLASSIFICATION_THRESHOLD, self.tr("Classification indicator threshold"),
-                                         QgsProcessingParameterNumber.Double, default("classification_threshold"),
-                                         optional=True, minValue=0.0, maxValue=1.0),
+                                         QgsProcessingParameterNumber.Double,
+                                         default("classification", "classification_threshold"), optional=True,
+                                         minValue=0.0, maxValue=1.0),
             "Minimum classification indicator (0-1) for status 'accepted'; lower ones get status 'review'. Empty = "
             "the classifier's own: the network's calibrated threshold, 0.6 for template matching.",
             advanced=True,
@@ -249,24 +251,30 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             catalogue = load_catalogue(catalogue_dir)
         except Exception as exc:  # the catalogue's own errors name the file
             raise QgsProcessingException(f"Template catalogue: {exc}") from exc
-        chosen = {
-            "near_m": self.parameterAsDouble(parameters, self.NEAR, context),
-            "far_m": self.parameterAsDouble(parameters, self.FAR, context),
-            "colours": tuple(colours),
-            "exclude": tuple(self.excluded_ids(parameters, context, catalogue)),
-            "detection_threshold": self.parameterAsDouble(parameters, self.DETECTION_THRESHOLD, context),
-            "classification_threshold": self.optional_number(parameters, self.CLASSIFICATION_THRESHOLD, context),
-            "classifier": CLASSIFIERS[self.parameterAsEnum(parameters, self.CLASSIFIER, context)][0],
+        chosen = {  # (section, setting) -> the dialog's value
+            NEAR_M: self.parameterAsDouble(parameters, self.NEAR, context),
+            FAR_M: self.parameterAsDouble(parameters, self.FAR, context),
+            ("colour", "colours"): tuple(colours),
+            ("classification", "exclude"): tuple(self.excluded_ids(parameters, context, catalogue)),
+            ("planarity", "detection_threshold"): self.parameterAsDouble(parameters, self.DETECTION_THRESHOLD,
+                                                                         context),
+            ("classification", "classification_threshold"): self.optional_number(
+                parameters, self.CLASSIFICATION_THRESHOLD, context),
+            ("classification", "classifier"): CLASSIFIERS[self.parameterAsEnum(parameters, self.CLASSIFIER,
+                                                                               context)][0],
         }
         if earlier is not None:  # what the user changed from the dialog's defaults wins over the record
             chosen = {k: v for k, v in chosen.items() if not _is_default(k, v)}
         base = earlier.config if earlier is not None else PipelineConfig()
-        near, far = chosen.get("near_m", base.near_m), chosen.get("far_m", base.far_m)
+        near, far = chosen.get(NEAR_M, base.depth.near_m), chosen.get(FAR_M, base.depth.far_m)
         if near >= far:
             labels = [self.parameterDefinition(n).description() for n in (self.NEAR, self.FAR)]
             raise QgsProcessingException(f"{labels[0]} ({near:g} m) must be less than {labels[1]} ({far:g} m).")
+        changes = {}
+        for (section, name), value in chosen.items():
+            changes.setdefault(section, {})[name] = value
         try:
-            config = replace(base, **chosen)
+            config = with_settings(base, changes)
         except ValueError as exc:
             raise QgsProcessingException(str(exc)) from exc
         from ..signmapper_core.pipeline.classifiers import ClassifierError, classifier_for
@@ -476,8 +484,9 @@ class CropFolder:
             shutil.rmtree(self.partial)
 
 
-def _is_default(name: str, value) -> bool:
-    """Whether a dialog value is the setting's default (colours in any order): then an earlier run's value wins."""
-    if name == "colours":
-        return set(value) == set(default(name))
-    return value == default(name)
+def _is_default(setting, value) -> bool:
+    """Whether a dialog value is the (section, name) setting's default (colours in any order): then an earlier
+    run's value wins."""
+    if setting == ("colour", "colours"):
+        return set(value) == set(default(*setting))
+    return value == default(*setting)

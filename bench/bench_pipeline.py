@@ -20,7 +20,6 @@ import argparse
 import sys
 import time
 from collections import defaultdict
-from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -47,7 +46,7 @@ def expected_signs(drive, record, config, max_angle_deg=45.0):
     cam = drive.camera
     for sign in drive.truth or []:
         u, v, z = world_to_pixel(cam, record.pose, sign.position)
-        if not (config.near_m <= z <= config.far_m and 0 <= u < cam.width and 0 <= v < cam.height):
+        if not (config.depth.near_m <= z <= config.depth.far_m and 0 <= u < cam.width and 0 <= v < cam.height):
             continue
         facing = np.radians(sign.facing)
         normal = np.array([np.sin(facing), np.cos(facing), 0.0])
@@ -71,13 +70,14 @@ def main() -> int:
     from signmapper_core.catalogue import load_catalogue
     from signmapper_core.drive import open_drive
     from signmapper_core.pipeline import PipelineConfig, detect_pair
+    from signmapper_core.pipeline.config import with_settings
 
     folder = args.drive or drive_folder(args.seed, args.pairs)
     drive = open_drive(folder)
     catalogue = load_catalogue()
     config = PipelineConfig()
     if args.mode == "sgbm-full":
-        config = replace(config, sgbm_rows_only=False)
+        config = with_settings(config, {"depth": {"sgbm_rows_only": False}})
     steps, total = defaultdict(float), 0.0
     n_expected = n_found = n_right = n_false = n_det = n_accepted_right = 0
     errors = []

@@ -63,16 +63,19 @@ class ReviewSession:
 
     def pipeline_config(self):
         """The run's recorded pipeline settings (defaults for anything missing or invalid)."""
-        from ..signmapper_core.pipeline import PipelineConfig
+        from ..signmapper_core.pipeline.config import SECTION_OF, PipelineConfig, with_settings
 
         keys = ("near_m", "far_m", "detection_threshold", "classification_threshold")
-        kwargs = {k: float(self.run[k]) for k in keys if isinstance(self.run.get(k), (int, float))}
+        recorded = {k: float(self.run[k]) for k in keys if isinstance(self.run.get(k), (int, float))}
         for key in ("colours", "exclude"):
             if isinstance(self.run.get(key), list):
-                kwargs[key] = tuple(self.run[key])
+                recorded[key] = tuple(self.run[key])
         if self.run.get("classifier") in ("cnn", "ncc"):
-            kwargs["classifier"] = self.run["classifier"]
+            recorded["classifier"] = self.run["classifier"]
+        changes = {}
+        for key, value in recorded.items():
+            changes.setdefault(SECTION_OF[key], {})[key] = value
         try:
-            return PipelineConfig(**kwargs)
+            return with_settings(PipelineConfig(), changes)
         except (TypeError, ValueError):
             return PipelineConfig()

@@ -32,6 +32,7 @@ from signmapper_core.drive import open_drive  # noqa: E402
 from signmapper_core.evaluation import combine_reports, evaluate, format_report  # noqa: E402
 from signmapper_core.mapping import map_drive  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
+from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig  # noqa: E402
 from signmapper_core.plate_evaluation import PlateFigures, evaluate_plates  # noqa: E402
 from signmapper_core.plate_fusion import is_plate  # noqa: E402
 from signmapper_core.visibility import mappable_signs  # noqa: E402
@@ -90,7 +91,8 @@ def main(argv=None) -> int:
     if not folders:
         parser.error("give drive folders or --generate SEEDS")
     catalogue = load_catalogue(args.catalogue)
-    config = PipelineConfig(near_m=args.near, far_m=args.far, classifier=args.classifier)
+    config = PipelineConfig(depth=DepthConfig(near_m=args.near, far_m=args.far),
+                            classification=ClassificationConfig(classifier=args.classifier))
     reports = {"detections": [], "signs": []}
     all_azimuth_errors = []
     accepted_total, accepted_wrong, accepted_unmatched = 0, 0, 0

@@ -113,8 +113,8 @@ def run_classify(args, catalogue, config: PipelineConfig) -> int:
     signs = select(load_manifest(args.data / args.manifest, known_ids={e.id for e in catalogue}),
                    args.split, args.limit, args.seed)
     clf = make_classifier(args.classifier, catalogue, args.model)
-    threshold = config.classification_threshold if config.classification_threshold is not None \
-        else clf.accept_threshold
+    chosen = config.classification.classification_threshold
+    threshold = chosen if chosen is not None else clf.accept_threshold
     records = []
     start = time.perf_counter()
     for sign in signs:

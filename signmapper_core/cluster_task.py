@@ -109,10 +109,9 @@ def _catalogue(folder: Optional[str]):
 @lru_cache(maxsize=8)
 def _config(settings: str):
     """The PipelineConfig of a job's settings (as sorted JSON, so a worker builds each config once)."""
-    from .pipeline import PipelineConfig
-    from .run_settings import settings_of
+    from .run_settings import pipeline_config_of
 
-    return settings_of(PipelineConfig, json.loads(settings), "pipeline settings of the job")
+    return pipeline_config_of(json.loads(settings), "pipeline settings of the job")
 
 
 # glibc mallopt parameters: the largest buffer still taken from the heap, and the free heap top kept

@@ -222,7 +222,7 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
 
 def search_half_size(drive: Drive, config) -> int:
     """Half the side of the window searched around a click: the largest face at the near limit, in pixels."""
-    return int(min(max(drive.camera.fx * LARGEST_FACE_M / 2.0 / config.near_m, 64.0), max(drive.image_size)))
+    return int(min(max(drive.camera.fx * LARGEST_FACE_M / 2.0 / config.depth.near_m, 64.0), max(drive.image_size)))
 
 
 def detect_at(drive: Drive, record: PairRecord, catalogue, config, u: float, v: float) -> Optional[Observation]:

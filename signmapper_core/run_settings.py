@@ -1,14 +1,16 @@
 """A run's settings saved whole in its output's run table, and read back to map a drive again with them.
 
-The run table (``output_schema.RUN_KEYS``) holds every field of the
-``PipelineConfig`` (key ``pipeline``) and of the ``FusionConfig`` (key
-``fusion``) as JSON, with ``settings_version``. :func:`load_run_settings`
-turns the run table of an earlier output back into those objects, so a drive
-can be mapped again exactly as it was (``mapsigns``' "Settings from an earlier
-output"). Settings this version does not know are reported and ignored;
-settings the record lacks (added after it was written) keep their defaults; a
-record of another settings version is refused, since its values may mean
-something else.
+The run table (``output_schema.RUN_KEYS``) holds every setting of the
+``PipelineConfig`` (key ``pipeline``, a JSON object per section) and of the
+``FusionConfig`` (key ``fusion``) as JSON, with ``settings_version``.
+:func:`load_run_settings` turns the run table of an earlier output back into
+those objects, so a drive can be mapped again exactly as it was (``mapsigns``'
+"Settings from an earlier output"). Settings (or sections) this version does
+not know are reported and ignored; settings the record lacks (added after it
+was written) keep their defaults. Version 1 records hold the pipeline settings
+as one flat object: each is put into its section by its name (names are unique
+across the sections). A record of another settings version is refused, since
+its values may mean something else.
 """
 
 from __future__ import annotations
@@ -23,7 +25,10 @@ from typing import Any, Callable, Optional
 
 from .output_schema import RUN_TABLE, decode_run_value
 
-SETTINGS_VERSION = 1  # raise when a setting changes its meaning or unit: older records are then refused
+# raise when a setting changes its meaning or unit, or the record its layout: older records are then refused
+# unless read_versions learns them (version 1: the pipeline settings flat, before the sections)
+SETTINGS_VERSION = 2
+FLAT_PIPELINE_VERSION = 1
 SQLITE_HEADER = b"SQLite format 3\x00"
 
 Warn = Callable[[str], None]
@@ -34,7 +39,7 @@ class RunRecordError(ValueError):
 
 
 def settings_dict(settings) -> dict:
-    """Field name -> JSON-ready value of a settings dataclass (tuples become lists)."""
+    """Field name -> JSON-ready value of a settings dataclass (tuples become lists, sections objects)."""
     return json.loads(json.dumps(dataclasses.asdict(settings)))
 
 
@@ -64,6 +69,34 @@ def settings_of(cls, data: dict, where: str, warn: Optional[Warn] = None):
         return cls(**{k: _frozen(v) for k, v in data.items() if k in known})
     except (TypeError, ValueError) as exc:
         raise RunRecordError(f"{where}: {exc}") from exc
+
+
+def pipeline_config_of(data: dict, where: str, warn: Optional[Warn] = None, version: int = SETTINGS_VERSION):
+    """The ``PipelineConfig`` of a record's ``pipeline`` object: ``{section: {setting: value}}``.
+
+    ``version`` 1: the settings flat, each put into its section by name. Unknown
+    sections and settings are passed to ``warn`` and ignored; values a section
+    refuses raise :class:`RunRecordError` naming ``where``.
+    """
+    from .pipeline.config import SECTION_OF, SECTIONS, PipelineConfig
+
+    if not isinstance(data, dict):
+        raise RunRecordError(f"{where}: expected a JSON object of settings, found {type(data).__name__}")
+    if version == FLAT_PIPELINE_VERSION:
+        unknown = sorted(set(data) - set(SECTION_OF))
+        if unknown and warn is not None:
+            warn(f"{where}: ignored settings this version does not know: {', '.join(unknown)}")
+        sections: dict = {}
+        for name, value in data.items():
+            if name in SECTION_OF:
+                sections.setdefault(SECTION_OF[name], {})[name] = value
+        data = sections
+    else:
+        unknown = sorted(set(data) - set(SECTIONS))
+        if unknown and warn is not None:
+            warn(f"{where}: ignored sections this version does not know: {', '.join(unknown)}")
+    return PipelineConfig(**{name: settings_of(cls, data[name], f"{where}, section {name}", warn)
+                             for name, cls in SECTIONS.items() if name in data})
 
 
 def read_run_record(path) -> dict:
@@ -102,17 +135,16 @@ class RunSettings:
 def run_settings(record: dict, where: str, warn: Optional[Warn] = None) -> RunSettings:
     """The settings of a run record (:func:`read_run_record`); ``where`` names it in messages."""
     from .fusion import FusionConfig
-    from .pipeline.config import PipelineConfig
 
     software = record.get("software", "an unknown program")
     version = record.get("settings_version")
     if version is None or "pipeline" not in record:
         raise RunRecordError(f"{where}: written by {software}, which recorded only some of its settings (no "
                              "'settings_version'); map the drive again with this version to record them all")
-    if version != SETTINGS_VERSION:
+    if version not in (SETTINGS_VERSION, FLAT_PIPELINE_VERSION):
         raise RunRecordError(f"{where}: settings version {version} (written by {software}); this version of Sign "
-                             f"Mapper reads version {SETTINGS_VERSION} only")
-    config = settings_of(PipelineConfig, record["pipeline"], f"{where}, pipeline settings", warn)
+                             f"Mapper reads versions {FLAT_PIPELINE_VERSION} and {SETTINGS_VERSION} only")
+    config = pipeline_config_of(record["pipeline"], f"{where}, pipeline settings", warn, version)
     fusion = settings_of(FusionConfig, record.get("fusion", {}), f"{where}, fusion settings", warn)
     catalogue = record.get("catalogue")
     return RunSettings(config, fusion, str(catalogue) if catalogue else None, str(software))

@@ -107,9 +107,9 @@ def is_red_ring(contrast, config: PipelineConfig, share: float = 1.0) -> bool:
     if contrast is None:
         return False
     red_green, red_blue, brightness = contrast
-    return (red_green >= 1.0 + share * (config.field_ring_min_red_green - 1.0)
-            and red_blue >= 1.0 + share * (config.field_ring_min_red_blue - 1.0)
-            and brightness <= 1.0 - share * (1.0 - config.field_ring_max_brightness))
+    return (red_green >= 1.0 + share * (config.bright_fields.field_ring_min_red_green - 1.0)
+            and red_blue >= 1.0 + share * (config.bright_fields.field_ring_min_red_blue - 1.0)
+            and brightness <= 1.0 - share * (1.0 - config.bright_fields.field_ring_max_brightness))
 
 
 def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
@@ -117,14 +117,15 @@ def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: Pip
     """White fields enclosed by a red ring, found by brightness (the colour step makes them "hole" segments).
 
     ``search`` (bool, image size) limits where fields may lie; ``min_face_px`` is the
-    smallest face worth finding (its field is ~0.6 of it; never below ``config.field_min_px``).
+    smallest face worth finding (its field is ~0.6 of it; never below ``config.bright_fields.field_min_px``).
     Each bright component is first judged on the reduced image by means (cheap, loose), then
     at full resolution by medians.
     """
-    min_field = max(config.field_min_px, 0.6 * (min_face_px or 0))
+    fields = config.bright_fields
+    min_field = max(fields.field_min_px, 0.6 * (min_face_px or 0))
     # the reduced image keeps the smallest field field_min_side_px wide (labelling each level costs per pixel);
     # an integer reduction, which OpenCV averages fast
-    scale = min(config.field_scale, 1.0 / max(1, int(min_field // config.field_min_side_px)))
+    scale = min(fields.field_scale, 1.0 / max(1, int(min_field // fields.field_min_side_px)))
     small = image if scale == 1.0 else cv2.resize(image, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA)
     grey = cv2.cvtColor(small, cv2.COLOR_BGR2GRAY)
     if search is not None:
@@ -132,12 +133,12 @@ def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: Pip
         grey[inside == 0] = 0
     height, width = grey.shape
     min_side = max(3, int(np.floor(min_field * scale)))
-    max_side = int(np.ceil(config.max_face_px * scale))
+    max_side = int(np.ceil(config.hough.max_face_px * scale))
     seen = np.zeros((0, 4), np.int64)  # boxes already judged (the same field recurs at neighbouring levels)
     out: List[Field] = []
     at_most = np.bincount(grey.ravel(), minlength=256).cumsum()  # pixels at or below each grey value
-    for level in grey_levels(config.field_first_level, config.field_level_ratio):
-        if grey.size - at_most[level] < config.field_min_fill * min_side * min_side or at_most[level] < 4 * min_side:
+    for level in grey_levels(fields.field_first_level, fields.field_level_ratio):
+        if grey.size - at_most[level] < fields.field_min_fill * min_side * min_side or at_most[level] < 4 * min_side:
             continue  # too few pixels above the level for a field, or below it for a ring around one
         bright = cv2.compare(grey, level, cv2.CMP_GT)
         n, labels, stats, _ = cv2.connectedComponentsWithStats(bright, connectivity=4)
@@ -145,21 +146,21 @@ def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: Pip
             break
         xs, ys, ws, hs, areas = stats[1:].T
         short, long_ = np.minimum(ws, hs), np.maximum(ws, hs)
-        keep = ((short >= min_side) & (long_ <= max_side) & (long_ <= config.field_max_aspect * short)
-                & (areas >= config.field_min_fill * ws * hs) & (areas <= config.field_max_fill * ws * hs)
+        keep = ((short >= min_side) & (long_ <= max_side) & (long_ <= fields.field_max_aspect * short)
+                & (areas >= fields.field_min_fill * ws * hs) & (areas <= fields.field_max_fill * ws * hs)
                 & (xs > 0) & (ys > 0) & (xs + ws < width) & (ys + hs < height))
         for k in np.flatnonzero(keep) + 1:
             box = stats[k, :4]
-            if len(seen) and _box_ious(box, seen).max() >= config.field_same_iou:
+            if len(seen) and _box_ious(box, seen).max() >= fields.field_same_iou:
                 continue  # the same field at a lower level
             seen = np.vstack([seen, box[None]])
             box = tuple(int(v) for v in box)
-            if not is_red_ring(_coarse_contrast(small, labels, k, box, config.field_ring_fraction), config,
-                               config.field_coarse_share):
+            if not is_red_ring(_coarse_contrast(small, labels, k, box, fields.field_ring_fraction), config,
+                               fields.field_coarse_share):
                 continue
             field = _ring_field(image, labels, k, box, scale, config)
             if field is not None and not any(_box_ious(np.asarray(field.bbox), np.asarray([f.bbox]))[0]
-                                             >= config.pass_duplicate_iou for f in out):
+                                             >= config.scene.pass_duplicate_iou for f in out):
                 out.append(field)  # the first level that shows a field in its ring stands for it
     return out
 
@@ -190,8 +191,8 @@ def _ring_field(image, labels, label: int, box, scale: float, config: PipelineCo
     bbox = cv2.boundingRect(contour)
     field = np.zeros((bbox[3], bbox[2]), np.uint8)
     cv2.drawContours(field, [contour], -1, 255, thickness=cv2.FILLED, offset=(-bbox[0], -bbox[1]))
-    if not is_red_ring(ring_contrast(image, bbox, field, config.field_ring_fraction), config):
+    if not is_red_ring(ring_contrast(image, bbox, field, config.bright_fields.field_ring_fraction), config):
         return None
-    if classify_shape(field, config.min_shape_fit, config.shape_fill_window).shape not in FIELD_SHAPES:
+    if classify_shape(field, config.shape.min_shape_fit, config.shape.shape_fill_window).shape not in FIELD_SHAPES:
         return None
     return Field(tuple(int(v) for v in bbox), field, contour)

@@ -70,7 +70,7 @@ def readings_of(seg: Segment, shapes, catalogue, config: PipelineConfig,
         ring = ring_edge_bbox(image, seg.bbox, shapes[0], config) if same else None
         # a reading of about this box that holds only some of the ids (another template's extent happening to
         # match the ring, e.g. a lettered ring) does not stand for the others
-        if ring is not None and not any(box_iou(ring, r.bbox) >= config.rim_same_iou
+        if ring is not None and not any(box_iou(ring, r.bbox) >= config.rims.rim_same_iou
                                         and set(same) <= set(r.template_ids) for r in readings):
             readings.append(FaceReading(ring, same))
     return tuple(readings)
@@ -78,18 +78,18 @@ def readings_of(seg: Segment, shapes, catalogue, config: PipelineConfig,
 
 def weak_rim_circles(image: np.ndarray, config: PipelineConfig, taken: Sequence[Tuple[int, int, int, int]],
                      search: Optional[np.ndarray] = None) -> List[Segment]:
-    """Hough circles of ``config.hough_min_face_px`` .. ``config.max_face_px`` that no face candidate covers.
+    """Hough circles of ``hough.hough_min_face_px`` .. ``hough.max_face_px`` (of ``config``) no face candidate covers.
 
     A circle counts as covered when a candidate's box matches it (IoU >= 0.5); a colour
     segment that swallowed the disc together with a neighbour (blue sky, a second sign)
     does not cover it. White circles stay: end-of-restriction signs have no colour.
     """
     search = np.ones(image.shape[:2], bool) if search is None else search
-    r_min, r_max = max(3, config.hough_min_face_px // 2), max(4, config.max_face_px // 2)
+    r_min, r_max = max(3, config.hough.hough_min_face_px // 2), max(4, config.hough.max_face_px // 2)
     out = []
-    scale = hough_scale(r_min, config.hough_scale, config.hough_min_radius_px)
+    scale = hough_scale(r_min, config.hough.hough_scale, config.hough.hough_min_radius_px)
     for seg in hough_segments(image, search, r_min, r_max, scale, config):
-        if (seg.colour in config.colours or seg.colour == "white") and not any(
+        if (seg.colour in config.colour.colours or seg.colour == "white") and not any(
                 box_iou(seg.bbox, box) >= 0.5 for box in taken):
             out.append(seg)
     return out
@@ -100,7 +100,7 @@ def face_candidates(image: np.ndarray, catalogue, config: Optional[PipelineConfi
     """Every segment of ``image`` that colour and shape let be a sign, with its readings.
 
     No depth is used: ``search`` (bool) may limit the image, the small-ring pass
-    looks for faces down to ``config.min_face_px``. Segments cut by the image
+    looks for faces down to ``config.colour.min_face_px``. Segments cut by the image
     border are left out, like in the full pipeline.
     """
     return colour_step(image, catalogue, config, search, hough)[1]
@@ -117,7 +117,7 @@ def colour_step(image: np.ndarray, catalogue, config: Optional[PipelineConfig] =
         candidate = _candidate(seg, catalogue, config, image)
         if candidate is not None:
             out.append(candidate)
-    if hough and config.hough_enabled:
+    if hough and config.hough.hough_enabled:
         circles = weak_rim_circles(image, config, [c.segment.bbox for c in out], search)
         segments = segments + circles
         for seg in circles:

@@ -157,24 +157,25 @@ def classify_segment(
     ``tie_margin`` of the best are decided on the pictogram field alone, the
     face without its outer ``inner_fraction`` (:func:`inner_field_distance`).
     """
-    scales, shift_fraction, keep = config.scales, config.shift_fraction, config.coarse_keep
+    settings = config.classification
+    scales, shift_fraction, keep = settings.scales, settings.shift_fraction, settings.coarse_keep
     if not template_ids:
         return ClassificationResult(None, 0.0)
     ids = list(dict.fromkeys(template_ids))
     if len(ids) > keep:
-        region, _, (w, h) = crop_for_matching(image, bbox, (1.0,), shift_fraction, config.coarse_template_px)
+        region, _, (w, h) = crop_for_matching(image, bbox, (1.0,), shift_fraction, settings.coarse_template_px)
         region = cv2.GaussianBlur(region, (3, 3), 0)
         coarse = {tid: _best_over_scales(region, w, h, catalogue, tid, (1.0,))[0] for tid in ids}
         ids = sorted(ids, key=coarse.get, reverse=True)[:keep]
-    region, _, (w, h) = crop_for_matching(image, bbox, scales, shift_fraction, config.max_template_px)
+    region, _, (w, h) = crop_for_matching(image, bbox, scales, shift_fraction, settings.max_template_px)
     region = cv2.GaussianBlur(region, (3, 3), 0)  # both sides slightly smoothed: less aliasing
     fine = {tid: _best_over_scales(region, w, h, catalogue, tid, scales) for tid in ids}
     scores = {tid: float(r[0]) for tid, r in fine.items()}
     ranked = sorted(ids, key=scores.get, reverse=True)
     best_id = ranked[0]
-    close = [t for t in ranked if scores[t] >= scores[best_id] - config.tie_margin]
+    close = [t for t in ranked if scores[t] >= scores[best_id] - settings.tie_margin]
     if len(close) > 1:
-        distance = {t: inner_field_distance(region, catalogue, t, fine[t][3], fine[t][2], config.inner_fraction)
+        distance = {t: inner_field_distance(region, catalogue, t, fine[t][3], fine[t][2], settings.inner_fraction)
                     for t in close}
         best_id = min(close, key=distance.get)
     return ClassificationResult(best_id, float(np.clip(fine[best_id][0], 0.0, 1.0)), scores)

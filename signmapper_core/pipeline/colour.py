@@ -12,7 +12,7 @@ this scene's lowered saturation floors (faded rings, dull light; see
 thinner than the opening, a pass with an opening scaled to that ring, kept to
 small segments. Only red faces have thin rings (blue and yellow faces are solid
 fields), so with the scene pass on, the small-ring pass reads the scene classes
-of the ring colours (``config.hole_colours``: red); without it, the strong classes
+of the ring colours (``config.colour.hole_colours``: red); without it, the strong classes
 of all colours. A last pass finds the white fields of red-ringed faces by their
 brightness, where the ring has too little colour left (:mod:`.bright_fields`).
 Segments of the scene classes must stand out of their surroundings and have a
@@ -175,13 +175,13 @@ def segments_from_mask(
 
 def ring_open_px(face_px: float, config: PipelineConfig) -> int:
     """Opening that keeps the ring of a ``face_px`` face: at most ring width - 1, at most the usual one."""
-    ring_px = config.ring_fraction * face_px
-    return int(np.clip(np.floor(ring_px) - 1, 1, config.morph_open_px))
+    ring_px = config.colour.ring_fraction * face_px
+    return int(np.clip(np.floor(ring_px) - 1, 1, config.colour.morph_open_px))
 
 
 def _ring_safe_max_px(config: PipelineConfig) -> float:
     """Faces larger than this keep their ring under the usual opening: the small-ring pass ignores them."""
-    return (config.morph_open_px + 1) / config.ring_fraction
+    return (config.colour.morph_open_px + 1) / config.colour.ring_fraction
 
 
 def outline_surround_share(mask: np.ndarray, seg: Segment, grow: float) -> float:
@@ -228,27 +228,27 @@ class ColourFrame:
             if scene:
                 mask = cv2.bitwise_and(hsv_mask(self.hsv_weak, self.weak_ranges[colour]), self.colourful)
             else:
-                mask = hsv_mask(self.hsv, config.hsv_ranges[colour])
+                mask = hsv_mask(self.hsv, config.colour.hsv_ranges[colour])
             self.masks[key] = mask
         return self.masks[key]
 
     @classmethod
     def of(cls, image: np.ndarray, config: PipelineConfig) -> ColourFrame:
         hsv = cv2.cvtColor(image, cv2.COLOR_BGR2HSV)
-        if not config.weak_colour:
+        if not config.scene.weak_colour:
             return cls(hsv, hsv, None, {})
         scene = scene_colour(image, config)
         balanced = apply_gains(image, scene.gains)
         hsv_weak = hsv if balanced is image else cv2.cvtColor(balanced, cv2.COLOR_BGR2HSV)
-        colourful = chroma_at_least(hsv_weak, config.weak_min_chroma).view(np.uint8) * 255
+        colourful = chroma_at_least(hsv_weak, config.scene.weak_min_chroma).view(np.uint8) * 255
         return cls(hsv, hsv_weak, colourful, scene.weak_ranges)
 
 
 def _weak_outline(seg: Segment, colour: str, config: PipelineConfig) -> bool:
-    """Whether a scene-pass segment has an outline a face of its colour has (``config.weak_shapes``; any
+    """Whether a scene-pass segment has an outline a face of its colour has (``config.scene.weak_shapes``; any
     ideal outline for colours not listed there)."""
-    shape = classify_shape(seg.mask, config.min_shape_fit, config.shape_fill_window).shape
-    allowed = config.weak_shapes.get(colour)
+    shape = classify_shape(seg.mask, config.shape.min_shape_fit, config.shape.shape_fill_window).shape
+    allowed = config.scene.weak_shapes.get(colour)
     return shape is not None and (allowed is None or shape in allowed)
 
 
@@ -257,47 +257,49 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
     """Colour segments of ``image`` (limited to the bool ``search`` mask when given), all passes.
 
     ``small_face_px``: the smallest face (pixels) worth finding; the ring of such a
-    face sets the opening of the small-ring pass. None: ``config.min_face_px``
+    face sets the opening of the small-ring pass. None: ``config.colour.min_face_px``
     (no depth, so no size limit from a search space). ``frame``: the image's
     :class:`ColourFrame` if already computed.
     """
+    segmenting, scene = config.colour, config.scene
     frame = frame or ColourFrame.of(image, config)
     inside = None if search is None else search.astype(np.uint8) * 255
-    small_open = ring_open_px(config.min_face_px if small_face_px is None else small_face_px, config)
+    small_open = ring_open_px(segmenting.min_face_px if small_face_px is None else small_face_px, config)
     # (opening, largest side kept, scene classes, colours)
-    passes = [(config.morph_open_px, None, False, config.colours)]
-    if config.weak_colour:
-        passes.append((config.morph_open_px, None, True, config.weak_colours))
-    if small_open < config.morph_open_px:
-        rings = [c for c in config.weak_colours if c in config.hole_colours] if config.weak_colour else config.colours
-        passes.append((small_open, _ring_safe_max_px(config), config.weak_colour, rings))
+    passes = [(segmenting.morph_open_px, None, False, segmenting.colours)]
+    if scene.weak_colour:
+        passes.append((segmenting.morph_open_px, None, True, scene.weak_colours))
+    if small_open < segmenting.morph_open_px:
+        rings = ([c for c in scene.weak_colours if c in segmenting.hole_colours] if scene.weak_colour
+                 else segmenting.colours)
+        passes.append((small_open, _ring_safe_max_px(config), scene.weak_colour, rings))
     out: List[Segment] = []
     for open_px, max_side, weak, colours in passes:
         for colour in colours:
-            if colour not in config.colours:
+            if colour not in segmenting.colours:
                 continue
             raw = frame.colour_mask(colour, weak, config)
             if inside is not None:
                 raw = cv2.bitwise_and(raw, inside)
-            mask = clean_mask(raw, open_px, config.morph_close_px)
-            min_px = config.min_part_px.get(colour, config.min_segment_px)
-            for seg in segments_from_mask(mask, colour, min_px, config.min_bbox_px,
-                                          config.border_margin_px, holes=colour in config.hole_colours,
-                                          min_hole_px=config.min_hole_px):
+            mask = clean_mask(raw, open_px, segmenting.morph_close_px)
+            min_px = segmenting.min_part_px.get(colour, segmenting.min_segment_px)
+            for seg in segments_from_mask(mask, colour, min_px, segmenting.min_bbox_px,
+                                          segmenting.border_margin_px, holes=colour in segmenting.hole_colours,
+                                          min_hole_px=segmenting.min_hole_px):
                 if max_side is not None and max(seg.bbox[2], seg.bbox[3]) > max_side:
                     continue
-                if weak and outline_surround_share(raw, seg, config.weak_surround_px) > config.weak_max_surround:
+                if weak and outline_surround_share(raw, seg, scene.weak_surround_px) > scene.weak_max_surround:
                     continue  # part of a larger coloured area (sky, hedge, façade), not a face of its own
                 if weak and not _weak_outline(seg, colour, config):
                     continue  # the scene pass's extra segments must look like a face to be worth depth
-                if any(o.colour == colour and box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou for o in out):
+                if any(o.colour == colour and box_iou(o.bbox, seg.bbox) >= scene.pass_duplicate_iou for o in out):
                     continue
                 out.append(seg)
-    if config.field_pass and "red" in config.colours:
+    if config.bright_fields.field_pass and "red" in config.colour.colours:
         for seg in frame.ring_fields(image, config, small_face_px):
             if search is not None and inside_share(seg, search) < 0.5:
                 continue  # a field mostly outside the search space
-            if not any(o.colour == "red" and (box_iou(o.bbox, seg.bbox) >= config.pass_duplicate_iou
+            if not any(o.colour == "red" and (box_iou(o.bbox, seg.bbox) >= config.scene.pass_duplicate_iou
                                               or _field_of(seg.bbox, o.bbox)) for o in out):
                 out.append(seg)
     return out
@@ -323,7 +325,7 @@ def field_segments(image: np.ndarray, search: Optional[np.ndarray], config: Pipe
                    small_face_px: Optional[float] = None) -> List[Segment]:
     """The white fields of red-ringed faces found by brightness (:mod:`.bright_fields`) as "hole" segments."""
     height, width = image.shape[:2]
-    m = config.border_margin_px
+    m = config.colour.border_margin_px
     out = []
     for found in red_ring_fields(image, search, config, small_face_px):
         x, y, w, h = found.bbox
@@ -364,7 +366,7 @@ def merge_candidates(segments: Sequence[Segment], max_gap_fraction: float) -> Li
     """Merged segments of same-coloured pieces close to each other, for faces split by an occluder.
 
     Two pieces qualify when the gap between their boxes is at most ``max_gap_fraction``
-    of the merged box's size (``PipelineConfig.merge_max_gap``) and the merged box is not
+    of the merged box's size (``config.colour.merge_max_gap``) and the merged box is not
     elongated beyond 2:1.
     """
     out = []
@@ -392,16 +394,16 @@ def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment
 
     A white bar (no entry, 2.02) or a pole in front cuts a face into two pieces
     stacked along one axis: their boxes overlap along the other axis by at least
-    ``config.split_min_span_overlap`` and the gap between them is small (``merge_max_gap``).
+    ``config.colour.split_min_span_overlap`` and the gap between them is small (``merge_max_gap``).
     A bar along the diagonal (end of the priority road, 3.04) leaves two halves
     offset along both axes, overlapping along each by ``split_min_diagonal_overlap``.
     The hull of both is kept when its outline fits an ideal shape (``min_shape_fit``)
     better, by ``split_min_gain``, than each piece does: the whole face is then judged
     before its pieces.
     """
-    min_fit, max_gap_fraction = config.min_shape_fit, config.merge_max_gap
-    min_span_overlap, min_gain = config.split_min_span_overlap, config.split_min_gain
-    min_diagonal = config.split_min_diagonal_overlap
+    min_fit, max_gap_fraction = config.shape.min_shape_fit, config.colour.merge_max_gap
+    min_span_overlap, min_gain = config.colour.split_min_span_overlap, config.colour.split_min_gain
+    min_diagonal = config.colour.split_min_diagonal_overlap
     fits: dict = {}
 
     def fit_of(k: int) -> float:

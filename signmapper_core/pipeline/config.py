@@ -1,18 +1,20 @@
-"""Settings of the detection pipeline, one frozen dataclass so a run is reproducible.
+"""Settings of the detection pipeline: one frozen section per step, so a run is reproducible.
 
 Defaults follow Cavegn (2011): a 4-14 m search space in front of the camera and
 HSV thresholds for the sign colours (``sign_colours``). Hue is OpenCV's 0-179
-scale. Every threshold of a step is a field here, with its reason; the step
-functions take them from the config and declare no defaults of their own. A
-run's output records every field (``run_settings``), so the run can be repeated
-from its output.
+scale. Every threshold of a step is a field of that step's section, with its
+reason; the step functions take them from the config and declare no defaults
+of their own. A setting's name is unique across the sections (a search for it
+finds every use, and a record of before the sections maps it back by name). A
+run's output records every section (``run_settings``), so the run can be
+repeated from its output; fusion's settings are ``fusion.FusionConfig``.
 """
 
 from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass, field
-from typing import Dict, Optional, Tuple
+from typing import Any, Dict, Mapping, Optional, Tuple
 
 from ..sign_colours import HOUGH_TINT_HUES, HSV_RANGES, SIGN_COLOURS, WEAK_HUES, HsvRange
 
@@ -20,20 +22,10 @@ DEFAULT_HSV_RANGES = HSV_RANGES  # the name the steps' tests use
 
 
 @dataclass(frozen=True)
-class PipelineConfig:
-    """All thresholds of the detection steps; the first six are the documented contract."""
+class ColourConfig:
+    """Colour segmentation (step 3): which colours, their HSV thresholds, and what a usable segment is."""
 
-    near_m: float = 4.0
-    far_m: float = 14.0
     colours: Tuple[str, ...] = SIGN_COLOURS
-    exclude: Tuple[str, ...] = ()
-    detection_threshold: float = 0.5  # planar share of a segment needed to keep it
-    classification_threshold: Optional[float] = None  # indicator needed for "accepted"; None = the classifier's own
-    classifier: str = "auto"  # "cnn" (learned network of the catalogue), "ncc" (template matching), "auto" (cnn if
-    # the catalogue has a network)
-    size_tolerance: float = 0.15  # relative deviation from a standard format
-
-    # colour segmentation
     hsv_ranges: Dict[str, Tuple[HsvRange, ...]] = field(default_factory=lambda: dict(DEFAULT_HSV_RANGES))
     morph_open_px: int = 3  # removes speckle
     morph_close_px: int = 5  # bridges small gaps in a sign's ring
@@ -42,9 +34,14 @@ class PipelineConfig:
     # road's box (a 30 px face: a 15 px diamond of ~110 px)
     min_part_px: Dict[str, int] = field(default_factory=lambda: {"yellow": 90})
     min_bbox_px: int = 12
-    search_close_px: int = 15  # holes of a given depth's search space this small are closed before it cuts colours
-    search_grow_px: int = 31  # with SGBM depth the search space is grown by this much instead
     border_margin_px: int = 2  # segments this close to the image border are cut and rejected
+    # the field inside a ring is a segment of its own when the ring's outline is spoilt by a neighbour
+    # of the same colour; only red faces have rings/borders around a field (blue fields are pictograms)
+    hole_colours: Tuple[str, ...] = ("red",)
+    min_hole_px: int = 60  # the field of a 30 px triangle is ~200 px; smaller holes are letters and gaps
+    # morphology scaled to the ring: a round sign's ring is ~9.5 % of its diameter (SSV prohibition signs)
+    ring_fraction: float = 0.09
+    min_face_px: int = 16  # smallest face to find without depth (GTSDB's smallest signs); sets the small pass
     max_merge_pieces: int = 40  # rejected segments tried in pairs (faces split by an occluder)
     merge_max_gap: float = 0.35  # two pieces of one face are at most this x the merged box's size apart
     # a bar (2.02) or a pole cuts a face into pieces stacked along one axis: they overlap along the other by this
@@ -54,7 +51,18 @@ class PipelineConfig:
     # along both axes: their boxes overlap by about half along each (a clean 3.04: 0.48 and 0.48)
     split_min_diagonal_overlap: float = 0.3
     split_min_gain: float = 0.05  # ...and their hull fits an ideal outline this much better than either piece
-    # scene-adaptive colour (scene_colour.py): a second pass with saturation/value floors from the image
+
+    def __post_init__(self):
+        unknown = set(self.colours) - set(self.hsv_ranges)
+        if unknown:
+            raise ValueError(f"no HSV thresholds for colours {sorted(unknown)}")
+
+
+@dataclass(frozen=True)
+class SceneConfig:
+    """The scene pass (scene_colour.py): colour floors read from the image, for faded, dim and cast signs."""
+
+    # scene-adaptive colour: a second pass with saturation/value floors from the image
     # remove the scene's colour cast before the scene pass reads hues. Off by default: on GTSDB's tune split it
     # found 1 more of 127 signs (casts there stay under 6 %), but on synthetic drives, whose exposure model
     # casts 3-7 % in most pairs, it cost ~10 ms of 76 per Full-HD pair (given depth)
@@ -79,21 +87,22 @@ class PipelineConfig:
     weak_val_factor: float = 0.35  # weak value floor from the scene's median brightness: a dim sign in a dark
     # scene keeps about a third of the scene's brightness (GTSDB dusk scenes: rings at V 35-80, median ~110)
     weak_val_min: int = 30  # darker pixels carry no reliable hue (JPEG steps of 5 are already 40 saturation)
-    # the field inside a ring is a segment of its own when the ring's outline is spoilt by a neighbour
-    # of the same colour; only red faces have rings/borders around a field (blue fields are pictograms)
-    hole_colours: Tuple[str, ...] = ("red",)
-    min_hole_px: int = 60  # the field of a 30 px triangle is ~200 px; smaller holes are letters and gaps
     weak_max_surround: float = 0.03  # a weak segment whose surrounding band is this coloured is background
     weak_surround_px: float = 0.2  # that band follows the outline, this x the segment's size wide: within the
     # white rim of a priority road (0.5 x its yellow), whose autumn trees are yellow too (a band around the
     # box reached them). GTSDB tune split, signs >= 30 px: 0.1 -> 0.03 found 2 more (fewer false segments
     # displaced true ones), 18.9 -> 15.6 candidates per image; 0.01 lost 4, 0 lost 14
     pass_duplicate_iou: float = 0.5  # a later pass's segment overlapping an earlier one this much is the same
-    # morphology scaled to the ring: a round sign's ring is ~9.5 % of its diameter (SSV prohibition signs)
-    ring_fraction: float = 0.09
-    min_face_px: int = 16  # smallest face to find without depth (GTSDB's smallest signs); sets the small pass
-    # white fields inside red rings found by brightness (bright_fields.py): in dim light a ring keeps no
-    # usable saturation, but its field is still brighter than it and the ring still redder than the field
+
+
+@dataclass(frozen=True)
+class BrightFieldConfig:
+    """White fields inside red rings found by brightness (bright_fields.py).
+
+    In dim light a ring keeps no usable saturation, but its field is still
+    brighter than it and the ring still redder than the field.
+    """
+
     field_pass: bool = True
     field_scale: float = 0.5  # fields are sought on the grey image at this scale at most...
     field_min_side_px: float = 8.0  # ...or less, where the smallest field sought stays this wide: a 4-14 m
@@ -119,12 +128,18 @@ class PipelineConfig:
     # a component is first judged on the reduced image by means, asking this share of each margin above
     # (GTSDB tune split: 15 % of the components pass, every field later kept on a sign among them)
     field_coarse_share: float = 0.5
-    max_face_px: int = 200  # largest round face the Hough route looks for without depth (radius range = cost)
-    hough_min_face_px: int = 28  # smallest one: circles under ~28 px double its time and are mostly clutter
 
-    # a coloured part inside a white rim (yellow diamond, blue panel): the face box is also measured in the
-    # image, as the white rim and as the face's outer edge (face_extent.rim_face_bboxes); rim widths differ
-    # between designs (Germany's priority road: face = 2.0 x its yellow, the Swiss template 1.28 x)
+
+@dataclass(frozen=True)
+class RimConfig:
+    """Face boxes measured in the image around a coloured part (face_extent.rim_face_bboxes).
+
+    A coloured part inside a white rim (yellow diamond, blue panel): the face box
+    is also measured as the white rim and as the face's outer edge; rim widths
+    differ between designs (Germany's priority road: face = 2.0 x its yellow,
+    the Swiss template 1.28 x).
+    """
+
     rim_max_scale: float = 2.4  # widest rim sought: face / coloured part (GTSDB tune split: 1.9-2.3 for 3.03)
     rim_inner_scale: float = 1.12  # the part's own edge lies within this of its colour segment's box
     rim_edge_contrast: float = 3.0  # the outer edge is this x stronger than the plain rim inside it
@@ -138,7 +153,11 @@ class PipelineConfig:
     rim_same_iou: float = 0.8  # a measured face box overlapping an earlier reading this much is that reading
     rim_scale_step: float = 1.03  # the outline is laid at scales this factor apart (3 %: a pixel at 33 px)
 
-    # shape
+
+@dataclass(frozen=True)
+class ShapeConfig:
+    """Shape (step 4): how well a segment must fit an ideal outline."""
+
     min_shape_fit: float = 0.68  # IoU with the best ideal outline; real triangles with rounded corners
     # and perspective fit 0.69-0.72 (GTSDB tune split: 0.72 -> 0.68 found 2.3 % more faces)
     confident_shape_fit: float = 0.72  # below it (or off the usual fill window) an outline is marginal...
@@ -154,11 +173,28 @@ class PipelineConfig:
     # own parts keep 0.15. Small real triangles (blur, rounded corners) fill 0.63-0.69 of their box, beyond
     # a triangle's 0.5 + 0.15 (GTSDB tune split: 0.15 -> 0.2 found 3 more of 127 signs, +2 candidates/image)
     shape_fill_window: float = 0.2
+
+
+@dataclass(frozen=True)
+class SizeConfig:
+    """Size (step 5): a segment's metric size rounded to a standard format."""
+
+    size_tolerance: float = 0.15  # relative deviation from a standard format
     # a round face seen at an angle is an ellipse: sized by its larger axis, down to this axis ratio
     # (~60 deg off the optical axis; beyond it the face is unreadable anyway)
     min_round_axis_ratio: float = 0.5
 
-    # depth from stereo (used when no depth map is given)
+
+@dataclass(frozen=True)
+class DepthConfig:
+    """The search space (near..far in front of the camera) and depth from stereo when no depth map is given."""
+
+    near_m: float = 4.0
+    far_m: float = 14.0
+    search_close_px: int = 15  # holes of a given depth's search space this small are closed before it cuts colours
+    search_grow_px: int = 31  # with SGBM depth the search space is grown by this much instead
+    face_depth_slack: float = 0.2  # a face centre's plane depth is used within near x (1 - this) .. far x (1 + this)
+    # (a face reaching past the range's limits); beyond, the segment's measured depth is used
     sgbm_scale: float = 0.5  # SGBM on a downscaled pair: ~8x faster, disparity still sub-pixel
     sgbm_block_size: int = 5
     sgbm_rows_only: bool = True  # match only the row bands holding colour candidates
@@ -172,7 +208,16 @@ class PipelineConfig:
     sgbm_band_max_height: float = 1.3
     sgbm_band_min_height: float = 0.5  # ...or shorter than this x the lowest format at the far limit (a half face)
 
-    # planarity (detection indicator)
+    def __post_init__(self):
+        if not 0 < self.near_m < self.far_m:
+            raise ValueError(f"need 0 < near_m < far_m, got {self.near_m}, {self.far_m}")
+
+
+@dataclass(frozen=True)
+class PlanarityConfig:
+    """Planarity (step 6): the share of a segment lying on one plane, the detection indicator."""
+
+    detection_threshold: float = 0.5  # planar share of a segment needed to keep it
     planarity_window_px: int = 7
     planarity_tolerance_px: float = 0.6  # residual in full-resolution disparity pixels, given depth
     sgbm_planarity_tolerance_px: float = 1.0  # the same for half-scale SGBM depth (noisier: 17% of true
@@ -183,10 +228,16 @@ class PipelineConfig:
     # edge the background's depth) or background through the outline; a slanted face stays within a few per cent.
     # None: all depths count
     max_depth_deviation: Optional[float] = 0.25
-    face_depth_slack: float = 0.2  # a face centre's plane depth is used within near x (1 - this) .. far x (1 + this)
-    # (a face reaching past the range's limits); beyond, the segment's measured depth is used
 
-    # classification
+
+@dataclass(frozen=True)
+class ClassificationConfig:
+    """Classification (step 7): which classifier, which templates, and when its reading is accepted."""
+
+    classifier: str = "auto"  # "cnn" (learned network of the catalogue), "ncc" (template matching), "auto" (cnn if
+    # the catalogue has a network)
+    classification_threshold: Optional[float] = None  # indicator needed for "accepted"; None = the classifier's own
+    exclude: Tuple[str, ...] = ()  # template ids never assigned
     min_surround_score: float = 0.5  # a panel reading needs its part outside the colour segment to match
     min_classification_score: Optional[float] = None  # below this the segment is not reported; None = classifier's
     scales: Tuple[float, ...] = (0.92, 1.0, 1.08)
@@ -199,8 +250,20 @@ class PipelineConfig:
     inner_fraction: float = 0.14  # that field is the face without this outer share (the rim)
     surround_grow: float = 0.04  # a panel's part outside its colour part is read without this margin of the face
     # around the colour part (its blurred edge would count as surround)
+    same_sign_max_iou: float = 0.3  # detections of one pair overlapping more (or holding the other's centre) are
+    # one sign found twice, or a part of it found as a sign: the best (detection x classification) is kept
 
-    # Hough fallback for faded or white/grey round signs
+    def __post_init__(self):
+        from .classifiers import CLASSIFIERS
+
+        if self.classifier not in CLASSIFIERS:
+            raise ValueError(f"unknown classifier {self.classifier!r}; choose one of {', '.join(CLASSIFIERS)}")
+
+
+@dataclass(frozen=True)
+class HoughConfig:
+    """Hough fallback for faded or white/grey round signs (hough.py), and the faces it seeks without depth."""
+
     hough_enabled: bool = True
     hough_scale: float = 0.5  # at most; less where the smallest radius sought allows (hough_min_radius_px)
     # smallest radius sought, in pixels of the Hough image: a 4-14 m search space's smallest disc (r 20 px)
@@ -210,17 +273,22 @@ class PipelineConfig:
     hough_edge_threshold: float = 150.0  # param1 of HOUGH_GRADIENT_ALT
     hough_max_status: str = "review"  # status cap of Hough finds whose ring is not in full colour
     hough_max_diameter_m: float = 0.6  # larger round formats only by colour: the radius range sets the cost
+    max_face_px: int = 200  # largest round face the Hough route (and the bright-field pass) looks for without
+    # depth (radius range = cost)
+    hough_min_face_px: int = 28  # smallest one: circles under ~28 px double its time and are mostly clutter
     # a Hough ring is named by the hue of its pixels at least this saturated: below the colour step's weak
     # floor (weak_sat_min) so a rim too pale for it is still read as red/blue, above grey noise (~10)
     hough_tint_min_saturation: int = 22
     hough_tint_hues: Dict[str, Tuple[Tuple[int, int], ...]] = field(default_factory=lambda: dict(HOUGH_TINT_HUES))
     hough_tint_min_share: float = 0.25  # share of the ring's pixels a tint needs to name it; else white
-    same_sign_max_iou: float = 0.3  # detections of one pair overlapping more (or holding the other's centre) are
-    # one sign found twice, or a part of it found as a sign: the best is kept
     hough_strong_ring_share: float = 0.5  # a Hough find whose ring is this much in full colour is a colour find
     # the colour step lost (an attachment spoiled its outline) and may be accepted; others stay at hough_max_status
 
-    # supplementary plates (pipeline/plates.py): white rectangles of a plate format right below or above a sign
+
+@dataclass(frozen=True)
+class PlateConfig:
+    """Supplementary plates (plates.py): white rectangles of a plate format right below or above a sign."""
+
     find_plates: bool = True
     plate_max_gap_m: float = 0.12  # between the sign's edge and the plate (both clamped to one pole)
     plate_min_gap_m: float = 0.03  # a white region reaching further into the sign's box is part of its panel
@@ -237,21 +305,45 @@ class PipelineConfig:
     plate_max_ink: float = 0.5
     plate_accept_score: float = 0.8  # fill and fit to its format: above, the plate is "accepted"
 
-    def __post_init__(self):
-        if not 0 < self.near_m < self.far_m:
-            raise ValueError(f"need 0 < near_m < far_m, got {self.near_m}, {self.far_m}")
-        from .classifiers import CLASSIFIERS
 
-        if self.classifier not in CLASSIFIERS:
-            raise ValueError(f"unknown classifier {self.classifier!r}; choose one of {', '.join(CLASSIFIERS)}")
-        unknown = set(self.colours) - set(self.hsv_ranges)
-        if unknown:
-            raise ValueError(f"no HSV thresholds for colours {sorted(unknown)}")
+@dataclass(frozen=True)
+class PipelineConfig:
+    """All settings of the detection steps, one section per step.
+
+    The documented contract (``mapsigns``' main parameters) is ``depth.near_m``,
+    ``depth.far_m``, ``colour.colours``, ``classification.exclude``,
+    ``planarity.detection_threshold``, ``classification.classification_threshold``
+    and ``classification.classifier``.
+    """
+
+    colour: ColourConfig = field(default_factory=ColourConfig)
+    scene: SceneConfig = field(default_factory=SceneConfig)
+    bright_fields: BrightFieldConfig = field(default_factory=BrightFieldConfig)
+    rims: RimConfig = field(default_factory=RimConfig)
+    shape: ShapeConfig = field(default_factory=ShapeConfig)
+    size: SizeConfig = field(default_factory=SizeConfig)
+    depth: DepthConfig = field(default_factory=DepthConfig)
+    planarity: PlanarityConfig = field(default_factory=PlanarityConfig)
+    classification: ClassificationConfig = field(default_factory=ClassificationConfig)
+    hough: HoughConfig = field(default_factory=HoughConfig)
+    plates: PlateConfig = field(default_factory=PlateConfig)
 
 
-def default(name: str):
-    """The default of setting ``name``, without building a config (front ends offer it as theirs)."""
-    for f in dataclasses.fields(PipelineConfig):
+SECTIONS: Dict[str, type] = {f.name: f.default_factory for f in dataclasses.fields(PipelineConfig)}
+# setting name -> its section (names are unique across the sections; tests/core/test_run_settings.py checks it)
+SECTION_OF: Dict[str, str] = {f.name: section for section, cls in SECTIONS.items() for f in dataclasses.fields(cls)}
+
+
+def with_settings(config: PipelineConfig, changes: Mapping[str, Mapping[str, Any]]) -> PipelineConfig:
+    """``config`` with the settings ``{section: {name: value}}`` changed; each section checks its own values."""
+    return dataclasses.replace(config, **{section: dataclasses.replace(getattr(config, section), **values)
+                                          for section, values in changes.items()})
+
+
+def default(section: str, name: str):
+    """The default of setting ``name`` of ``section``, without building a config (front ends offer it as theirs)."""
+    cls = SECTIONS.get(section)
+    for f in dataclasses.fields(cls) if cls is not None else ():
         if f.name == name:
             return f.default_factory() if f.default is dataclasses.MISSING else f.default
-    raise KeyError(f"PipelineConfig has no setting '{name}'")
+    raise KeyError(f"PipelineConfig has no setting '{section}.{name}'")

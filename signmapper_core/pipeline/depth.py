@@ -108,8 +108,9 @@ def sgbm_depth(
     disparity are context, their depth is not kept unless the window starts at the image's edge).
     Pixels outside stay NaN. Neither: the whole image.
     """
-    near_m, far_m, scale, far_factor = config.near_m, config.far_m, config.sgbm_scale, config.sgbm_far_factor
-    block_size, uniqueness = config.sgbm_block_size, config.sgbm_uniqueness
+    settings = config.depth
+    near_m, far_m, scale, far_factor = settings.near_m, settings.far_m, settings.sgbm_scale, settings.sgbm_far_factor
+    block_size, uniqueness = settings.sgbm_block_size, settings.sgbm_uniqueness
     height, width = left.shape[:2]
     depth = np.full((height, width), np.nan, dtype=np.float32)
     if windows is None:

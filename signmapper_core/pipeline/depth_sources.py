@@ -59,17 +59,17 @@ class GivenDepth:
         return np.asarray(self.depth, dtype=np.float32)
 
     def planarity_tolerance_px(self, config) -> float:
-        return config.planarity_tolerance_px
+        return config.planarity.planarity_tolerance_px
 
     def search_cut(self, search: np.ndarray, config) -> np.ndarray:
-        return close_holes(search, config.search_close_px)
+        return close_holes(search, config.depth.search_close_px)
 
 
 @dataclass(frozen=True, eq=False)
 class StereoMatching:
     """Depth by semi-global matching of the left image against ``right`` (:func:`.depth.sgbm_depth`).
 
-    With ``config.sgbm_rows_only`` it matches only the rows of the colour candidates found before
+    With ``config.depth.sgbm_rows_only`` it matches only the rows of the colour candidates found before
     depth (and with ``sgbm_columns_only`` only windows around them), because matching dominates
     the time per pair; the Hough fallback then sees only these. Its depth is noisier than a given
     one: planes are allowed ``sgbm_planarity_tolerance_px`` and the search space is grown (SGBM
@@ -80,29 +80,29 @@ class StereoMatching:
     name = "sgbm"
 
     def wants_candidate_boxes(self, config) -> bool:
-        return config.sgbm_rows_only
+        return config.depth.sgbm_rows_only
 
     def depth_map(self, left, camera, config, roi, candidate_boxes=None) -> np.ndarray:
         """Depth over ``roi``'s rows, or only around ``candidate_boxes`` when given (none: no depth at all)."""
         x0, y0, x1, y1 = roi
         bands, windows = [(y0, y1)], None
         if candidate_boxes is not None:
-            if config.sgbm_columns_only:
-                reach = largest_disparity_px(camera, config.near_m, config.far_m, config.sgbm_scale,
-                                             config.sgbm_far_factor)
-                windows = match_windows(candidate_boxes, left.shape[1], left.shape[0], config.sgbm_row_margin_px,
-                                        config.sgbm_row_margin_px, reach)
+            if config.depth.sgbm_columns_only:
+                reach = largest_disparity_px(camera, config.depth.near_m, config.depth.far_m, config.depth.sgbm_scale,
+                                             config.depth.sgbm_far_factor)
+                windows = match_windows(candidate_boxes, left.shape[1], left.shape[0], config.depth.sgbm_row_margin_px,
+                                        config.depth.sgbm_row_margin_px, reach)
             bands = merge_row_bands([(y, y + h) for _, y, _, h in candidate_boxes], left.shape[0],
-                                    config.sgbm_row_margin_px)
+                                    config.depth.sgbm_row_margin_px)
         if not bands:
             return np.full(left.shape[:2], np.nan, dtype=np.float32)
         return sgbm_depth(left, self.right, camera, config, bands, windows)
 
     def planarity_tolerance_px(self, config) -> float:
-        return config.sgbm_planarity_tolerance_px
+        return config.planarity.sgbm_planarity_tolerance_px
 
     def search_cut(self, search: np.ndarray, config) -> np.ndarray:
-        return grow(search, config.search_grow_px)
+        return grow(search, config.depth.search_grow_px)
 
 
 def depth_source_for(depth: Optional[np.ndarray], right: Optional[np.ndarray]) -> DepthSource:

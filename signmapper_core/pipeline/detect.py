@@ -21,7 +21,7 @@ from .boxes import box_iou
 from .classifiers import accept_threshold, marginal_min_score, min_score
 from .classify import surround_score
 from .colour import ColourFrame, Segment, find_colour_segments, merge_candidates, split_face_merges
-from .config import PipelineConfig
+from .config import PipelineConfig, with_settings
 from .depth_sources import depth_source_for
 from .detection import Detection
 from .face_extent import FULL, candidate_entries, face_bbox, hole_candidates, rim_face_bboxes
@@ -66,8 +66,8 @@ def stereo_candidate_boxes(pair: PairContext, frame: ColourFrame) -> List[Box]:
     part of a panel) somewhere in the search space: where stereo matching is worth running."""
     config, camera = pair.config, pair.camera
     heights = [h for e in pair.catalogue for (_, h) in e.formats.values()] or [0.4, 1.5]
-    max_px = config.sgbm_band_max_height * max(heights) * camera.fy / config.near_m
-    min_px = config.sgbm_band_min_height * min(heights) * camera.fy / config.far_m
+    max_px = config.depth.sgbm_band_max_height * max(heights) * camera.fy / config.depth.near_m
+    min_px = config.depth.sgbm_band_min_height * min(heights) * camera.fy / config.depth.far_m
     return [s.bbox for s in colour_segments(pair, None, frame) if min_px <= s.bbox[3] <= max_px]
 
 
@@ -106,7 +106,7 @@ def size_to_format(seg: Segment, candidates, depth_m: float, shape: Optional[str
         groups.setdefault(tuple(round(v, 2) for v in ext), (ext, []))[1].append(entry)
     fits = []
     x, y, w, h = seg.bbox
-    round_face = shape in ROUND_SHAPES and min(w, h) >= config.min_round_axis_ratio * max(w, h)
+    round_face = shape in ROUND_SHAPES and min(w, h) >= config.size.min_round_axis_ratio * max(w, h)
     diameter = round_face_diameter_px(seg) if round_face else None
     for ext, group in groups.values():
         faces = [face_bbox(seg.bbox, ext)]
@@ -119,7 +119,7 @@ def size_to_format(seg: Segment, candidates, depth_m: float, shape: Optional[str
                 width_m, height_m = metric_size(camera, (x, y, diameter, diameter), depth_m)
             else:
                 width_m, height_m = metric_size(camera, face, depth_m)
-            match = round_to_format(catalogue, entries, width_m, height_m, config.size_tolerance)
+            match = round_to_format(catalogue, entries, width_m, height_m, config.size.size_tolerance)
             if match is not None:
                 allowed = {e.id for e in entries}
                 ids = [t for t in match.template_ids if t in allowed]
@@ -138,10 +138,10 @@ def segment_outline(seg: Segment, config: PipelineConfig) -> Tuple[Tuple[str, ..
     """
     if seg.source == "hough":
         return ("circle",), False
-    result = classify_shape(seg.mask, config.min_shape_fit, config.shape_fill_window)
-    shapes = outline_shapes(result, config.shape_ambiguity, config.min_shape_fit)
-    marginal = bool(shapes) and (result.fit < config.confident_shape_fit
-                                 or abs(result.fill_ratio - IDEAL_FILL[shapes[0]]) > config.confident_fill_window)
+    result = classify_shape(seg.mask, config.shape.min_shape_fit, config.shape.shape_fill_window)
+    shapes = outline_shapes(result, config.shape.shape_ambiguity, config.shape.min_shape_fit)
+    marginal = bool(shapes) and (result.fit < config.shape.confident_shape_fit
+                                 or abs(result.fill_ratio - IDEAL_FILL[shapes[0]]) > config.shape.confident_fill_window)
     return shapes, marginal
 
 
@@ -157,13 +157,14 @@ def segment_candidates(seg: Segment, shape, catalogue, config: PipelineConfig):
     """
     outlines = (shape,) if isinstance(shape, str) else tuple(shape)
     shapes = tuple(dict.fromkeys(c for s in outlines for c in catalogue_shapes(s, seg.bbox[2], seg.bbox[3])))
+    exclude, hsv_ranges = config.classification.exclude, config.colour.hsv_ranges
     if seg.source == "hough":  # the circle is the face's outline, whatever its weak colour
-        return [(e, FULL) for e in catalogue.filter(colours=[seg.colour], shapes=shapes, exclude=config.exclude)]
+        return [(e, FULL) for e in catalogue.filter(colours=[seg.colour], shapes=shapes, exclude=exclude)]
     if seg.source == "hole":  # the field inside a ring: the face is grown from it
-        return hole_candidates(catalogue, seg.colour, shapes, config.hsv_ranges, tuple(config.colours) + ("white",),
-                               config.exclude)
-    return candidate_entries(catalogue, seg.colour, shapes, config.hsv_ranges, tuple(config.colours) + ("white",),
-                             config.exclude)
+        return hole_candidates(catalogue, seg.colour, shapes, hsv_ranges, tuple(config.colour.colours) + ("white",),
+                               exclude)
+    return candidate_entries(catalogue, seg.colour, shapes, hsv_ranges, tuple(config.colour.colours) + ("white",),
+                             exclude)
 
 
 def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Optional[Detection]:
@@ -181,7 +182,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     candidates = segment_candidates(seg, shapes, catalogue, config)
     if not candidates:
         return None
-    size = measure_segment(camera, depth, seg.bbox, seg.surface_mask, config.near_m, config.far_m)
+    size = measure_segment(camera, depth, seg.bbox, seg.surface_mask, config.depth.near_m, config.depth.far_m)
     if size is None:
         return None
     fits = size_to_format(seg, candidates, size.depth_m, shape, pair)
@@ -189,7 +190,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         return None
     planarity = segment_planarity(camera, depth, seg.bbox, seg.surface_mask, config,
                                   pair.depth_source.planarity_tolerance_px(config))
-    if planarity.indicator < config.detection_threshold:
+    if planarity.indicator < config.planarity.detection_threshold:
         return None
     # A reading that grows the segment into a larger face (a zone panel around its red ring) wins
     # when the face's part outside the segment matches too: the bare ring alone would always score
@@ -204,8 +205,8 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
             continue
         if catalogue[cls.template_id].shape in same_shapes:  # the face is the segment (maybe with a rim)
             readings.append((match, face, cls))
-        elif surround_score(left, face, catalogue, cls.template_id, ext, config.surround_grow) >= \
-                config.min_surround_score:
+        elif surround_score(left, face, catalogue, cls.template_id, ext, config.classification.surround_grow) >= \
+                config.classification.min_surround_score:
             panels.append((match, face, cls))
     good_panels = [r for r in panels if r[2].score >= accept]
     pool = good_panels or readings or panels
@@ -213,7 +214,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     # an outline that only fits loosely, or a round one sized as seen at an angle (its box alone fits no
     # format), must resemble its template clearly: a cut of something else fits those readings too easily
     w, h = seg.bbox[2], seg.bbox[3]
-    oblique = shape in ROUND_SHAPES and min(w, h) < (1.0 - config.size_tolerance) * max(w, h)
+    oblique = shape in ROUND_SHAPES and min(w, h) < (1.0 - config.size.size_tolerance) * max(w, h)
     floor = marginal_min_score(classifier, config) if marginal or oblique else min_score(classifier, config)
     if best is None or best[2].score < floor:
         return None
@@ -223,14 +224,14 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         # a circle with a full-colour ring is a colour find the colour step lost (an attachment
         # spoiled its outline); faded or white ones stay for review
         x, y, w, h = seg.bbox
-        ranges = config.hsv_ranges.get(seg.colour)
+        ranges = config.colour.hsv_ranges.get(seg.colour)
         strong = ranges is not None and ring_colour_share(left[y : y + h, x : x + w], seg.mask, ranges) >= \
-            config.hough_strong_ring_share
-        status = status if strong else config.hough_max_status
+            config.hough.hough_strong_ring_share
+        status = status if strong else config.hough.hough_max_status
     u, v = bbox_centre(face)
     z = planarity.depth_at(camera, u, v)
-    slack = config.face_depth_slack
-    if not (np.isfinite(z) and config.near_m * (1.0 - slack) <= z <= config.far_m * (1.0 + slack)):
+    slack = config.depth.face_depth_slack
+    if not (np.isfinite(z) and config.depth.near_m * (1.0 - slack) <= z <= config.depth.far_m * (1.0 + slack)):
         z = size.depth_m
     entry = catalogue[cls.template_id]
     return Detection(
@@ -261,8 +262,8 @@ def suppress_overlaps(detections: Sequence[Detection], max_iou: float) -> List[D
 
 
 def _round_diameters(catalogue, config: PipelineConfig) -> List[float]:
-    entries = catalogue.filter(shapes=["circle"], exclude=tuple(config.exclude))
-    diam = [max(f) for e in entries for f in e.formats.values() if max(f) <= config.hough_max_diameter_m]
+    entries = catalogue.filter(shapes=["circle"], exclude=tuple(config.classification.exclude))
+    diam = [max(f) for e in entries for f in e.formats.values() if max(f) <= config.hough.hough_max_diameter_m]
     return diam or [0.4, 0.6]
 
 
@@ -294,7 +295,7 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
         boxes = stereo_candidate_boxes(pair, frame) if source.wants_candidate_boxes(config) else None
     with timer("depth"):
         depth = source.depth_map(left, pair.camera, config, pair.roi, boxes)
-    search = search_space_mask(depth, config.near_m, config.far_m)
+    search = search_space_mask(depth, config.depth.near_m, config.depth.far_m)
     if not pair.is_whole_image:
         inside = np.zeros_like(search)
         inside[y0:y1, x0:x1] = True
@@ -320,13 +321,13 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
             elif not seg.touches_border:
                 rejected.append(seg)
         # pieces that fail alone are also tried together when no whole outline formed (a branch cut them)
-        for seg in merge_candidates(rejected[: config.max_merge_pieces], config.merge_max_gap):
+        for seg in merge_candidates(rejected[: config.colour.max_merge_pieces], config.colour.merge_max_gap):
             det = evaluate_segment(seg, pair, depth)
             if det is not None:
                 detections.append(det)
     with timer("hough"):
         detections += _hough_detections(pair, depth, search, detections)
-    signs = suppress_overlaps(detections, config.same_sign_max_iou)
+    signs = suppress_overlaps(detections, config.classification.same_sign_max_iou)
     with timer("plates"):  # a window around a click looks for the sign alone
         return signs + (find_plates(pair, depth, signs) if pair.is_whole_image else [])
 
@@ -337,12 +338,12 @@ def _hough_detections(pair: PairContext, depth: np.ndarray, search: np.ndarray,
     config = pair.config
     x0, y0, x1, y1 = pair.roi
     detections: List[Detection] = []
-    if config.hough_enabled:
-        r_min, r_max = radius_range_px(pair.camera.fx, config.near_m, config.far_m,
+    if config.hough.hough_enabled:
+        r_min, r_max = radius_range_px(pair.camera.fx, config.depth.near_m, config.depth.far_m,
                                        _round_diameters(pair.catalogue, config))
         taken = [d.bbox for d in found]
         sub = search[y0:y1, x0:x1]
-        scale = hough_scale(r_min, config.hough_scale, config.hough_min_radius_px)
+        scale = hough_scale(r_min, config.hough.hough_scale, config.hough.hough_min_radius_px)
         for seg in hough_segments(pair.left[y0:y1, x0:x1], sub, r_min, r_max, scale, config):
             seg = _shift_segment(seg, x0, y0)
             cu, cv = bbox_centre(seg.bbox)
@@ -374,7 +375,7 @@ def detect_in_window(left, depth, right, camera: Camera, pose: Pose, catalogue, 
     window should be larger than the sign. Returns None when nothing is found.
     """
     # depth by SGBM over the whole window's rows: a clicked sign may have no colour candidate
-    config = replace(config or PipelineConfig(), sgbm_rows_only=False)
+    config = with_settings(config or PipelineConfig(), {"depth": {"sgbm_rows_only": False}})
     height, width = left.shape[:2]
     cu, cv = float(click_uv[0]), float(click_uv[1])
     roi = (max(0, int(cu - half_size_px)), max(0, int(cv - half_size_px)),

@@ -267,7 +267,7 @@ def edge_rim_bbox(image: np.ndarray, segment_bbox, shape: str, max_scale: float,
     """The face box of a coloured part inside a rim, from the face's outer edge; None if no clear edge.
 
     The part's box is scaled about its centre from 1 to ``max_scale`` (geometric steps of
-    ``config.rim_scale_step``), the ideal outline of ``shape`` laid at each scale: the part's own
+    ``config.rims.rim_scale_step``), the ideal outline of ``shape`` laid at each scale: the part's own
     edge is the strongest within ``rim_inner_scale``, then the rim (a plain band, weak edges), then
     the face's outer edge. The outer edge is the local maximum beyond the part whose strength is at
     least ``rim_edge_contrast`` x the weakest between them (+ ``rim_edge_noise``, Sobel units: ~2 grey
@@ -277,8 +277,9 @@ def edge_rim_bbox(image: np.ndarray, segment_bbox, shape: str, max_scale: float,
     segment misses the blurred edge of its colour, ``rim_blur_px`` on each side: both scale limits
     grow by that share of the part.
     """
-    inner_scale, min_contrast, noise = config.rim_inner_scale, config.rim_edge_contrast, config.rim_edge_noise
-    border_scale, blur_px, step = config.rim_border_scale, config.rim_blur_px, config.rim_scale_step
+    rims = config.rims
+    inner_scale, min_contrast, noise = rims.rim_inner_scale, rims.rim_edge_contrast, rims.rim_edge_noise
+    border_scale, blur_px, step = rims.rim_border_scale, rims.rim_blur_px, rims.rim_scale_step
     x, y, w, h = segment_bbox
     blur = 2.0 * blur_px / max(1, min(w, h))
     max_scale, inner_scale = max_scale * (1.0 + blur), inner_scale + blur
@@ -306,12 +307,12 @@ def rim_face_bboxes(image: np.ndarray, segment_bbox, segment_mask: np.ndarray, e
                     config) -> List[Tuple[int, int, int, int]]:
     """Face boxes of a coloured part inside a rim measured in the image, beyond the template's own
     (``face_bbox(segment_bbox, extent)``): the white rim (:func:`measured_rim_bbox`) and the outer edge
-    (:func:`edge_rim_bbox`), each kept when it differs from the boxes before it (IoU < ``config.rim_same_iou``).
+    (:func:`edge_rim_bbox`), each kept when it differs from the boxes before it (IoU < ``config.rims.rim_same_iou``).
     """
     boxes = [face_bbox(segment_bbox, extent)]
-    for box in (measured_rim_bbox(image, segment_bbox, segment_mask, extent, config.min_shape_fit),
-                edge_rim_bbox(image, segment_bbox, shape, config.rim_max_scale, config)):
-        if box is not None and all(box_iou(box, b) < config.rim_same_iou for b in boxes):
+    for box in (measured_rim_bbox(image, segment_bbox, segment_mask, extent, config.shape.min_shape_fit),
+                edge_rim_bbox(image, segment_bbox, shape, config.rims.rim_max_scale, config)):
+        if box is not None and all(box_iou(box, b) < config.rims.rim_same_iou for b in boxes):
             boxes.append(box)
     return boxes[1:]
 
@@ -320,4 +321,4 @@ def ring_edge_bbox(image: np.ndarray, field_bbox, shape: str, config) -> Optiona
     """The face box of a field inside a ring, from the ring's outer edge (:func:`edge_rim_bbox` with the
     field as the part and the ring as the plain band); None if no clear edge. Ring widths differ between
     designs (Germany's prohibition signs: face ~1.35 x field with their white border, the Swiss 1.21)."""
-    return edge_rim_bbox(image, field_bbox, shape, config.ring_edge_max_scale, config)
+    return edge_rim_bbox(image, field_bbox, shape, config.rims.ring_edge_max_scale, config)

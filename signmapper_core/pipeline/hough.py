@@ -54,8 +54,8 @@ def find_circles(
     grey[mask < 128] = 0
     lo, hi = max(2, int(r_min * scale)), max(3, int(np.ceil(r_max * scale)))
     circles = cv2.HoughCircles(
-        grey, cv2.HOUGH_GRADIENT_ALT, dp=HOUGH_DP, minDist=max(4, lo), param1=config.hough_edge_threshold,
-        param2=config.hough_circularity, minRadius=lo, maxRadius=hi,
+        grey, cv2.HOUGH_GRADIENT_ALT, dp=HOUGH_DP, minDist=max(4, lo), param1=config.hough.hough_edge_threshold,
+        param2=config.hough.hough_circularity, minRadius=lo, maxRadius=hi,
     )
     if circles is None:
         return np.zeros((0, 3))
@@ -76,16 +76,16 @@ def ring_colour_share(bgr: np.ndarray, mask: np.ndarray, ranges) -> float:
 
 
 def weak_colour(bgr: np.ndarray, mask: np.ndarray, config: PipelineConfig) -> str:
-    """Dominant weak colour of the outer ring of a disc mask (``config.hough_tint_hues``): red/blue/yellow, else
+    """Dominant weak colour of the outer ring of a disc mask (``config.hough.hough_tint_hues``): red/blue/yellow, else
     white."""
     ring = outer_ring(mask)
     hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
     pixels = hsv[ring > 0]
     if pixels.size == 0:
         return "white"
-    tinted = pixels[pixels[:, 1] >= config.hough_tint_min_saturation]
-    best, best_share = "white", config.hough_tint_min_share
-    for name, ranges in config.hough_tint_hues.items():
+    tinted = pixels[pixels[:, 1] >= config.hough.hough_tint_min_saturation]
+    best, best_share = "white", config.hough.hough_tint_min_share
+    for name, ranges in config.hough.hough_tint_hues.items():
         hit = np.zeros(len(tinted), bool)
         for h0, h1 in ranges:
             hit |= (tinted[:, 0] >= h0) & (tinted[:, 0] <= h1)
@@ -102,7 +102,7 @@ def circle_segment(bgr: np.ndarray, u: float, v: float, r: float, config: Pipeli
     size = int(round(2 * r)) + 1
     if size < 3:
         return None
-    m = config.border_margin_px
+    m = config.colour.border_margin_px
     touches = x0 <= m or y0 <= m or x0 + size >= width - m or y0 + size >= height - m
     if x0 < 0 or y0 < 0 or x0 + size > width or y0 + size > height:
         return None

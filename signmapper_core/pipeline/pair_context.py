@@ -41,12 +41,13 @@ class PairContext:
 
     @cached_property
     def classifier(self):
-        """The classifier ``config.classifier`` names for the catalogue (:func:`.classifiers.classifier_for`)."""
+        """The classifier the config names for the catalogue (:func:`.classifiers.classifier_for`)."""
         return classifier_for(self.catalogue, self.config)
 
     @cached_property
     def smallest_face_px(self) -> float:
         """Pixels of the smallest side of any format at the far limit: the smallest face worth finding."""
         config = self.config
-        sides = [min(f) for e in self.catalogue.filter(exclude=tuple(config.exclude)) for f in e.formats.values()]
-        return (min(sides) if sides else 0.4) * min(self.camera.fx, self.camera.fy) / config.far_m
+        entries = self.catalogue.filter(exclude=tuple(config.classification.exclude))
+        sides = [min(f) for e in entries for f in e.formats.values()]
+        return (min(sides) if sides else 0.4) * min(self.camera.fx, self.camera.fy) / config.depth.far_m

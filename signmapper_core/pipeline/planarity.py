@@ -114,8 +114,8 @@ def segment_planarity(
     residual allowed for the depth's kind (given or matched: ``planarity_tolerance_px``,
     ``sgbm_planarity_tolerance_px``).
     """
-    window, max_slant_deg = config.planarity_window_px, config.max_slant_deg
-    min_coverage, max_depth_deviation = config.min_depth_coverage, config.max_depth_deviation
+    window, max_slant_deg = config.planarity.planarity_window_px, config.planarity.max_slant_deg
+    min_coverage, max_depth_deviation = config.planarity.min_depth_coverage, config.planarity.max_depth_deviation
     x, y, w, h = bbox
     z = depth[y : y + h, x : x + w].astype(np.float64)
     inside = mask > 0

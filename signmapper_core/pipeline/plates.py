@@ -73,11 +73,11 @@ def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int,
     bx, by, bw, bh = box
     px_per_m = camera.fy / z
     gap_px = (by - (y + h)) if side == BELOW else (y - (by + bh))
-    if not -touch_px <= gap_px <= config.plate_max_gap_m * px_per_m:
+    if not -touch_px <= gap_px <= config.plates.plate_max_gap_m * px_per_m:
         return None  # reaching into the sign (its panel's white), or too far from it
-    if abs(bx + bw / 2.0 - (x + w / 2.0)) > config.plate_max_offset * max(w, bw):
+    if abs(bx + bw / 2.0 - (x + w / 2.0)) > config.plates.plate_max_offset * max(w, bw):
         return None
-    fmt = nearest_plate_format(bw * z / camera.fx, bh * z / camera.fy, config.plate_size_tolerance)
+    fmt = nearest_plate_format(bw * z / camera.fx, bh * z / camera.fy, config.plates.plate_size_tolerance)
     if fmt is None:
         return None
     cx, cy, cw, ch = _clipped(box, pair.left.shape)
@@ -85,9 +85,9 @@ def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int,
         return None
     grey = cv2.cvtColor(pair.left[cy:cy + ch, cx:cx + cw], cv2.COLOR_BGR2GRAY)
     ink = float(np.mean(grey < 0.6 * np.median(grey)))  # text, pictogram and frame
-    if not config.plate_min_ink <= ink <= config.plate_max_ink:
+    if not config.plates.plate_min_ink <= ink <= config.plates.plate_max_ink:
         return None
-    return 1.0 - min(fmt[2] / math.log(1.0 + config.plate_size_tolerance), 1.0) * 0.5, fmt
+    return 1.0 - min(fmt[2] / math.log(1.0 + config.plates.plate_size_tolerance), 1.0) * 0.5, fmt
 
 
 def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z: float, side: int,
@@ -96,7 +96,7 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
     is better: (score, box, format, fill)."""
     config = pair.config
     x0, y0, x1, y1 = window
-    filled = _filled(mask, int(round(config.plate_close_m * pair.camera.fy / z)) | 1)
+    filled = _filled(mask, int(round(config.plates.plate_close_m * pair.camera.fy / z)) | 1)
     count, _labels, stats, _ = cv2.connectedComponentsWithStats(filled, connectivity=4)
     for k in range(1, count):
         bx, by, bw, bh, area = (int(v) for v in stats[k])
@@ -104,11 +104,11 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
         if bw < 6 or bh < 4 or bx == 0 or bx + bw >= x1 - x0 or far_edge_cut:
             continue  # cut by the window: part of something larger (a wall, the sky)
         fill = area / float(bw * bh)
-        if fill < config.plate_min_fill:
+        if fill < config.plates.plate_min_fill:
             continue
         # the region is the whole plate, or the inside of its black frame (its white margin lost in a white
         # wall behind it, or in the sky): then the plate is that much larger
-        grow = config.plate_frame_share / (1.0 - 2.0 * config.plate_frame_share)
+        grow = config.plates.plate_frame_share / (1.0 - 2.0 * config.plates.plate_frame_share)
         for margin in (0.0, grow * bh):
             box = (int(round(bx + x0 - margin)), int(round(by + y0 - margin)), int(round(bw + 2 * margin)),
                    int(round(bh + 2 * margin)))
@@ -126,9 +126,9 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
         return None
     x, y, w, h = sign.bbox
     px_per_m = camera.fy / z
-    largest_h = max(ph for _, ph in PLATE_FORMATS.values()) * (1.0 + config.size_tolerance)
-    largest_w = max(pw for pw, _ in PLATE_FORMATS.values()) * (1.0 + config.size_tolerance)
-    reach = int(round((config.plate_max_gap_m + largest_h) * px_per_m))
+    largest_h = max(ph for _, ph in PLATE_FORMATS.values()) * (1.0 + config.size.size_tolerance)
+    largest_w = max(pw for pw, _ in PLATE_FORMATS.values()) * (1.0 + config.size.size_tolerance)
+    reach = int(round((config.plates.plate_max_gap_m + largest_h) * px_per_m))
     half_w = int(round(max(largest_w * camera.fx / z, w) / 2 + 2))
     cu = x + w / 2.0
     height, width = pair.left.shape[:2]
@@ -136,14 +136,15 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     # the window holds the sign too: a white region that goes on into the sign's box is part of its panel
     y0, y1 = (y, y + h + reach) if side == BELOW else (y - reach, y + h)
     y0, y1 = max(0, y0), min(height, y1)
-    touch_px = max(2.0, config.plate_min_gap_m * px_per_m)
+    touch_px = max(2.0, config.plates.plate_min_gap_m * px_per_m)
     if x1 - x0 < 8 or y1 - y0 < 8:
         return None
     window = pair.left[y0:y1, x0:x1]
     near = depth[y0:y1, x0:x1]
-    elsewhere = np.isfinite(near) & (np.abs(near - z) > max(config.plate_depth_tolerance_m, 0.05 * z))
+    elsewhere = np.isfinite(near) & (np.abs(near - z) > max(config.plates.plate_depth_tolerance_m, 0.05 * z))
     best = None
-    for mask in white_masks(window, config.plate_max_saturation, config.plate_min_value, config.plate_value_steps):
+    plates = config.plates
+    for mask in white_masks(window, plates.plate_max_saturation, plates.plate_min_value, plates.plate_value_steps):
         mask[elsewhere] = 0
         best = _best_region(pair, sign, mask, (x0, y0, x1, y1), z, side, touch_px, best)
     if best is None:
@@ -155,7 +156,7 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     return Detection(
         template_id=PLATE_ID, name=PLATE_NAMES["de"], colour="white", shape="rectangle", width_m=pw, height_m=ph,
         format=name, detection_indicator=float(fill), classification_indicator=float(score),
-        status="accepted" if score >= config.plate_accept_score else "review", u=u, v=v, bbox=box, depth_m=z,
+        status="accepted" if score >= config.plates.plate_accept_score else "review", u=u, v=v, bbox=box, depth_m=z,
         position=locate(camera, pair.pose, u, v, z), source="plate", normal_world=sign.normal_world,
         plate_of=sign, crop=np.ascontiguousarray(pair.left[by:by + bh, bx:bx + bw]),
     )
@@ -163,7 +164,7 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
 
 def find_plates(pair: PairContext, depth: np.ndarray, signs: Sequence[Detection]) -> List[Detection]:
     """The plates of the detected signs: at most one below and one above each."""
-    if not pair.config.find_plates:
+    if not pair.config.plates.find_plates:
         return []
     plates = []
     for sign in signs:

@@ -69,20 +69,20 @@ def apply_gains(bgr: np.ndarray, gains: Tuple[float, float, float]) -> np.ndarra
 
 
 def weak_ranges(config: PipelineConfig, saturation: float, brightness: float) -> Dict[str, Tuple[HsvRange, ...]]:
-    """Per colour, the weak pass's HSV ranges: ``config.weak_hues`` with this scene's floors.
+    """Per colour, the weak pass's HSV ranges: ``config.scene.weak_hues`` with this scene's floors.
 
     Saturation floor = ``weak_sat_factor`` x the scene's median saturation + ``weak_sat_offset``,
     clipped to ``weak_sat_min`` .. the colour's strong floor (never above it); the value floor
     likewise from the scene's median brightness.
     """
-    sat_floor = config.weak_sat_factor * saturation + config.weak_sat_offset
-    val_floor = config.weak_val_factor * brightness
+    sat_floor = config.scene.weak_sat_factor * saturation + config.scene.weak_sat_offset
+    val_floor = config.scene.weak_val_factor * brightness
     out = {}
-    for colour, strong in config.hsv_ranges.items():
+    for colour, strong in config.colour.hsv_ranges.items():
         s_strong, v_strong = min(r[2] for r in strong), min(r[4] for r in strong)
-        s = int(np.clip(sat_floor, config.weak_sat_min, s_strong))
-        v = int(np.clip(val_floor, config.weak_val_min, v_strong))
-        hues = config.weak_hues.get(colour) or tuple((r[0], r[1]) for r in strong)
+        s = int(np.clip(sat_floor, config.scene.weak_sat_min, s_strong))
+        v = int(np.clip(val_floor, config.scene.weak_val_min, v_strong))
+        hues = config.scene.weak_hues.get(colour) or tuple((r[0], r[1]) for r in strong)
         out[colour] = tuple((h0, h1, s, 255, v, 255) for h0, h1 in hues)
     return out
 
@@ -108,8 +108,8 @@ def _median_u8(values: np.ndarray) -> float:
 
 def scene_colour(bgr: np.ndarray, config: PipelineConfig) -> SceneColour:
     """White balance and weak colour ranges of one image (or image window)."""
-    gains = white_balance_gains(bgr, config.neutral_max_saturation, config.max_white_balance_gain) \
-        if config.white_balance else (1.0, 1.0, 1.0)
+    gains = white_balance_gains(bgr, config.scene.neutral_max_saturation, config.scene.max_white_balance_gain) \
+        if config.scene.white_balance else (1.0, 1.0, 1.0)
     sample = apply_gains(np.ascontiguousarray(bgr[::_SAMPLE_STEP, ::_SAMPLE_STEP]), gains)
     hsv = cv2.cvtColor(sample, cv2.COLOR_BGR2HSV) if sample.size else np.zeros((1, 1, 3), np.uint8)
     saturation, brightness = _median_u8(hsv[..., 1]), _median_u8(hsv[..., 2])

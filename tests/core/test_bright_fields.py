@@ -10,6 +10,7 @@ from signmapper_core.pipeline.boxes import box_iou
 from signmapper_core.pipeline.bright_fields import grey_levels, is_red_ring, red_ring_fields, ring_contrast
 from signmapper_core.pipeline.candidates import face_candidates
 from signmapper_core.pipeline.colour import find_colour_segments
+from signmapper_core.pipeline.config import BrightFieldConfig
 
 CATALOGUE = "reference drawing"  # scenes and templates of our reference drawing (tests/conftest.py)
 
@@ -47,7 +48,7 @@ def test_ring_contrast_reads_the_ring_against_its_own_field():
         image = np.full((100, 100, 3), 30, np.uint8)
         cv2.circle(image, (50, 50), 27, ring, -1)
         cv2.circle(image, (50, 50), 20, field_colour, -1)
-        contrast = ring_contrast(image, (30, 30, 40, 40), field, PipelineConfig().field_ring_fraction)
+        contrast = ring_contrast(image, (30, 30, 40, 40), field, PipelineConfig().bright_fields.field_ring_fraction)
         assert is_red_ring(contrast, PipelineConfig()) is red, (ring, field_colour, contrast)
     assert ring_contrast(image, (2, 2, 40, 40), field, 0.12) is None  # the band would leave the image
 
@@ -57,7 +58,7 @@ def test_ring_contrast_reads_the_ring_against_its_own_field():
 def test_dim_ring_without_colour_is_found_by_its_field(catalogue, template_id, shape):
     n = 50
     image = _dusk_scene(catalogue, template_id, n)
-    colour_only = PipelineConfig(field_pass=False)
+    colour_only = PipelineConfig(bright_fields=BrightFieldConfig(field_pass=False))
     assert find_colour_segments(image, None, colour_only, None) == []  # neither the strong nor the scene pass
     (field,) = find_colour_segments(image, None, PipelineConfig(), None)
     assert field.colour == "red" and field.source == "hole"
@@ -78,7 +79,7 @@ def test_field_outside_the_search_space_or_too_small_is_not_sought(catalogue):
     search = np.ones(image.shape[:2], bool)
     search[:, 280:370] = False
     assert red_ring_fields(image, search, PipelineConfig()) == []
-    assert red_ring_fields(image, None, PipelineConfig(field_min_px=45)) == []
+    assert red_ring_fields(image, None, PipelineConfig(bright_fields=BrightFieldConfig(field_min_px=45))) == []
     assert len(red_ring_fields(image, None, PipelineConfig())) == 1
 
 

@@ -17,6 +17,7 @@ from signmapper_core.pipeline.classifiers import (
     model_card_path,
 )
 from signmapper_core.pipeline.classifiers.face_patch import expanded_box, face_patch, standardise
+from signmapper_core.pipeline.config import ClassificationConfig
 
 
 def _gradient_image(h=60, w=80):
@@ -127,13 +128,13 @@ def test_auto_is_template_matching_for_a_catalogue_without_a_network(catalogue_w
 
 def test_asking_for_the_network_of_a_catalogue_without_one_says_what_to_do(catalogue_without_model):
     with pytest.raises(ClassifierError, match="choose the classifier 'ncc'"):
-        classifier_for(catalogue_without_model, PipelineConfig(classifier="cnn"))
+        classifier_for(catalogue_without_model, PipelineConfig(classification=ClassificationConfig(classifier="cnn")))
     assert not model_card_path(catalogue_without_model.folder).exists()
 
 
 def test_unknown_classifier_names_the_choices():
     with pytest.raises(ValueError, match="auto, cnn, ncc"):
-        PipelineConfig(classifier="svm")
+        ClassificationConfig(classifier="svm")
 
 
 def test_configured_threshold_wins_over_the_classifiers_own(catalogue_without_model):
@@ -141,8 +142,9 @@ def test_configured_threshold_wins_over_the_classifiers_own(catalogue_without_mo
 
     ncc = make_classifier("ncc", catalogue_without_model)
     assert accept_threshold(ncc, PipelineConfig()) == ncc.accept_threshold == 0.6
-    assert accept_threshold(ncc, PipelineConfig(classification_threshold=0.75)) == 0.75
-    assert min_score(ncc, PipelineConfig(min_classification_score=0.1)) == 0.1
+    chosen = ClassificationConfig(classification_threshold=0.75, min_classification_score=0.1)
+    assert accept_threshold(ncc, PipelineConfig(classification=chosen)) == 0.75
+    assert min_score(ncc, PipelineConfig(classification=chosen)) == 0.1
 
 
 def test_a_view_moves_and_scales_the_box_about_its_centre():

@@ -5,6 +5,7 @@ import pytest
 from pipeline_scenes import CAMERA, POSE, constant_depth, sign_scene
 
 from signmapper_core.pipeline import PipelineConfig, detect_pair
+from signmapper_core.pipeline.config import DepthConfig
 from signmapper_core.pipeline.depth_sources import GivenDepth, StereoMatching, depth_source_for
 from signmapper_core.pipeline.detect import detect
 from signmapper_core.pipeline.pair_context import PairContext
@@ -23,15 +24,15 @@ def test_the_source_is_the_given_depth_else_matching_of_the_right_image():
 
 def test_each_source_brings_its_own_noise_policy():
     given, matched = GivenDepth(constant_depth(8.0)), StereoMatching(np.zeros((4, 4, 3), np.uint8))
-    assert given.planarity_tolerance_px(CONFIG) == CONFIG.planarity_tolerance_px
-    assert matched.planarity_tolerance_px(CONFIG) == CONFIG.sgbm_planarity_tolerance_px
+    assert given.planarity_tolerance_px(CONFIG) == CONFIG.planarity.planarity_tolerance_px
+    assert matched.planarity_tolerance_px(CONFIG) == CONFIG.planarity.sgbm_planarity_tolerance_px
     search = np.zeros((200, 200), bool)
     search[50:150, 50:150] = True
     search[100, 100] = False  # a hole in a given depth's search space (a sign's uniform field)
     closed = given.search_cut(search, CONFIG)
     assert closed[100, 100] and closed.sum() == 100 * 100  # closed, not grown
     grown = matched.search_cut(search, CONFIG)
-    half = CONFIG.search_grow_px // 2
+    half = CONFIG.depth.search_grow_px // 2
     assert grown[100, 100] and grown[50 - half, 100] and not grown[50 - half - 1, 100]  # SGBM loses edges: grown
 
 
@@ -39,7 +40,7 @@ def test_only_stereo_matching_asks_for_colour_candidates_first():
     assert not GivenDepth(constant_depth(8.0)).wants_candidate_boxes(CONFIG)
     matched = StereoMatching(np.zeros((4, 4, 3), np.uint8))
     assert matched.wants_candidate_boxes(CONFIG)
-    assert not matched.wants_candidate_boxes(PipelineConfig(sgbm_rows_only=False))
+    assert not matched.wants_candidate_boxes(PipelineConfig(depth=DepthConfig(sgbm_rows_only=False)))
 
 
 def test_stereo_matching_matches_only_around_the_candidates():
@@ -51,7 +52,7 @@ def test_stereo_matching_matches_only_around_the_candidates():
     assert np.isnan(source.depth_map(left, CAMERA, CONFIG, roi, [])).all()  # no candidate, no matching
     depth = source.depth_map(left, CAMERA, CONFIG, roi, [(300, 150, 40, 40)])
     rows = np.flatnonzero(np.isfinite(depth).any(axis=1))
-    margin = CONFIG.sgbm_row_margin_px
+    margin = CONFIG.depth.sgbm_row_margin_px
     assert rows.min() >= 150 - margin and rows.max() < 190 + margin
     assert np.nanmedian(depth) == pytest.approx(6.0, rel=0.02)
 

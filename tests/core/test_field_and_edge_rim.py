@@ -16,6 +16,7 @@ from test_pipeline_real_conditions import _priority_sign
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.pipeline.boxes import box_iou
 from signmapper_core.pipeline.candidates import face_candidates
+from signmapper_core.pipeline.config import ColourConfig, RimConfig
 from signmapper_core.pipeline.face_extent import face_bbox, hole_candidates, ring_edge_bbox
 
 CATALOGUE = "reference drawing"  # scenes and templates of our reference drawing (tests/conftest.py)
@@ -46,7 +47,7 @@ def test_field_inside_a_bordered_ring_gets_the_face_box_of_the_ring_outer_edge(c
     field = candidate.segment
     assert field.source == "hole" and candidate.shape == "circle"
     # the Swiss ring around the field misses the border: no reading from the template's extent matches
-    extents = [ext for entry, ext in hole_candidates(catalogue, "red", ("circle",), PipelineConfig().hsv_ranges,
+    extents = [ext for entry, ext in hole_candidates(catalogue, "red", ("circle",), PipelineConfig().colour.hsv_ranges,
                                                      ("red", "blue", "white")) if entry.id == template_id]
     assert extents and max(box_iou(face_bbox(field.bbox, ext), face) for ext in extents) < 0.65
     ring = ring_edge_bbox(image, field.bbox, "circle", PipelineConfig())
@@ -84,7 +85,7 @@ def test_thirty_pixel_priority_road_is_a_face_candidate_by_its_small_yellow_part
         return max((box_iou(r.bbox, face) for c in face_candidates(image, catalogue, config, hough=False)
                     if c.segment.colour == "yellow" for r in c.readings if "3.03" in r.template_ids), default=0.0)
 
-    assert best(PipelineConfig(min_part_px={})) == 0.0
+    assert best(PipelineConfig(colour=ColourConfig(min_part_px={}))) == 0.0
     assert best(PipelineConfig()) > 0.6
 
 
@@ -99,5 +100,5 @@ def test_blurred_small_part_still_reaches_the_face_outer_edge(catalogue):
         return max((box_iou(r.bbox, face) for c in face_candidates(image, catalogue, config, hough=False)
                     if c.segment.colour == "yellow" for r in c.readings if "3.03" in r.template_ids), default=0.0)
 
-    assert best(PipelineConfig(rim_blur_px=0.0)) < 0.6
+    assert best(PipelineConfig(rims=RimConfig(rim_blur_px=0.0))) < 0.6
     assert best(PipelineConfig()) > 0.85

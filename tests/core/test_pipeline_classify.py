@@ -5,10 +5,11 @@ from pipeline_scenes import noisy_background, paste
 
 from signmapper_core.catalogue import FaceStyle, load_catalogue, render_face
 from signmapper_core.pipeline.classify import classify_segment
-from signmapper_core.pipeline.config import DEFAULT_HSV_RANGES, PipelineConfig
+from signmapper_core.pipeline.config import DEFAULT_HSV_RANGES, ClassificationConfig, PipelineConfig
 from signmapper_core.pipeline.face_extent import candidate_entries, colour_extent
 
 CONFIG = PipelineConfig()
+GROW = CONFIG.classification.surround_grow
 
 ALL_COLOURS = ("red", "blue", "yellow", "white")
 
@@ -154,11 +155,11 @@ def test_surround_tells_a_zone_panel_from_a_round_sign_on_a_wall(catalogue):
     panel_bgr, panel_alpha = catalogue.render("2.59.1", (60, 90))
     panel = noisy_background(200, 200, seed=1)
     paste(panel, panel_bgr, panel_alpha, 50, 40)
-    assert surround_score(panel, (50, 40, 60, 90), catalogue, "2.59.1", extent, CONFIG.surround_grow) > 0.8
+    assert surround_score(panel, (50, 40, 60, 90), catalogue, "2.59.1", extent, GROW) > 0.8
     disc_bgr, disc_alpha = catalogue.render("2.30-30", 52)  # where the panel's ring would be
     wall = noisy_background(200, 200, seed=1)
     paste(wall, disc_bgr, disc_alpha, 50 + int(extent[0] * 60), 40 + int(extent[1] * 90))
-    assert surround_score(wall, (50, 40, 60, 90), catalogue, "2.59.1", extent, CONFIG.surround_grow) < 0.3
+    assert surround_score(wall, (50, 40, 60, 90), catalogue, "2.59.1", extent, GROW) < 0.3
 
 
 def test_pole_across_a_flat_field_sign_does_not_read_as_stripes():
@@ -172,5 +173,5 @@ def test_pole_across_a_flat_field_sign_does_not_read_as_stripes():
     scene = cv2.GaussianBlur(scene, (3, 3), 0)
     # tie_margin=1 hands every decision to the close-call rule, which is what this test is about
     result = classify_segment(scene, (25, 25, face.shape[1], face.shape[0]), catalogue, ["3.03", "3.04"],
-                              PipelineConfig(tie_margin=1.0))
+                              PipelineConfig(classification=ClassificationConfig(tie_margin=1.0)))
     assert result.template_id == "3.03", result.scores

@@ -1,11 +1,10 @@
-from dataclasses import replace
 
 import cv2
 import numpy as np
 import pytest
 from pipeline_scenes import CAMERA
 
-from signmapper_core.pipeline.config import PipelineConfig
+from signmapper_core.pipeline.config import PipelineConfig, with_settings
 from signmapper_core.pipeline.depth import (
     disparity_range,
     largest_disparity_px,
@@ -41,7 +40,7 @@ def test_sgbm_depth_of_a_textured_plane(scale):
     z_true = 6.0
     disparity = int(round(CAMERA.fx * CAMERA.baseline_m / z_true))  # 90 px
     left, right = _textured_pair(disparity)
-    depth = sgbm_depth(left, right, CAMERA, replace(CONFIG, sgbm_scale=scale))
+    depth = sgbm_depth(left, right, CAMERA, with_settings(CONFIG, {"depth": {"sgbm_scale": scale}}))
     usable = depth[20:-20, 100:-20]  # columns left of the disparity (90 px) have no match
     valid = np.isfinite(usable)
     assert valid.mean() > 0.9

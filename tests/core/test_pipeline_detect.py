@@ -4,7 +4,9 @@ import pytest
 from pipeline_scenes import CAMERA, POSE, constant_depth, noisy_background, paste, sign_scene
 
 from signmapper_core.pipeline import Detection, PipelineConfig, detect_in_window, detect_pair
+from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, HoughConfig
 
+NO_HOUGH = HoughConfig(hough_enabled=False)
 FORWARD, RIGHT, DOWN = POSE.rotation[:, 2], POSE.rotation[:, 0], POSE.rotation[:, 1]
 
 
@@ -12,8 +14,8 @@ def _world(ahead, right, up):
     return POSE.centre + ahead * FORWARD + right * RIGHT - up * DOWN
 
 
-def _detect(catalogue, left, depth, right=None, **config):
-    return detect_pair(left, depth, right, CAMERA, POSE, catalogue, PipelineConfig(**config))
+def _detect(catalogue, left, depth_map, right=None, **sections):
+    return detect_pair(left, depth_map, right, CAMERA, POSE, catalogue, PipelineConfig(**sections))
 
 
 def test_speed_limit_sign_with_given_depth(catalogue):
@@ -75,7 +77,7 @@ def test_red_disc_on_a_facade_along_the_road_is_rejected_by_planarity(catalogue)
 
 def test_sign_out_of_the_depth_range_or_cut_by_the_border_is_not_detected(catalogue):
     left, depth, _ = sign_scene(catalogue, "2.30-50", "normal", _world(7.0, 1.5, 0.4))
-    assert _detect(catalogue, left, depth, near_m=8.0, far_m=14.0) == []
+    assert _detect(catalogue, left, depth, depth=DepthConfig(near_m=8.0, far_m=14.0)) == []
     cut = _world(7.0, CAMERA.cx * 7.0 / CAMERA.fx - 0.1, 0.0)  # centre 0.1 m inside the right border
     left, depth, bbox = sign_scene(catalogue, "2.30-50", "normal", cut)
     assert bbox[0] + bbox[2] > CAMERA.width  # the face is cut by the right border
@@ -90,7 +92,7 @@ def test_nan_depth_and_empty_image_give_no_detections(catalogue):
 
 def test_excluded_template_is_not_reported_as_itself(catalogue):
     left, depth, _ = sign_scene(catalogue, "2.30-50", "normal", _world(7.0, 1.5, 0.4))
-    dets = _detect(catalogue, left, depth, exclude=("2.30-50",))
+    dets = _detect(catalogue, left, depth, classification=ClassificationConfig(exclude=("2.30-50",)))
     assert all(d.template_id != "2.30-50" for d in dets)
 
 
@@ -116,7 +118,7 @@ def test_faded_round_sign_is_found_by_the_hough_fallback_for_review(catalogue):
     left, depth, bbox = sign_scene(catalogue, "2.30-50", "normal", sign, background_depth=30.0)
     x, y, w, h = bbox
     left[y : y + h, x : x + w] = _faded(left[y : y + h, x : x + w], 0.12)  # ring saturation ~25
-    assert _detect(catalogue, left, depth, hough_enabled=False) == []  # too pale even for the weak pass
+    assert _detect(catalogue, left, depth, hough=NO_HOUGH) == []  # too pale even for the weak pass
     (det,) = _detect(catalogue, left, depth)
     assert det.source == "hough" and det.status == "review"
     assert det.template_id == "2.30-50" and det.format == "normal"
@@ -144,7 +146,7 @@ def test_overlapping_detections_keep_the_best():
 
     whole, part, other = det((100, 100, 60, 60), 0.9), det((110, 110, 20, 20), 0.6), det((300, 100, 60, 60), 0.8)
     same = det((102, 101, 60, 58), 0.7)
-    kept = suppress_overlaps([part, same, whole, other], PipelineConfig().same_sign_max_iou)
+    kept = suppress_overlaps([part, same, whole, other], PipelineConfig().classification.same_sign_max_iou)
     assert kept == [whole, other]  # a part inside a sign and the same sign found twice go
 
 
@@ -154,7 +156,7 @@ def test_sign_split_by_a_pole_in_front_is_found(catalogue):
     pole = slice(x + w // 2 - 6, x + w // 2 + 6)  # a 0.16 m pole 2 m in front of the sign's middle
     left[:, pole] = (110, 110, 110)
     depth[:, pole] = 6.0
-    (det,) = _detect(catalogue, left, depth, hough_enabled=False)
+    (det,) = _detect(catalogue, left, depth, hough=NO_HOUGH)
     assert det.template_id == "2.32" and det.format == "normal"
     assert np.linalg.norm(det.position - sign) < 0.05
 

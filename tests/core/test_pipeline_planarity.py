@@ -1,4 +1,3 @@
-from dataclasses import replace
 
 import cv2
 import numpy as np
@@ -6,11 +5,11 @@ import pytest
 from pipeline_scenes import CAMERA
 
 from signmapper_core.geometry import Camera
-from signmapper_core.pipeline.config import PipelineConfig
+from signmapper_core.pipeline.config import PipelineConfig, with_settings
 from signmapper_core.pipeline.planarity import segment_planarity
 
 CONFIG = PipelineConfig()
-GIVEN = CONFIG.planarity_tolerance_px  # the residual allowed with given depth maps
+GIVEN = CONFIG.planarity.planarity_tolerance_px  # the residual allowed with given depth maps
 
 BBOX = (300, 150, 60, 60)
 H, W = CAMERA.height, CAMERA.width
@@ -96,5 +95,5 @@ def test_background_depth_on_the_signs_edge_is_ignored():
     depth = np.full((H, W), 8.0, np.float32)
     depth[150:210, 300:315] = 30.0
     assert segment_planarity(CAMERA, depth, BBOX, _disc(), CONFIG, GIVEN).indicator > 0.95
-    assert segment_planarity(CAMERA, depth, BBOX, _disc(), replace(CONFIG, max_depth_deviation=None),
-                             GIVEN).indicator < 0.9
+    all_depths = with_settings(CONFIG, {"planarity": {"max_depth_deviation": None}})
+    assert segment_planarity(CAMERA, depth, BBOX, _disc(), all_depths, GIVEN).indicator < 0.9

@@ -14,9 +14,12 @@ from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.boxes import box_iou
 from signmapper_core.pipeline.candidates import face_candidates
 from signmapper_core.pipeline.colour import find_colour_segments, ring_open_px, split_face_merges
+from signmapper_core.pipeline.config import BrightFieldConfig, HoughConfig, SceneConfig, with_settings
 from signmapper_core.pipeline.scene_colour import apply_gains, scene_colour, white_balance_gains
 
 CONFIG = PipelineConfig()
+# the strong colour pass alone: no scene pass, no bright fields
+STRONG_ONLY = PipelineConfig(scene=SceneConfig(weak_colour=False), bright_fields=BrightFieldConfig(field_pass=False))
 
 
 CATALOGUE = "reference drawing"  # scenes and templates of our reference drawing (tests/conftest.py)
@@ -44,7 +47,7 @@ def test_faded_ring_below_the_strong_saturation_floor_is_found_by_the_scene_pass
     image[120:181, 170:231] = _desaturate(image[120:181, 170:231], 0.3)  # ring saturation ~60 < 90
     hsv = cv2.cvtColor(image, cv2.COLOR_BGR2HSV)
     assert hsv[150, 172, 1] < 90
-    strong_only = find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), 60)
+    strong_only = find_colour_segments(image, None, STRONG_ONLY, 60)
     assert _red_boxes(strong_only) == []
     (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(), 60))
     assert box_iou(box, (170, 120, 61, 61)) > 0.9
@@ -56,9 +59,9 @@ def test_faded_sign_is_detected_and_accepted_by_colour(catalogue):
     bgr, alpha = catalogue.render("2.30-50", n)
     image = noisy_background()
     paste(image, _desaturate(bgr, 0.3), alpha, 300, 150)
-    config = PipelineConfig(hough_enabled=False)
+    config = PipelineConfig(hough=HoughConfig(hough_enabled=False))
     assert detect_pair(image, constant_depth(z), None, CAMERA, POSE, catalogue,
-                       PipelineConfig(hough_enabled=False, weak_colour=False, field_pass=False)) == []
+                       with_settings(STRONG_ONLY, {"hough": {"hough_enabled": False}})) == []
     (det,) = detect_pair(image, constant_depth(z), None, CAMERA, POSE, catalogue, config)
     assert det.template_id == "2.30-50" and det.source == "colour" and det.format == "normal"
 
@@ -69,7 +72,7 @@ def test_dim_magenta_tinted_ring_of_a_dull_scene_is_red():
     ring = cv2.cvtColor(np.uint8([[[155, 70, 95]]]), cv2.COLOR_HSV2BGR)[0, 0].tolist()
     cv2.circle(image, (200, 150), 25, ring, -1)
     cv2.circle(image, (200, 150), 20, (150, 150, 150), -1)
-    assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), 50)) == []
+    assert _red_boxes(find_colour_segments(image, None, STRONG_ONLY, 50)) == []
     (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(), 50))
     assert box_iou(box, (175, 125, 51, 51)) > 0.85
 
@@ -80,7 +83,7 @@ def test_scene_floors_follow_the_scene_saturation():
     vivid_image = noisy_background()
     vivid_image[:, :320] = (40, 160, 60)  # half the scene saturated green
     vivid = scene_colour(vivid_image, config)
-    assert dull.saturation < 20 and dull.weak_ranges["red"][0][2] == int(dull.saturation + config.weak_sat_offset)
+    assert dull.saturation < 20 and dull.weak_ranges["red"][0][2] == int(dull.saturation + config.scene.weak_sat_offset)
     assert vivid.saturation > dull.saturation + 50
     assert vivid.weak_ranges["red"][0][2] > dull.weak_ranges["red"][0][2] + 20
     assert all(r[2] <= 90 for r in vivid.weak_ranges["red"])  # never above the strong floor
@@ -99,8 +102,8 @@ def test_two_pixel_ring_of_a_small_sign_survives_the_ring_scaled_opening():
     image = _ring_image(24, 2)
     assert ring_open_px(24, PipelineConfig()) == 1 and ring_open_px(60, PipelineConfig()) == 3
     # with a search space whose smallest face is 60 px the usual 3 px opening erases the ring
-    assert _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), 60)) == []
-    (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(weak_colour=False), None))
+    assert _red_boxes(find_colour_segments(image, None, STRONG_ONLY, 60)) == []
+    (box,) = _red_boxes(find_colour_segments(image, None, PipelineConfig(scene=SceneConfig(weak_colour=False)), None))
     assert box_iou(box, (188, 138, 25, 25)) > 0.85
 
 
@@ -158,7 +161,7 @@ def test_ring_touching_a_red_neighbour_is_found_by_its_field(catalogue):
     readings = [r for c in candidates if c.segment.source == "hole" for r in c.readings]
     assert any(box_iou(r.bbox, (300, 150, n, n)) > 0.8 and "2.30-50" in r.template_ids for r in readings)
     (det,) = detect_pair(image, constant_depth(0.6 * CAMERA.fx / n), None, CAMERA, POSE, catalogue,
-                         PipelineConfig(hough_enabled=False))
+                         PipelineConfig(hough=HoughConfig(hough_enabled=False)))
     assert det.template_id == "2.30-50" and box_iou(det.bbox, (300, 150, n, n)) > 0.8
 
 
@@ -196,13 +199,13 @@ def test_scene_pass_reads_the_white_balanced_image_when_asked():
     image = _ring_image(60, 6)
     image[120:181, 170:231] = _desaturate(image[120:181, 170:231], 0.3)
     cast = np.clip(image.astype(np.float32) * (1.12, 1.0, 0.9), 0, 255).astype(np.uint8)  # cold light
-    balanced = ColourFrame.of(cast, PipelineConfig(white_balance=True))
+    balanced = ColourFrame.of(cast, PipelineConfig(scene=SceneConfig(white_balance=True)))
     assert not np.array_equal(balanced.hsv_weak, balanced.hsv)
     plain = ColourFrame.of(cast, PipelineConfig())
     assert plain.hsv_weak is plain.hsv  # off by default: no second conversion
     grey = balanced.hsv_weak[20:100, 20:100, 1].astype(float).mean()
     assert grey < plain.hsv[20:100, 20:100, 1].astype(float).mean() - 5  # the cast's false saturation is gone
-    (box,) = _red_boxes(find_colour_segments(cast, None, PipelineConfig(white_balance=True), 60))
+    (box,) = _red_boxes(find_colour_segments(cast, None, PipelineConfig(scene=SceneConfig(white_balance=True)), 60))
     assert box_iou(box, (170, 120, 61, 61)) > 0.9
 
 
@@ -228,7 +231,7 @@ def test_rim_blending_into_a_white_wall_is_measured_by_the_face_outer_edge(catal
     seg = cand.segment
     assert measured_rim_bbox(image, seg.bbox, seg.mask, (0.11, 0.11, 0.89, 0.89)) is None
     face = (100, 60, n + 1, n + 1)
-    assert box_iou(edge_rim_bbox(image, seg.bbox, "diamond", CONFIG.rim_max_scale, CONFIG), face) > 0.85
+    assert box_iou(edge_rim_bbox(image, seg.bbox, "diamond", CONFIG.rims.rim_max_scale, CONFIG), face) > 0.85
     assert any(box_iou(r.bbox, face) > 0.85 and "3.03" in r.template_ids for r in cand.readings)
 
 
@@ -238,7 +241,7 @@ def test_outer_edge_is_not_invented_where_the_yellow_is_the_whole_face():
     image = noisy_background(level=110, sigma=6)
     c = np.array([[150, 100], [190, 140], [150, 180], [110, 140]])
     cv2.fillPoly(image, [c], (0, 200, 240))  # a yellow diamond, no rim: grey texture all around
-    assert edge_rim_bbox(image, (110, 100, 81, 81), "diamond", CONFIG.rim_max_scale, CONFIG) is None
+    assert edge_rim_bbox(image, (110, 100, 81, 81), "diamond", CONFIG.rims.rim_max_scale, CONFIG) is None
 
 
 def test_orange_yellow_priority_sign_is_found_by_the_scene_pass(catalogue):
@@ -246,7 +249,7 @@ def test_orange_yellow_priority_sign_is_found_by_the_scene_pass(catalogue):
     image = noisy_background(level=100, sigma=8)
     orange = cv2.cvtColor(np.uint8([[[13, 200, 190]]]), cv2.COLOR_HSV2BGR)[0, 0].tolist()
     _priority_sign(image, 200, 100, 70, 0.5, yellow=orange)
-    strong = find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), None)
+    strong = find_colour_segments(image, None, STRONG_ONLY, None)
     assert [s for s in strong if s.colour == "yellow"] == []
     (seg,) = [s for s in find_colour_segments(image, None, PipelineConfig(), None) if s.colour == "yellow"]
     assert box_iou(seg.bbox, (218, 118, 35, 35)) > 0.7
@@ -263,7 +266,7 @@ def test_scene_pass_keeps_yellow_only_in_a_diamond_outline():
     cv2.rectangle(image, (300, 120), (370, 180), dim_yellow, -1)
     c = np.array([[500, 110], [540, 150], [500, 190], [460, 150]])
     cv2.fillPoly(image, [c], dim_yellow)
-    strong = find_colour_segments(image, None, PipelineConfig(weak_colour=False, field_pass=False), None)
+    strong = find_colour_segments(image, None, STRONG_ONLY, None)
     assert [s for s in strong if s.colour == "yellow"] == []
     (seg,) = [s for s in find_colour_segments(image, None, PipelineConfig(), None) if s.colour == "yellow"]
     assert box_iou(seg.bbox, (460, 110, 81, 81)) > 0.85

@@ -15,6 +15,7 @@ from signmapper_core.geometry import Camera, Pose, world_to_pixel
 from signmapper_core.mapping import map_drive
 from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable
 from signmapper_core.pipeline import PipelineConfig, detect_pair
+from signmapper_core.pipeline.config import PlateConfig
 from signmapper_core.plate_evaluation import evaluate_plates
 from signmapper_core.plate_formats import PLATE_ID
 from signmapper_core.plate_fusion import read_plate_texts
@@ -142,7 +143,8 @@ def test_a_plate_before_a_pale_wall_without_depth_is_found_at_a_higher_brightnes
     found = detect_pair(left, depth, None, CAMERA, pose, catalogue, PipelineConfig())
     (plate_det,) = [d for d in found if d.is_plate]
     assert _iou(plate_det.bbox, box) > 0.8 and plate_det.format == "normal-1"
-    only_otsu = detect_pair(left, depth, None, CAMERA, pose, catalogue, PipelineConfig(plate_value_steps=(0,)))
+    otsu_floor = PipelineConfig(plates=PlateConfig(plate_value_steps=(0,)))
+    only_otsu = detect_pair(left, depth, None, CAMERA, pose, catalogue, otsu_floor)
     assert [d for d in only_otsu if d.is_plate] == []
 
 

@@ -1,18 +1,31 @@
 """A run's whole configuration as JSON and back; reading a run table and refusing what cannot give settings."""
 
+import dataclasses
 import json
 import sqlite3
 from contextlib import closing
+from pathlib import Path
 
 import pytest
 
 from signmapper_core.fusion import FusionConfig
 from signmapper_core.output_schema import RUN_TABLE, encode_run_value
 from signmapper_core.pipeline import PipelineConfig
+from signmapper_core.pipeline.config import (
+    SECTION_OF,
+    SECTIONS,
+    ClassificationConfig,
+    ColourConfig,
+    DepthConfig,
+    HoughConfig,
+    PlanarityConfig,
+    SceneConfig,
+)
 from signmapper_core.run_settings import (
     SETTINGS_VERSION,
     RunRecordError,
     load_run_settings,
+    pipeline_config_of,
     read_run_record,
     run_settings,
     settings_dict,
@@ -20,19 +33,37 @@ from signmapper_core.run_settings import (
 )
 from signmapper_core.sign_colours import SIGN_COLOURS
 
+# the run table (key -> value as stored) of settings version 1 (pipeline settings flat), as mapsigns wrote it
+# before the sections: rows settings_version, pipeline, fusion, near_m, far_m of
+# tests/qgis/golden/mapsigns-seed11.json at main 8b16f86 (mapsigns with its defaults)
+RECORD_V1 = Path(__file__).parent.parent / "data" / "run_record_v1.json"
+
 # every kind of field changed: numbers, None, tuples, dicts of tuples, booleans
 CHANGED = PipelineConfig(
-    near_m=5.5, far_m=18.0, colours=("blue",), exclude=("4.17",), classification_threshold=0.71,
-    classifier="ncc", hsv_ranges={"red": ((0, 8, 95, 255, 50, 255),), "blue": ((101, 129, 110, 255, 40, 255),)},
-    min_part_px={"yellow": 80, "blue": 70}, weak_shapes={"yellow": ("diamond", "square")}, scales=(0.9, 1.0),
-    white_balance=True, max_depth_deviation=None, tie_margin=0.05, hough_tint_min_share=0.3,
+    depth=DepthConfig(near_m=5.5, far_m=18.0),
+    colour=ColourConfig(colours=("blue",), hsv_ranges={"red": ((0, 8, 95, 255, 50, 255),),
+                                                       "blue": ((101, 129, 110, 255, 40, 255),)},
+                        min_part_px={"yellow": 80, "blue": 70}),
+    classification=ClassificationConfig(exclude=("4.17",), classification_threshold=0.71, classifier="ncc",
+                                        scales=(0.9, 1.0), tie_margin=0.05),
+    scene=SceneConfig(weak_shapes={"yellow": ("diamond", "square")}, white_balance=True),
+    planarity=PlanarityConfig(max_depth_deviation=None),
+    hough=HoughConfig(hough_tint_min_share=0.3),
 )
 
 
-def test_the_whole_pipeline_config_survives_json():
+def test_the_whole_pipeline_config_survives_json_grouped_by_section():
     data = json.loads(json.dumps(settings_dict(CHANGED)))
-    assert settings_of(PipelineConfig, data, "test") == CHANGED
-    assert set(data) == {f for f in PipelineConfig.__dataclass_fields__}  # every field, not a chosen few
+    assert pipeline_config_of(data, "test") == CHANGED
+    assert set(data) == set(SECTIONS) == {"colour", "scene", "bright_fields", "rims", "shape", "size", "depth",
+                                          "planarity", "classification", "hough", "plates"}
+    assert data["depth"]["near_m"] == 5.5 and data["classification"]["exclude"] == ["4.17"]
+    assert {name for section in data.values() for name in section} == set(SECTION_OF)  # every setting
+
+
+def test_setting_names_are_unique_across_the_sections():
+    names = [f.name for cls in SECTIONS.values() for f in dataclasses.fields(cls)]
+    assert len(names) == len(set(names)) == len(SECTION_OF) > 100
 
 
 def test_fusion_config_survives_json():
@@ -40,23 +71,59 @@ def test_fusion_config_survives_json():
     assert settings_of(FusionConfig, json.loads(json.dumps(settings_dict(fusion))), "test") == fusion
 
 
-def test_unknown_keys_are_warned_about_and_ignored_missing_ones_keep_their_defaults():
+def test_unknown_sections_and_keys_are_warned_about_and_ignored_missing_ones_keep_their_defaults():
     warnings = []
-    data = {"near_m": 6.0, "later_setting": 1, "other": [2]}
-    config = settings_of(PipelineConfig, data, "file.gpkg", warnings.append)
-    assert config == PipelineConfig(near_m=6.0)
-    assert warnings == ["file.gpkg: ignored settings this version does not know: later_setting, other"]
+    data = {"depth": {"near_m": 6.0, "later_setting": 1}, "stitching": {"other": [2]}}
+    config = pipeline_config_of(data, "file.gpkg", warnings.append)
+    assert config == PipelineConfig(depth=DepthConfig(near_m=6.0))
+    assert warnings == ["file.gpkg: ignored sections this version does not know: stitching",
+                        "file.gpkg, section depth: ignored settings this version does not know: later_setting"]
 
 
 def test_values_the_config_refuses_name_the_record():
-    with pytest.raises(RunRecordError, match=r"^file.gpkg, pipeline: need 0 < near_m < far_m, got 9.0, 3.0$"):
-        settings_of(PipelineConfig, {"near_m": 9.0, "far_m": 3.0}, "file.gpkg, pipeline")
+    with pytest.raises(RunRecordError, match=r"^file.gpkg, section depth: need 0 < near_m < far_m, got 9.0, 3.0$"):
+        pipeline_config_of({"depth": {"near_m": 9.0, "far_m": 3.0}}, "file.gpkg")
     with pytest.raises(RunRecordError, match="expected a JSON object of settings, found list"):
-        settings_of(PipelineConfig, [1, 2], "file.gpkg")
+        pipeline_config_of([1, 2], "file.gpkg")
+    with pytest.raises(RunRecordError, match="file.gpkg, section colour: expected a JSON object of settings, found "
+                                             "list"):
+        pipeline_config_of({"colour": ["red"]}, "file.gpkg")
+
+
+def _flat(config: PipelineConfig) -> dict:
+    """The pipeline settings as the version 1 writer recorded them: one object, every setting by its name."""
+    return {name: value for section in settings_dict(config).values() for name, value in section.items()}
+
+
+def test_a_version_1_run_table_of_the_earlier_writer_reads_into_its_sections(tmp_path):
+    rows = json.loads(RECORD_V1.read_text())
+    path = tmp_path / "old.gpkg"
+    with closing(sqlite3.connect(path)) as db:
+        db.execute(f"CREATE TABLE {RUN_TABLE} (fid INTEGER PRIMARY KEY, key TEXT, value TEXT)")
+        db.executemany(f"INSERT INTO {RUN_TABLE} (key, value) VALUES (?, ?)", rows.items())
+        db.commit()
+    record = read_run_record(path)
+    assert record["settings_version"] == 1 and "near_m" in record["pipeline"]  # flat, as written then
+    assert len(record["pipeline"]) == len(SECTION_OF)  # the same settings, now in sections
+    warnings = []
+    settings = load_run_settings(path, warnings.append)
+    assert warnings == []  # every setting it holds has a section
+    assert settings.config == PipelineConfig()  # mapped with the defaults, which have not changed since
+    assert settings.fusion == FusionConfig(accept_classification=0.8512)
+
+
+def test_a_version_1_record_with_changed_settings_puts_each_into_its_section():
+    warnings = []
+    flat = dict(_flat(CHANGED), retired_setting=3)
+    record = {"software": "Sign Mapper 0.1.0", "settings_version": 1, "pipeline": flat}
+    assert run_settings(record, "old.gpkg", warnings.append).config == CHANGED
+    assert warnings == ["old.gpkg, pipeline settings: ignored settings this version does not know: retired_setting"]
+    with pytest.raises(RunRecordError, match=r"^old.gpkg, pipeline settings, section depth: need 0 < near_m"):
+        run_settings(dict(record, pipeline={"near_m": 9.0, "far_m": 3.0}), "old.gpkg")
 
 
 def test_the_colour_choices_are_the_colour_table():
-    assert PipelineConfig().colours == SIGN_COLOURS == tuple(PipelineConfig().hsv_ranges)
+    assert PipelineConfig().colour.colours == SIGN_COLOURS == tuple(PipelineConfig().colour.hsv_ranges)
 
 
 def _run_table(path, record: dict):
@@ -69,7 +136,7 @@ def _run_table(path, record: dict):
 
 
 def _record(config=CHANGED, **changes):
-    record = {"software": "Sign Mapper 0.1.0", "catalogue": "/catalogues/ch", "near_m": config.near_m,
+    record = {"software": "Sign Mapper 0.1.0", "catalogue": "/catalogues/ch", "near_m": config.depth.near_m,
               "settings_version": SETTINGS_VERSION, "pipeline": settings_dict(config),
               "fusion": settings_dict(FusionConfig(gate_m=0.7))}
     record.update(changes)
@@ -99,9 +166,9 @@ def test_a_file_without_run_table_or_no_geopackage_is_refused(tmp_path):
 
 
 def test_a_record_of_another_settings_version_or_an_older_program_is_refused():
-    with pytest.raises(RunRecordError, match=r"^out.gpkg: settings version 2 \(written by Sign Mapper 0.1.0\); this "
-                                             r"version of Sign Mapper reads version 1 only$"):
-        run_settings(_record(settings_version=2), "out.gpkg")
+    with pytest.raises(RunRecordError, match=r"^out.gpkg: settings version 3 \(written by Sign Mapper 0.1.0\); this "
+                                             r"version of Sign Mapper reads versions 1 and 2 only$"):
+        run_settings(_record(settings_version=3), "out.gpkg")
     older = {k: v for k, v in _record().items() if k not in ("settings_version", "pipeline", "fusion")}
     with pytest.raises(RunRecordError, match="out.gpkg: written by Sign Mapper 0.1.0, which recorded only some"):
         run_settings(older, "out.gpkg")

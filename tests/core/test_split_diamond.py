@@ -26,8 +26,8 @@ def _scene(catalogue, template_id, n):
 
 
 def test_the_yellow_of_3_04_reads_as_a_diamond_like_that_of_3_03(catalogue):
-    extent_303, shape_303 = colour_part(catalogue, "3.03", "yellow", CONFIG.hsv_ranges)
-    extent_304, shape_304 = colour_part(catalogue, "3.04", "yellow", CONFIG.hsv_ranges)
+    extent_303, shape_303 = colour_part(catalogue, "3.03", "yellow", CONFIG.colour.hsv_ranges)
+    extent_304, shape_304 = colour_part(catalogue, "3.04", "yellow", CONFIG.colour.hsv_ranges)
     assert shape_303 == shape_304 == "diamond"
     assert np.allclose(extent_303, extent_304, atol=0.03)
 

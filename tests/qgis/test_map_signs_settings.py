@@ -11,13 +11,15 @@ from recorder import Recorder
 
 from signmapper_core.fusion import FusionConfig
 from signmapper_core.pipeline import PipelineConfig
+from signmapper_core.pipeline.config import ClassificationConfig, ColourConfig, DepthConfig, PlanarityConfig
 from signmapper_core.run_settings import SETTINGS_VERSION, load_run_settings, read_run_record, settings_dict
 
 # not the defaults: depth range, colours, both thresholds and an excluded type
 CHANGED = {"NEAR": 5.0, "FAR": 16.0, "COLOURS": [0, 1], "DETECTION_THRESHOLD": 0.6,
            "CLASSIFICATION_THRESHOLD": 0.7, "EXCLUDE": "2.30-120"}
-EXPECTED = PipelineConfig(near_m=5.0, far_m=16.0, colours=("red", "blue"), detection_threshold=0.6,
-                          classification_threshold=0.7, exclude=("2.30-120",))
+EXPECTED = PipelineConfig(depth=DepthConfig(near_m=5.0, far_m=16.0), colour=ColourConfig(colours=("red", "blue")),
+                          planarity=PlanarityConfig(detection_threshold=0.6),
+                          classification=ClassificationConfig(classification_threshold=0.7, exclude=("2.30-120",)))
 
 
 _MAPPED = {}  # the earlier output is mapped once for all tests (the plugin fixture is per test)
@@ -74,8 +76,9 @@ def test_a_parameter_set_in_the_dialog_wins_over_the_record(run_mapsigns, earlie
     run_mapsigns({"DRIVE": str(small_drive), "OUTPUT": str(out), "SETTINGS_FROM": str(earlier), "FAR": 12.0,
                   "NEAR": 4.0})  # NEAR at its default: the record's 5 m stays
     pipeline = read_run_record(out)["pipeline"]
-    assert (pipeline["near_m"], pipeline["far_m"], pipeline["detection_threshold"]) == (5.0, 12.0, 0.6)
-    assert pipeline["colours"] == ["red", "blue"]
+    depth, planarity = pipeline["depth"], pipeline["planarity"]
+    assert (depth["near_m"], depth["far_m"], planarity["detection_threshold"]) == (5.0, 12.0, 0.6)
+    assert pipeline["colour"]["colours"] == ["red", "blue"]
 
 
 def _edited(earlier, tmp_path, sql, *args):
@@ -88,15 +91,30 @@ def _edited(earlier, tmp_path, sql, *args):
 
 
 def test_unknown_settings_are_warned_about_and_ignored(run_mapsigns, earlier, small_drive, tmp_path):
-    pipeline = dict(read_run_record(earlier)["pipeline"], a_later_setting=3)
+    pipeline = read_run_record(earlier)["pipeline"]
+    pipeline["depth"]["a_later_setting"] = 3
     edited = _edited(earlier, tmp_path, "UPDATE signmapper_run SET value = ? WHERE key = 'pipeline'",
                      json.dumps(pipeline))
     feedback = Recorder()
     out = tmp_path / "later.gpkg"
     run_mapsigns({"DRIVE": str(small_drive), "OUTPUT": str(out), "SETTINGS_FROM": str(edited)}, feedback)
-    assert any(f"{edited}, pipeline settings: ignored settings this version does not know: a_later_setting" in w
-               for w in feedback.warnings), feedback.warnings
+    assert any(f"{edited}, pipeline settings, section depth: ignored settings this version does not know: "
+               "a_later_setting" in w for w in feedback.warnings), feedback.warnings
     assert read_run_record(out)["pipeline"] == settings_dict(EXPECTED)
+
+
+def test_an_output_of_settings_version_1_maps_again_with_its_settings(run_mapsigns, earlier, small_drive, tmp_path):
+    """An output written before the sections (settings version 1: the pipeline settings in one flat object)."""
+    sections = read_run_record(earlier)["pipeline"]
+    flat = {name: value for section in sections.values() for name, value in section.items()}
+    old = _edited(earlier, tmp_path, "UPDATE signmapper_run SET value = CASE key WHEN 'settings_version' THEN '1' "
+                  "ELSE ? END WHERE key IN ('settings_version', 'pipeline')", json.dumps(flat))
+    assert read_run_record(old)["settings_version"] == 1 and read_run_record(old)["pipeline"] == flat
+    feedback = Recorder()
+    out = tmp_path / "again.gpkg"
+    run_mapsigns({"DRIVE": str(small_drive), "OUTPUT": str(out), "SETTINGS_FROM": str(old)}, feedback)
+    assert read_run_record(out)["pipeline"] == settings_dict(EXPECTED)
+    assert not [w for w in feedback.warnings if "settings" in w], feedback.warnings
 
 
 @pytest.mark.parametrize("sql, args, message", [
@@ -105,8 +123,8 @@ def test_unknown_settings_are_warned_about_and_ignored(run_mapsigns, earlier, sm
      "settings version 99 (written by Sign Mapper"),
     ("DELETE FROM signmapper_run WHERE key IN ('settings_version', 'pipeline', 'fusion')", (),
      "recorded only some of its settings"),
-    ("UPDATE signmapper_run SET value = ? WHERE key = 'pipeline'", ('{"near_m": 9, "far_m": 3}',),
-     "pipeline settings: need 0 < near_m < far_m"),
+    ("UPDATE signmapper_run SET value = ? WHERE key = 'pipeline'", ('{"depth": {"near_m": 9, "far_m": 3}}',),
+     "pipeline settings, section depth: need 0 < near_m < far_m"),
 ])
 def test_records_that_cannot_give_the_settings_are_refused_naming_the_file(
         run_mapsigns, earlier, small_drive, tmp_path, sql, args, message):

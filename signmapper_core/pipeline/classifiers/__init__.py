@@ -40,8 +40,8 @@ def _learned(card_path: Path, stamp: float) -> LearnedClassifier:
 
 
 def classifier_for(catalogue, config):
-    """The classifier ``config.classifier`` names for ``catalogue``, networks loaded once per model file."""
-    name = config.classifier
+    """The classifier ``config.classification.classifier`` names for ``catalogue`` (networks loaded once per model)."""
+    name = config.classification.classifier
     card = model_card_path(catalogue.folder)
     if name == "auto":
         name = "cnn" if card.is_file() else "ncc"
@@ -57,18 +57,20 @@ def classifier_for(catalogue, config):
 
 def accept_threshold(classifier, config) -> float:
     """The indicator needed for "accepted": the configured one, else the classifier's calibrated default."""
-    return classifier.accept_threshold if config.classification_threshold is None else config.classification_threshold
+    chosen = config.classification.classification_threshold
+    return classifier.accept_threshold if chosen is None else chosen
 
 
 def min_score(classifier, config) -> float:
     """The indicator below which a segment is not reported at all."""
-    return classifier.min_score if config.min_classification_score is None else config.min_classification_score
+    chosen = config.classification.min_classification_score
+    return classifier.min_score if chosen is None else chosen
 
 
 def marginal_min_score(classifier, config) -> float:
     """The indicator a loosely fitting or oblique outline needs to be reported at all."""
-    if config.marginal_shape_min_score is not None:
-        return config.marginal_shape_min_score
+    if config.shape.marginal_shape_min_score is not None:
+        return config.shape.marginal_shape_min_score
     return classifier.marginal_min_score
 
 
