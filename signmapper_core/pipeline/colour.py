@@ -29,7 +29,7 @@ import numpy as np
 
 from .boxes import box_iou
 from .bright_fields import red_ring_fields
-from .config import HsvRange, PipelineConfig
+from .config import ColourConfig, HsvRange, PipelineConfig
 from .scene_colour import apply_gains, chroma_at_least, scene_colour
 from .shape import classify_shape
 
@@ -93,22 +93,17 @@ def clean_mask(mask: np.ndarray, open_px: int, close_px: int) -> np.ndarray:
     return out
 
 
-def colour_masks(
-    bgr: np.ndarray,
-    hsv_ranges: Dict[str, Sequence[HsvRange]],
-    colours: Iterable[str],
-    search_mask: Optional[np.ndarray] = None,
-    open_px: int = 3,
-    close_px: int = 5,
-) -> Dict[str, np.ndarray]:
-    """Cleaned uint8 masks per colour, limited to ``search_mask`` (bool) when given."""
+def colour_masks(bgr: np.ndarray, settings: ColourConfig, colours: Iterable[str],
+                 search_mask: Optional[np.ndarray] = None) -> Dict[str, np.ndarray]:
+    """Cleaned uint8 masks per colour (the colour section's thresholds and morphology), limited to
+    ``search_mask`` (bool) when given."""
     hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
     masks = {}
     for colour in colours:
-        mask = hsv_mask(hsv, hsv_ranges[colour])
+        mask = hsv_mask(hsv, settings.hsv_ranges[colour])
         if search_mask is not None:
             mask[~search_mask] = 0
-        masks[colour] = clean_mask(mask, open_px, close_px)
+        masks[colour] = clean_mask(mask, settings.morph_open_px, settings.morph_close_px)
     return masks
 
 
@@ -127,28 +122,21 @@ def _filled_segment(contour, colour, width, height, border_margin_px, source, mi
     return Segment(colour, (x, y, w, h), filled, contour, int(np.count_nonzero(filled)), touches, source, solidity)
 
 
-def segments_from_mask(
-    mask: np.ndarray,
-    colour: str,
-    min_area_px: int = 150,
-    min_bbox_px: int = 12,
-    border_margin_px: int = 2,
-    source: str = "colour",
-    min_solidity: float = 0.85,
-    holes: bool = False,
-    min_hole_px: int = 60,
-    max_ring_ratio: float = 1.6,
-) -> List[Segment]:
+def segments_from_mask(mask: np.ndarray, colour: str, min_area_px: int, settings: ColourConfig,
+                       holes: bool = False) -> List[Segment]:
     """Connected segments of ``mask`` as filled outer contours with bounding boxes.
 
-    A component inside the hole of another is a segment of its own. Outlines with a
-    solidity below ``min_solidity`` are replaced by their convex hull.
-    With ``holes``, the enclosed fields of a segment (the white field inside a red
-    ring or border) are segments too (source "hole"), unless the outer outline is
-    just a ring around the field (box at most ``max_ring_ratio`` times the field's
-    box): a ring that touches another red thing (a second sign, a roof) gives a
+    ``settings``: the colour section of the config (``min_bbox_px``, ``border_margin_px``,
+    ``min_solidity``, ``min_hole_px``, ``max_ring_ratio``). A component inside the hole of
+    another is a segment of its own. Outlines with a solidity below ``min_solidity`` are
+    replaced by their convex hull. With ``holes``, the enclosed fields of a segment (the
+    white field inside a red ring or border) are segments too (source "hole"), unless the
+    outer outline is just a ring around the field (box at most ``max_ring_ratio`` times the
+    field's box): a ring that touches another red thing (a second sign, a roof) gives a
     useless outer outline, but its field still has the face's shape.
     """
+    min_bbox_px, border_margin_px = settings.min_bbox_px, settings.border_margin_px
+    min_solidity, min_hole_px, max_ring_ratio = settings.min_solidity, settings.min_hole_px, settings.max_ring_ratio
     height, width = mask.shape[:2]
     # two levels: outer outlines of every component, also of one inside another's hole (a sign's colour
     # inside its white rim, in front of background of the same colour), and the holes
@@ -162,7 +150,7 @@ def segments_from_mask(
         if w < min_bbox_px or h < min_bbox_px:
             continue
         if parent < 0:
-            seg = _filled_segment(contour, colour, width, height, border_margin_px, source, min_solidity)
+            seg = _filled_segment(contour, colour, width, height, border_margin_px, "colour", min_solidity)
             if seg.area_px >= min_area_px:
                 out.append(seg)
             continue
@@ -283,9 +271,7 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
                 raw = cv2.bitwise_and(raw, inside)
             mask = clean_mask(raw, open_px, segmenting.morph_close_px)
             min_px = segmenting.min_part_px.get(colour, segmenting.min_segment_px)
-            for seg in segments_from_mask(mask, colour, min_px, segmenting.min_bbox_px,
-                                          segmenting.border_margin_px, holes=colour in segmenting.hole_colours,
-                                          min_hole_px=segmenting.min_hole_px):
+            for seg in segments_from_mask(mask, colour, min_px, segmenting, holes=colour in segmenting.hole_colours):
                 if max_side is not None and max(seg.bbox[2], seg.bbox[3]) > max_side:
                     continue
                 if weak and outline_surround_share(raw, seg, scene.weak_surround_px) > scene.weak_max_surround:
@@ -300,18 +286,19 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
             if search is not None and inside_share(seg, search) < 0.5:
                 continue  # a field mostly outside the search space
             if not any(o.colour == "red" and (box_iou(o.bbox, seg.bbox) >= config.scene.pass_duplicate_iou
-                                              or _field_of(seg.bbox, o.bbox)) for o in out):
+                                              or _field_of(seg.bbox, o.bbox, config)) for o in out):
                 out.append(seg)
     return out
 
 
-def _field_of(field, outline, slack: int = 2) -> bool:
-    """Whether a field's box lies inside a segment's box and fills at least 30 % of it: the field of a
-    ring the colour passes outlined already (a disc's field fills ~70 % of its box, a triangle's ~50 %)."""
+def _field_of(field, outline, config: PipelineConfig) -> bool:
+    """Whether a field's box lies inside a segment's box and fills enough of it: the field of a ring the colour
+    passes outlined already (``field_in_outline_slack_px``, ``field_in_outline_min_share``)."""
     fx, fy, fw, fh = field
     x, y, w, h = outline
+    slack = config.bright_fields.field_in_outline_slack_px
     inside = fx >= x - slack and fy >= y - slack and fx + fw <= x + w + slack and fy + fh <= y + h + slack
-    return inside and fw * fh >= 0.3 * w * h
+    return inside and fw * fh >= config.bright_fields.field_in_outline_min_share * w * h
 
 
 def inside_share(seg: Segment, search: np.ndarray) -> float:
@@ -403,12 +390,12 @@ def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment
     """
     min_fit, max_gap_fraction = config.shape.min_shape_fit, config.colour.merge_max_gap
     min_span_overlap, min_gain = config.colour.split_min_span_overlap, config.colour.split_min_gain
-    min_diagonal = config.colour.split_min_diagonal_overlap
+    min_diagonal, fill_window = config.colour.split_min_diagonal_overlap, config.shape.compare_fill_window
     fits: dict = {}
 
     def fit_of(k: int) -> float:
         if k not in fits:
-            fits[k] = classify_shape(segments[k].mask, min_fit).fit
+            fits[k] = classify_shape(segments[k].mask, min_fit, fill_window).fit
         return fits[k]
 
     out = []
@@ -429,7 +416,7 @@ def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment
             if not (across >= min_span_overlap or along >= min_span_overlap or diagonal):
                 continue
             merged = merge_segments(a, b)
-            result = classify_shape(merged.mask, min_fit)
+            result = classify_shape(merged.mask, min_fit, fill_window)
             if result.shape is not None and result.fit >= max(fit_of(i), fit_of(j)) + min_gain:
                 out.append((merged, i, j))
     return out

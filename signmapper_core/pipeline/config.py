@@ -35,10 +35,16 @@ class ColourConfig:
     min_part_px: Dict[str, int] = field(default_factory=lambda: {"yellow": 90})
     min_bbox_px: int = 12
     border_margin_px: int = 2  # segments this close to the image border are cut and rejected
+    # every sign outline is convex: a less solid one is a face bitten into (an occluder, a pictogram touching the
+    # edge), which its convex hull restores
+    min_solidity: float = 0.85
     # the field inside a ring is a segment of its own when the ring's outline is spoilt by a neighbour
     # of the same colour; only red faces have rings/borders around a field (blue fields are pictograms)
     hole_colours: Tuple[str, ...] = ("red",)
     min_hole_px: int = 60  # the field of a 30 px triangle is ~200 px; smaller holes are letters and gaps
+    # an outer outline at most this x its field's box is just the ring around it (Swiss rings: 1.21 x the field
+    # for circles, 1.4-1.56 for triangles), so the field is the segment; a larger outline has a neighbour in it
+    max_ring_ratio: float = 1.6
     # morphology scaled to the ring: a round sign's ring is ~9.5 % of its diameter (SSV prohibition signs)
     ring_fraction: float = 0.09
     min_face_px: int = 16  # smallest face to find without depth (GTSDB's smallest signs); sets the small pass
@@ -128,6 +134,11 @@ class BrightFieldConfig:
     # a component is first judged on the reduced image by means, asking this share of each margin above
     # (GTSDB tune split: 15 % of the components pass, every field later kept on a sign among them)
     field_coarse_share: float = 0.5
+    # a field whose box lies inside a colour segment's box (give or take this many pixels) and fills at least this
+    # share of it is the field of a ring the colour passes outlined already (a disc's field fills ~70 % of its
+    # box, a triangle's ~50 %)
+    field_in_outline_slack_px: int = 2
+    field_in_outline_min_share: float = 0.3
 
 
 @dataclass(frozen=True)
@@ -140,6 +151,7 @@ class RimConfig:
     the Swiss template 1.28 x).
     """
 
+    rim_max_saturation: int = 70  # a white rim read as bright pixels joined to the part: white and grey in shade
     rim_max_scale: float = 2.4  # widest rim sought: face / coloured part (GTSDB tune split: 1.9-2.3 for 3.03)
     rim_inner_scale: float = 1.12  # the part's own edge lies within this of its colour segment's box
     rim_edge_contrast: float = 3.0  # the outer edge is this x stronger than the plain rim inside it
@@ -173,6 +185,10 @@ class ShapeConfig:
     # own parts keep 0.15. Small real triangles (blur, rounded corners) fill 0.63-0.69 of their box, beyond
     # a triangle's 0.5 + 0.15 (GTSDB tune split: 0.15 -> 0.2 found 3 more of 127 signs, +2 candidates/image)
     shape_fill_window: float = 0.2
+    # where outlines are compared with each other (split pieces with their merged hull, a coloured part with part
+    # and white rim) rather than one read alone, they use the window these comparisons were tuned with, before
+    # shape_fill_window was widened for small real triangles
+    compare_fill_window: float = 0.15
 
 
 @dataclass(frozen=True)
@@ -183,6 +199,12 @@ class SizeConfig:
     # a round face seen at an angle is an ellipse: sized by its larger axis, down to this axis ratio
     # (~60 deg off the optical axis; beyond it the face is unreadable anyway)
     min_round_axis_ratio: float = 0.5
+    # ...its diameter the fitted ellipse's larger axis, at most this x the larger box side (an ellipse fitted to a
+    # cut outline overshoots) and never below that side (a disc cut by an occluder keeps its extent on one axis)
+    round_face_max_axis_scale: float = 1.15
+    # smallest and largest face side assumed where the catalogue (after exclusions) has no format at all: the
+    # smallest face worth finding and the stereo bands need one
+    fallback_face_sides_m: Tuple[float, float] = (0.4, 1.5)
 
 
 @dataclass(frozen=True)
@@ -273,6 +295,9 @@ class HoughConfig:
     hough_edge_threshold: float = 150.0  # param1 of HOUGH_GRADIENT_ALT
     hough_max_status: str = "review"  # status cap of Hough finds whose ring is not in full colour
     hough_max_diameter_m: float = 0.6  # larger round formats only by colour: the radius range sets the cost
+    hough_fallback_diameters_m: Tuple[float, ...] = (0.4, 0.6)  # where the catalogue has no round format up to it
+    hough_radius_slack: float = 0.2  # the radius range of those formats in near..far, widened by this share both
+    # ways (a face at the range's limits, format tolerance, a disc seen at an angle)
     max_face_px: int = 200  # largest round face the Hough route (and the bright-field pass) looks for without
     # depth (radius range = cost)
     hough_min_face_px: int = 28  # smallest one: circles under ~28 px double its time and are mostly clutter
@@ -304,6 +329,21 @@ class PlateConfig:
     plate_min_ink: float = 0.02  # share of dark pixels (text, pictogram, frame): a blank white region is no plate
     plate_max_ink: float = 0.5
     plate_accept_score: float = 0.8  # fill and fit to its format: above, the plate is "accepted"
+
+
+@dataclass(frozen=True)
+class TemplateGeometry:
+    """How the catalogue's own drawings are read: the outline of a template's coloured part or enclosed field.
+
+    Not a run setting: the templates are clean drawings without blur or perspective, measured once per
+    catalogue (``face_extent``) whatever the run's settings; a run's segments use ``ShapeConfig``.
+    """
+
+    template_min_fit: float = 0.72  # a drawn part fits its ideal outline closely (a segment needs 0.68)
+    template_fill_window: float = 0.15  # and fills its box as that outline does (a segment: 0.2)
+
+
+TEMPLATE_GEOMETRY = TemplateGeometry()
 
 
 @dataclass(frozen=True)

@@ -65,25 +65,25 @@ def stereo_candidate_boxes(pair: PairContext, frame: ColourFrame) -> List[Box]:
     """Boxes of the colour segments, found before depth, that could be a face (or half of one, a coloured
     part of a panel) somewhere in the search space: where stereo matching is worth running."""
     config, camera = pair.config, pair.camera
-    heights = [h for e in pair.catalogue for (_, h) in e.formats.values()] or [0.4, 1.5]
+    heights = [h for e in pair.catalogue for (_, h) in e.formats.values()] or list(config.size.fallback_face_sides_m)
     max_px = config.depth.sgbm_band_max_height * max(heights) * camera.fy / config.depth.near_m
     min_px = config.depth.sgbm_band_min_height * min(heights) * camera.fy / config.depth.far_m
     return [s.bbox for s in colour_segments(pair, None, frame) if min_px <= s.bbox[3] <= max_px]
 
 
-def round_face_diameter_px(seg: Segment) -> float:
+def round_face_diameter_px(seg: Segment, max_axis_scale: float) -> float:
     """Diameter of a round face from its outline: the larger axis of the fitted ellipse.
 
     A disc seen at an angle is an ellipse whose larger axis is the true diameter.
-    Limited to 1.15 x the larger box side (an ellipse fitted to a cut outline overshoots)
-    and never below that side (a disc cut by an occluder keeps its full extent on one axis).
+    Limited to ``max_axis_scale`` x the larger box side (an ellipse fitted to a cut outline
+    overshoots) and never below that side (a disc cut by an occluder keeps its full extent on one axis).
     """
     side = float(max(seg.bbox[2], seg.bbox[3]))
     points = cv2.convexHull(seg.contour.reshape(-1, 1, 2).astype(np.int32))
     if len(points) < 5:
         return side
     (_, _), axes, _ = cv2.fitEllipse(points)
-    return float(np.clip(max(axes), side, 1.15 * side))
+    return float(np.clip(max(axes), side, max_axis_scale * side))
 
 
 ROUND_SHAPES = ("circle", "octagon")
@@ -107,7 +107,7 @@ def size_to_format(seg: Segment, candidates, depth_m: float, shape: Optional[str
     fits = []
     x, y, w, h = seg.bbox
     round_face = shape in ROUND_SHAPES and min(w, h) >= config.size.min_round_axis_ratio * max(w, h)
-    diameter = round_face_diameter_px(seg) if round_face else None
+    diameter = round_face_diameter_px(seg, config.size.round_face_max_axis_scale) if round_face else None
     for ext, group in groups.values():
         faces = [face_bbox(seg.bbox, ext)]
         rimmed = [e for e in group if e.shape == shape]
@@ -264,7 +264,7 @@ def suppress_overlaps(detections: Sequence[Detection], max_iou: float) -> List[D
 def _round_diameters(catalogue, config: PipelineConfig) -> List[float]:
     entries = catalogue.filter(shapes=["circle"], exclude=tuple(config.classification.exclude))
     diam = [max(f) for e in entries for f in e.formats.values() if max(f) <= config.hough.hough_max_diameter_m]
-    return diam or [0.4, 0.6]
+    return diam or list(config.hough.hough_fallback_diameters_m)
 
 
 class _Timer:
@@ -340,7 +340,7 @@ def _hough_detections(pair: PairContext, depth: np.ndarray, search: np.ndarray,
     detections: List[Detection] = []
     if config.hough.hough_enabled:
         r_min, r_max = radius_range_px(pair.camera.fx, config.depth.near_m, config.depth.far_m,
-                                       _round_diameters(pair.catalogue, config))
+                                       _round_diameters(pair.catalogue, config), config.hough.hough_radius_slack)
         taken = [d.bbox for d in found]
         sub = search[y0:y1, x0:x1]
         scale = hough_scale(r_min, config.hough.hough_scale, config.hough.hough_min_radius_px)

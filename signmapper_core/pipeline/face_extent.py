@@ -20,6 +20,7 @@ import numpy as np
 from .boxes import box_iou
 from .classify import canonical_template
 from .colour import hsv_mask
+from .config import TEMPLATE_GEOMETRY
 from .shape import classify_shape
 
 FULL = (0.0, 0.0, 1.0, 1.0)
@@ -61,6 +62,11 @@ def colour_part(catalogue, template_id: str, colour: str, hsv_ranges) -> Tuple[O
                           lambda: _part_of(_colour_mask(catalogue, template_id, colour, hsv_ranges)))
 
 
+def _template_shape(mask: np.ndarray) -> Optional[str]:
+    """The outline shape of a part of a drawn template (:data:`.config.TEMPLATE_GEOMETRY`)."""
+    return classify_shape(mask, TEMPLATE_GEOMETRY.template_min_fit, TEMPLATE_GEOMETRY.template_fill_window).shape
+
+
 def _part_of(mask: Optional[np.ndarray]) -> Tuple[Optional[Extent], Optional[str]]:
     extent, shape = None, None
     if mask is None:
@@ -75,12 +81,12 @@ def _part_of(mask: Optional[np.ndarray]) -> Tuple[Optional[Extent], Optional[str
         contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
         cv2.drawContours(filled, contours, -1, 255, thickness=cv2.FILLED)
         part = filled[ys.min() : ys.max() + 1, xs.min() : xs.max() + 1]
-        shape = classify_shape(part).shape
+        shape = _template_shape(part)
         if shape is None and len(contours) > 1:
             hull = cv2.convexHull(np.vstack([c.reshape(-1, 2) for c in contours]))
             merged = np.zeros_like(mask)
             cv2.drawContours(merged, [hull], -1, 255, thickness=cv2.FILLED)
-            shape = classify_shape(merged[ys.min() : ys.max() + 1, xs.min() : xs.max() + 1]).shape
+            shape = _template_shape(merged[ys.min() : ys.max() + 1, xs.min() : xs.max() + 1])
     return extent, shape
 
 
@@ -105,7 +111,7 @@ def _hole_of(mask: Optional[np.ndarray]) -> Tuple[Optional[Extent], Optional[str
             extent = (x / w, y / h, (x + hw) / w, (y + hh) / h)
             filled = np.zeros((hh, hw), np.uint8)
             cv2.drawContours(filled, [hole], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
-            shape = classify_shape(filled).shape
+            shape = _template_shape(filled)
     return extent, shape
 
 
@@ -168,7 +174,7 @@ def candidate_entries(catalogue, colour: str, shapes: Iterable[str], hsv_ranges,
 
 
 def measured_rim_bbox(image: np.ndarray, segment_bbox, segment_mask: np.ndarray, extent: Extent,
-                      min_fit: float = 0.68, max_saturation: int = 70) -> Optional[Tuple[int, int, int, int]]:
+                      config) -> Optional[Tuple[int, int, int, int]]:
     """The face box of a rimmed face measured in the image: the white rim around the coloured part.
 
     The rim's width differs between sign designs (Germany's priority road carries its
@@ -177,8 +183,7 @@ def measured_rim_bbox(image: np.ndarray, segment_bbox, segment_mask: np.ndarray,
     are the rim; the filled outline of segment plus rim must have the segment's
     shape. None when no such rim is found (then the template's extent stands).
     """
-    from .shape import classify_shape
-
+    min_fit, fill_window = config.shape.min_shape_fit, config.shape.compare_fill_window
     x, y, w, h = segment_bbox
     fx0, fy0, fx1, fy1 = extent
     grow = max(fx0, fy0, 1 - fx1, 1 - fy1) / max(0.05, min(fx1 - fx0, fy1 - fy0))  # rim / coloured part
@@ -189,7 +194,7 @@ def measured_rim_bbox(image: np.ndarray, segment_bbox, segment_mask: np.ndarray,
     inner = hsv[y - y0 : y - y0 + h, x - x0 : x - x0 + w, 2][segment_mask > 0]
     if inner.size == 0:
         return None
-    bright = (hsv[..., 1] < max_saturation) & (hsv[..., 2] >= max(60, np.median(inner) * 0.9))
+    bright = (hsv[..., 1] < config.rims.rim_max_saturation) & (hsv[..., 2] >= max(60, np.median(inner) * 0.9))
     mask = bright.astype(np.uint8) * 255
     mask[y - y0 : y - y0 + h, x - x0 : x - x0 + w][segment_mask > 0] = 255
     mask = cv2.morphologyEx(mask, cv2.MORPH_CLOSE, np.ones((3, 3), np.uint8))
@@ -207,8 +212,8 @@ def measured_rim_bbox(image: np.ndarray, segment_bbox, segment_mask: np.ndarray,
         return None
     filled = np.zeros((bh, bw), np.uint8)
     cv2.drawContours(filled, [cv2.convexHull(contour)], -1, 255, thickness=cv2.FILLED, offset=(-bx, -by))
-    seg_shape = classify_shape(segment_mask, min_fit)
-    face_shape = classify_shape(filled, min_fit)
+    seg_shape = classify_shape(segment_mask, min_fit, fill_window)
+    face_shape = classify_shape(filled, min_fit, fill_window)
     if seg_shape.shape is None or face_shape.shape != seg_shape.shape:
         return None
     return (x0 + bx, y0 + by, bw, bh)
@@ -310,7 +315,7 @@ def rim_face_bboxes(image: np.ndarray, segment_bbox, segment_mask: np.ndarray, e
     (:func:`edge_rim_bbox`), each kept when it differs from the boxes before it (IoU < ``config.rims.rim_same_iou``).
     """
     boxes = [face_bbox(segment_bbox, extent)]
-    for box in (measured_rim_bbox(image, segment_bbox, segment_mask, extent, config.shape.min_shape_fit),
+    for box in (measured_rim_bbox(image, segment_bbox, segment_mask, extent, config),
                 edge_rim_bbox(image, segment_bbox, shape, config.rims.rim_max_scale, config)):
         if box is not None and all(box_iou(box, b) < config.rims.rim_same_iou for b in boxes):
             boxes.append(box)

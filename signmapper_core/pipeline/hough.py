@@ -21,8 +21,8 @@ from .config import PipelineConfig
 HOUGH_DP = 1.5
 
 
-def radius_range_px(fx: float, near_m: float, far_m: float, diameters_m: Sequence[float], slack: float = 0.2):
-    """(min, max) radius in pixels of round signs of the given diameters within near..far."""
+def radius_range_px(fx: float, near_m: float, far_m: float, diameters_m: Sequence[float], slack: float):
+    """(min, max) radius in pixels of round signs of the given diameters within near..far, widened by ``slack``."""
     lo = min(diameters_m) * fx / (2.0 * far_m) * (1.0 - slack)
     hi = max(diameters_m) * fx / (2.0 * near_m) * (1.0 + slack)
     return max(3, int(np.floor(lo))), int(np.ceil(hi))

@@ -50,4 +50,5 @@ class PairContext:
         config = self.config
         entries = self.catalogue.filter(exclude=tuple(config.classification.exclude))
         sides = [min(f) for e in entries for f in e.formats.values()]
-        return (min(sides) if sides else 0.4) * min(self.camera.fx, self.camera.fy) / config.depth.far_m
+        smallest = min(sides) if sides else min(config.size.fallback_face_sides_m)
+        return smallest * min(self.camera.fx, self.camera.fy) / config.depth.far_m

@@ -65,7 +65,7 @@ def _iou(a: np.ndarray, b: np.ndarray) -> float:
     return float(np.count_nonzero(a & b)) / union if union else 0.0
 
 
-def classify_shape(mask: np.ndarray, min_fit: float = 0.72, fill_window: float = 0.15) -> ShapeResult:
+def classify_shape(mask: np.ndarray, min_fit: float, fill_window: float) -> ShapeResult:
     """Shape of a filled segment mask cropped to its bounding box.
 
     Shapes whose ideal fill ratio is more than ``fill_window`` from the measured
@@ -93,7 +93,7 @@ def classify_shape(mask: np.ndarray, min_fit: float = 0.72, fill_window: float =
     return ShapeResult(best, fits[best], fill, circularity, corners, fits)
 
 
-def outline_shapes(result: ShapeResult, margin: float, min_fit: float = 0.72) -> Tuple[str, ...]:
+def outline_shapes(result: ShapeResult, margin: float, min_fit: float) -> Tuple[str, ...]:
     """The best-fitting shape and every other one within ``margin`` of its fit (and >= ``min_fit``).
 
     A small disc and a small octagon differ by a few pixels at their corners (their ideal

@@ -7,6 +7,7 @@ from signmapper_core.pipeline.hough import find_circles, hough_segments, radius_
 from signmapper_core.pipeline.search_space import search_space_mask
 
 CONFIG = PipelineConfig()
+SLACK = CONFIG.hough.hough_radius_slack
 
 
 def _scene(ring_bgr, field_bgr, u=300, v=180, z=7.0):
@@ -22,7 +23,7 @@ def _scene(ring_bgr, field_bgr, u=300, v=180, z=7.0):
 
 
 def test_radius_range_covers_round_formats_in_the_search_space():
-    lo, hi = radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6])
+    lo, hi = radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6], SLACK)
     assert lo <= 0.4 * CAMERA.fx / 28.0 and hi >= 0.6 * CAMERA.fx / 8.0
 
 
@@ -30,7 +31,7 @@ def test_faded_red_ring_is_found_and_named_red():
     faded_red = (120, 115, 165)  # saturation ~ 80: below the red threshold of the colour step
     image, depth, r = _scene(faded_red, (200, 200, 200))
     search = search_space_mask(depth, 4.0, 14.0)
-    segs = hough_segments(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6]), 0.5, CONFIG)
+    segs = hough_segments(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6], SLACK), 0.5, CONFIG)
     assert len(segs) >= 1
     best = min(segs, key=lambda s: abs(s.bbox[0] + s.bbox[2] / 2 - 300) + abs(s.bbox[1] + s.bbox[3] / 2 - 180))
     x, y, w, h = best.bbox
@@ -41,7 +42,7 @@ def test_faded_red_ring_is_found_and_named_red():
 def test_white_round_sign_is_found_from_the_depth_edge():
     image, depth, r = _scene((160, 160, 160), (160, 160, 160))  # same grey as the background
     search = search_space_mask(depth, 4.0, 14.0)
-    circles = find_circles(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6]), 0.5, CONFIG)
+    circles = find_circles(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6], SLACK), 0.5, CONFIG)
     assert any(abs(u - 300) < 4 and abs(v - 180) < 4 and abs(rr - r) < 4 for u, v, rr in circles)
 
 

@@ -229,7 +229,7 @@ def test_rim_blending_into_a_white_wall_is_measured_by_the_face_outer_edge(catal
     _priority_sign(image, 100, 60, n, 0.5)
     (cand,) = [c for c in face_candidates(image, catalogue, hough=False) if c.segment.colour == "yellow"]
     seg = cand.segment
-    assert measured_rim_bbox(image, seg.bbox, seg.mask, (0.11, 0.11, 0.89, 0.89)) is None
+    assert measured_rim_bbox(image, seg.bbox, seg.mask, (0.11, 0.11, 0.89, 0.89), CONFIG) is None
     face = (100, 60, n + 1, n + 1)
     assert box_iou(edge_rim_bbox(image, seg.bbox, "diamond", CONFIG.rims.rim_max_scale, CONFIG), face) > 0.85
     assert any(box_iou(r.bbox, face) > 0.85 and "3.03" in r.template_ids for r in cand.readings)

@@ -2,9 +2,12 @@ import cv2
 import numpy as np
 import pytest
 
+from signmapper_core.pipeline.config import TEMPLATE_GEOMETRY
 from signmapper_core.pipeline.shape import ShapeResult, classify_shape, outline_shapes
 
 SIZE = 61
+# clean drawn outlines, read as the catalogue's templates are
+FIT, WINDOW = TEMPLATE_GEOMETRY.template_min_fit, TEMPLATE_GEOMETRY.template_fill_window
 
 
 def _polygon(points):
@@ -43,7 +46,7 @@ def _drawn(shape, r=28):
 
 @pytest.mark.parametrize("shape", ["circle", "triangle", "triangle-down", "octagon", "diamond", "rectangle"])
 def test_drawn_shapes_are_recognised(shape):
-    result = classify_shape(_crop(_drawn(shape)))
+    result = classify_shape(_crop(_drawn(shape)), FIT, WINDOW)
     assert result.shape == shape, result
 
 
@@ -58,15 +61,15 @@ def test_circle_and_octagon_differ_at_small_and_large_sizes(shape, radius):
         angles = np.radians(22.5 + 45 * np.arange(8))
         pts = np.array([(c + radius * np.cos(a), c + radius * np.sin(a)) for a in angles], np.int32)
         cv2.fillPoly(mask, [pts], 255)
-    assert classify_shape(_crop(mask)).shape == shape
+    assert classify_shape(_crop(mask), FIT, WINDOW).shape == shape
 
 
 def test_square_is_a_rectangle_and_ellipse_a_circle():
     square = np.full((40, 40), 255, np.uint8)
-    assert classify_shape(square).shape == "rectangle"
+    assert classify_shape(square, FIT, WINDOW).shape == "rectangle"
     ellipse = np.zeros((40, 60), np.uint8)  # a round sign seen at an angle
     cv2.ellipse(ellipse, (30, 20), (29, 19), 0, 0, 360, 255, -1)
-    assert classify_shape(ellipse).shape == "circle"
+    assert classify_shape(ellipse, FIT, WINDOW).shape == "circle"
 
 
 def test_noisy_outline_still_fits():
@@ -75,18 +78,18 @@ def test_noisy_outline_still_fits():
     edge = cv2.morphologyEx(mask.astype(np.uint8), cv2.MORPH_GRADIENT, np.ones((3, 3), np.uint8)) > 0
     flip = edge & (rng.random(mask.shape) < 0.3)
     mask[flip] = 255 - mask[flip]
-    assert classify_shape(_crop(mask.astype(np.uint8))).shape == "triangle"
+    assert classify_shape(_crop(mask.astype(np.uint8)), FIT, WINDOW).shape == "triangle"
 
 
 def test_blob_without_sign_shape_is_rejected():
     blob = np.zeros((40, 40), np.uint8)
     cv2.fillPoly(blob, [np.array([(0, 0), (39, 0), (39, 10), (10, 10), (10, 39), (0, 39)], np.int32)], 255)  # an L
-    result = classify_shape(blob)
+    result = classify_shape(blob, FIT, WINDOW)
     assert result.shape is None
 
 
 def test_empty_mask_has_no_shape():
-    assert classify_shape(np.zeros((20, 20), np.uint8)).shape is None
+    assert classify_shape(np.zeros((20, 20), np.uint8), FIT, WINDOW).shape is None
 
 
 def test_near_tied_outlines_keep_both_readings():
@@ -95,7 +98,7 @@ def test_near_tied_outlines_keep_both_readings():
         best = max(fits, key=fits.get)
         return ShapeResult(best, fits[best], 0.8, 0.9, 8, fits)
 
-    assert outline_shapes(result({"circle": 0.966, "octagon": 0.950}), margin=0.03) == ("circle", "octagon")
-    assert outline_shapes(result({"circle": 0.972, "octagon": 0.921}), margin=0.03) == ("circle",)
-    assert outline_shapes(result({"octagon": 0.95, "circle": 0.93, "rectangle": 0.8}), margin=0.03) == \
+    assert outline_shapes(result({"circle": 0.966, "octagon": 0.950}), 0.03, FIT) == ("circle", "octagon")
+    assert outline_shapes(result({"circle": 0.972, "octagon": 0.921}), 0.03, FIT) == ("circle",)
+    assert outline_shapes(result({"octagon": 0.95, "circle": 0.93, "rectangle": 0.8}), 0.03, FIT) == \
         ("octagon", "circle")
