@@ -267,7 +267,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
         steps = CoreFeedback(feedback)
         try:
             summary = import_drive(out_dir, source, options, progress=steps.progress,
-                                   is_cancelled=steps.is_cancelled, warn_callback=lambda m: steps.warn(f"Warning: {m}"))
+                                   is_cancelled=steps.is_cancelled, warn=lambda m: steps.warn(f"Warning: {m}"))
         except Cancelled:
             raise QgsProcessingException("Cancelled; no drive written.") from None
         except (ImportInputError, DriveFormatError, ValueError, OSError) as exc:

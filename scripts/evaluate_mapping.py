@@ -104,7 +104,7 @@ def main(argv=None) -> int:
         ref_xyz, ref_ids = [s.position for s in reference], [s.template_id for s in reference]
         traj = np.array([[r.pose.easting, r.pose.northing] for r in drive.pairs])
         start = time.perf_counter()
-        result = map_drive(drive, catalogue, config, warn_skipped=lambda message: print(message, file=sys.stderr),
+        result = map_drive(drive, catalogue, config, warn=lambda message: print(message, file=sys.stderr),
                            workers=args.workers)
         seconds = time.perf_counter() - start  # wall clock: workers map side by side
         signs = [s for s in result.signs if s.plate_of is None]  # plates have their own rows

@@ -121,7 +121,7 @@ def map_one(folder: Path, target: Path, catalogue, config, fusion, args, schedul
     for message in drive.warnings:
         printer.warn(message)
     start = time.perf_counter()
-    result = map_drive(drive, catalogue, config, printer.progress, warn_skipped=printer.warn, fusion=fusion,
+    result = map_drive(drive, catalogue, config, printer.progress, warn=printer.warn, fusion=fusion,
                        max_skipped_share=args.max_skipped / 100.0, workers=args.workers, scheduler=scheduler)
     seconds = time.perf_counter() - start
     context = OutputContext(language=args.language or environment_language(), catalogue=catalogue,

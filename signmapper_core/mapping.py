@@ -30,7 +30,7 @@ from .output_schema import MANUAL, run_record
 from .pair_pool import worker_count
 from .plate_fusion import fuse_plates, is_plate, read_plate_texts
 from .plausibility import pair_warnings
-from .progress import CancelCheck, ProgressCallback, WarnCallback, check_cancelled, report, warn
+from .progress import CancelCheck, ProgressCallback, WarnCallback, check_cancelled, report, send_warning
 
 PAIRS_SHARE = 0.95  # of the progress: the pairs; fusion and mounting heights take the rest
 LARGEST_FACE_M = 1.5  # a click is the sign's centre: the search window must hold half the largest face
@@ -160,13 +160,13 @@ def set_mounting_heights(drive: Drive, signs: list[FusedSign]) -> None:
 
 
 def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallback] = None,
-              is_cancelled: Optional[CancelCheck] = None, warn_skipped: Optional[WarnCallback] = None,
+              is_cancelled: Optional[CancelCheck] = None, warn: Optional[WarnCallback] = None,
               fusion: Optional[FusionConfig] = None, max_skipped_share: float = 1.0,
               workers: Optional[int] = None, detect=None, scheduler=None) -> MappingResult:
     """Detect the signs of every pair, fuse them into physical signs and give each its mounting height.
 
     Skipped pairs, and pairs without usable depth or colour, are passed to
-    ``warn_skipped`` as they happen; skipped pairs are listed in the result.
+    ``warn`` as they happen; skipped pairs are listed in the result.
     ``fusion``'s ``accept_classification`` is replaced by the classifier's threshold (``config`` may set it).
     ``Cancelled`` is raised when ``is_cancelled()`` turns true; ``MappingError``
     as soon as more than ``max_skipped_share`` (0..1) of the pairs are skipped,
@@ -190,11 +190,11 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
             seconds += result.seconds
             load_seconds += result.load_seconds
             for message in result.warnings:
-                warn(warn_skipped, message)
+                send_warning(warn, message)
             if result.error:
                 skipped.append(result)
                 trace = f"\n{result.traceback}" if result.traceback else ""
-                warn(warn_skipped, f"Skipped pair {result.record.id}: {result.error}{trace}")
+                send_warning(warn, f"Skipped pair {result.record.id}: {result.error}{trace}")
                 if len(skipped) > max_skipped_share * total:
                     raise MappingError(f"{len(skipped)} of {total} pairs skipped, more than the "
                                        f"{100 * max_skipped_share:g} % allowed (first: pair "
@@ -212,7 +212,7 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     plates = fuse_plates(detections, signs, fusion)
     if plates:
         report(progress, PAIRS_SHARE, f"Reading the text of {len(plates)} supplementary plates")
-        read_plate_texts(plates, warn_skipped)
+        read_plate_texts(plates, warn)
     signs += plates
     set_mounting_heights(drive, signs)
     report(progress, 1.0, f"{len(detections)} detections fused into {len(signs)} signs")

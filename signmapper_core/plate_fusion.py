@@ -19,7 +19,7 @@ from typing import Callable, Optional, Sequence
 from .fusion import FusedSign, FusionConfig, Observation, _merge_tracks, build_tracks, fuse_track
 from .ocr import OcrError, OcrUnavailable, read_texts
 from .plate_text import normalise_text
-from .progress import WarnCallback, warn
+from .progress import WarnCallback, send_warning
 
 READINGS_PER_PLATE = 3  # the nearest observations' crops are read: more add time, rarely a better text
 
@@ -78,12 +78,12 @@ def vote_text(readings) -> tuple[Optional[str], Optional[float]]:
     return text, weights[text] / len(readings)
 
 
-def read_plate_texts(plates: Sequence[FusedSign], warn_callback: Optional[WarnCallback] = None,
+def read_plate_texts(plates: Sequence[FusedSign], warn: Optional[WarnCallback] = None,
                      read: Callable = read_texts) -> int:
     """Set each plate's ``text`` and ``text_confidence``; returns the number of plates with a text.
 
     One OCR run for all plates. Without Tesseract (or when it fails) the plates keep
-    no text and ``warn_callback`` hears once why and how to install it.
+    no text and ``warn`` hears once why and how to install it.
     """
     owners, crops = [], []
     for k, plate in enumerate(plates):
@@ -95,10 +95,10 @@ def read_plate_texts(plates: Sequence[FusedSign], warn_callback: Optional[WarnCa
     try:
         readings = read(crops)
     except OcrUnavailable as exc:
-        warn(warn_callback, f"{len(plates)} supplementary plates mapped without their text: {exc}")
+        send_warning(warn, f"{len(plates)} supplementary plates mapped without their text: {exc}")
         return 0
     except OcrError as exc:
-        warn(warn_callback, f"{len(plates)} supplementary plates mapped without their text: {exc}")
+        send_warning(warn, f"{len(plates)} supplementary plates mapped without their text: {exc}")
         return 0
     by_plate = defaultdict(list)
     for k, reading in zip(owners, readings):

@@ -7,10 +7,12 @@
   and what it is doing, in words;
 - ``is_cancelled() -> bool``: asked between steps; when it turns true the
   operation raises :class:`Cancelled` and leaves nothing half-done behind;
-- where input can be skipped (``map_drive``, ``import_drive``, ``write_sign_crops``),
-  ``warn(message)``: something was skipped and the operation goes on.
+- where input can be skipped (``map_drive``, ``import_drive``, ``write_sign_crops``,
+  ``plate_fusion.read_plate_texts``), ``warn(message)``: something was skipped and the
+  operation goes on. The parameter is called ``warn`` in each (the run settings' readers
+  too, whose ``warn`` hears of settings they ignored).
 
-They call them through :func:`report`, :func:`check_cancelled` and :func:`warn`.
+They call them through :func:`report`, :func:`check_cancelled` and :func:`send_warning`.
 
 All are optional. Front ends adapt their own feedback to it once
 (``algorithms/base.py`` for QGIS Processing).
@@ -40,6 +42,6 @@ def check_cancelled(is_cancelled: Optional[CancelCheck], what: str) -> None:
         raise Cancelled(f"{what} cancelled")
 
 
-def warn(callback: Optional[WarnCallback], message: str) -> None:
-    if callback is not None:
-        callback(message)
+def send_warning(warn: Optional[WarnCallback], message: str) -> None:
+    if warn is not None:
+        warn(message)

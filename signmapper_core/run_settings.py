@@ -21,17 +21,16 @@ import sqlite3
 from contextlib import closing
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable, Optional
+from typing import Any, Optional
 
 from .output_schema import RUN_TABLE, decode_run_value
+from .progress import WarnCallback
 
 # raise when a setting changes its meaning or unit, or the record its layout: older records are then refused
 # unless read_versions learns them (version 1: the pipeline settings flat, before the sections)
 SETTINGS_VERSION = 2
 FLAT_PIPELINE_VERSION = 1
 SQLITE_HEADER = b"SQLite format 3\x00"
-
-Warn = Callable[[str], None]
 
 
 class RunRecordError(ValueError):
@@ -52,7 +51,7 @@ def _frozen(value):
     return value
 
 
-def settings_of(cls, data: dict, where: str, warn: Optional[Warn] = None):
+def settings_of(cls, data: dict, where: str, warn: Optional[WarnCallback] = None):
     """An instance of the settings dataclass ``cls`` from ``data`` (a :func:`settings_dict`).
 
     Keys ``cls`` does not have are passed to ``warn`` and ignored; missing ones
@@ -71,7 +70,7 @@ def settings_of(cls, data: dict, where: str, warn: Optional[Warn] = None):
         raise RunRecordError(f"{where}: {exc}") from exc
 
 
-def pipeline_config_of(data: dict, where: str, warn: Optional[Warn] = None, version: int = SETTINGS_VERSION):
+def pipeline_config_of(data: dict, where: str, warn: Optional[WarnCallback] = None, version: int = SETTINGS_VERSION):
     """The ``PipelineConfig`` of a record's ``pipeline`` object: ``{section: {setting: value}}``.
 
     ``version`` 1: the settings flat, each put into its section by name. Unknown
@@ -132,7 +131,7 @@ class RunSettings:
     software: str = ""
 
 
-def run_settings(record: dict, where: str, warn: Optional[Warn] = None) -> RunSettings:
+def run_settings(record: dict, where: str, warn: Optional[WarnCallback] = None) -> RunSettings:
     """The settings of a run record (:func:`read_run_record`); ``where`` names it in messages."""
     from .fusion import FusionConfig
 
@@ -150,6 +149,6 @@ def run_settings(record: dict, where: str, warn: Optional[Warn] = None) -> RunSe
     return RunSettings(config, fusion, str(catalogue) if catalogue else None, str(software))
 
 
-def load_run_settings(path, warn: Optional[Warn] = None) -> RunSettings:
+def load_run_settings(path, warn: Optional[WarnCallback] = None) -> RunSettings:
     """The settings an earlier output at ``path`` was mapped with; :class:`RunRecordError` says what is wrong."""
     return run_settings(read_run_record(path), str(path), warn)

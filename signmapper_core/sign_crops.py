@@ -7,8 +7,7 @@ from typing import Dict, Optional, Tuple
 
 import cv2
 
-from .progress import CancelCheck, WarnCallback, check_cancelled
-from .progress import warn as send_warning
+from .progress import CancelCheck, WarnCallback, check_cancelled, send_warning
 
 Rect = Tuple[int, int, int, int]  # x, y, w, h
 JPEG_QUALITY = 90

@@ -93,7 +93,7 @@ def main(argv=None) -> int:
         options = ImportOptions(output_crs=output_crs, image_format=args.image_format,
                                 jpeg_quality=args.jpeg_quality, max_vertical_disparity_px=args.max_vertical_disparity,
                                 check_image=args.check_image, workers=args.workers)
-        summary = import_drive(args.out, source, options, progress=progress, warn_callback=warn)
+        summary = import_drive(args.out, source, options, progress=progress, warn=warn)
     except (ImportInputError, DriveFormatError, ImageReadError, FileExistsError, ValueError) as exc:
         print(f"\nerror: {exc}", file=sys.stderr)
         return 2

@@ -29,7 +29,7 @@ from ..drive_writer import write_drive_json, write_image, write_poses_csv
 from ..errors import ImportInputError
 from ..geometry import Camera, Pose
 from ..image_files import IMAGE_SUFFIXES, image_header, read_image
-from ..progress import CancelCheck, ProgressCallback, WarnCallback, check_cancelled, report, warn
+from ..progress import CancelCheck, ProgressCallback, WarnCallback, check_cancelled, report, send_warning
 from .calibration import StereoCalibration, choose_calibration
 from .camera_poses import Orientation, body_poses, drive_poses
 from .crs_steps import CrsSteps
@@ -124,7 +124,7 @@ def plan_import(source: DriveSource, options: ImportOptions, note: Callable[[str
 
 def import_drive(out_dir, source: DriveSource, options: Optional[ImportOptions] = None,
                  progress: Optional[ProgressCallback] = None, is_cancelled: Optional[CancelCheck] = None,
-                 warn_callback: Optional[WarnCallback] = None) -> ImportSummary:
+                 warn: Optional[WarnCallback] = None) -> ImportSummary:
     """Write ``source`` as a drive folder ``out_dir`` (new or empty); see module."""
     started = time.perf_counter()
     options = options or ImportOptions()
@@ -132,7 +132,7 @@ def import_drive(out_dir, source: DriveSource, options: Optional[ImportOptions] 
 
     def note(message: str) -> None:
         warnings.append(message)
-        warn(warn_callback, message)
+        send_warning(warn, message)
 
     report(progress, 0.0, "reading image headers, calibration and poses")
     plan = plan_import(source, options, note)

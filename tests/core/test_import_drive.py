@@ -58,7 +58,7 @@ def imported(survey, tmp_path_factory):
     warnings = []
     summary = import_drive(out, generic_source(trajectory_inputs(survey)),
                            ImportOptions(output_crs="EPSG:2056", check_image=out.parent / "check.png"),
-                           warn_callback=warnings.append)
+                           warn=warnings.append)
     return summary, open_drive(out), warnings
 
 

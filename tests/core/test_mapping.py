@@ -73,7 +73,7 @@ def test_corrupt_pair_is_skipped_with_a_warning_naming_it(drive_dir, catalogue, 
     broken = sorted((drive / "left").iterdir())[3]
     broken.write_bytes(broken.read_bytes()[:2000])  # header readable, pixels truncated
     warnings = []
-    result = map_drive(open_drive(drive), catalogue, PipelineConfig(), warn_skipped=warnings.append)
+    result = map_drive(open_drive(drive), catalogue, PipelineConfig(), warn=warnings.append)
     assert [r.record.id for r in result.skipped] == [broken.stem]
     assert len(warnings) == 1 and broken.stem in warnings[0] and broken.name in warnings[0]
     assert result.detections and all(o.pair_id != broken.stem for o in result.detections)
@@ -98,7 +98,7 @@ def test_pair_whose_detection_raises_is_skipped_with_its_traceback_and_the_run_g
         drive_dir, catalogue, mapped, monkeypatch):
     _failing_at(4, drive_dir, monkeypatch)
     warnings = []
-    result = map_drive(open_drive(drive_dir), catalogue, PipelineConfig(), warn_skipped=warnings.append, workers=1)
+    result = map_drive(open_drive(drive_dir), catalogue, PipelineConfig(), warn=warnings.append, workers=1)
     (failed,) = result.skipped
     assert failed.record.id == "000004" and failed.stage == "detect"
     assert failed.error == "detection failed: IndexError: list index out of range"
@@ -171,7 +171,7 @@ def test_too_many_unreadable_pairs_are_an_error_not_a_thinner_output(drive_dir, 
     warnings = []
     with pytest.raises(MappingError, match=r"^4 of 10 pairs skipped, more than the 30 % allowed \(first: pair 000000"
                        ) as info:
-        map_drive(open_drive(drive), catalogue, PipelineConfig(), warn_skipped=warnings.append,
+        map_drive(open_drive(drive), catalogue, PipelineConfig(), warn=warnings.append,
                   max_skipped_share=0.3)
     assert len(warnings) == 4  # stopped as soon as it was certain, not after all pairs
     assert info.value.limit_exceeded  # a larger share would let this drive map
@@ -191,6 +191,6 @@ def test_pairs_without_depth_or_colour_are_warned_about(drive_dir, catalogue, tm
     grey = cv2.cvtColor(cv2.imread(str(drive / "left" / "000004.jpg")), cv2.COLOR_BGR2GRAY)
     cv2.imwrite(str(drive / "left" / "000004.jpg"), cv2.cvtColor(grey, cv2.COLOR_GRAY2BGR))  # colour JPEG, no colour
     warnings = []
-    map_drive(open_drive(drive), catalogue, PipelineConfig(), warn_skipped=warnings.append)
+    map_drive(open_drive(drive), catalogue, PipelineConfig(), warn=warnings.append)
     assert [w.split(":")[0] for w in warnings] == ["Pair 000002", "Pair 000004"]
     assert "000002.npy has no usable depth" in warnings[0] and "000004.jpg has no colour at all" in warnings[1]

@@ -36,7 +36,7 @@ def one_worker(stereo_drive, catalogue):
 def _run(drive_dir, catalogue, **kwargs):
     progress, warnings = [], []
     result = map_drive(open_drive(drive_dir), catalogue, PipelineConfig(), progress=lambda f, m: progress.append(m),
-                       warn_skipped=warnings.append, **kwargs)
+                       warn=warnings.append, **kwargs)
     return result, progress, warnings
 
 

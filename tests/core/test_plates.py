@@ -169,7 +169,7 @@ def _write_drive(root, catalogue, lines=("200 m",), n=3):
 def test_a_plate_seen_in_three_pairs_is_one_feature_linked_to_its_sign_with_its_text(catalogue, tmp_path):
     drive = _write_drive(tmp_path / "drive", catalogue)
     messages = []
-    result = map_drive(drive, catalogue, PipelineConfig(), warn_skipped=messages.append, workers=1)
+    result = map_drive(drive, catalogue, PipelineConfig(), warn=messages.append, workers=1)
     signs = [s for s in result.signs if s.plate_of is None]
     plates = [s for s in result.signs if s.plate_of is not None]
     assert [s.template_id for s in signs] == ["2.30-50"] and len(plates) == 1
@@ -193,7 +193,7 @@ def test_without_tesseract_plates_are_mapped_and_the_run_says_once_how_to_instal
     drive = _write_drive(tmp_path / "drive", catalogue)
     monkeypatch.setenv("PATH", str(tmp_path))  # no tesseract to be found
     messages = []
-    result = map_drive(drive, catalogue, PipelineConfig(), warn_skipped=messages.append, workers=1)
+    result = map_drive(drive, catalogue, PipelineConfig(), warn=messages.append, workers=1)
     plates = [s for s in result.signs if s.plate_of is not None]
     assert len(plates) == 1 and plates[0].text is None and plates[0].text_confidence is None
     about_plates = [m for m in messages if "plate" in m]
