@@ -62,9 +62,16 @@ class ReviewSession:
                              first_time=first_time(self.drive) if self.drive is not None else 0.0)
 
     def pipeline_config(self):
-        """The run's recorded pipeline settings (defaults for anything missing or invalid)."""
+        """The settings the run was mapped with: its whole recorded configuration (``run_settings``); for a run
+        recorded before settings were saved whole, its near/far, colours, exclusions, thresholds and classifier
+        (defaults for anything missing or invalid)."""
         from ..signmapper_core.pipeline.config import SECTION_OF, PipelineConfig, with_settings
+        from ..signmapper_core.run_settings import RunRecordError, run_settings
 
+        try:
+            return run_settings(self.run, "the layer's run table").config
+        except RunRecordError:
+            pass
         keys = ("near_m", "far_m", "detection_threshold", "classification_threshold")
         recorded = {k: float(self.run[k]) for k in keys if isinstance(self.run.get(k), (int, float))}
         for key in ("colours", "exclude"):

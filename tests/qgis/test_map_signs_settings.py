@@ -1,5 +1,6 @@
 """``mapsigns`` records its whole configuration and maps a drive again with the settings of an earlier output."""
 
+import dataclasses
 import json
 import shutil
 import sqlite3
@@ -11,7 +12,13 @@ from recorder import Recorder
 
 from signmapper_core.fusion import FusionConfig
 from signmapper_core.pipeline import PipelineConfig
-from signmapper_core.pipeline.config import ClassificationConfig, ColourConfig, DepthConfig, PlanarityConfig
+from signmapper_core.pipeline.config import (
+    ClassificationConfig,
+    ColourConfig,
+    DepthConfig,
+    PlanarityConfig,
+    with_settings,
+)
 from signmapper_core.run_settings import SETTINGS_VERSION, load_run_settings, read_run_record, settings_dict
 
 # not the defaults: depth range, colours, both thresholds and an excluded type
@@ -150,3 +157,21 @@ def run_mapsigns(registered_plugin):
         return processing.run("signmapper:mapsigns", parameters, feedback=feedback)
 
     return run
+
+
+def test_the_review_adds_signs_with_the_runs_whole_recorded_configuration(earlier):
+    from sign_mapper.review.session import ReviewSession
+
+    session = ReviewSession(lambda *args, **kwargs: None)
+    record = read_run_record(earlier)
+    record["pipeline"]["hough"]["hough_enabled"] = False  # a setting no dialog parameter sets
+    session.run = record
+    # (compared as recorded: the plugin's package is another copy of the core's classes)
+    assert settings_dict(session.pipeline_config()) == settings_dict(
+        with_settings(EXPECTED, {"hough": {"hough_enabled": False}}))
+    # a run recorded before settings were saved whole: its dialog settings, the effective threshold, the classifier
+    session.run = {k: v for k, v in record.items() if k not in ("settings_version", "pipeline", "fusion")}
+    older = settings_dict(session.pipeline_config())
+    classification = ClassificationConfig(classification_threshold=0.7, exclude=("2.30-120",),
+                                          classifier=record["classifier"])
+    assert older == settings_dict(dataclasses.replace(EXPECTED, classification=classification))
