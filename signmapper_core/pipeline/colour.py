@@ -283,7 +283,7 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
                 out.append(seg)
     if config.bright_fields.field_pass and "red" in config.colour.colours:
         for seg in frame.ring_fields(image, config, small_face_px):
-            if search is not None and inside_share(seg, search) < 0.5:
+            if search is not None and inside_share(seg, search) < config.bright_fields.field_min_inside_share:
                 continue  # a field mostly outside the search space
             if not any(o.colour == "red" and (box_iou(o.bbox, seg.bbox) >= config.scene.pass_duplicate_iou
                                               or _field_of(seg.bbox, o.bbox, config)) for o in out):

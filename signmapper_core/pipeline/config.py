@@ -134,6 +134,8 @@ class BrightFieldConfig:
     # a component is first judged on the reduced image by means, asking this share of each margin above
     # (GTSDB tune split: 15 % of the components pass, every field later kept on a sign among them)
     field_coarse_share: float = 0.5
+    field_min_inside_share: float = 0.5  # the pass reads the whole image: a field counts with this share inside
+    # the search space (one mostly outside it is another depth's)
     # a field whose box lies inside a colour segment's box (give or take this many pixels) and fills at least this
     # share of it is the field of a ring the colour passes outlined already (a disc's field fills ~70 % of its
     # box, a triangle's ~50 %)

@@ -83,6 +83,19 @@ def test_field_outside_the_search_space_or_too_small_is_not_sought(catalogue):
     assert len(red_ring_fields(image, None, PipelineConfig())) == 1
 
 
+def test_a_field_straddling_the_search_space_counts_with_enough_of_it_inside(catalogue):
+    image = _dusk_scene(catalogue, "2.30-50", 50)
+    (field,) = find_colour_segments(image, None, PipelineConfig(), None)
+    x, _, w, _ = field.bbox
+    search = np.zeros(image.shape[:2], bool)
+    search[:, : x + int(0.6 * w)] = True  # 60 % of the field's columns inside
+    assert [s.source for s in find_colour_segments(image, search, PipelineConfig(), None)] == ["hole"]
+    stricter = PipelineConfig(bright_fields=BrightFieldConfig(field_min_inside_share=0.75))
+    assert find_colour_segments(image, search, stricter, None) == []
+    search[:, x + int(0.4 * w):] = False  # 40 % inside
+    assert find_colour_segments(image, search, PipelineConfig(), None) == []
+
+
 def test_bright_field_against_a_bright_sky_is_found_at_a_higher_level(catalogue):
     # backlit: the sky is brighter than the field, the dark ring still encloses it
     bgr, alpha = catalogue.render("2.30-50", 50)
