@@ -122,7 +122,10 @@ def _window(img, rng, x_m, top_m, w_m, h_m, px_m, frame):
         return
     ramp = np.linspace(-25, 30, gh, dtype=np.float32)[:, None, None] * rng.uniform(0.3, 1.0)
     pane = np.clip(glass + ramp + 6 * rng.standard_normal((gh, gw, 1)).astype(np.float32), 0, 255)
-    img[y0 + b:y1 - b, x0 + b:x1 - b] = pane.astype(np.uint8)
+    # a shop window may reach past the façade's foot (or top): only the part on the façade is painted
+    top, left = max(y0 + b, 0), max(x0 + b, 0)
+    target = img[top:y1 - b, left:x1 - b]
+    target[...] = pane[top - (y0 + b):, left - (x0 + b):][:target.shape[0], :target.shape[1]].astype(np.uint8)
     if gw > 6:  # mullion
         xm = x0 + (x1 - x0) // 2
         cv2.line(img, (xm, y0), (xm, y1), frame, max(1, b // 2))
