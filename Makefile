@@ -131,6 +131,7 @@ catalogue: venv
 		$(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $(BUILD_APT_PACKAGES); \
 	fi
 	$(PY) -m signmapper_core.catalogue.build --svg "$(SVG)"
+	$(PY) -m signmapper_core.catalogue.plate_build --svg "$(SVG)"
 
 $(TRAIN_VENV)/.installed: requirements.txt requirements-train.txt
 	$(SYSTEM_PYTHON) -m venv --system-site-packages $(TRAIN_VENV)

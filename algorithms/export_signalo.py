@@ -125,7 +125,7 @@ class ExportToSignaloAlgorithm(SignMapperAlgorithm):
                     values["width_m"] or 0.0, values["height_m"] or 0.0, values["format"] or "",
                     values["shape"] or "", values["status"] or "", values["detection_indicator"],
                     values["classification_indicator"], values["n_obs"], values["sigma_m"],
-                    values["mount_height_m"], update_id, moved))
+                    values["mount_height_m"], update_id, moved, values["plate_of"], values["text"]))
             feedback.pushInfo(f"{len(signs)} signs of run {run_id} to write into {where}; {left_out} left out by "
                               f"status (writing {', '.join(sorted(statuses))})")
             try:
@@ -139,6 +139,10 @@ class ExportToSignaloAlgorithm(SignMapperAlgorithm):
         feedback.pushInfo(f"Signalo {result.version or '(version not recorded)'}: {result.summary()}")
         for sign_id, type_id in result.unknown:
             feedback.reportError(f"Sign {sign_id}: type {type_id} has no official sign in Signalo; not written",
+                                 fatalError=False)
+        for plate_id, sign_id in result.plates_without_sign:
+            feedback.reportError(f"Plate {plate_id}: its sign {sign_id} is not written by this export (left out by "
+                                 "status, unknown type, already exported or updated); the plate is not written",
                                  fatalError=False)
         return {"ADDED": len(result.added), "UPDATED": len(result.updated), "ALREADY": len(result.already),
                 "UNKNOWN": len(result.unknown), "SUPPORTS": result.supports,

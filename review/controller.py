@@ -47,6 +47,7 @@ class ReviewController(DockController):
         self.connect_dock([
             (dock.acceptRequested, d.accept), (dock.rejectRequested, d.reject),
             (dock.reclassifyRequested, d.reclassify), (dock.undoRequested, d.undo_last),
+            (dock.textEdited, d.set_text),
             (dock.addSignClicked, d.add_sign), (dock.nextRequested, n.next), (dock.previousRequested, n.previous),
             (dock.nextReviewRequested, n.next_review), (dock.zoomRequested, n.zoom_to_feature),
             (dock.pairRequested, self.images.show_pair), (dock.observationRequested, self.images.show_observation),

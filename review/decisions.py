@@ -14,7 +14,7 @@ from ..signmapper_core.changes_schema import CHANGES
 from ..signmapper_core.output_schema import MANUAL, SIGNS
 from .edits import DecisionLog, EditError, add_feature, change_attributes
 from .layers import features_where
-from .values import accept_values, manual_feature, reclassify_values, reject_values
+from .values import accept_values, manual_feature, plate_text_values, reclassify_values, reject_values
 
 DUPLICATE_RADIUS_M = 0.5  # an added sign this close to one of the same type is probably that sign
 
@@ -70,6 +70,18 @@ class DecisionTaker:
                                    current["status"] or "", session.language)
         self.dock.show_picker(False)
         self._decide(values, "reclassify feature {fid} as " + template_id)
+
+    def set_text(self, text: str) -> None:
+        """A person corrected (or confirmed) the text of the shown plate."""
+        session = self.session
+        if session.layer is None or session.fid is None or session.kind != SIGNS:
+            return
+        current = feature_values(session.layer.getFeature(session.fid), session.kind)
+        if current["plate_of"] is None:
+            self.dock.show_message("Only a supplementary plate has a text to set", error=True)
+            return
+        values = plate_text_values(text, current["status"] or "")
+        self._decide(values, f"set the text of plate {{fid}} to \"{values['text'] or ''}\"")
 
     def undo_last(self) -> None:
         try:

@@ -72,9 +72,21 @@ def read_item(session, feature) -> ReviewItem:
     if kind == SIGNS:
         item.extra = [(label, fmt.format(values[key])) for key, label, fmt in SIGN_FIGURES if values[key] is not None]
         item.observations = observations_of(layer, values["sign_id"]) or own_observation(values)
+        item.plate_of, item.text, item.text_confidence = values["plate_of"], values["text"], values["text_confidence"]
+        if item.is_plate and not item.pictogram_path and catalogue is not None:
+            item.pictogram_path = plate_pictogram_path(catalogue, item.template_id)
     if item.bbox is not None and session.drive is not None:
         item.crop = crop_rect(item.bbox, session.drive.image_size)
     return item
+
+
+def plate_pictogram_path(catalogue, template_id: str) -> str:
+    """The rendering of a pictogram plate's drawing (German version first), "" for a text plate."""
+    from ..signmapper_core.plate_catalogue import plates_folder
+
+    for path in sorted((plates_folder(catalogue.folder) / "png").glob(f"{template_id}_*.png")):
+        return str(path)
+    return ""
 
 
 def own_observation(values: dict) -> List[ObservationView]:

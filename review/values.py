@@ -22,6 +22,17 @@ def reject_values() -> dict:
     return {"status": REJECTED, "reviewed": 1}
 
 
+def plate_text_values(text: str, current_status: str) -> dict:
+    """A person read the plate and set its text: certain (confidence 1), the plate accepted and reviewed.
+    Spelt as the mapping writes texts (``plate_text``): lines joined by " / "."""
+    from ..signmapper_core.plate_text import normalise_text
+
+    lines = [line for line in text.replace("\n", " / ").split("/")]
+    written = normalise_text(lines)
+    return {"text": written or None, "text_confidence": 1.0 if written else None,
+            "status": MANUAL if current_status == MANUAL else ACCEPTED, "reviewed": 1}
+
+
 def template_format(entry, current_format: Optional[str]) -> str:
     """The new template's format: the current one if it has it, else "normal", else its first."""
     for name in (current_format, DEFAULT_FORMAT):

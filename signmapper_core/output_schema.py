@@ -66,6 +66,12 @@ class OutputContext:
             return PLATE_NAMES.get(self.language, PLATE_NAMES["en"])
         if self.catalogue is not None and template_id in self.catalogue:
             return sign_name(self.catalogue[template_id], self.language)
+        if self.catalogue is not None and getattr(self.catalogue, "folder", None) is not None:
+            from .plate_catalogue import load_plate_templates, template_by_id
+
+            plate = template_by_id(load_plate_templates(self.catalogue.folder), template_id)
+            if plate is not None:  # a pictogram plate; English: the German name, as for signs without one
+                return plate.name(self.language)
         return fallback
 
     def timestamp(self, time: Optional[float]) -> Optional[str]:

@@ -4,8 +4,10 @@ A reference plate (truth row with ``plate_of``) counts when it was in view withi
 the depth range (:func:`visibility.mappable_signs`). It is detected when a mapped
 plate lies within the matching radius; its link is right when that mapped plate's
 sign (``plate_of``) is the mapped sign matched to the reference plate's sign; its
-text is right when it equals the reference text exactly. Text is judged on the
-plates that were at least ``min_text_px`` high in the pair that saw them largest.
+text is right when it equals the reference text exactly (a pictogram plate
+without words: when it has none). Text is judged on the plates that were at
+least ``min_text_px`` high in the pair that saw them largest. Each detected plate
+is also classified: a text plate as one, a pictogram plate as its SSV id.
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from dataclasses import dataclass, fields
 import numpy as np
 
 from .evaluation import match_to_reference
+from .plate_formats import PLATE_ID
 from .visibility import largest_view_px, mappable_signs
 
 MIN_TEXT_PX = 40.0
@@ -32,6 +35,10 @@ class PlateFigures:
     readable_detected: int = 0
     texts_right: int = 0  # of the readable ones: text exactly right
     texts_read: int = 0  # of the readable detected ones: any text
+    pictograms: int = 0  # reference plates that are pictogram plates (SSV 5.xx drawings)
+    kinds_right: int = 0  # of the detected: text plate told as a text plate, pictogram plate as its own id
+    pictograms_right: int = 0  # of the detected pictogram plates: their id
+    pictograms_detected: int = 0
 
     def __add__(self, other: PlateFigures) -> PlateFigures:
         return PlateFigures(*(getattr(self, f.name) + getattr(other, f.name) for f in fields(self)))
@@ -44,6 +51,9 @@ class PlateFigures:
                 f"  reference plates in view        {self.reference}",
                 f"  detected                        {share(self.detected, self.reference)}",
                 f"  linked to the right sign        {share(self.links_right, self.detected)} detected",
+                f"  classified right (text/5.xx id) {share(self.kinds_right, self.detected)} detected",
+                f"  pictogram plates (5.xx)         {self.pictograms} ({self.pictograms_detected} detected, "
+                f"{self.pictograms_right} with their id)",
                 f"  mapped plate features           {self.mapped}",
                 f"  false positive plates           {self.false_positives}",
                 f"  reference plates with >1 plate  {self.duplicates}",
@@ -66,7 +76,8 @@ def evaluate_plates(drive, signs, sign_reference, sign_match, near_m: float = 4.
     sign_truth = {}
     for sign, ref in zip((s for s in signs if s.plate_of is None), sign_match):
         sign_truth[sign.sign_id] = sign_reference[ref].sign_id if ref >= 0 else None
-    figures = PlateFigures(reference=len(reference), mapped=len(mapped))
+    figures = PlateFigures(reference=len(reference), mapped=len(mapped),
+                           pictograms=sum(r.template_id != PLATE_ID for r in reference))
     match = match_to_reference(np.array([p.position for p in mapped]).reshape(-1, 3),
                                np.array([r.position for r in reference]).reshape(-1, 3), radius_m)
     figures.false_positives = int((match < 0).sum())
@@ -80,8 +91,12 @@ def evaluate_plates(drive, signs, sign_reference, sign_match, near_m: float = 4.
         figures.duplicates += len(found) > 1
         best = max(found, key=lambda p: p.n_obs)
         figures.links_right += sign_truth.get(best.plate_of) == ref.plate_of
+        figures.kinds_right += best.template_id == ref.template_id
+        if ref.template_id != PLATE_ID:
+            figures.pictograms_detected += 1
+            figures.pictograms_right += best.template_id == ref.template_id
         if readable:
             figures.readable_detected += 1
             figures.texts_read += best.text is not None
-            figures.texts_right += best.text == ref.text
+            figures.texts_right += (best.text or "") == (ref.text or "")  # a pictogram alone: no text
     return figures

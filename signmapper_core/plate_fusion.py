@@ -8,7 +8,8 @@ nearest observations, all plates of a run in one OCR call, and decided by vote
 over what was read (normalised, :mod:`plate_text`); the text confidence is the
 winner's summed OCR confidence over all readings of that plate. Without
 Tesseract the plates are mapped without text, and the run says once how to
-install it.
+install it. A pictogram plate (classified in the pairs) is not read: its text is
+the words its drawing carries.
 """
 
 from __future__ import annotations
@@ -18,10 +19,12 @@ from typing import Callable, Optional, Sequence
 
 from .fusion import FusedSign, FusionConfig, Observation, _merge_tracks, build_tracks, fuse_track
 from .ocr import OcrError, OcrUnavailable, read_texts
-from .plate_text import normalise_text
+from .plate_formats import PLATE_ID
+from .plate_text import is_plate_line, normalise_text
 from .progress import WarnCallback, send_warning
 
 READINGS_PER_PLATE = 3  # the nearest observations' crops are read: more add time, rarely a better text
+WELL_FORMED_WEIGHT = 2.0
 
 
 def is_plate(observation: Observation) -> bool:
@@ -66,16 +69,19 @@ def reading_crops(plate: FusedSign, per_plate: int = READINGS_PER_PLATE) -> list
 
 def vote_text(readings) -> tuple[Optional[str], Optional[float]]:
     """(text, confidence) of one plate from its readings: the normalised text with the largest summed OCR
-    confidence; confidence = that sum over the number of readings. (None, None) when nothing was read."""
+    confidence (doubled for a reading whose lines all have a form plates print, ``is_plate_line``); confidence =
+    its summed OCR confidence over the number of readings. (None, None) when nothing was read."""
     weights = defaultdict(float)
     for reading in readings:
         text = normalise_text(reading.lines)
-        if text:
-            weights[text] += reading.confidence
+        if text:  # a reading in the forms plates print counts twice: a misreading rarely is one
+            weights[text] += reading.confidence * (WELL_FORMED_WEIGHT if all(is_plate_line(line) for line in
+                                                                             text.split(" / ")) else 1.0)
     if not weights:
         return None, None
     text = max(weights, key=weights.get)
-    return text, weights[text] / len(readings)
+    confidence = sum(r.confidence for r in readings if normalise_text(r.lines) == text)
+    return text, confidence / len(readings)
 
 
 def read_plate_texts(plates: Sequence[FusedSign], warn: Optional[WarnCallback] = None,
@@ -87,24 +93,36 @@ def read_plate_texts(plates: Sequence[FusedSign], warn: Optional[WarnCallback] =
     """
     owners, crops = [], []
     for k, plate in enumerate(plates):
+        if plate.template_id != PLATE_ID:  # a pictogram plate: the words of its drawing, no OCR
+            plate.text, plate.text_confidence = printed_text(plate)
+            continue
         for crop in reading_crops(plate):
             owners.append(k)
             crops.append(crop)
     if not crops:
-        return 0
+        return sum(p.text is not None for p in plates)
     try:
         readings = read(crops)
-    except OcrUnavailable as exc:
-        send_warning(warn, f"{len(plates)} supplementary plates mapped without their text: {exc}")
-        return 0
-    except OcrError as exc:
-        send_warning(warn, f"{len(plates)} supplementary plates mapped without their text: {exc}")
-        return 0
+    except (OcrUnavailable, OcrError) as exc:
+        send_warning(warn, f"{len(set(owners))} supplementary plates mapped without their text: {exc}")
+        return sum(p.text is not None for p in plates)
     by_plate = defaultdict(list)
     for k, reading in zip(owners, readings):
         by_plate[k].append(reading)
     done = 0
     for k, plate in enumerate(plates):
-        plate.text, plate.text_confidence = vote_text(by_plate.get(k, []))
+        if plate.template_id == PLATE_ID:
+            plate.text, plate.text_confidence = vote_text(by_plate.get(k, []))
         done += plate.text is not None
     return done
+
+
+def printed_text(plate: FusedSign) -> tuple[Optional[str], Optional[float]]:
+    """(words, share of its observations of its id that carry them) of a pictogram plate: the words of the
+    drawing (language version) most of them matched; (None, None) for a pictogram alone."""
+    votes = defaultdict(int)
+    same = [o for o in plate.observations if o.template_id == plate.template_id]
+    for obs in same:
+        votes[getattr(obs.detection, "printed_text", None) or ""] += 1
+    words = max(votes, key=votes.get) if votes else ""
+    return (words, votes[words] / len(same)) if words else (None, None)

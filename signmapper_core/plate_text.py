@@ -31,6 +31,9 @@ VOCABULARY = (
     "enfants", "bambini", "Gegenverkehr", "Parkieren", "Stationnement", "Parcheggio",
 )
 _LOOKUP = {w.lower(): w for w in VOCABULARY}
+# what plates commonly except, by language: short words the vocabulary leaves out (its words have 5+ letters)
+_EXCEPTED = {"de": ("Bus", "Taxi", "Velos", "Anwohner"), "fr": ("bus", "taxi", "cycles"),
+             "it": ("bus", "taxi")}
 _DIGIT_LOOKALIKES = str.maketrans({"O": "0", "o": "0", "D": "0", "Q": "0", "l": "1", "I": "1", "i": "1", "|": "1",
                                    "S": "5", "s": "5", "B": "8", "Z": "2", "z": "2", "g": "9"})
 _DASHES = "-–—~_=‐‑‒―"
@@ -59,25 +62,69 @@ def _fix_word(token: str) -> str:
     return token.replace(core, _LOOKUP[match[0]]) if match else token
 
 
+_DAY_LOOKALIKES = str.maketrans({"5": "S", "0": "o", "1": "l", "8": "B"})
+
+
+def _completed_day(part: str, days: tuple, first: bool) -> str | None:
+    """The weekday of ``days`` (one language's, Monday first) that ``part`` is, or is the start (end) of when OCR
+    lost its last (first) letter; a range's first day where several fit is the earliest (plates' ranges start
+    on Monday), its last day the latest."""
+    part = part.translate(_DAY_LOOKALIKES)
+    exact = [d for d in days if d.lower() == part.lower()]
+    if exact:
+        return exact[0]
+    if len(part) != 1:
+        return None
+    fits = [d for d in days if d.lower().startswith(part.lower()) or d.lower().endswith(part.lower())]
+    if not fits:
+        return None
+    return fits[0] if first else fits[-1]
+
+
 def _fix_days(text: str) -> str:
+    """A weekday range in one spelling: "Mo-Fr" -> "Mo–Fr"; a day OCR read with a digit for a letter ("Mo-5a")
+    or lost a letter of ("Mo-F", "o-Sa") completed where the other day of the range names the language."""
     def day(name: str) -> str:
         return _CANONICAL_DAY.get(name.lower(), name) if name[0].isupper() else name
 
-    pattern = re.compile(rf"\b([A-Za-z]{{2}})\s*[{_DASHES}]\s*([A-Za-z]{{2}})\b")
+    pattern = re.compile(rf"(?<![\w.])([A-Za-z0-9]{{1,2}})\s*[{_DASHES}]\s*([A-Za-z0-9]{{1,2}})(?![\w.])")
 
     def replace(match):
         a, b = match.group(1), match.group(2)
-        if a.lower() in _ALL_DAYS and b.lower() in _ALL_DAYS:
-            return f"{day(a)}{EN_DASH}{day(b)}"
+        if a.isdigit() and b.isdigit():
+            return match.group(0)
+        for days in WEEKDAYS.values():
+            first, last = _completed_day(a, days, True), _completed_day(b, days, False)
+            if first and last and (len(a) == 2 or len(b) == 2):  # one day read whole names the language
+                case = str.lower if (a if len(a) == 2 else b)[0].islower() else (lambda d: d)
+                return f"{day(case(first))}{EN_DASH}{day(case(last))}"
         return match.group(0)
 
     return pattern.sub(replace, text)
 
 
+def is_plate_line(line: str) -> bool:
+    """Whether a normalised line is one of the forms Swiss plates print: a distance, a time range, a weekday
+    range, or words of the plates' vocabulary and exceptions (a reading of such lines only is more likely right)."""
+    number = r"\d{1,2}(?:\.\d\d)?"
+    if re.fullmatch(r"\d+(?:[.,]\d+)? (?:m|km)", line) or re.fullmatch(rf"{number}{EN_DASH}{number} h", line):
+        return True
+    days = re.fullmatch(rf"(\w\w){EN_DASH}(\w\w)", line)
+    if days and days.group(1).lower() in _ALL_DAYS and days.group(2).lower() in _ALL_DAYS:
+        return True
+    known = set(_LOOKUP) | {w.lower() for words in _EXCEPTED.values() for w in words}
+    return bool(line) and all(word.lower() in known for word in line.split())
+
+
 def normalise_line(line: str) -> str:
     """One line of a plate in its one spelling (see the module docstring)."""
-    # a token without a letter, digit or dash ("|", "=") is an edge of the frame or dirt, not print
+    # a token without a letter, digit or dash ("|", "=") is an edge of the frame or dirt, not print; nor is a
+    # lone dash at either end of the line (a dash joins two things)
     tokens = [_fix_word(_fix_number(t)) for t in line.split() if any(c.isalnum() or c in "-–—" for c in t)]
+    while tokens and not any(c.isalnum() for c in tokens[-1]):
+        tokens.pop()
+    while tokens and not any(c.isalnum() for c in tokens[0]):
+        tokens.pop(0)
     text = " ".join(tokens)
     text = re.sub(rf"(\d)\s*[{_DASHES}]\s*(\d)", rf"\1{EN_DASH}\2", text)  # 7 - 19 -> 7–19
     text = re.sub(r"(\d)\s*(km|m|h|Std)\b\.?", r"\1 \2", text)  # 200m -> 200 m, 19h -> 19 h

@@ -22,6 +22,7 @@ from qgis.PyQt.QtWidgets import (
     QGroupBox,
     QHBoxLayout,
     QLabel,
+    QLineEdit,
     QListView,
     QListWidget,
     QListWidgetItem,
@@ -75,6 +76,7 @@ class ReviewDock(QDockWidget):
     undoRequested = pyqtSignal()  # noqa: N815
     pairRequested = pyqtSignal(str)  # noqa: N815 - show a pair's image (to add a sign where nothing was found)
     observationRequested = pyqtSignal(int)  # noqa: N815 - index into the item's observations
+    textEdited = pyqtSignal(str)  # noqa: N815 - a plate's text as a person set it
 
     def __init__(self, parent=None):
         super().__init__("Sign Mapper review", parent)
@@ -130,6 +132,7 @@ class ReviewDock(QDockWidget):
         layout.addWidget(self.strip_box)
 
         layout.addLayout(self._build_buttons())
+        layout.addWidget(self._build_plate_text())
 
         self.picker_box = QGroupBox("Reclassify")
         self.picker = TemplatePicker()
@@ -159,7 +162,8 @@ class ReviewDock(QDockWidget):
         form.setVerticalSpacing(1)
         self.info = {}
         for key, label in (("template", "Template"), ("status", "Status"), ("format", "Format"),
-                           ("indicators", "Indicators"), ("pair", "Pair"), ("extra", "Fusion")):
+                           ("indicators", "Indicators"), ("pair", "Pair"), ("extra", "Fusion"),
+                           ("plate", "Plate")):
             value = QLabel("–")
             value.setTextInteractionFlags(Qt.TextSelectableByMouse)
             value.setWordWrap(True)
@@ -168,6 +172,22 @@ class ReviewDock(QDockWidget):
             form.addRow(label, value)
         row.addLayout(form, 1)
         return row
+
+    def _build_plate_text(self) -> QGroupBox:
+        """The text of a supplementary plate, as read, for a person to correct: shown only for plates."""
+        self.plate_box = QGroupBox("Plate text")
+        row = QHBoxLayout(self.plate_box)
+        row.setContentsMargins(2, 2, 2, 2)
+        self.plate_text = QLineEdit()
+        self.plate_text.setPlaceholderText("as printed, lines separated by /  (e.g. Mo–Fr / 7–19 h)")
+        self.plate_text.returnPressed.connect(lambda: self.textEdited.emit(self.plate_text.text()))
+        row.addWidget(self.plate_text, 1)
+        self.set_text_button = QPushButton("Set text")
+        self.set_text_button.setToolTip("Write this text to the plate (accepts and marks it reviewed)")
+        self.set_text_button.clicked.connect(lambda: self.textEdited.emit(self.plate_text.text()))
+        row.addWidget(self.set_text_button)
+        self.plate_box.setVisible(False)
+        return self.plate_box
 
     def _button(self, name: str) -> QPushButton:
         text, key = SHORTCUTS[name]
@@ -307,6 +327,7 @@ class ReviewDock(QDockWidget):
             value.setText("–")
         self.pictogram.clear()
         self.strip_box.setVisible(False)
+        self.plate_box.setVisible(False)
         self.clear_image()
         self.set_item_enabled(False)
 
@@ -326,6 +347,7 @@ class ReviewDock(QDockWidget):
         depth = f" · depth {item.depth_m:.1f} m" if item.depth_m is not None else ""
         self.info["pair"].setText(f"{item.pair_id or '–'} · t = {_fmt(item.time, 2)} s{depth}")
         self.info["extra"].setText(" · ".join(f"{k} {v}" for k, v in item.extra))
+        self.show_plate(item)
         pix = QPixmap(item.pictogram_path) if item.pictogram_path else QPixmap()
         if pix.isNull():
             self.pictogram.setText("no\npictogram")
@@ -341,6 +363,17 @@ class ReviewDock(QDockWidget):
         if item.pair_id and self.pair_box.findText(item.pair_id) >= 0:
             self.pair_box.setCurrentText(item.pair_id)
         self.set_observations(item.observations)
+
+    def show_plate(self, item: ReviewItem) -> None:
+        """A plate's sign and text (with its OCR confidence); its text in the editor. Nothing for a sign."""
+        self.plate_box.setVisible(item.is_plate)
+        if not item.is_plate:
+            self.info["plate"].setText("–")
+            return
+        read = f"“{item.text}”" if item.text else "no text read"
+        confidence = f" · text confidence {_fmt(item.text_confidence)}" if item.text_confidence is not None else ""
+        self.info["plate"].setText(f"plate of sign {item.plate_of} · {read}{confidence}")
+        self.plate_text.setText(item.text or "")
 
     def set_image(self, pair_id: str, image, crop=None, bbox=None, centroid=None) -> None:
         """Show a left image; the caption says whose it is, so it never contradicts the panel below."""

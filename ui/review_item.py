@@ -52,6 +52,13 @@ class ReviewItem:
     image: Optional[QImage] = None  # the whole left image of pair_id
     observations: Optional[List[ObservationView]] = None  # None for a detection; list (maybe empty) for a sign
     position: Optional[Tuple[float, float, float]] = None
+    plate_of: Optional[int] = None  # a supplementary plate: the sign_id of its sign
+    text: Optional[str] = None  # a plate's text as read (or as a person set it)
+    text_confidence: Optional[float] = None
+
+    @property
+    def is_plate(self) -> bool:
+        return self.plate_of is not None
 
     def crop_image(self) -> Optional[QImage]:
         """The crop around the sign as a separate image (what the view opens zoomed to)."""

@@ -326,11 +326,17 @@ class PlateConfig:
     plate_close_m: float = 0.0  # closing before the holes are filled (0: none; a plate's thin frame must stay)
     plate_frame_share: float = 0.075  # of a plate's height: its white margin and black frame line (inset)
     plate_min_fill: float = 0.85  # of its box: a rectangle
+    plate_notch_m: float = 0.02  # thin dark lines across a plate (a wire, a pole's edge) do not count against it
     plate_max_offset: float = 0.35  # centre off the sign's axis, share of the wider of the two
     plate_size_tolerance: float = 0.2  # relative deviation from a plate format (PLATE_FORMATS)
     plate_min_ink: float = 0.02  # share of dark pixels (text, pictogram, frame): a blank white region is no plate
     plate_max_ink: float = 0.5
     plate_accept_score: float = 0.8  # fill and fit to its format: above, the plate is "accepted"
+    # a plate cut into pieces by something in front (a branch, a lamp post): the box around its pieces, its
+    # hidden pixels counted as the plate's, is a plate when this share of it is seen ...
+    plate_min_visible: float = 0.4
+    plate_hidden_weight: float = 0.9  # ... and scores this much less than a plate seen whole
+    plate_pictogram_min_score: float = 0.6  # correlation with a pictogram plate's drawing: below, a text plate
 
 
 @dataclass(frozen=True)

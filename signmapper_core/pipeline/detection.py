@@ -39,6 +39,7 @@ class Detection:
     # a supplementary plate (pipeline/plates.py): the sign's detection it belongs to, and its image for OCR
     plate_of: Optional[Detection] = None
     crop: Optional[np.ndarray] = field(default=None, repr=False)
+    printed_text: Optional[str] = None  # a pictogram plate: the words its drawing carries ("" for none)
 
     @property
     def is_plate(self) -> bool:

@@ -9,7 +9,8 @@ lie in the sign's depth (a white wall behind is not a plate); where it does not
 (stereo matching runs only around colour candidates), the plate is taken to be
 in the sign's plane, as it is mounted on the same pole. Each plate is a
 :class:`Detection` with ``plate_of`` = its sign's detection and the crop its text
-is read from after fusion (``plate_fusion``).
+is read from after fusion (``plate_fusion``); a plate that shows the drawing of
+a pictogram plate (``plate_classify``) takes that plate's id, name and size.
 """
 
 from __future__ import annotations
@@ -20,18 +21,27 @@ from typing import List, Optional, Sequence
 import cv2
 import numpy as np
 
+from ..plate_catalogue import load_plate_templates, pictogram_formats, template_by_id
 from ..plate_formats import PLATE_FORMATS, PLATE_ID, PLATE_NAMES
 from .detection import Detection
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
+from .plate_classify import classify_plate
 
 BELOW, ABOVE = 1, -1
 
 
-def nearest_plate_format(width_m: float, height_m: float, tolerance: float):
-    """(format name, (width_m, height_m), relative error) of the nearest plate format, or None beyond ``tolerance``."""
+def plate_templates(pair: PairContext) -> tuple:
+    """The pictogram plate templates of the pair's catalogue (none for a catalogue without ``plates/``)."""
+    folder = getattr(pair.catalogue, "folder", None)
+    return load_plate_templates(folder) if folder is not None else ()
+
+
+def nearest_plate_format(width_m: float, height_m: float, tolerance: float, formats=None):
+    """(format name, (width_m, height_m), relative error) of the nearest plate format (``formats``, default the
+    text plates'), or None beyond ``tolerance``."""
     best = None
-    for name, (w, h) in PLATE_FORMATS.items():
+    for name, (w, h) in (formats or PLATE_FORMATS).items():
         error = max(abs(math.log(width_m / w)), abs(math.log(height_m / h)))
         if best is None or error < best[2]:
             best = (name, (w, h), error)
@@ -66,8 +76,12 @@ def _clipped(box, shape):
     return x0, y0, min(shape[1], x + w) - x0, min(shape[0], y + h) - y0
 
 
-def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int, touch_px: float):
-    """(score 0..1, plate format) of a box read as a plate of ``sign``, or None where it cannot be one."""
+def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int, touch_px: float,
+                   hidden: Optional[np.ndarray] = None):
+    """(score 0..1, plate format) of a box read as a plate of ``sign``, or None where it cannot be one.
+
+    ``hidden``: the pair's mask of pixels hidden by something in front (image-sized or None); they count
+    neither as ink nor as paper."""
     config, camera = pair.config, pair.camera
     x, y, w, h = sign.bbox
     bx, by, bw, bh = box
@@ -77,49 +91,130 @@ def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int,
         return None  # reaching into the sign (its panel's white), or too far from it
     if abs(bx + bw / 2.0 - (x + w / 2.0)) > config.plates.plate_max_offset * max(w, bw):
         return None
-    fmt = nearest_plate_format(bw * z / camera.fx, bh * z / camera.fy, config.plates.plate_size_tolerance)
-    if fmt is None:
-        return None
     cx, cy, cw, ch = _clipped(box, pair.left.shape)
     if cw < 4 or ch < 4:
         return None
+    size = (bw * z / camera.fx, bh * z / camera.fy)
+    templates = plate_templates(pair)
+    plates = config.plates
+    fmt = nearest_plate_format(*size, plates.plate_size_tolerance, {**PLATE_FORMATS, **pictogram_formats(templates)})
+    if fmt is not None and "@" in fmt[0]:  # a pictogram plate's size: if it shows that plate's drawing
+        shown = template_by_id(templates, fmt[0].split("@")[0])
+        seen_crop = pair.left[cy:cy + ch, cx:cx + cw]
+        part_hidden = None if hidden is None else hidden[cy:cy + ch, cx:cx + cw]
+        if classify_plate(seen_crop, [shown], plates.plate_pictogram_min_score, part_hidden)[0] is None:
+            fmt = nearest_plate_format(*size, plates.plate_size_tolerance)
+    if fmt is None:
+        return None
     grey = cv2.cvtColor(pair.left[cy:cy + ch, cx:cx + cw], cv2.COLOR_BGR2GRAY)
-    ink = float(np.mean(grey < 0.6 * np.median(grey)))  # text, pictogram and frame
+    seen = np.ones(grey.shape, bool) if hidden is None else ~hidden[cy:cy + ch, cx:cx + cw].astype(bool)
+    if seen.sum() < 0.3 * seen.size:
+        return None
+    ink = float(np.mean(grey[seen] < 0.6 * np.median(grey[seen])))  # text, pictogram and frame
     if not config.plates.plate_min_ink <= ink <= config.plates.plate_max_ink:
         return None
     return 1.0 - min(fmt[2] / math.log(1.0 + config.plates.plate_size_tolerance), 1.0) * 0.5, fmt
 
 
+def _box_of(stats_row, x0, y0, margin):
+    bx, by, bw, bh = (int(v) for v in stats_row[:4])
+    return (int(round(bx + x0 - margin)), int(round(by + y0 - margin)), int(round(bw + 2 * margin)),
+            int(round(bh + 2 * margin)))
+
+
 def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z: float, side: int,
-                 touch_px: float, best):
+                 touch_px: float, best, hidden: np.ndarray):
     """The best plate reading of the regions of ``mask`` (in the ``window`` x0, y0, x1, y1), or ``best`` if none
-    is better: (score, box, format, fill)."""
+    is better: (score, box, format, fill).
+
+    A region is read as a whole plate; and where something in front of a plate (a branch, a lamp post:
+    ``hidden``, image-sized) hides part of it, its pieces are read together and completed under what hides
+    them (``_hidden_reading``)."""
     config = pair.config
     x0, y0, x1, y1 = window
     filled = _filled(mask, int(round(config.plates.plate_close_m * pair.camera.fy / z)) | 1)
-    count, _labels, stats, _ = cv2.connectedComponentsWithStats(filled, connectivity=4)
+    count, labels, stats, _ = cv2.connectedComponentsWithStats(filled, connectivity=4)
+    # a region's fill is measured with notches as thin as a wire or a pole's edge across the plate closed (they
+    # are not its outline); the regions themselves stay as found, so a closed gap never joins plate and wall
+    solid = _filled(mask, int(round(config.plates.plate_notch_m * pair.camera.fy / z)) | 1)
+    # the region is the whole plate, or the inside of its black frame (its white margin lost in a white
+    # wall behind it, or in the sky): then the plate is that much larger
+    grow = config.plates.plate_frame_share / (1.0 - 2.0 * config.plates.plate_frame_share)
+    pieces = []
+    sign_edge = sign.bbox[1] + sign.bbox[3] - y0 if side == BELOW else sign.bbox[1] - y0
     for k in range(1, count):
         bx, by, bw, bh, area = (int(v) for v in stats[k])
         far_edge_cut = by + bh >= y1 - y0 if side == BELOW else by == 0
-        if bw < 6 or bh < 4 or bx == 0 or bx + bw >= x1 - x0 or far_edge_cut:
+        if bw < 3 or bh < 3 or bx == 0 or bx + bw >= x1 - x0 or far_edge_cut:
             continue  # cut by the window: part of something larger (a wall, the sky)
-        fill = area / float(bw * bh)
-        if fill < config.plates.plate_min_fill:
+        if (by >= sign_edge - touch_px) if side == BELOW else (by + bh <= sign_edge + touch_px):
+            pieces.append(k)  # off the sign's side: may be a piece of a plate
+        fill = max(area / float(bw * bh), float(solid[by:by + bh, bx:bx + bw].mean()))
+        if bw < 6 or bh < 4 or fill < config.plates.plate_min_fill:
             continue
-        # the region is the whole plate, or the inside of its black frame (its white margin lost in a white
-        # wall behind it, or in the sky): then the plate is that much larger
-        grow = config.plates.plate_frame_share / (1.0 - 2.0 * config.plates.plate_frame_share)
         for margin in (0.0, grow * bh):
-            box = (int(round(bx + x0 - margin)), int(round(by + y0 - margin)), int(round(bw + 2 * margin)),
-                   int(round(bh + 2 * margin)))
+            box = _box_of(stats[k], x0, y0, margin)
             reading = _plate_reading(pair, sign, box, z, side, touch_px)
             if reading is not None and (best is None or fill * reading[0] > best[0]):
                 best = (fill * reading[0], box, reading[1], fill)
+    if not pieces or not hidden[y0:y1, x0:x1].any():
+        return best
+    # a plate partly hidden by something in front: its pieces together (a branch across it), and a piece or
+    # those pieces completed sideways under what hides the rest (a lamp post over one end), to a plate's width
+    groups = [[k] for k in pieces] + ([pieces] if len(pieces) > 1 else [])
+    px_per_m = pair.camera.fx / z
+    for group in groups:
+        lo = np.min(stats[group, :2], axis=0)
+        hi = np.max(stats[group, :2] + stats[group, 2:4], axis=0)
+        bx, by, bw, bh = int(lo[0]), int(lo[1]), int(hi[0] - lo[0]), int(hi[1] - lo[1])
+        boxes = [(bx, by, bw, bh)] if len(group) > 1 else []
+        for width_m in sorted({w for w, h in PLATE_FORMATS.values()}):
+            extra = int(round(width_m * px_per_m)) - bw
+            if extra > 0.1 * bw:
+                boxes += [(bx - extra, by, bw + extra, bh), (bx, by, bw + extra, bh)]
+        for box in boxes:
+            best = _hidden_reading(pair, sign, box, group, labels, window, z, side, touch_px, hidden, grow, best)
     return best
 
 
-def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: int) -> Optional[Detection]:
-    """The plate right below (``side`` BELOW) or above (ABOVE) one sign, or None."""
+def _hidden_reading(pair, sign, box, group, labels, window, z, side, touch_px, hidden, grow, best):
+    """``best`` or the reading of ``box`` (window coordinates) as a plate whose pixels not in ``group`` are
+    hidden by something in front: most of them must be (``plate_min_fill`` of the box seen or hidden), and
+    ``plate_min_visible`` of it seen."""
+    config = pair.config
+    x0, y0, x1, y1 = window
+    bx, by, bw, bh = box
+    if bx < 0 or by < 0 or bx + bw > x1 - x0 or by + bh > y1 - y0:
+        return best
+    inside = np.isin(labels[by:by + bh, bx:bx + bw], group)
+    covered = inside | hidden[y0 + by:y0 + by + bh, x0 + bx:x0 + bx + bw].astype(bool)
+    seen_share, fill = float(inside.mean()), float(covered.mean())
+    if fill < config.plates.plate_min_fill or seen_share < config.plates.plate_min_visible:
+        return best
+    for margin in (0.0, grow * bh):
+        grown = (int(round(bx + x0 - margin)), int(round(by + y0 - margin)), int(round(bw + 2 * margin)),
+                 int(round(bh + 2 * margin)))
+        reading = _plate_reading(pair, sign, grown, z, side, touch_px, hidden)
+        score = None if reading is None else fill * reading[0] * config.plates.plate_hidden_weight
+        if score is not None and (best is None or score > best[0]):
+            best = (score, grown, reading[1], fill)
+    return best
+
+
+def hidden_mask(bgr: np.ndarray, depth: np.ndarray, z: float, config) -> np.ndarray:
+    """Pixels of a window that something in front of a plate at depth ``z`` covers: coloured ones (foliage,
+    never a white plate's paper or its black print) and, where depth is known, nearer ones (a lamp post)."""
+    hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
+    coloured = hsv[:, :, 1] > config.plates.plate_max_saturation
+    nearer = np.isfinite(depth) & (depth < z - max(config.plates.plate_depth_tolerance_m, 0.05 * z))
+    return (coloured | nearer).astype(np.uint8)
+
+
+def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: int,
+                   others: Sequence[Detection] = ()) -> Optional[Detection]:
+    """The plate right below (``side`` BELOW) or above (ABOVE) one sign, or None. ``others``: the pair's other
+    signs; no plate lies in them (the white inside of the next sign down is none), nor does their colour hide
+    one."""
     config, camera = pair.config, pair.camera
     z = float(sign.depth_m)
     if not np.isfinite(z) or z <= 0:
@@ -142,23 +237,38 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     window = pair.left[y0:y1, x0:x1]
     near = depth[y0:y1, x0:x1]
     elsewhere = np.isfinite(near) & (np.abs(near - z) > max(config.plates.plate_depth_tolerance_m, 0.05 * z))
+    hidden = np.zeros(pair.left.shape[:2], np.uint8)
+    hidden[y0:y1, x0:x1] = hidden_mask(window, near, z, config)
+    signs_there = np.zeros(pair.left.shape[:2], bool)
+    for other in others:
+        ox, oy, ow, oh = other.bbox
+        signs_there[max(oy, 0):oy + oh, max(ox, 0):ox + ow] = True
+    hidden[signs_there] = 0
+    elsewhere |= signs_there[y0:y1, x0:x1]
     best = None
     plates = config.plates
     for mask in white_masks(window, plates.plate_max_saturation, plates.plate_min_value, plates.plate_value_steps):
         mask[elsewhere] = 0
-        best = _best_region(pair, sign, mask, (x0, y0, x1, y1), z, side, touch_px, best)
+        best = _best_region(pair, sign, mask, (x0, y0, x1, y1), z, side, touch_px, best, hidden)
     if best is None:
         return None
     score, box, (name, (pw, ph), _), fill = best
     box = _clipped(box, pair.left.shape)
     u, v = bbox_centre(box)
     bx, by, bw, bh = box
+    crop = np.ascontiguousarray(pair.left[by:by + bh, bx:bx + bw])
+    template_id, label, printed = PLATE_ID, PLATE_NAMES["de"], None
+    pictogram, likeness = classify_plate(crop, plate_templates(pair), config.plates.plate_pictogram_min_score,
+                                         hidden[by:by + bh, bx:bx + bw])
+    if pictogram is not None:  # its drawing's own size at the plate's width; its score is the likeness
+        template_id, label, printed = pictogram.id, pictogram.name("de"), pictogram.text
+        (pw, ph), name, score = pictogram.size_m(pw), f"{pictogram.id}@{pw:.2f}", min(score, likeness)
     return Detection(
-        template_id=PLATE_ID, name=PLATE_NAMES["de"], colour="white", shape="rectangle", width_m=pw, height_m=ph,
+        template_id=template_id, name=label, colour="white", shape="rectangle", width_m=pw, height_m=ph,
         format=name, detection_indicator=float(fill), classification_indicator=float(score),
         status="accepted" if score >= config.plates.plate_accept_score else "review", u=u, v=v, bbox=box, depth_m=z,
         position=locate(camera, pair.pose, u, v, z), source="plate", normal_world=sign.normal_world,
-        plate_of=sign, crop=np.ascontiguousarray(pair.left[by:by + bh, bx:bx + bw]),
+        plate_of=sign, crop=crop, printed_text=printed,
     )
 
 
@@ -168,8 +278,9 @@ def find_plates(pair: PairContext, depth: np.ndarray, signs: Sequence[Detection]
         return []
     plates = []
     for sign in signs:
+        others = [s for s in signs if s is not sign]
         for side in (BELOW, ABOVE):
-            plate = plates_of_sign(pair, depth, sign, side)
+            plate = plates_of_sign(pair, depth, sign, side, others)
             if plate is not None:
                 plates.append(plate)
     return plates

@@ -8,6 +8,14 @@ are one pole; on it, faces within ``azimuth_gap_deg`` share an azimut; each
 sign gets its own frame, ranked by height. The support records the free height
 under its lowest sign (the mapped mounting height).
 
+A supplementary plate (a mapped feature with ``plate_of``) is written as Signalo
+models it: one more sign in its sign's frame, ranked by height (a plate below its
+sign comes after it), of its own official type: a pictogram plate by its SSV
+number (``5.31``), a text plate as ``5.00-1/2/3`` (one to three lines) with its
+lines as inscriptions, an exception plate ("ausgenommen ...") as
+``5.00-exception`` with what is excepted as inscriptions. A plate whose sign is
+not written by this export is reported, not written on its own.
+
 Everything happens in one transaction: all or nothing. Each sign's comment
 starts with a tag naming our run id and sign id, so exporting the same run
 again adds nothing. Signs that ``changes`` found ``confirmed`` or ``moved``
@@ -52,6 +60,8 @@ class ExportSign:
     mount_height_m: Optional[float] = None
     update_id: Optional[str] = None  # Signalo sign id to update instead of adding (changes: confirmed/moved)
     moved: bool = False  # with update_id: the sign was mapped elsewhere (changes: moved)
+    plate_of: Optional[int] = None  # a supplementary plate: our sign id of its sign
+    text: Optional[str] = None  # a plate's text, lines joined by " / "
 
 
 @dataclass
@@ -75,6 +85,7 @@ class ExportResult:
     updated: list = field(default_factory=list)  # (our sign id, Signalo sign id)
     already: list = field(default_factory=list)  # our sign ids this run had already written
     unknown: list = field(default_factory=list)  # (our sign id, template id) with no Signalo official sign
+    plates_without_sign: list = field(default_factory=list)  # (our plate id, its sign id) not written now
     supports: int = 0
 
     def summary(self) -> str:
@@ -83,7 +94,27 @@ class ExportResult:
         if self.unknown:
             text += f", {len(self.unknown)} not written (type not in Signalo: " + \
                 ", ".join(f"sign {i} {t}" for i, t in self.unknown) + ")"
+        if self.plates_without_sign:
+            text += f", {len(self.plates_without_sign)} plates not written (their sign is not written by this " \
+                    "export: " + ", ".join(f"plate {i} of sign {s}" for i, s in self.plates_without_sign) + ")"
         return text
+
+
+def plate_type(plate: ExportSign, official_ids) -> Optional[tuple[str, list]]:
+    """(Signalo official sign id, inscriptions) of a supplementary plate, None if Signalo has no such type."""
+    from ..plate_formats import PLATE_ID
+    from ..plate_text import EXCEPT_WORDS
+
+    if plate.template_id != PLATE_ID:  # a pictogram plate, classified
+        mapped = to_signalo(plate.template_id, official_ids)
+        return None if mapped is None else (mapped[0], [mapped[1]] if mapped[1] else [])
+    lines = [line.strip() for line in (plate.text or "").split(" / ") if line.strip()]
+    if lines and lines[0].lower() in {w.lower() for w in EXCEPT_WORDS.values()}:
+        official, lines = "5.00-exception", lines[1:]
+    else:
+        official = f"5.00-{min(max(len(lines), 1), 3)}"
+        lines = lines[:2] + [" ".join(lines[2:])] if len(lines) > 3 else lines
+    return (official, lines[:4]) if official in official_ids else None
 
 
 def _circular_mean(degrees: Sequence[float]) -> float:
@@ -143,6 +174,8 @@ def plan_supports(signs: Sequence[ExportSign], pole_radius_m: float = 0.3,
 def sign_comment(run_id: str, sign: ExportSign, previous: Optional[str] = None) -> str:
     """Our tag, then what the mapping measured; a comment already there is kept after it (without an old tag)."""
     parts = [f"Sign Mapper {sign.template_id}"]
+    if sign.plate_of is not None:
+        parts.append(f"plate of sign {sign.plate_of}" + (f", text \"{sign.text}\"" if sign.text else ""))
     if sign.format:
         parts.append(f"format {sign.format} {sign.width_m:.2f} x {sign.height_m:.2f} m")
     figures = [f"{label} {value:.2f}" for label, value in (("detection", sign.detection_indicator),
@@ -187,7 +220,12 @@ def _insert(cursor, table: str, values: dict) -> str:
     return str(cursor.fetchone()[0])
 
 
-def _write_support(cursor, plan: SupportPlan, srid: int, run_id: str, types: dict) -> list:
+def _in_frame(sign: ExportSign, plates: dict) -> list:
+    """The sign and its plates, top first: the order of the signs in its frame."""
+    return sorted([sign] + plates.get(sign.sign_id, []), key=lambda s: -float(s.position[2]))
+
+
+def _write_support(cursor, plan: SupportPlan, srid: int, run_id: str, types: dict, plates: dict) -> list:
     cursor.execute(
         f"INSERT INTO {SCHEMA}.support (geometry, height_free_under_signal, comment, needs_validation, "
         "_creation_user, _last_modification_user) VALUES (ST_SetSRID(ST_MakePoint(%s, %s), %s), %s, %s, %s, %s, %s) "
@@ -203,13 +241,17 @@ def _write_support(cursor, plan: SupportPlan, srid: int, run_id: str, types: dic
             d1, d2 = dimensions(sign)
             frame_id = _insert(cursor, "frame", {"fk_azimut": azimut_id, "rank": rank, "dimension_1": d1,
                                                  "dimension_2": d2, "_creation_user": USER})
-            official, inscription = types[sign.sign_id]
-            sign_uuid = _insert(cursor, "sign", {
-                "fk_frame": frame_id, "rank": 1, "fk_sign_type": OFFICIAL_SIGN_TYPE, "fk_official_sign": official,
-                "inscription_1": inscription, "dimension_1": d1, "dimension_2": d2,
-                "comment": sign_comment(run_id, sign), "needs_validation": sign.status == REVIEW,
-                "_creation_user": USER, "_last_modification_user": USER})
-            written.append((sign.sign_id, sign_uuid))
+            for in_frame, member in enumerate(_in_frame(sign, plates), start=1):
+                official, inscriptions = types[member.sign_id]
+                inscriptions = (inscriptions if isinstance(inscriptions, list) else [inscriptions]) + [None] * 4
+                m1, m2 = dimensions(member)
+                sign_uuid = _insert(cursor, "sign", {
+                    "fk_frame": frame_id, "rank": in_frame, "fk_sign_type": OFFICIAL_SIGN_TYPE,
+                    "fk_official_sign": official, "inscription_1": inscriptions[0], "inscription_2": inscriptions[1],
+                    "inscription_3": inscriptions[2], "dimension_1": m1, "dimension_2": m2,
+                    "comment": sign_comment(run_id, member), "needs_validation": member.status == REVIEW,
+                    "_creation_user": USER, "_last_modification_user": USER})
+                written.append((member.sign_id, sign_uuid))
     return written
 
 
@@ -255,14 +297,22 @@ def export_signs(connection, run_id: str, signs: Sequence[ExportSign], pole_radi
             official = {row[0] for row in cursor.fetchall()}
             result = ExportResult(info.version)
             done = exported_sign_ids(cursor, run_id)
-            types, to_add = {}, []
-            for sign in sorted(signs, key=lambda s: s.sign_id):
+            types, to_add, plates = {}, [], {}
+            for sign in sorted(signs, key=lambda s: (s.plate_of is not None, s.sign_id)):  # plates after signs
                 if sign.sign_id in done:
                     result.already.append(sign.sign_id)
                     continue
-                mapped = to_signalo(sign.template_id, official)
+                mapped = to_signalo(sign.template_id, official) if sign.plate_of is None else \
+                    plate_type(sign, official)
                 if mapped is None:
                     result.unknown.append((sign.sign_id, sign.template_id))
+                    continue
+                if sign.plate_of is not None:
+                    if not any(s.sign_id == sign.plate_of for s in to_add):
+                        result.plates_without_sign.append((sign.sign_id, sign.plate_of))
+                        continue
+                    types[sign.sign_id] = mapped
+                    plates.setdefault(sign.plate_of, []).append(sign)
                     continue
                 types[sign.sign_id] = mapped
                 if sign.update_id:
@@ -271,7 +321,7 @@ def export_signs(connection, run_id: str, signs: Sequence[ExportSign], pole_radi
                     to_add.append(sign)
             plans = plan_supports(to_add, pole_radius_m, azimuth_gap_deg)
             for plan in plans:
-                result.added.extend(_write_support(cursor, plan, info.srid, run_id, types))
+                result.added.extend(_write_support(cursor, plan, info.srid, run_id, types, plates))
             result.supports = len(plans)
     except SignaloError:
         raise

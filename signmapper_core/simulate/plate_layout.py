@@ -2,9 +2,12 @@
 
 A plate hangs right below the lowest sign of some poles, as wide as the sign
 (``plate_formats_for``), one or two lines high, with a text in German, French or
-Italian: a distance, a time, weekdays, an exception. Its truth row names its sign
-(``plate_of``) and its text, lines joined by " / ", exactly as the normalised
-OCR output writes it. White distractors (house-number and notice plates on
+Italian: a distance, a time, weekdays, an exception; or, for some, a pictogram
+plate printed from its official drawing (``plate_catalogue``), worn like the
+sign faces. Its truth row names its sign (``plate_of``), its id (``plate`` for a
+text plate, the SSV number of a pictogram plate) and its text, lines joined by
+" / ", exactly as the normalised OCR output writes it (a pictogram plate: the
+words of its drawing). White distractors (house-number and notice plates on
 façades, with text) are white rectangles no sign stands above. Plates and
 distractors draw from random streams of their own, so the rest of the scene is
 the same with or without them.
@@ -21,6 +24,7 @@ from .plate_faces import draw_plate
 from .surfaces import Texture, TextureSource, rect_surface
 
 UP = np.array([0.0, 0.0, 1.0])
+PICTOGRAM_SHARE = 0.3  # of the plates: a pictogram plate (SSV 5.xx drawing) instead of a text plate
 LANGUAGE_SHARES = (("de", 0.6), ("fr", 0.25), ("it", 0.15))
 DISTANCES_M = (20, 30, 50, 80, 100, 150, 200, 250, 300, 400, 500, 800)
 EXCEPTIONS = {
@@ -46,9 +50,9 @@ def _days(rng, language) -> str:
     return f"{days[0]}–{days[int(rng.choice([4, 5]))]}"
 
 
-def plate_lines(rng) -> list:
-    """The lines of a plate's text, in the spelling normalised OCR output has."""
-    language = _language(rng)
+def plate_lines(rng, language: str = "") -> list:
+    """The lines of a plate's text, in the spelling normalised OCR output has (``language`` drawn if not given)."""
+    language = language or _language(rng)
     kind = rng.choice(["distance", "hours", "days", "days_hours", "except"], p=[0.3, 0.15, 0.1, 0.2, 0.25])
     if kind == "distance":
         return [f"{int(rng.choice(DISTANCES_M))} m"]
@@ -60,6 +64,44 @@ def plate_lines(rng) -> list:
         return [_days(rng, language), _hours(rng)]
     what = str(rng.choice(EXCEPTIONS[language]))
     return [EXCEPT_WORDS[language], what]
+
+
+def pictogram_plate(rng, language: str):
+    """A pictogram plate template (SSV 5.xx drawing) in the plate's language version (German where the drawing
+    has no other), or None when the catalogue has none."""
+    from ..catalogue.model import DEFAULT_CATALOGUE_DIR
+    from ..plate_catalogue import load_plate_templates
+
+    templates = load_plate_templates(DEFAULT_CATALOGUE_DIR)
+    ids = sorted({t.id for t in templates})
+    if not ids:
+        return None
+    chosen = ids[int(rng.integers(len(ids)))]
+    variants = {t.variant: t for t in templates if t.id == chosen}
+    return variants.get(language) or variants.get("de") or next(iter(variants.values()))
+
+
+def pictogram_face(template, width_px: int, height_px: int, rng) -> np.ndarray:
+    """BGR of a physical pictogram plate printed from its drawing: placed on the blank with a small error, its
+    own print run, UV ageing and grime (as the drives' sign faces get), never the template's pixels."""
+    import cv2
+
+    from . import face_dirt, face_print, face_wear
+    from .face_layers import ink_layers
+
+    grey = cv2.resize(template.grey, (width_px, height_px), interpolation=cv2.INTER_AREA
+                      if width_px < template.grey.shape[1] else cv2.INTER_LINEAR)
+    matrix = cv2.getRotationMatrix2D(((width_px - 1) / 2.0, (height_px - 1) / 2.0), rng.uniform(-0.5, 0.5),
+                                     1.0 + rng.uniform(-0.01, 0.01))
+    matrix[:, 2] += rng.uniform(-0.006, 0.006, 2) * (width_px, height_px)
+    grey = cv2.warpAffine(grey, matrix, (width_px, height_px), borderMode=cv2.BORDER_REPLICATE)
+    bgr = cv2.cvtColor(grey, cv2.COLOR_GRAY2BGR)
+    labels = ink_layers(bgr)
+    img = face_print.print_variation(bgr.astype(np.float32), labels, rng, float(rng.uniform(0.3, 1.0)),
+                                     width_px / 0.6)
+    img = face_wear.uv_ageing(img, labels, rng, float(rng.beta(1.1, 4.0)))
+    img = face_dirt.grime(img, rng, float(rng.beta(1.2, 3.0)))
+    return np.clip(img, 0, 255).astype(np.uint8)
 
 
 def _weathered(bgr: np.ndarray, rng) -> np.ndarray:
@@ -84,10 +126,17 @@ def add_plate(pieces, look, host, centre, facing_deg: float, tilt_deg: float, si
     key, rng = _next(pieces, "plate")
     if host.truth is None or rng.random() >= look.plate_share:
         return []
-    lines = plate_lines(rng)
+    language = _language(rng)
+    pictogram = pictogram_plate(rng, language) if rng.random() < PICTOGRAM_SHARE else None
     formats = plate_formats_for(float(sign_fmt[1]))
-    name = next((n for n in formats if n.endswith(f"-{len(lines)}")), max(formats))
-    width_m, height_m = formats[name]
+    if pictogram is None:
+        lines = plate_lines(rng, language)
+        name = next((n for n in formats if n.endswith(f"-{len(lines)}")), max(formats))
+        width_m, height_m = formats[name]
+        template_id, text = PLATE_ID, " / ".join(lines)
+    else:
+        width_m, height_m = pictogram.size_m(next(iter(formats.values()))[0])
+        template_id, text, lines = pictogram.id, pictogram.text, []
     phi, tau = np.radians(facing_deg), np.radians(tilt_deg)
     n_h = np.array([np.sin(phi), np.cos(phi), 0.0])
     right = np.array([-np.cos(phi), np.sin(phi), 0.0])
@@ -99,15 +148,16 @@ def add_plate(pieces, look, host, centre, facing_deg: float, tilt_deg: float, si
     face_rng = np.random.default_rng(rng.integers(1 << 32))
 
     def make_face():
-        return Texture(_weathered(draw_plate(lines, fw, fh), face_rng))
+        printed = draw_plate(lines, fw, fh) if pictogram is None else pictogram_face(pictogram, fw, fh, face_rng)
+        return Texture(_weathered(printed, face_rng))
 
     face = rect_surface(plate_centre - right * width_m / 2 + up * height_m / 2, right * width_m, -up * height_m,
                         TextureSource(key, fw, fh, make_face), two_sided=False, s_range=(s - 2, s + 2))
     back = rect_surface(plate_centre - n_h * 0.01 + right * width_m / 2 + up * height_m / 2, -right * width_m,
                         -up * height_m, None, (150, 152, 150), two_sided=False, s_range=(s - 2, s + 2))
     pieces.surfaces += [face, back]
-    truth = TruthSign("", PLATE_ID, *(float(c) for c in plate_centre), float(width_m), float(height_m),
-                      float(facing_deg % 360.0), text=" / ".join(lines))
+    truth = TruthSign("", template_id, *(float(c) for c in plate_centre), float(width_m), float(height_m),
+                      float(facing_deg % 360.0), text=text)
     return [PlacedSign(truth, "white", plate_centre, [face, back], host=host)]
 
 

@@ -153,3 +153,13 @@ def test_every_swiss_sign_has_an_english_name_and_english_output_uses_it():
     context = schema.OutputContext(language="en", catalogue=catalogue)
     assert context.name("2.30-50", "Höchstgeschwindigkeit 50") == "Speed limit 50"
     assert context.name("9.99", "unknown") == "unknown"
+
+
+def test_plates_are_named_in_the_output_language():
+    from signmapper_core.catalogue import load_catalogue
+    from signmapper_core.output_schema import OutputContext
+
+    catalogue = load_catalogue()
+    assert OutputContext("fr", catalogue).name("5.31-2", "Ausgenommen Fahrräder") == "Exceptés cycles"
+    assert OutputContext("it", catalogue).name("plate", "Zusatztafel") == "Tavola complementare"
+    assert OutputContext("de", catalogue).name("5.99", "as detected") == "as detected"  # no such plate

@@ -8,7 +8,7 @@ import cv2
 import pytest
 
 from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable, find_tesseract, parse_tsv, read_texts
-from signmapper_core.plate_text import normalise_line, normalise_text
+from signmapper_core.plate_text import is_plate_line, normalise_line, normalise_text
 from signmapper_core.simulate.plate_faces import draw_plate
 
 
@@ -18,11 +18,23 @@ from signmapper_core.simulate.plate_faces import draw_plate
     ("Mo-Fr", "Mo–Fr"), ("mo - fr", "mo–fr"), ("lu-ve", "lu–ve"), ("Di~Sa", "Di–Sa"),
     ("ausgenomnen Zubringerdienst", "ausgenommen Zubringerdienst"), ("excepte riverains", "excepté riverains"),
     ("eccetto bus", "eccetto bus"), ("Schule.", "Schule"),
-    ("| 8-20 h", "8–20 h"), ("lu-sa =", "lu–sa"), ("6-18 F", "6–18 h"), ("7-19", "7–19 h"),
+    ("| 8-20 h", "8–20 h"), ("lu-sa =", "lu–sa"), ("8-20 h -", "8–20 h"), ("— 200 m", "200 m"),
+    ("6-18 F", "6–18 h"), ("7-19", "7–19 h"),
     ("7.30-11.30", "7.30–11.30 h"),
+    ("Mo-5a", "Mo–Sa"), ("Mo-F", "Mo–Fr"), ("o-Sa", "Mo–Sa"), ("lu-v", "lu–ve"), ("u-sa", "lu–sa"),
+    ("8-F", "8-F"), ("7-19 h", "7–19 h"),
 ])
 def test_normalised_spelling(read, meant):
     assert normalise_line(read) == meant
+
+
+@pytest.mark.parametrize("line, plate_like", [
+    ("200 m", True), ("2 km", True), ("7–19 h", True), ("7.30–11.30 h", True), ("Mo–Fr", True), ("lu–sa", True),
+    ("ausgenommen", True), ("Zubringerdienst", True), ("excepté", True), ("taxi", True), ("eccetto bus", True),
+    ("100 nil", False), ("Mo-F", False), ("o-Sa F", False), ("EE", False), ("", False),
+])
+def test_plate_lines_are_told_from_misreadings(line, plate_like):
+    assert is_plate_line(line) == plate_like
 
 
 def test_words_that_are_not_days_or_numbers_keep_their_dash():

@@ -16,10 +16,13 @@ from signmapper_core.mapping import map_drive
 from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.config import PlateConfig
+from signmapper_core.pipeline.plate_classify import pictogram_scores
+from signmapper_core.plate_catalogue import load_plate_templates
 from signmapper_core.plate_evaluation import evaluate_plates
 from signmapper_core.plate_formats import PLATE_ID
 from signmapper_core.plate_fusion import read_plate_texts
 from signmapper_core.simulate.plate_faces import draw_plate
+from signmapper_core.simulate.plate_layout import pictogram_face
 from signmapper_core.visibility import mappable_signs
 
 CAMERA = Camera(width=960, height=600, fx=1750.0, fy=1750.0, cx=479.5, cy=299.5, baseline_m=0.9)
@@ -48,7 +51,7 @@ def _quad(world_centre, width_m, height_m, pose):
 
 
 def scene(catalogue, pose, plate_lines=("200 m",), plate_size=(0.60, 0.20), gap_m=0.04, above=False,
-          plate_depth_offset=0.0, seed=0, sign_id="2.30-50", sign_centre=None):
+          plate_depth_offset=0.0, seed=0, sign_id="2.30-50", sign_centre=None, plate_face=None):
     """(left, depth, plate box) of a 0.60 m sign with a plate right below (or above) it, depth given."""
     centre = sign_world(7.0, 1.3, 0.5) if sign_centre is None else sign_centre
     left = noisy_background(CAMERA.height, CAMERA.width, seed=seed)
@@ -62,7 +65,8 @@ def scene(catalogue, pose, plate_lines=("200 m",), plate_size=(0.60, 0.20), gap_
         pw_m, ph_m = plate_size
         offset = (0.30 + gap_m + ph_m / 2) * (1 if above else -1)
         px, py, pw, ph, pz = _quad(centre + [0, 0, offset], pw_m, ph_m, pose)
-        plate = cv2.resize(draw_plate(list(plate_lines), pw * 4, ph * 4), (pw, ph), interpolation=cv2.INTER_AREA)
+        face = draw_plate(list(plate_lines), pw * 4, ph * 4) if plate_face is None else plate_face
+        plate = cv2.resize(face, (pw, ph), interpolation=cv2.INTER_AREA)
         left[py:py + ph, px:px + pw] = plate
         depth[py:py + ph, px:px + pw] = pz + plate_depth_offset
         box = (px, py, pw, ph)
@@ -118,12 +122,26 @@ def test_what_is_not_a_plate_of_the_sign(catalogue, what, kwargs):
     left, depth, _ = scene(catalogue, pose, **kwargs)
     if kwargs.get("plate_lines", 1) == ("",):  # no frame either: only white
         left, depth, box = scene(catalogue, pose, plate_lines=None)
-        box = _quad(sign_world(7.0, 1.3, 0.5 - 0.44), 0.60, 0.20, pose)[:4]
+        box = _quad(sign_world(7.0, 1.3, 0.5 - 0.66), 0.60, 0.20, pose)[:4]
         x, y, w, h = box
         left[y:y + h, x:x + w] = 240
     found = _detect(catalogue, left, depth, pose)
     assert [d.template_id for d in found if not d.is_plate] == ["2.30-50"], what
     assert [d for d in found if d.is_plate] == [], what
+
+
+def test_the_sign_below_on_the_same_pole_is_no_plate_of_the_upper_one(catalogue):
+    """Stacked signs: the white disc of the lower sign inside its red ring is no plate of the upper sign, even
+    with its ring taken for something in front."""
+    pose = pose_at(0.0)
+    left, depth, _ = scene(catalogue, pose, plate_lines=None, sign_id="2.43")
+    x, y, w, h, z = _quad(sign_world(7.0, 1.3, 0.5 - 0.66), 0.60, 0.60, pose)
+    bgr, alpha = catalogue.render("2.30-80", (w, h))
+    paste(left, bgr, alpha, x, y)
+    depth[y:y + h, x:x + w][alpha > 127] = z
+    found = _detect(catalogue, left, depth, pose)
+    assert len([d for d in found if not d.is_plate]) == 2
+    assert [d for d in found if d.is_plate] == []
 
 
 def test_a_plate_before_a_pale_wall_without_depth_is_found_at_a_higher_brightness_floor(catalogue):
@@ -146,6 +164,87 @@ def test_a_plate_before_a_pale_wall_without_depth_is_found_at_a_higher_brightnes
     otsu_floor = PipelineConfig(plates=PlateConfig(plate_value_steps=(0,)))
     only_otsu = detect_pair(left, depth, None, CAMERA, pose, catalogue, otsu_floor)
     assert [d for d in only_otsu if d.is_plate] == []
+
+
+@pytest.mark.parametrize("template_id, variant", [("5.31-2", "de"), ("5.20", "de"), ("5.31", "de")])
+def test_a_pictogram_plate_is_classified_by_its_drawing_and_takes_its_size(catalogue, template_id, variant):
+    templates = load_plate_templates(catalogue.folder)
+    template = next(t for t in templates if (t.id, t.variant) == (template_id, variant))
+    width = 0.60
+    face = pictogram_face(template, 480, int(round(480 / template.aspect)), np.random.default_rng(7))
+    pose = pose_at(0.0)
+    left, depth, box = scene(catalogue, pose, plate_size=template.size_m(width), plate_face=face)
+    (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
+    assert plate.template_id == template_id and plate.name == template.name("de")
+    assert (plate.width_m, plate.height_m) == template.size_m(width) and _iou(plate.bbox, box) > 0.8
+    assert plate.printed_text == template.text and plate.classification_indicator > 0.6
+
+
+def test_a_pictogram_plate_partly_hidden_by_a_branch_is_classified_by_what_is_seen(catalogue):
+    templates = load_plate_templates(catalogue.folder)
+    template = next(t for t in templates if (t.id, t.variant) == ("5.31-1", "de"))
+    face = pictogram_face(template, 480, int(round(480 / template.aspect)), np.random.default_rng(8))
+    pose = pose_at(0.0)
+    left, depth, box = scene(catalogue, pose, plate_size=template.size_m(0.60), plate_face=face)
+    x, y, w, h = box
+    leaves = np.random.default_rng(4).integers(0, 40, (h + 20, w // 3))
+    left[y - 10:y + h + 10, x - 5:x - 5 + w // 3] = np.stack([20 + leaves, 90 + leaves, 30 + leaves // 2], -1)
+    depth[y - 10:y + h + 10, x - 5:x - 5 + w // 3] = np.nan
+    (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
+    assert plate.template_id == "5.31-1" and plate.printed_text == "gestattet" and _iou(plate.bbox, box) > 0.8
+    assert max(pictogram_scores(plate.crop, templates)) < 0.6  # the branch counted: no pictogram plate
+
+
+def test_a_text_plate_is_no_pictogram_plate(catalogue):
+    pose = pose_at(0.0)
+    left, depth, _ = scene(catalogue, pose, plate_lines=("ausgenommen", "Bus"), plate_size=(0.60, 0.30))
+    (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
+    assert plate.template_id == PLATE_ID and plate.printed_text is None
+    scores = pictogram_scores(plate.crop, load_plate_templates(catalogue.folder))
+    assert max(scores) < PipelineConfig().plates.plate_pictogram_min_score
+
+
+def test_a_thin_line_into_a_plate_does_not_make_it_less_of_a_rectangle(catalogue):
+    """Thin grey lines (a fence's wires, a bracket) rising across the lower part of a plate: notches in its
+    white, not its outline; counted against its fill they would make it no rectangle."""
+    pose = pose_at(0.0)
+    left, depth, box = scene(catalogue, pose, plate_lines=("Mo–Fr", "7–19 h"), plate_size=(0.60, 0.30))
+    x, y, w, h = box
+    for k in range(1, 7):  # 4 px wide (0.016 m at 7 m), from the lower edge to a fifth below the top
+        left[y + h // 5:y + h, x + k * w // 7 - 2:x + k * w // 7 + 2] = 115
+    depth[y:y + h, x:x + w] = np.nan  # nothing says it is in front
+    (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
+    assert plate.format == "normal-2" and _iou(plate.bbox, box) > 0.8
+    unclosed = detect_pair(left, depth, None, CAMERA, pose, catalogue,
+                           PipelineConfig(plates=PlateConfig(plate_notch_m=0.0)))
+    assert [d for d in unclosed if d.is_plate] == []
+
+
+@pytest.mark.parametrize("occluder", ["branch", "lamp post", "lamp post over its end"])
+def test_a_plate_cut_apart_by_something_in_front_is_found_whole(catalogue, occluder):
+    """A branch (green, depth unknown) or a lamp post (grey, nearer) across the plate cuts its white into
+    pieces none of which is a plate; together, the hidden pixels counted as the plate's, they are. A lamp post
+    over one end leaves one piece: completed under the post to a plate's width, it is the plate."""
+    pose = pose_at(0.0)
+    left, depth, box = scene(catalogue, pose, plate_lines=("Mo–Fr", "7–19 h"), plate_size=(0.60, 0.30))
+    x, y, w, h = box
+    band = (slice(y - 10, y + h + 25), slice(x + w // 3, x + w // 3 + w // 4))
+    if occluder.endswith("end"):
+        band = (slice(y - 10, y + h + 25), slice(x + 2 * w // 3, x + w + 12))
+    if occluder == "branch":
+        leaves = np.random.default_rng(3).integers(0, 40, left[band].shape[:2])
+        left[band] = np.stack([20 + leaves, 90 + leaves, 30 + leaves // 2], axis=-1).astype(np.uint8)
+        depth[band] = np.nan
+    else:
+        left[band] = 150
+        depth[band] = depth[y, x] - 2.0
+    found = _detect(catalogue, left, depth, pose)
+    (plate,) = [d for d in found if d.is_plate]
+    assert plate.format == "normal-2" and _iou(plate.bbox, box) > 0.8
+    whole_only = detect_pair(left, depth, None, CAMERA, pose, catalogue,
+                             PipelineConfig(plates=PlateConfig(plate_min_visible=1.0)))
+    # seen pieces only: none, or (its end hidden) the seen part taken for a smaller plate
+    assert all(_iou(d.bbox, box) < 0.8 for d in whole_only if d.is_plate)
 
 
 def _write_drive(root, catalogue, lines=("200 m",), n=3):
@@ -233,3 +332,28 @@ def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
     heard = []
     assert read_plate_texts([plate([50])], heard.append, read=missing) == 0
     assert len(heard) == 1 and INSTALL_HINT in heard[0]
+
+    # a pictogram plate is not read: its text is the words of the drawing most of its observations matched
+    pictogram = plate([50, 45, 40])
+    pictogram.template_id = "5.31-2"
+    for obs, words in zip(pictogram.observations, ("exceptés", "ausgenommen", "ausgenommen")):
+        obs.template_id, obs.detection.printed_text = "5.31-2", words
+    bare = plate([50])
+    bare.template_id = "5.31"
+    bare.observations[0].template_id, bare.observations[0].detection.printed_text = "5.31", ""
+    calls.clear()
+    assert read_plate_texts([pictogram, bare], read=fake_read) == 1 and calls == []
+    assert pictogram.text == "ausgenommen" and pictogram.text_confidence == pytest.approx(2 / 3)
+    assert bare.text is None and bare.text_confidence is None
+
+
+def test_a_reading_in_a_form_plates_print_outweighs_a_surer_misreading():
+    from signmapper_core.ocr import TextReading, Word
+    from signmapper_core.plate_fusion import vote_text
+
+    def reading(text, confidence):
+        return TextReading(tuple(Word(w, confidence, 0) for w in text.split()))
+
+    text, confidence = vote_text([reading("100 nil", 0.9), reading("100 m", 0.6), reading("", 0.0)])
+    assert text == "100 m" and confidence == pytest.approx(0.6 / 3)
+    assert vote_text([reading("100 nil", 0.9), reading("10O nil", 0.5)]) == ("100 nil", pytest.approx(0.7))

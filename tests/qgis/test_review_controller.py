@@ -500,3 +500,70 @@ def test_an_added_sign_shows_its_one_observation_and_undo_leaves_no_stale_image(
     dock.undoRequested.emit()
     wait_idle(controller)
     assert dock.item is None and not dock.image_view.has_image()
+
+
+def gpkg_with_plates(path, drive_dir, detections):
+    """The review GeoPackage plus two plates in its signs layer: a text plate (misread) and a pictogram plate."""
+    built = build_gpkg(path, drive_dir, detections)
+    signs = on_disk(built, "signs")
+    host = min(signs.values(), key=lambda s: s["sign_id"])
+    rows = []
+    for k, (template_id, text, confidence) in enumerate((("plate", "20O m", 0.41), ("5.31-2", "ausgenommen", 1.0))):
+        values = {key: host[key] for key in ("best_pair_id", "time", "u", "v", "bbox_x", "bbox_y", "bbox_w",
+                                             "bbox_h", "depth_m")}
+        values.update(sign_id=100 + k, template_id=template_id, name="Zusatztafel", colour="white",
+                      shape="rectangle", width_m=0.6, height_m=0.2, format="normal-1", status="review", reviewed=0,
+                      detection_indicator=0.9, classification_indicator=0.8, n_obs=3, vote_share=1.0,
+                      plate_of=host["sign_id"], text=text, text_confidence=confidence)
+        rows.append((values, host["xyz"] - [0.0, 0.0, 0.45 + 0.3 * k]))
+    from sign_mapper.gpkg.fields import layer_fields
+
+    fields = layer_fields("signs")
+    layer = QgsVectorLayer(f"{built}|layername=signs", "signs", "ogr")  # appended to the signs layer
+    layer.startEditing()
+    for values, position in rows:
+        feature = QgsFeature(layer.fields())
+        for key, value in values.items():
+            if fields.indexOf(key) >= 0:
+                feature[key] = value.item() if isinstance(value, np.generic) else value
+        feature.setGeometry(QgsGeometry(QgsPoint(*(float(c) for c in position))))
+        layer.addFeature(feature)
+    assert layer.commitChanges(), layer.commitErrors()
+    return built, host["sign_id"]
+
+
+def test_a_plate_shows_its_sign_and_text_and_a_person_corrects_the_text(review, tmp_path, drive_dir, detections):
+    gpkg, host = gpkg_with_plates(tmp_path / "plates.gpkg", drive_dir, detections)
+    controller, dock, layer = review(gpkg, "signs")
+    plate = next(f for f in layer.getFeatures() if f["template_id"] == "plate")
+    select(controller, layer, plate.id())
+    assert not dock.plate_box.isHidden() and dock.plate_text.text() == "20O m"
+    assert dock.info["plate"].text() == f"plate of sign {host} · “20O m” · text confidence 0.41"
+    before = on_disk(gpkg, "signs")[plate.id()]
+    dock.plate_text.setText("200m")  # spelt as the mapping writes texts when set
+    dock.set_text_button.click()
+    wait_idle(controller)
+    after = on_disk(gpkg, "signs")[plate.id()]
+    assert (after["text"], after["text_confidence"], after["status"], after["reviewed"]) == ("200 m", 1.0,
+                                                                                              "accepted", 1)
+    assert after["plate_of"] == host  # still the plate of its sign
+    dock.undoRequested.emit()
+    wait_idle(controller)
+    restored = on_disk(gpkg, "signs")[plate.id()]
+    assert (restored["text"], restored["status"]) == (before["text"], before["status"])
+    dock.rejectRequested.emit()  # a plate that is none: rejected like a sign
+    wait_idle(controller)
+    assert on_disk(gpkg, "signs")[plate.id()]["status"] == "rejected"
+
+
+def test_a_pictogram_plate_shows_its_drawing_and_a_sign_no_plate_text(review, tmp_path, drive_dir, detections):
+    gpkg, host = gpkg_with_plates(tmp_path / "plates.gpkg", drive_dir, detections)
+    controller, dock, layer = review(gpkg, "signs")
+    pictogram = next(f for f in layer.getFeatures() if f["template_id"] == "5.31-2")
+    select(controller, layer, pictogram.id())
+    assert dock.item.pictogram_path.endswith("5.31-2_de.png") and dock.pictogram.pixmap() is not None
+    assert not dock.pictogram.pixmap().isNull()
+    assert "“ausgenommen”" in dock.info["plate"].text()
+    sign = next(f for f in layer.getFeatures() if f["sign_id"] == host)
+    select(controller, layer, sign.id())
+    assert dock.plate_box.isHidden() and dock.info["plate"].text() == "–"
