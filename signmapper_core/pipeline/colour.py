@@ -31,7 +31,7 @@ from .boxes import box_iou
 from .bright_fields import red_ring_fields
 from .config import ColourConfig, HsvRange, PipelineConfig
 from .scene_colour import apply_gains, chroma_at_least, scene_colour
-from .shape import classify_shape
+from .shape import classify_shape, outline_margin, outline_shapes
 
 
 @dataclass
@@ -235,9 +235,25 @@ class ColourFrame:
 def _weak_outline(seg: Segment, colour: str, config: PipelineConfig) -> bool:
     """Whether a scene-pass segment has an outline a face of its colour has (``config.scene.weak_shapes``; any
     ideal outline for colours not listed there)."""
-    shape = classify_shape(seg.mask, config.shape.min_shape_fit, config.shape.shape_fill_window).shape
+    result = classify_shape(seg.mask, config.shape.min_shape_fit, config.shape.shape_fill_window)
+    shapes = outline_shapes(result, outline_margin(config, seg.bbox[2], seg.bbox[3]), config.shape.min_shape_fit)
     allowed = config.scene.weak_shapes.get(colour)
-    return shape is not None and (allowed is None or shape in allowed)
+    return bool(shapes) and (allowed is None or any(s in allowed for s in shapes))
+
+
+def _outline_lost(earlier: Segment, later: Segment, config: PipelineConfig) -> bool:
+    """Whether an earlier pass's segment lost the outline that a later pass's segment of the same place has.
+
+    The strong pass may keep only part of a faded ring (no ideal outline fits it) where the scene pass
+    finds the whole disc: the later one is then a face of its own, not a duplicate. The earlier one stays
+    too, as a piece a split face may still be merged from.
+    """
+    if earlier.source != "colour" or later.source != "colour":
+        return False  # a field (hole) is the same field whichever pass found it
+    shape = config.shape
+    before = classify_shape(earlier.mask, shape.min_shape_fit, shape.shape_fill_window).fit
+    after = classify_shape(later.mask, shape.min_shape_fit, shape.shape_fill_window).fit
+    return after >= shape.confident_shape_fit and after > before + shape.shape_ambiguity
 
 
 def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
@@ -278,8 +294,9 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
                     continue  # part of a larger coloured area (sky, hedge, façade), not a face of its own
                 if weak and not _weak_outline(seg, colour, config):
                     continue  # the scene pass's extra segments must look like a face to be worth depth
-                if any(o.colour == colour and box_iou(o.bbox, seg.bbox) >= scene.pass_duplicate_iou for o in out):
-                    continue
+                if any(o.colour == colour and box_iou(o.bbox, seg.bbox) >= scene.pass_duplicate_iou
+                       and not _outline_lost(o, seg, config) for o in out):
+                    continue  # an earlier pass outlined this face already
                 out.append(seg)
     if config.bright_fields.field_pass and "red" in config.colour.colours:
         for seg in frame.ring_fields(image, config, small_face_px):

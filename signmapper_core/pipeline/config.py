@@ -183,6 +183,9 @@ class ShapeConfig:
     # other shapes fitting within this of the best stay candidates: a 30 px disc and octagon differ by
     # a few corner pixels (GTSDB tune split: ~1 in 20 round signs of 30-40 px read as octagons)
     shape_ambiguity: float = 0.04
+    # ...widened by this many pixels of blur over the segment's shorter side: a 15 px priority-road diamond's
+    # corners are rounded off into an octagon (GTSDB tune split: diamond 0.76-0.81, octagon 0.81-0.84)
+    shape_ambiguity_px: float = 1.2
     # shapes whose ideal fill ratio is this close to the measured one are tried on a segment; the templates'
     # own parts keep 0.15. Small real triangles (blur, rounded corners) fill 0.63-0.69 of their box, beyond
     # a triangle's 0.5 + 0.15 (GTSDB tune split: 0.15 -> 0.2 found 3 more of 127 signs, +2 candidates/image)

@@ -31,7 +31,7 @@ from .pair_context import PairContext
 from .planarity import segment_planarity
 from .plates import find_plates
 from .search_space import search_space_mask
-from .shape import IDEAL_FILL, catalogue_shapes, classify_shape, outline_shapes
+from .shape import IDEAL_FILL, catalogue_shapes, classify_shape, outline_margin, outline_shapes
 from .sizing import measure_segment, metric_size, round_to_format
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
@@ -139,7 +139,7 @@ def segment_outline(seg: Segment, config: PipelineConfig) -> Tuple[Tuple[str, ..
     if seg.source == "hough":
         return ("circle",), False
     result = classify_shape(seg.mask, config.shape.min_shape_fit, config.shape.shape_fill_window)
-    shapes = outline_shapes(result, config.shape.shape_ambiguity, config.shape.min_shape_fit)
+    shapes = outline_shapes(result, outline_margin(config, seg.bbox[2], seg.bbox[3]), config.shape.min_shape_fit)
     marginal = bool(shapes) and (result.fit < config.shape.confident_shape_fit
                                  or abs(result.fill_ratio - IDEAL_FILL[shapes[0]]) > config.shape.confident_fill_window)
     return shapes, marginal

@@ -108,6 +108,26 @@ def outline_shapes(result: ShapeResult, margin: float, min_fit: float) -> Tuple[
     return (result.shape, *others)
 
 
+def ambiguity_margin(base: float, blur_px: float, width_px: int, height_px: int, min_axis_ratio: float) -> float:
+    """How close another outline's fit must be to the best one to stay a candidate, for a segment of this size.
+
+    A blurred edge moves the outline by about ``blur_px`` all round, which costs a shape's fit about
+    ``blur_px`` / its shorter side: on a 15 px segment the corners of a diamond and an octagon are that blur.
+    Only compact boxes get the extra margin: faces other than rectangles are never longer than
+    1 / ``min_axis_ratio`` (a disc seen at an angle), so for a bar or a plate no other reading opens.
+    """
+    short, long_ = min(width_px, height_px), max(width_px, height_px, 1)
+    if short < min_axis_ratio * long_:
+        return base
+    return base + blur_px / max(1, short)
+
+
+def outline_margin(config, width_px: int, height_px: int) -> float:
+    """:func:`ambiguity_margin` with a run's settings (``config``: a ``PipelineConfig``)."""
+    return ambiguity_margin(config.shape.shape_ambiguity, config.shape.shape_ambiguity_px, width_px, height_px,
+                            config.size.min_round_axis_ratio)
+
+
 def catalogue_shapes(shape: str, width_px: int, height_px: int) -> tuple:
     """Catalogue shape names a detected outline may be: a rectangle may be a square."""
     if shape == "rectangle":
