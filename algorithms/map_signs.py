@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import os
-import shutil
 from pathlib import Path
 
 from qgis.core import (
@@ -347,7 +345,11 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         language = self.language(parameters, context)
         output = AtomicGeoPackage(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
         unchanged = f"; {output.target} is as it was" if output.target.exists() else ""
-        crops = CropFolder(output.target) if self.parameterAsBoolean(parameters, self.CROPS, context) else None
+        crops = None
+        if self.parameterAsBoolean(parameters, self.CROPS, context):
+            from ..signmapper_core.sign_crops import CropFolder  # OpenCV: imported only when a run needs it
+
+            crops = CropFolder(output.target)
         max_skipped = self.parameterAsDouble(parameters, self.MAX_SKIPPED, context) / 100.0
         workers = self.parameterAsInt(parameters, self.WORKERS, context) if parameters.get(self.WORKERS) else 0
         scheduler = self.scheduler(parameters, context)
@@ -411,12 +413,9 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             start = None
         written = {}
         if crops is not None:
-            from ..signmapper_core.sign_crops import write_sign_crops
-
             feedback.setProgressText(f"Writing {len(result.signs)} sign crops")
-            names = write_sign_crops(drive, result.signs, crops.partial, feedback.isCanceled,
-                                     lambda m: feedback.reportError(m, fatalError=False))
-            written = {sign_id: f"{crops.folder.name}/{name}" for sign_id, name in names.items()}
+            written = crops.write(drive, result.signs, feedback.isCanceled,
+                                  lambda m: feedback.reportError(m, fatalError=False))
         return OutputContext(language=language, catalogue=catalogue, start=start, first_time=first_time(drive),
                              crops=written)
 
@@ -464,24 +463,6 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                 check_cancelled(feedback.isCanceled if feedback is not None else None, "writing")
                 writer.addFeature(layer_feature(fields, layer, item, out), QgsFeatureSink.FastInsert)
             del writer
-
-
-class CropFolder:
-    """The crops folder beside the GeoPackage, written as a hidden partial folder and moved in at the end."""
-
-    def __init__(self, target: Path):
-        self.folder = target.with_name(f"{target.stem}_crops")
-        self.partial = target.with_name(f".{target.stem}_crops.partial")
-        self.discard()
-
-    def commit(self) -> None:
-        if self.folder.exists():
-            shutil.rmtree(self.folder)
-        os.replace(self.partial, self.folder)
-
-    def discard(self) -> None:
-        if self.partial.exists():
-            shutil.rmtree(self.partial)
 
 
 def _is_default(setting, value) -> bool:

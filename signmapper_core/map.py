@@ -1,15 +1,17 @@
 """Command line: map the traffic signs of one or many drives without QGIS, locally or on a Dask cluster.
 
-    python -m signmapper_core.map DRIVE --out OUT.gpkg [--scheduler tcp://HOST:PORT] [--workers N]
+    python -m signmapper_core.map DRIVE --out OUT.gpkg [--scheduler tcp://HOST:PORT] [--workers N] [--crops]
     python -m signmapper_core.map DRIVE1 DRIVE2 ... --out FOLDER [--scheduler ...]
 
 The same mapping and the same GeoPackage layers, fields and run table as
-``mapsigns`` (``gpkg_writer``). Without ``--scheduler`` the pairs are mapped
-here in a process pool (Dask is never imported); with it, on the Dask cluster
-whose scheduler is at that address: its workers read the pairs from the drive
-paths given here (which must be the same on every machine), only detections
-come back, and fusion runs here, once per drive. Several drives share one
-connection to the cluster; each gets its own GeoPackage, named after its folder.
+``mapsigns`` (``gpkg_writer``); with ``--crops``, as mapsigns' "Write an image
+crop per sign", a JPEG per sign in ``<output name>_crops`` beside each
+GeoPackage. Without ``--scheduler`` the pairs are mapped here in a process pool
+(Dask is never imported); with it, on the Dask cluster whose scheduler is at
+that address: its workers read the pairs from the drive paths given here (which
+must be the same on every machine), only detections come back, and fusion runs
+here, once per drive. Several drives share one connection to the cluster; each
+gets its own GeoPackage, named after its folder.
 Exit status 0 when every drive was written, 1 when one failed, 2 for wrong arguments.
 """
 
@@ -47,6 +49,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="map with the settings an earlier output's run table records (pipeline, fusion, catalogue)")
     p.add_argument("--language", choices=LANGUAGES,
                    help="language of sign names (default: the environment's locale, else English)")
+    p.add_argument("--crops", action="store_true",
+                   help="write an image crop per sign (JPEG of its best pair) in a folder <output name>_crops beside "
+                        "the GeoPackage, its path in the field crop_path, as mapsigns does")
     p.add_argument("--max-skipped", type=float, default=50.0, metavar="PERCENT",
                    help="largest share of unreadable pairs before a drive fails (default 50 %%, as mapsigns)")
     return p
@@ -115,6 +120,7 @@ def map_one(folder: Path, target: Path, catalogue, config, fusion, args, schedul
     from .drive_clock import drive_start, first_time
     from .gpkg_writer import write_geopackage
     from .mapping import map_drive
+    from .sign_crops import CropFolder
 
     printer = Printer(folder.name)
     drive = open_drive(folder, progress=None)
@@ -124,13 +130,23 @@ def map_one(folder: Path, target: Path, catalogue, config, fusion, args, schedul
     result = map_drive(drive, catalogue, config, printer.progress, warn=printer.warn, fusion=fusion,
                        max_skipped_share=args.max_skipped / 100.0, workers=args.workers, scheduler=scheduler)
     seconds = time.perf_counter() - start
-    context = OutputContext(language=args.language or environment_language(), catalogue=catalogue,
-                            start=drive_start(drive), first_time=first_time(drive))
-    path = write_geopackage(target, result, context)
+    crops = CropFolder(target) if args.crops else None
+    try:
+        written = crops.write(drive, result.signs, warn=printer.warn) if crops is not None else {}
+        context = OutputContext(language=args.language or environment_language(), catalogue=catalogue,
+                                start=drive_start(drive), first_time=first_time(drive), crops=written)
+        path = write_geopackage(target, result, context)
+        if crops is not None:
+            crops.commit()
+    except BaseException:
+        if crops is not None:
+            crops.discard()
+        raise
     skipped = f"; {result.failure_summary()}" if result.skipped else ""
+    in_folder = f", {len(written)} crops in {crops.folder}" if crops is not None else ""
     print(f"{folder}: {len(drive.pairs)} pairs in {seconds:.1f} s ({len(drive.pairs) / max(seconds, 1e-9):.2f} "
           f"pairs/s), {len(result.detections)} detections fused into {len(result.signs)} signs, written to "
-          f"{path}{skipped}", flush=True)
+          f"{path}{in_folder}{skipped}", flush=True)
     return path
 
 

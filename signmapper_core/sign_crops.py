@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+import shutil
 from pathlib import Path
 from typing import Dict, Optional, Tuple
 
@@ -59,3 +61,30 @@ def write_sign_crops(drive, signs, folder: Path, is_cancelled: Optional[CancelCh
             else:
                 send_warning(warn, f"Could not write {folder / name}")
     return written
+
+
+class CropFolder:
+    """The crops folder beside a GeoPackage (``<name>_crops``), written as a hidden partial folder and moved
+    in at the end, so a failed or cancelled run leaves the crops of an earlier run as they were."""
+
+    def __init__(self, target: Path):
+        target = Path(target)
+        self.folder = target.with_name(f"{target.stem}_crops")
+        self.partial = target.with_name(f".{target.stem}_crops.partial")
+        self.discard()
+
+    def write(self, drive, signs, is_cancelled: Optional[CancelCheck] = None,
+              warn: Optional[WarnCallback] = None) -> Dict[int, str]:
+        """The crops of ``signs`` (:func:`write_sign_crops`) into the partial folder; sign_id -> path
+        relative to the GeoPackage (the ``crop_path`` field)."""
+        names = write_sign_crops(drive, signs, self.partial, is_cancelled, warn)
+        return {sign_id: f"{self.folder.name}/{name}" for sign_id, name in names.items()}
+
+    def commit(self) -> None:
+        if self.folder.exists():
+            shutil.rmtree(self.folder)
+        os.replace(self.partial, self.folder)
+
+    def discard(self) -> None:
+        if self.partial.exists():
+            shutil.rmtree(self.partial)

@@ -1,6 +1,6 @@
 """``signmapper:mapsigns`` with a *Dask scheduler address* (a LocalCluster of two worker processes on 127.0.0.1):
 the same output as on this computer, cancel cancels the cluster's tasks, a bad address is said before the run;
-and ``python -m signmapper_core.map`` writes the layers, fields and run table mapsigns writes."""
+and ``python -m signmapper_core.map`` writes the layers, fields, run table and crops mapsigns writes."""
 
 import subprocess
 import sys
@@ -35,14 +35,20 @@ def test_mapsigns_on_the_cluster_writes_the_same_geopackage_as_on_this_computer(
     assert differences(expected, dump_gpkg(there, small_drive)) == []
 
 
-def test_the_command_writes_the_layers_fields_and_run_table_mapsigns_writes(run, small_drive, tmp_path):
-    from_qgis, from_command = tmp_path / "qgis.gpkg", tmp_path / "command.gpkg"
+def test_the_command_writes_the_layers_fields_run_table_and_crops_mapsigns_writes(run, small_drive, tmp_path):
+    # the same file name in two folders: the crop_path fields name the crops folder after the GeoPackage
+    from_qgis, from_command = tmp_path / "qgis" / "signs.gpkg", tmp_path / "command" / "signs.gpkg"
+    from_qgis.parent.mkdir()
     run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(from_qgis), "WORKERS": 1,
-                                "LANGUAGE": GERMAN})
+                                "LANGUAGE": GERMAN, "CROPS": True})
     done = subprocess.run([sys.executable, "-m", "signmapper_core.map", str(small_drive), "--out", str(from_command),
-                           "--workers", "1", "--language", "de"], capture_output=True, text=True, cwd=str(REPO_ROOT),
-                          timeout=300)
+                           "--workers", "1", "--language", "de", "--crops"], capture_output=True, text=True,
+                          cwd=str(REPO_ROOT), timeout=300)
     assert done.returncode == 0, done.stderr
+    crops = [{path.name: path.read_bytes() for path in (out.parent / "signs_crops").iterdir()}
+             for out in (from_qgis, from_command)]
+    assert len(crops[0]) >= 2 and crops[1] == crops[0]
+    assert "crops in" in done.stdout and not list(from_command.parent.glob(".*partial*"))
     expected, written = dump_tables(from_qgis, small_drive), dump_tables(from_command, small_drive)
     # what only QGIS adds: the default styles it embeds (table layer_styles, registered in gpkg_contents)
     assert "layer_styles" in expected["sqlite_tables"] and "layer_styles" not in written["sqlite_tables"]
