@@ -137,9 +137,17 @@ def greyscale_warning(folder: Path, grey: list, total: int) -> list[str]:
 
 
 def has_colour(bgr: np.ndarray) -> bool:
-    """Whether any pixel of a BGR image has a colour (channels differing), sampled every 4th pixel."""
-    sample = bgr[::4, ::4].astype(np.int16)
-    return int((sample.max(axis=2) - sample.min(axis=2)).max(initial=0)) >= MIN_COLOUR_SPREAD
+    """Whether any pixel of a BGR image has a colour (channels differing), sampled every 4th pixel.
+
+    Every 16th pixel (part of that sample) is looked at first: a colour photograph
+    answers there, at 1/16 of the cost; only a grey one needs the whole sample.
+    """
+    return any(_colour_spread(bgr[::step, ::step]) >= MIN_COLOUR_SPREAD for step in (16, 4))
+
+
+def _colour_spread(sample: np.ndarray) -> int:
+    sample = sample.astype(np.int16)
+    return int((sample.max(axis=2) - sample.min(axis=2)).max(initial=0))
 
 
 def pair_warnings(record, left: np.ndarray, depth: np.ndarray | None) -> list[str]:

@@ -159,3 +159,16 @@ def test_png_named_jpg_is_named_as_such(tmp_path):
     drive = open_drive(drive_dir, check_images=False)  # the review opens without headers: loading names it too
     with pytest.raises(ImageReadError, match="not a JPEG file although named .jpg"):
         drive.load_left(drive.pairs[1])
+
+
+def test_a_pair_has_colour_where_only_the_finer_sample_shows_it():
+    from signmapper_core.plausibility import has_colour
+
+    grey = np.full((1080, 1920, 3), 128, np.uint8)
+    assert not has_colour(grey)
+    coloured = grey.copy()
+    coloured[4, 8] = (128, 128, 200)  # in the every-4th-pixel sample, not in the every-16th one
+    assert has_colour(coloured)
+    coloured[4, 8] = 128
+    coloured[5, 9] = (128, 128, 200)  # in neither sample
+    assert not has_colour(coloured)
