@@ -27,6 +27,8 @@ import numpy as np
 
 from ..geometry import Camera
 
+WARM_UP_PX = 64  # full-resolution columns matched left of a window before its own (see sgbm_depth)
+
 
 def disparity_range(camera: Camera, near_m: float, far_m: float, scale: float = 1.0,
                     far_factor: float = 1.0) -> Tuple[int, int]:
@@ -79,15 +81,14 @@ def merge_row_bands(bands: Iterable[Tuple[int, int]], height: int, margin: int) 
 
 
 def match_windows(boxes: Iterable[Tuple[int, int, int, int]], width: int, height: int, row_margin: int,
-                  col_margin: int, reach: int) -> List[Tuple[int, int, int, int]]:
-    """Windows (x0, y0, x1, y1) of the left image to match: the boxes' (x, y, w, h) row bands grown by
-    ``row_margin`` and merged; within each band, the column spans of the boxes in it, grown by
-    ``col_margin`` on both sides and by ``reach`` (the largest disparity in full pixels) on the left,
-    where the right image shows the same points, merged."""
+                  col_margin: int) -> List[Tuple[int, int, int, int]]:
+    """Windows (x0, y0, x1, y1) of the left image whose depth is wanted: the boxes' (x, y, w, h) row bands
+    grown by ``row_margin`` and merged; within each band, the column spans of the boxes in it grown by
+    ``col_margin``, merged. :func:`sgbm_depth` adds the context the matcher needs around each."""
     boxes = list(boxes)
     out = []
     for a, b in merge_row_bands([(y, y + h) for _, y, _, h in boxes], height, row_margin):
-        spans = [(x - reach, x + w) for x, y, w, h in boxes if y < b and y + h > a]
+        spans = [(x, x + w) for x, y, w, h in boxes if y < b and y + h > a]
         out += [(c0, a, c1, b) for c0, c1 in merge_row_bands(spans, width, col_margin)]
     return out
 
@@ -104,9 +105,13 @@ def sgbm_depth(
     SGBM settings (a PipelineConfig).
 
     ``row_bands``: full-resolution [start, stop) rows to match; ``windows``: (x0, y0, x1, y1)
-    regions to match instead (:func:`match_windows`; a window's columns left of its largest
-    disparity are context, their depth is not kept unless the window starts at the image's edge).
-    Pixels outside stay NaN. Neither: the whole image.
+    regions to match instead (:func:`match_windows`). Pixels outside stay NaN. Neither: the whole image.
+
+    The matcher computes disparities only for columns that have all searched disparities to
+    their left (OpenCV leaves the first min+num columns of its input out): each window is cut
+    with the largest disparity of the right image's context on its left, plus ``WARM_UP_PX``
+    columns matched before the window so that the left-to-right pass of the matcher enters it
+    settled; at the image's left edge the pair is padded instead.
     """
     settings = config.depth
     near_m, far_m, scale, far_factor = settings.near_m, settings.far_m, settings.sgbm_scale, settings.sgbm_far_factor
@@ -116,27 +121,30 @@ def sgbm_depth(
     if windows is None:
         windows = [(0, a, width, b) for a, b in (row_bands if row_bands is not None else [(0, height)])]
     min_disp, num_disp = disparity_range(camera, near_m, far_m, scale, far_factor)
-    pad = min_disp + num_disp
+    skipped = min_disp + num_disp  # columns of its input the matcher leaves out
     reach = largest_disparity_px(camera, near_m, far_m, scale, far_factor)
-    grey_l = cv2.cvtColor(left, cv2.COLOR_BGR2GRAY) if left.ndim == 3 else left
-    grey_r = cv2.cvtColor(right, cv2.COLOR_BGR2GRAY) if right.ndim == 3 else right
     matcher = _sgbm(min_disp, num_disp, block_size, 1, uniqueness)
     context = block_size + 2  # rows around a band so its edges are matched like the interior
-    for c0, start, c1, stop in windows:
+    for x0, start, x1, stop in windows:
         a, b = max(0, start - context), min(height, stop + context)
-        ca, cb = max(0, min(c0, c1 - reach - context)), min(width, c1 + context)
-        keep = 0 if ca == 0 else min(c1, ca + reach)  # first column whose disparities are all searched
+        first = max(0, x0 - WARM_UP_PX)  # first column matched
+        ca, cb = max(0, first - reach), min(width, x1 + context)
+        pad = max(0, skipped - int(round((first - ca) * scale)))  # at the left edge: columns to stand in
         small_w = max(1, int(round((cb - ca) * scale)))
         small_h = max(block_size + 2, int(round((b - a) * scale)))
-        sl = cv2.resize(grey_l[a:b, ca:cb], (small_w, small_h), interpolation=cv2.INTER_AREA)
-        sr = cv2.resize(grey_r[a:b, ca:cb], (small_w, small_h), interpolation=cv2.INTER_AREA)
-        sl = cv2.copyMakeBorder(sl, 0, 0, pad, 0, cv2.BORDER_REPLICATE)
-        sr = cv2.copyMakeBorder(sr, 0, 0, pad, 0, cv2.BORDER_REPLICATE)
+        sl, sr = (_grey_window(image, a, b, ca, cb, (small_w, small_h), pad) for image in (left, right))
         disp = matcher.compute(sl, sr)[:, pad:].astype(np.float32) / 16.0
         disp[disp < min_disp] = np.nan  # unmatched pixels come back as min_disp - 1
         disp_full = cv2.resize(disp, (cb - ca, b - a), interpolation=cv2.INTER_NEAREST) / scale
         with np.errstate(divide="ignore", invalid="ignore"):
             band = (camera.fx * camera.baseline_m / disp_full).astype(np.float32)
-        x0 = max(c0, keep)
-        depth[start:stop, x0:c1] = band[start - a : stop - a, x0 - ca : c1 - ca]
+        depth[start:stop, x0:x1] = band[start - a : stop - a, x0 - ca : x1 - ca]
     return depth
+
+
+def _grey_window(image: np.ndarray, a: int, b: int, ca: int, cb: int, size: Tuple[int, int], pad: int) -> np.ndarray:
+    """Rows a..b, columns ca..cb of ``image`` grey, at ``size``, padded by ``pad`` columns on the left."""
+    part = image[a:b, ca:cb]
+    grey = cv2.cvtColor(part, cv2.COLOR_BGR2GRAY) if part.ndim == 3 else part
+    small = cv2.resize(grey, size, interpolation=cv2.INTER_AREA)
+    return cv2.copyMakeBorder(small, 0, 0, pad, 0, cv2.BORDER_REPLICATE) if pad else small

@@ -21,7 +21,7 @@ from typing import List, Optional, Protocol, Tuple
 import numpy as np
 
 from ..geometry import Camera
-from .depth import largest_disparity_px, match_windows, merge_row_bands, sgbm_depth
+from .depth import match_windows, merge_row_bands, sgbm_depth
 from .search_space import close_holes, grow
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
@@ -88,10 +88,8 @@ class StereoMatching:
         bands, windows = [(y0, y1)], None
         if candidate_boxes is not None:
             if config.depth.sgbm_columns_only:
-                reach = largest_disparity_px(camera, config.depth.near_m, config.depth.far_m, config.depth.sgbm_scale,
-                                             config.depth.sgbm_far_factor)
                 windows = match_windows(candidate_boxes, left.shape[1], left.shape[0], config.depth.sgbm_row_margin_px,
-                                        config.depth.sgbm_row_margin_px, reach)
+                                        config.depth.sgbm_row_margin_px)
             bands = merge_row_bands([(y, y + h) for _, y, _, h in candidate_boxes], left.shape[0],
                                     config.depth.sgbm_row_margin_px)
         if not bands:

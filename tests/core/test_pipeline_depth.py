@@ -81,25 +81,27 @@ def test_merge_row_bands():
     assert merge_row_bands([], 100, 5) == []
 
 
-def test_match_windows_take_the_candidates_columns_and_their_disparity_reach():
+def test_match_windows_take_the_candidates_rows_and_columns():
     boxes = [(400, 100, 40, 40), (470, 110, 30, 30), (100, 300, 20, 20)]
-    windows = match_windows(boxes, 640, 400, 10, 10, 150)
-    # the two boxes side by side share a band and, with their reach, one span; the third has its own
-    assert windows == [(240, 90, 510, 150), (0, 290, 130, 330)]
-    assert match_windows([], 640, 400, 10, 10, 150) == []
+    windows = match_windows(boxes, 640, 400, 10, 10)
+    # the two boxes side by side share a band; 30 px apart, their grown spans are two windows in it
+    assert windows == [(390, 90, 450, 150), (460, 90, 510, 150), (90, 290, 130, 330)]
+    assert match_windows([(400, 100, 40, 40), (455, 110, 30, 30)], 640, 400, 10, 10) == [(390, 90, 495, 150)]
+    assert match_windows([], 640, 400, 10, 10) == []
 
 
-def test_sgbm_on_windows_matches_them_like_the_whole_rows_and_leaves_the_rest_nan():
+@pytest.mark.parametrize("x", [400, 560, 110])  # a window in the middle, at the right, near the left edge
+def test_sgbm_on_windows_matches_them_like_the_whole_rows_and_leaves_the_rest_nan(x):
     disparity = 90  # 6 m
     left, right = _textured_pair(disparity)
     reach = largest_disparity_px(CAMERA, 4.0, 14.0, 0.5, 2.0)
     assert reach >= CAMERA.fx * CAMERA.baseline_m / 4.0
-    (window,) = match_windows([(400, 120, 60, 40)], CAMERA.width, CAMERA.height, 10, 10, reach)
+    (window,) = match_windows([(x, 120, 60, 40)], CAMERA.width, CAMERA.height, 10, 10)
     depth = sgbm_depth(left, right, CAMERA, CONFIG, windows=[window])
     rows = sgbm_depth(left, right, CAMERA, CONFIG, row_bands=[(110, 170)])
     kept = np.isfinite(depth)
     ys, xs = np.nonzero(kept)
-    assert (ys.min(), ys.max() + 1) == (110, 170) and (xs.min(), xs.max() + 1) == (390, 470)
-    box = depth[120:160, 400:460]
+    assert (ys.min(), ys.max() + 1) == (110, 170) and (xs.min(), xs.max() + 1) == (max(0, x - 10), x + 70)
+    box = depth[120:160, x : x + 60]
     assert np.mean(np.abs(box - 6.0) < 0.15) > 0.95
-    assert np.mean(np.abs(box - rows[120:160, 400:460]) < 0.05) > 0.95
+    assert np.mean(np.abs(box - rows[120:160, x : x + 60]) < 0.05) > 0.95
