@@ -17,6 +17,9 @@ in the client are), ``--scheduler ADDRESS`` on a running cluster (``dask-schedul
 ``--long N`` then maps a drive of N pairs (the drive's pairs repeated under new ids)
 with all workers and prints the resident memory of the main process plus its
 workers as it goes: memory must stay flat with drive length.
+Each row also gives the CPU time per pair (user + system of the mode's process and its
+worker processes, start-up included) and the load average at its start and end: on a
+shared machine the wall clock varies with the other sessions' work, the CPU time much less.
 The vehicle records 5 pairs/s; faster than that keeps up with the drive.
 """
 
@@ -25,6 +28,7 @@ from __future__ import annotations
 import argparse
 import json
 import multiprocessing
+import os
 import resource
 import subprocess
 import sys
@@ -59,6 +63,12 @@ def baseline_detect(left, depth, right, camera, pose, catalogue, config):
     """The baseline as a detector for ``map_drive``: the full-frame depth, no detections."""
     baseline_depth(left, right, camera)
     return []
+
+
+def cpu_seconds() -> float:
+    """User + system CPU seconds of this process and its ended worker processes."""
+    own, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
 
 
 def rss_mb(pid="self", key="VmRSS") -> float:
@@ -135,15 +145,17 @@ def run_mode(mode: str, folder: Path, long_pairs: int = 0) -> dict:
             done = len(samples) + 1
             samples[done] = total_rss_mb() if done in (1, 100, 500, 1000, 2000, 5000, 10000) else None
 
-    start = time.perf_counter()
+    load = os.getloadavg()[0]
+    start, cpu = time.perf_counter(), cpu_seconds()
     result = map_drive(drive, load_catalogue(), PipelineConfig(), progress=progress, workers=workers,
                        detect=baseline if mode == "baseline" else None)
-    seconds = time.perf_counter() - start
+    seconds, cpu = time.perf_counter() - start, cpu_seconds() - cpu  # the pool has ended: its CPU is counted
     own = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
     worker = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024.0 if workers > 1 else 0.0
-    return {"mode": mode, "pairs": len(drive.pairs), "workers": workers, "seconds": seconds,
-            "detections": len(result.detections), "signs": len(result.signs), "peak_rss_mb": own,
-            "peak_worker_rss_mb": worker, "rss_mb": {k: v for k, v in samples.items() if v is not None}}
+    return {"mode": mode, "pairs": len(drive.pairs), "workers": workers, "seconds": seconds, "cpu_seconds": cpu,
+            "load": [load, os.getloadavg()[0]], "detections": len(result.detections), "signs": len(result.signs),
+            "peak_rss_mb": own, "peak_worker_rss_mb": worker,
+            "rss_mb": {k: v for k, v in samples.items() if v is not None}}
 
 
 def drive_folder(seed: int, pairs: int) -> Path:
@@ -186,8 +198,8 @@ def main() -> int:
     folder = drive_folder(args.seed, args.pairs)
     print(f"drive {folder}: 1920x1080 JPEG pairs, no depth maps, {args.pairs} pairs; "
           f"{multiprocessing.cpu_count()} cores; the vehicle records 5 pairs/s")
-    print(f"{'mode':<13} {'workers':>7} {'pairs/s':>8} {'x baseline':>10} {'detections':>10} {'signs':>6} "
-          f"{'peak RSS MB (main + largest worker)':>36}")
+    print(f"{'mode':<13} {'workers':>7} {'pairs/s':>8} {'x baseline':>10} {'CPU ms/pair':>11} {'detections':>10} "
+          f"{'signs':>6} {'peak RSS MB (main + largest worker)':>36} {'load avg':>11}")
     modes = MODES + (DASK_MODES if args.dask else ()) + (("dask-scheduler",) if args.scheduler else ())
     results = {mode: child(mode, folder, scheduler=args.scheduler if mode == "dask-scheduler" else "")
                for mode in modes}
@@ -196,8 +208,10 @@ def main() -> int:
         rate = r["pairs"] / r["seconds"]
         peak = f"{r['peak_rss_mb']:.0f}" + (f" + {r['workers']} x {r['peak_worker_rss_mb']:.0f}"
                                             if r["workers"] > 1 or mode.startswith("dask") else "")
-        print(f"{mode:<13} {r['workers']:7d} {rate:8.2f} {rate / base:10.2f} {r['detections']:10d} "
-              f"{r['signs']:6d} {peak:>36}", flush=True)
+        cpu = f"{1000 * r['cpu_seconds'] / r['pairs']:.0f}" if "cpu_seconds" in r else "-"
+        load = "{:.1f}-{:.1f}".format(*r["load"]) if "load" in r else "-"
+        print(f"{mode:<13} {r['workers']:7d} {rate:8.2f} {rate / base:10.2f} {cpu:>11} {r['detections']:10d} "
+              f"{r['signs']:6d} {peak:>36} {load:>11}", flush=True)
     if args.long:
         r = child("pipeline-all", folder, args.long)
         memory = ", ".join(f"{k} pairs {v:.0f} MB" for k, v in r["rss_mb"].items())

@@ -5,7 +5,8 @@
 Profiles the first ``--pairs`` pairs of a drive (JPEG pairs, depth by SGBM) after
 one warm-up pair (classifier loaded, OpenCV initialised), with OpenCV on one
 thread as in a worker process, and prints the functions with the most time spent
-inside them and below them, in seconds per pair.
+inside them and below them, in CPU milliseconds per pair (process time, so a
+busy machine does not inflate them; OpenCV runs on one thread).
 """
 
 from __future__ import annotations
@@ -14,6 +15,7 @@ import argparse
 import cProfile
 import pstats
 import sys
+import time
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
@@ -37,14 +39,14 @@ def main() -> int:
     drive, catalogue, config = open_drive(args.drive), load_catalogue(), PipelineConfig()
     map_pair(drive, drive.pairs[0], catalogue, config)  # warm-up
     records = drive.pairs[1: 1 + args.pairs]
-    profiler = cProfile.Profile()
+    profiler = cProfile.Profile(time.process_time)  # CPU time: other processes on the machine do not count
     profiler.enable()
     for record in records:
         map_pair(drive, record, catalogue, config)
     profiler.disable()
     stats = pstats.Stats(profiler)
     total = stats.total_tt / len(records)
-    print(f"{len(records)} pairs of {args.drive.name}, {total * 1000:.0f} ms per pair (one thread)")
+    print(f"{len(records)} pairs of {args.drive.name}, {total * 1000:.0f} ms CPU per pair (one thread)")
     rows = []
     for (path, line, name), (_, calls, own, cumulative, _) in stats.stats.items():
         where = f"{Path(path).name}:{name}" if line else name
