@@ -123,6 +123,8 @@ def sgbm_depth(
     min_disp, num_disp = disparity_range(camera, near_m, far_m, scale, far_factor)
     skipped = min_disp + num_disp  # columns of its input the matcher leaves out
     reach = largest_disparity_px(camera, near_m, far_m, scale, far_factor)
+    grey_l = cv2.cvtColor(left, cv2.COLOR_BGR2GRAY) if left.ndim == 3 else left
+    grey_r = cv2.cvtColor(right, cv2.COLOR_BGR2GRAY) if right.ndim == 3 else right
     matcher = _sgbm(min_disp, num_disp, block_size, 1, uniqueness)
     context = block_size + 2  # rows around a band so its edges are matched like the interior
     for x0, start, x1, stop in windows:
@@ -132,19 +134,17 @@ def sgbm_depth(
         pad = max(0, skipped - int(round((first - ca) * scale)))  # at the left edge: columns to stand in
         small_w = max(1, int(round((cb - ca) * scale)))
         small_h = max(block_size + 2, int(round((b - a) * scale)))
-        sl, sr = (_grey_window(image, a, b, ca, cb, (small_w, small_h), pad) for image in (left, right))
+        sl, sr = (_small_window(grey, a, b, ca, cb, (small_w, small_h), pad) for grey in (grey_l, grey_r))
         disp = matcher.compute(sl, sr)[:, pad:].astype(np.float32) / 16.0
         disp[disp < min_disp] = np.nan  # unmatched pixels come back as min_disp - 1
-        disp_full = cv2.resize(disp, (cb - ca, b - a), interpolation=cv2.INTER_NEAREST) / scale
-        with np.errstate(divide="ignore", invalid="ignore"):
-            band = (camera.fx * camera.baseline_m / disp_full).astype(np.float32)
+        with np.errstate(divide="ignore", invalid="ignore"):  # depth at the matcher's scale, then enlarged
+            small_depth = (camera.fx * camera.baseline_m / (disp / scale)).astype(np.float32)
+        band = cv2.resize(small_depth, (cb - ca, b - a), interpolation=cv2.INTER_NEAREST)
         depth[start:stop, x0:x1] = band[start - a : stop - a, x0 - ca : x1 - ca]
     return depth
 
 
-def _grey_window(image: np.ndarray, a: int, b: int, ca: int, cb: int, size: Tuple[int, int], pad: int) -> np.ndarray:
-    """Rows a..b, columns ca..cb of ``image`` grey, at ``size``, padded by ``pad`` columns on the left."""
-    part = image[a:b, ca:cb]
-    grey = cv2.cvtColor(part, cv2.COLOR_BGR2GRAY) if part.ndim == 3 else part
-    small = cv2.resize(grey, size, interpolation=cv2.INTER_AREA)
+def _small_window(grey: np.ndarray, a: int, b: int, ca: int, cb: int, size: Tuple[int, int], pad: int) -> np.ndarray:
+    """Rows a..b, columns ca..cb of ``grey`` at ``size``, padded by ``pad`` columns on the left."""
+    small = cv2.resize(grey[a:b, ca:cb], size, interpolation=cv2.INTER_AREA)
     return cv2.copyMakeBorder(small, 0, 0, pad, 0, cv2.BORDER_REPLICATE) if pad else small
