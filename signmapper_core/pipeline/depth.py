@@ -139,9 +139,17 @@ def sgbm_depth(
         disp[disp < min_disp] = np.nan  # unmatched pixels come back as min_disp - 1
         with np.errstate(divide="ignore", invalid="ignore"):  # depth at the matcher's scale, then enlarged
             small_depth = (camera.fx * camera.baseline_m / (disp / scale)).astype(np.float32)
-        band = cv2.resize(small_depth, (cb - ca, b - a), interpolation=cv2.INTER_NEAREST)
-        depth[start:stop, x0:x1] = band[start - a : stop - a, x0 - ca : x1 - ca]
+        depth[start:stop, x0:x1] = _enlarged(small_depth, (cb - ca, b - a), (start - a, stop - a), (x0 - ca, x1 - ca))
     return depth
+
+
+def _enlarged(small: np.ndarray, size: Tuple[int, int], rows: Tuple[int, int], cols: Tuple[int, int]) -> np.ndarray:
+    """``cv2.resize(small, size, interpolation=INTER_NEAREST)[rows, cols]`` without enlarging the rest of it:
+    pixel i of the enlarged image is pixel floor(i / (size / small size)) of ``small``, as OpenCV maps them."""
+    (width, height), (small_h, small_w) = size, small.shape[:2]
+    ys = np.minimum(np.floor(np.arange(*rows) * (1.0 / (height / small_h))).astype(np.intp), small_h - 1)
+    xs = np.minimum(np.floor(np.arange(*cols) * (1.0 / (width / small_w))).astype(np.intp), small_w - 1)
+    return small[np.ix_(ys, xs)]
 
 
 def _small_window(grey: np.ndarray, a: int, b: int, ca: int, cb: int, size: Tuple[int, int], pad: int) -> np.ndarray:
