@@ -12,7 +12,9 @@ fused signs (one feature per physical sign; duplicates = reference signs matched
 by more than one fused sign). Signs in status "review" count like accepted ones;
 the review step decides on them. Supplementary plates have rows of their own
 (``plate_evaluation``): detected, linked to the right sign, text exactly right
-for plates at least 40 px high.
+for plates at least 40 px high. The white and grey signs and the coloured ones have rows of their own
+too (``family_evaluation``): detected, correctly classified, false positives per 100 pairs;
+``--white-share`` generates drives with white signs and white distractors.
 """
 
 from __future__ import annotations
@@ -30,6 +32,13 @@ sys.path.insert(0, str(REPO))
 from signmapper_core.catalogue import load_catalogue  # noqa: E402
 from signmapper_core.drive import open_drive  # noqa: E402
 from signmapper_core.evaluation import combine_reports, evaluate, format_report  # noqa: E402
+from signmapper_core.family_evaluation import (  # noqa: E402
+    COLOURED,
+    WHITE,
+    FamilyFigures,
+    catalogue_colour,
+    family_figures,
+)
 from signmapper_core.mapping import map_drive  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig  # noqa: E402
@@ -38,16 +47,23 @@ from signmapper_core.plate_fusion import is_plate  # noqa: E402
 from signmapper_core.visibility import mappable_signs  # noqa: E402
 
 
-def generated_drive(seed: int, pairs: int, depth: bool, legacy_faces: bool = False) -> Path:
+def generated_drive(seed: int, pairs: int, depth: bool, legacy_faces: bool = False, white_share: float = 0.0
+                    ) -> Path:
     from signmapper_core.simulate import LEGACY_FACES, SimulationConfig, generate_drive
 
-    config = SimulationConfig(pairs=pairs, seed=seed, write_depth=depth, **(LEGACY_FACES if legacy_faces else {}))
+    config = SimulationConfig(pairs=pairs, seed=seed, write_depth=depth, white_sign_share=white_share,
+                              **(LEGACY_FACES if legacy_faces else {}))
     faces = "legacy" if legacy_faces else f"{config.face_artwork}{config.master_share:g}"
-    out = REPO / "build" / "drives" / f"seed{seed}-{pairs}{'-depth' if depth else ''}-faces-{faces}"
+    white = f"-white{white_share:g}" if white_share > 0 else ""
+    out = REPO / "build" / "drives" / f"seed{seed}-{pairs}{'-depth' if depth else ''}-faces-{faces}{white}"
     if not (out / "poses.csv").exists():
         print(f"generating {out} ...", flush=True)
         generate_drive(out, config)
     return out
+
+
+FAMILIES = {"white and grey": WHITE, "coloured": COLOURED}
+FAMILY_KINDS = {"detections": "per-pair detections", "signs": "fused signs"}
 
 
 def azimuth_errors(signs, reference, report) -> list:
@@ -78,6 +94,8 @@ def main(argv=None) -> int:
     parser.add_argument("--depth", action="store_true", help="generated drives carry true depth maps")
     parser.add_argument("--legacy-faces", action="store_true",
                         help="generated drives with the faces of before the artwork mix (procedural only)")
+    parser.add_argument("--white-share", type=float, default=0.0,
+                        help="generated drives: share of sign poles with white and grey signs (and white distractors)")
     parser.add_argument("--radius", type=float, default=0.75, help="matching radius in metres")
     parser.add_argument("--near", type=float, default=4.0)
     parser.add_argument("--far", type=float, default=14.0)
@@ -86,7 +104,7 @@ def main(argv=None) -> int:
     parser.add_argument("--workers", type=int, default=0, help="worker processes (0 = all cores)")
     args = parser.parse_args(argv)
 
-    folders = list(args.drives) + [generated_drive(s, args.pairs, args.depth, args.legacy_faces)
+    folders = list(args.drives) + [generated_drive(s, args.pairs, args.depth, args.legacy_faces, args.white_share)
                                         for s in args.generate]
     if not folders:
         parser.error("give drive folders or --generate SEEDS")
@@ -98,6 +116,8 @@ def main(argv=None) -> int:
     accepted_total, accepted_wrong, accepted_unmatched = 0, 0, 0
     total_pairs, total_seconds = 0, 0.0
     plate_totals = PlateFigures()
+    colour_of = catalogue_colour(catalogue)
+    family_totals = {(family, kind): FamilyFigures() for family in FAMILIES for kind in ("detections", "signs")}
     for folder in folders:
         drive = open_drive(folder, require_truth=True)
         reference = mappable_signs(drive, args.near, args.far)
@@ -126,6 +146,12 @@ def main(argv=None) -> int:
             print()
         print("\n".join(plates.lines(f"{head}: supplementary plates")))
         print()
+        for family, colours in FAMILIES.items():
+            for kind, items in (("detections", sign_detections), ("signs", signs)):
+                figures = family_figures(items, reference, colour_of, colours, traj, len(drive.pairs), args.radius)
+                family_totals[family, kind] += figures
+                print("\n".join(figures.lines(f"{head}: {family} signs, {FAMILY_KINDS[kind]}")))
+            print()
         total_pairs += len(drive.pairs)
         total_seconds += seconds
     print(f"Fused signs with status accepted ({result.classifier_name}, threshold "
@@ -143,6 +169,9 @@ def main(argv=None) -> int:
                                 f"{total_pairs / max(total_seconds, 1e-9):.2f} pairs/s: {kind}"))
             print()
         print("\n".join(plate_totals.lines(f"== all {len(folders)} drives: supplementary plates")))
+        print()
+        for (family, kind), figures in family_totals.items():
+            print("\n".join(figures.lines(f"== all {len(folders)} drives: {family} signs, {FAMILY_KINDS[kind]}")))
         print()
     return 0
 

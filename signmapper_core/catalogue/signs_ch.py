@@ -263,6 +263,16 @@ _add("2.50", "Parkieren verboten", "Interdiction de parquer", "Divieto di parche
      True, _stopping(False))
 end_sign("2.53-50", "Ende der Höchstgeschwindigkeit", "Fin de la vitesse maximale", "Fine della velocità massima",
          _text("50", 0, 1.3, "grey"))
+end_sign("2.53-60", "Ende der Höchstgeschwindigkeit", "Fin de la vitesse maximale", "Fine della velocità massima",
+         _text("60", 0, 1.3, "black"))
+end_sign("2.55", "Ende des Überholverbots", "Fin de l'interdiction de dépasser", "Fine del divieto di sorpasso",
+         _all(_at(pg.car_rear, -0.5, 0.05, 0.5, False, "black"), _at(pg.car_rear, 0.5, 0.05, 0.5)))
+end_sign("2.56", "Ende des Überholverbots für Lastwagen", "Fin de l'interdiction aux camions de dépasser",
+         "Fine del divieto di sorpasso per autocarri",
+         _all(_at(pg.lorry_rear, -0.5, 0.05, 0.55, False, "black"), _at(pg.car_rear, 0.5, 0.05, 0.5)))
+_add("2.58", "Freie Fahrt", "Fin de toutes les interdictions", "Fine di tutti i divieti", "white", "circle", F.ROUND,
+     True, lambda st: frames.disc(st, lambda p: p.line([(-1.3, 1.3), (1.3, -1.3)], 0.42, "black", scaled=False),
+                                  fill="white", rim_colour=None, edge="grey"))
 
 
 def _limit_disc(p: Pen, value: str, ring: str, ink: str):

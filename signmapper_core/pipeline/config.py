@@ -316,6 +316,62 @@ class HoughConfig:
 
 
 @dataclass(frozen=True)
+class WhiteConfig:
+    """White and grey signs (white_outlines.py, white_signs.py): fields enclosed by strong edges, achromatic and
+    bright, read as discs and upright rectangles over the whole image; then depth, format, planarity, standing
+    free, a support below and NCC among the white entries."""
+
+    white_signs: bool = True
+    white_max_side_m: float = 0.9  # formats up to this: the 1.2 m discs (motorways) would set the cost
+    white_scan_side_px: float = 24.0  # the image is scanned reduced so the smallest face sought keeps this side
+    # (tune drives: at 21 px a quarter of the faces seen were lost, their fields too cut up by print)
+    white_canny_low: int = 40  # Canny thresholds of the outline edges (grey levels of the reduced image)
+    white_canny_high: int = 110
+    white_max_saturation: int = 60  # an achromatic pixel (white, grey, black print); faded red rims stay above
+    white_min_achromatic: float = 0.8  # share of a cell's pixels that are achromatic
+    white_min_brightness: float = 0.6  # a cell's mean value is at least this x the scene's median: a grey ring in
+    # shade stays above, a dark window pane (~0.3) falls below
+    white_part_share: float = 0.35  # a cell may be this part of the smallest face (a field cut by a stripe band)
+    white_min_cell_fill: float = 0.12  # cell pixels / its box: thinner cells are gaps between edges, not fields
+    # (tune drives 1700-1705: these three let candidates cover 41 of 50 faces in view, 36 at 0.85 / 0.8 / 0.2)
+    white_join_reach: float = 0.35  # cells within this x their size of a face's cells are read with them...
+    white_join_gap: float = 0.25  # ...or within this x the smallest face side (a zone panel's ring and stripe)
+    white_join_steps: int = 12  # cells joined one at a time from each, every face-like union a reading
+    white_min_shape_fit: float = 0.8  # IoU with the ideal rectangle (façade patches and leaves fit loosely)
+    white_max_aspect: float = 1.6  # longer / shorter side of a rectangle: zone panels are 1.4
+    white_min_panel_cover: float = 0.2  # the cells fill this share of a rectangle (a zone panel's field around
+    # its ring, stripes and lettering: 0.2-0.4)
+    white_panel_grow: float = 0.2  # a panel's outline is sought up to this x its size beyond its cells
+    white_min_disc_cover: float = 0.2  # the cells fill this share of their smallest circle (a field cut by digits
+    # and a stripe band: 0.35-0.45 on end-of-limit discs)
+    white_support_samples: int = 48  # points on that circle (or the rectangle's sides)...
+    white_min_edge_support: float = 0.65  # ...this share of them on a strong gradient across the outline
+    white_refine_margin: float = 0.25  # circles this far below it are moved and resized to their best outline...
+    white_circle_search: float = 0.12  # ...within this x the radius (centre and radius)
+    white_min_gradient: float = 80.0  # Sobel magnitude of that gradient (about 20 grey levels across the outline)
+    white_max_candidates: int = 40  # per pair, largest first: bounds the stereo matching they ask for
+    white_same_iou: float = 0.6  # a face overlapping a kept one this much is the same
+    # standing free: bands beside the face (after a gap, both x its width) hold few pixels at its depth
+    white_side_gap: float = 0.15
+    white_side_band: float = 0.5
+    white_min_side_valid: float = 0.2  # share of the bands needing a depth to judge (else: sky, no verdict)
+    white_max_side_share: float = 0.35  # a façade or a van's body around a window or a panel: most at its depth
+    white_same_depth_m: float = 0.4  # "at the face's depth": within this (or this share of the depth)
+    white_same_depth_share: float = 0.05
+    # a support below: rows of a strip under the face (after a gap, x its height; the strip x its width wide)
+    # holding a pixel at its depth: the pole, or the sign under it on the same pole
+    white_support_gap: float = 0.05
+    white_support_length: float = 0.4
+    white_support_width: float = 0.3
+    white_min_support: float = 0.5
+    white_pole_edge: float = 60.0  # Sobel x response of a pole's edge (about 15 grey levels across it)...
+    white_min_pole_rows: float = 0.7  # ...in this share of the strip's rows, in one column: a pole in the image
+    white_min_score: float = 0.5  # NCC among the white entries: below it no template resembles the face...
+    white_unsupported_min_score: float = 0.65  # ...or below this without a support seen below it
+    white_accept_score: float = 0.65  # and from this on it is "accepted"
+
+
+@dataclass(frozen=True)
 class PlateConfig:
     """Supplementary plates (plates.py): white rectangles of a plate format right below or above a sign."""
 
@@ -377,6 +433,7 @@ class PipelineConfig:
     planarity: PlanarityConfig = field(default_factory=PlanarityConfig)
     classification: ClassificationConfig = field(default_factory=ClassificationConfig)
     hough: HoughConfig = field(default_factory=HoughConfig)
+    white: WhiteConfig = field(default_factory=WhiteConfig)
     plates: PlateConfig = field(default_factory=PlateConfig)
 
 

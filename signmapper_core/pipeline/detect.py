@@ -2,7 +2,9 @@
 
 depth -> search space -> colour segments -> shape -> metric size and format ->
 planarity (detection indicator) -> template NCC (classification indicator) ->
-3D position; then the Hough fallback for round signs the colour step missed.
+3D position; then the Hough fallback for faded round signs the colour step missed, and the white
+step for white and grey signs, found by outline over the whole window (``white_outlines``,
+``white_signs``).
 """
 
 from __future__ import annotations
@@ -33,6 +35,8 @@ from .plates import find_plates
 from .search_space import search_space_mask
 from .shape import IDEAL_FILL, catalogue_shapes, classify_shape, outline_margin, outline_shapes
 from .sizing import measure_segment, metric_size, round_to_format
+from .white_outlines import WhiteCandidate, context_boxes, face_side_range_px, white_candidates, white_formats
+from .white_signs import white_detections
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
 
@@ -293,6 +297,10 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
         frame = ColourFrame.of(left[y0:y1, x0:x1], config)
         # colour candidates before depth, for a source that matches only around them
         boxes = stereo_candidate_boxes(pair, frame) if source.wants_candidate_boxes(config) else None
+    with timer("white"):  # white and grey outlines over the whole window; depth is matched around them too
+        whites = white_outline_candidates(pair)
+        if boxes is not None:
+            boxes = boxes + context_boxes(whites, config)
     with timer("depth"):
         depth = source.depth_map(left, pair.camera, config, pair.roi, boxes)
     search = search_space_mask(depth, config.depth.near_m, config.depth.far_m)
@@ -325,11 +333,24 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
             det = evaluate_segment(seg, pair, depth)
             if det is not None:
                 detections.append(det)
+    with timer("white"):  # before Hough: a white disc's ring would be read as a faded coloured one
+        detections += white_detections(pair, depth, whites, detections)
     with timer("hough"):
         detections += _hough_detections(pair, depth, search, detections)
     signs = suppress_overlaps(detections, config.classification.same_sign_max_iou)
     with timer("plates"):  # a window around a click looks for the sign alone
         return signs + (find_plates(pair, depth, signs) if pair.is_whole_image else [])
+
+
+def white_outline_candidates(pair: PairContext) -> List[WhiteCandidate]:
+    """White and grey sign candidates in the pair's roi (full-image pixels); none with ``white.white_signs`` off."""
+    config = pair.config
+    if not config.white.white_signs:
+        return []
+    x0, y0, x1, y1 = pair.roi
+    sides = face_side_range_px(pair.camera, white_formats(pair.catalogue, config), config)
+    return [WhiteCandidate(_shift_segment(c.segment, x0, y0), c.shape)
+            for c in white_candidates(pair.left[y0:y1, x0:x1], sides, config)]
 
 
 def _hough_detections(pair: PairContext, depth: np.ndarray, search: np.ndarray,
@@ -345,6 +366,8 @@ def _hough_detections(pair: PairContext, depth: np.ndarray, search: np.ndarray,
         sub = search[y0:y1, x0:x1]
         scale = hough_scale(r_min, config.hough.hough_scale, config.hough.hough_min_radius_px)
         for seg in hough_segments(pair.left[y0:y1, x0:x1], sub, r_min, r_max, scale, config):
+            if seg.colour == "white":  # white and grey discs are the white step's (white_signs)
+                continue
             seg = _shift_segment(seg, x0, y0)
             cu, cv = bbox_centre(seg.bbox)
             if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken):

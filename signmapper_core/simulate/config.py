@@ -60,6 +60,10 @@ class SimulationConfig:
     # Supplementary plates (simulate/plate_layout.py): share of sign poles whose lowest sign carries one, with
     # a text in German, French or Italian; > 0 also puts white text plates on façades as distractors.
     plate_share: float = 0.5
+    # White and grey signs (end-of-restriction discs, end-of-zone panels): share of the sign poles that carry
+    # them instead of coloured signs; > 0 also adds white distractors (white shop signs, white vans, white
+    # emblems). 0 keeps every drive of before as it was.
+    white_sign_share: float = 0.0
     # Georeference.
     crs: str = "EPSG:2056"
     start_easting: float = 2600000.0
@@ -89,6 +93,7 @@ class SimulationConfig:
             (self.face_artwork in ("mixed", "procedural"), "face_artwork must be 'mixed' or 'procedural'"),
             (0.0 <= self.master_share <= 1.0, "master_share must be within 0..1"),
             (0.0 <= self.plate_share <= 1.0, "plate_share must be within 0..1"),
+            (0.0 <= self.white_sign_share <= 1.0, "white_sign_share must be within 0..1"),
         ]
         for ok, message in checks:
             if not ok:

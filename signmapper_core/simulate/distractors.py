@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import cv2
 import numpy as np
 
 from . import textures as tx
@@ -45,9 +46,13 @@ def distractors(pieces: Pieces, look: PanelLook, s_lo, s_hi, density, rng, sign_
     return backs
 
 
-def car(pieces: Pieces, s, lat, colour_bgr, rng) -> None:
+def car(pieces: Pieces, s, lat, colour_bgr, rng, van: bool = False) -> None:
+    """A parked or oncoming car (``van``: a delivery van, longer and taller)."""
     st = pieces.street
-    length, width, height = rng.uniform(3.9, 4.8), rng.uniform(1.7, 1.85), rng.uniform(1.35, 1.55)
+    if van:
+        length, width, height = rng.uniform(4.8, 5.6), rng.uniform(1.9, 2.05), rng.uniform(1.9, 2.4)
+    else:
+        length, width, height = rng.uniform(3.9, 4.8), rng.uniform(1.7, 1.85), rng.uniform(1.35, 1.55)
     f, r = st.forward(s), st.right(s)
     c = st.point(s, lat, 0.0)
     body = np.array(colour_bgr, float)
@@ -108,3 +113,90 @@ def facade_distractor(pieces: Pieces, s, colour, what, rng, facades: list[Facade
         src = TextureSource(key, w, h, lambda: Texture(tx.tint(
             tx.SIGNAL_COLOURS[colour], tx.grain(trng, h, w, ((1.0, 0.4), (8.0, 0.6))), 12.0)))
     pieces.wall(left, right, bottom + 0.3 + lift, bottom + 0.3 + lift + height, src, s_range=(s - 1, s + length + 1))
+
+
+WHITE_PANEL = (232, 234, 233)  # BGR of white sheeting and white paint, before light and weathering
+
+
+def white_sign_distractors(pieces: Pieces, s_lo, s_hi, density, rng, facades: list[FacadeSpan]) -> None:
+    """About ``density`` white things per 100 m that look like white signs to a shape-and-depth step: white
+    vans, white shop signs and round white emblems on façades, and free-standing white boards on two posts
+    (estate agents, building sites) near the kerb."""
+    for s in np.sort(rng.uniform(s_lo, s_hi, rng.poisson(density * max(s_hi - s_lo, 0.0) / 100.0))):
+        what = ("van", "shop", "disc", "board")[int(rng.integers(4))]
+        if what == "van":
+            lat = (PARKING_LEFT[0] + PARKING_LEFT[1]) / 2 if rng.random() < 0.5 else -CARRIAGEWAY[1] / 2
+            car(pieces, float(s), lat, CAR_COLOURS["white"], rng, van=True)
+        elif what == "board":
+            white_board(pieces, float(s), rng)
+        else:
+            white_facade_panel(pieces, float(s), what, rng, facades)
+
+
+def _lettering(img: np.ndarray, rng, rows: int) -> None:
+    """Dark letter-like blocks in ``rows`` lines across a white panel."""
+    h, w = img.shape[:2]
+    line_h = max(2, int(0.55 * h / rows))
+    for k in range(rows):
+        y0 = int((k + 0.5) * h / rows - line_h / 2)
+        x = int(rng.uniform(0.06, 0.2) * w)
+        while x < 0.88 * w:
+            lw = int(rng.uniform(0.4, 0.8) * line_h)
+            cv2.rectangle(img, (x, y0), (x + lw, y0 + line_h), (40, 40, 45), max(1, lw // 4))
+            x += lw + max(2, line_h // 4)
+
+
+def white_board(pieces: Pieces, s, rng) -> None:
+    """A white board with dark lettering on two posts beside the road, facing the traffic."""
+    st = pieces.street
+    width, height = rng.uniform(0.6, 1.3), rng.uniform(0.4, 0.9)
+    lower = rng.uniform(0.8, 1.6)
+    lat = CARRIAGEWAY[1] + rng.uniform(0.4, 1.8) + width / 2
+    key, trng = pieces.keys.key("board")
+    w, h = int(width / 0.01), int(height / 0.01)
+
+    def make():
+        img = tx.tint(WHITE_PANEL, tx.grain(trng, h, w, ((1.0, 0.3), (4.0, 0.3))), 6.0)
+        _lettering(img, trng, int(trng.integers(1, 4)))
+        return Texture(img)
+
+    src = TextureSource(key, w, h, make)
+    right = st.right(s)
+    centre = st.point(s, lat, lower + height / 2)
+    corner = centre - right * width / 2 + UP * height / 2
+    pieces.surfaces.append(rect_surface(corner, right * width, -UP * height, src, two_sided=True,
+                                        s_range=(s - 2, s + 2)))
+    for side in (-1, 1):
+        base = st.point(s + 0.02, lat + side * 0.4 * width, 0.0)
+        pieces.crossed(base, 0.05, lower + height, None, None, s, (150, 150, 150))
+
+
+def white_facade_panel(pieces: Pieces, s, what, rng, facades: list[FacadeSpan]) -> None:
+    """A white shop sign with dark lettering, or a round white emblem with a dark ring, on a façade."""
+    span = next((f for f in facades if f.s0 + 1 < s < f.s1 - 3), None)
+    if span is None:
+        return
+    if what == "disc":
+        length = height = rng.uniform(0.35, 0.9)
+        lift = rng.uniform(1.8, 3.4)
+    else:
+        length, height, lift = rng.uniform(0.6, 2.5), rng.uniform(0.4, 0.9), rng.uniform(2.4, 3.6)
+    lat = span.l_f - span.side * 0.05
+    a, b = pieces.street.point(s, lat), pieces.street.point(s + length, lat)
+    left, right = (b, a) if span.side > 0 else (a, b)
+    key, trng = pieces.keys.key("white " + what)
+    w, h = int(length / 0.01), int(height / 0.01)
+
+    def make():
+        img = tx.tint(WHITE_PANEL, tx.grain(trng, h, w, ((1.0, 0.3), (4.0, 0.3))), 6.0)
+        if what == "disc":
+            alpha = np.zeros((h, w), np.uint8)
+            cv2.circle(alpha, (w // 2, h // 2), w // 2 - 1, 255, -1, cv2.LINE_AA)
+            cv2.circle(img, (w // 2, h // 2), int(0.42 * w), (60, 60, 60), max(1, w // 20), cv2.LINE_AA)
+            _lettering(img[int(0.35 * h):int(0.65 * h), int(0.2 * w):int(0.8 * w)], trng, 1)
+            return Texture(img, alpha)
+        _lettering(img, trng, int(trng.integers(1, 3)))
+        return Texture(img)
+
+    pieces.wall(left, right, span.bottom + 0.3 + lift, span.bottom + 0.3 + lift + height,
+                TextureSource(key, w, h, make), s_range=(s - 1, s + length + 1))

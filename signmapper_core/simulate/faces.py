@@ -39,19 +39,24 @@ class SignKind:
     formats: tuple[tuple[str, float, float], ...]  # (name, width_m, height_m), sorted by name
 
 
-def sign_kinds() -> list[SignKind]:
-    """Red, blue and yellow catalogue entries in id order (deterministic)."""
+def sign_kinds(colours: tuple[str, ...] = SIGN_COLOURS) -> list[SignKind]:
+    """Catalogue entries of ``colours`` (red, blue and yellow by default) in id order (deterministic)."""
     from ..catalogue import load_catalogue
 
     catalogue = load_catalogue()
     kinds = []
-    for entry in sorted(catalogue.filter(colours=list(SIGN_COLOURS)), key=lambda e: e.id):
+    for entry in sorted(catalogue.filter(colours=list(colours)), key=lambda e: e.id):
         formats = tuple(sorted((name, float(w), float(h)) for name, (w, h) in entry.formats.items()))
         if formats:
             kinds.append(SignKind(entry.id, entry.colour, entry.shape, formats))
     if not kinds:
-        raise RuntimeError("the template catalogue has no red, blue or yellow signs to place")
+        raise RuntimeError(f"the template catalogue has no {', '.join(colours)} signs to place")
     return kinds
+
+
+def white_sign_kinds() -> list[SignKind]:
+    """The white and grey family (end-of-restriction discs, end-of-zone panels) in id order."""
+    return sign_kinds(("white",))
 
 
 def pick_format(kind: SignKind, rng: np.random.Generator) -> tuple[str, float, float]:

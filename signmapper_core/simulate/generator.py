@@ -21,7 +21,7 @@ from ..geometry import Pose
 from ..progress import CancelCheck, ProgressCallback, check_cancelled, report
 from . import textures as tx
 from .config import SimulationConfig, SimulationSummary
-from .faces import FaceOptions, sign_kinds
+from .faces import FaceOptions, sign_kinds, white_sign_kinds
 from .layout import CARRIAGEWAY, Scene, build_scene
 from .rasterizer import Rasterizer, TextureCache
 from .realism import apply_effects, draw_effects
@@ -85,7 +85,8 @@ def make_scene(config: SimulationConfig, street: Street | None = None) -> Scene:
     realism = {"weathering": config.weathering, "shadows": config.shadows, "occlusion": config.occlusion}
     return build_scene(street, config.seed, float(s_cam[0]), float(s_cam[-1]), config.fx, config.sign_density,
                        config.distractor_density, sign_kinds(), realism,
-                       FaceOptions.from_config(config), config.plate_share)
+                       FaceOptions.from_config(config), config.plate_share,
+                       white_sign_kinds() if config.white_sign_share > 0 else [], config.white_sign_share)
 
 
 def right_pose(pose: Pose, baseline_m: float) -> Pose:

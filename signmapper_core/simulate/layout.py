@@ -18,7 +18,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..drive import TruthSign
-from .distractors import distractors
+from .distractors import distractors, white_sign_distractors
 from .faces import FaceOptions, SignKind
 from .plate_layout import white_distractors
 from .scene_pieces import CARRIAGEWAY, PARKING_LEFT, SIDEWALK_RIGHT, Pieces, TextureKeys
@@ -60,10 +60,14 @@ class Scene:
 
 def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float, fx: float,
                 sign_density: float, distractor_density: float, kinds: list[SignKind], realism: dict,
-                face_options: FaceOptions | None = None, plate_share: float = 0.0) -> Scene:
+                face_options: FaceOptions | None = None, plate_share: float = 0.0,
+                white_kinds: list[SignKind] | None = None, white_share: float = 0.0) -> Scene:
     """Lay out the whole street: road, buildings, signs (where the drive passes them), distractors.
 
     ``plate_share``: share of the poles whose lowest sign carries a supplementary plate (``plate_layout``).
+    ``white_share``: share of the poles carrying signs of ``white_kinds`` (the white and grey family) instead
+    of ``kinds``; white signs stand on single or stacked poles (none hangs overhead) and white distractors
+    join the others.
     """
     keys = TextureKeys(seed)
     pieces = Pieces(street, keys)
@@ -94,19 +98,25 @@ def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float
     for s in spots:
         u = sign_rng.random()
         side = 1 if sign_rng.random() < 0.75 else -1
-        if u < 0.08:
-            signs += sign_pole(pieces, look, s, kinds, sign_rng, 1, "overhead")
+        # drawn only when white signs are asked for, so drives without them stay as they were
+        white = bool(white_kinds) and white_share > 0 and sign_rng.random() < white_share
+        pole_kinds = white_kinds if white else kinds
+        if u < 0.08 and not white:
+            signs += sign_pole(pieces, look, s, pole_kinds, sign_rng, 1, "overhead")
         elif u < 0.30:
-            signs += sign_pole(pieces, look, s, kinds, sign_rng, side, "stacked")
+            signs += sign_pole(pieces, look, s, pole_kinds, sign_rng, side, "stacked")
         elif u < 0.40:
-            signs += sign_pole(pieces, look, s, kinds, sign_rng, side, "back-to-back")
+            signs += sign_pole(pieces, look, s, pole_kinds, sign_rng, side, "back-to-back")
         else:
-            signs += sign_pole(pieces, look, s, kinds, sign_rng, side)
+            signs += sign_pole(pieces, look, s, pole_kinds, sign_rng, side)
     if distractor_density > 0:
         signs += distractors(pieces, look, s_cam_first, s_end - 10, distractor_density, keys.rng(1, 3), spots, kinds,
                              facades)
         if plate_share > 0:
             white_distractors(pieces, s_cam_first, s_end - 10, distractor_density / 2, keys.rng(1, 31), facades)
+        if white_kinds and white_share > 0:
+            white_sign_distractors(pieces, s_cam_first, s_end - 10, distractor_density / 2, keys.rng(1, 32),
+                                   facades)
     _number_truth(signs)
     return Scene(street, pieces.surfaces, signs)
 

@@ -1,0 +1,341 @@
+"""White and grey sign candidates by outline, before depth: the fields that strong edges enclose, achromatic
+and bright, gathered into a disc or an upright rectangle.
+
+End-of-restriction discs and end-of-zone panels carry no hue the colour step could segment, so they are
+looked for over the whole image (not only the rows a colour candidate already holds), cheaply: the grey
+image, reduced so the smallest face sought keeps ``white_scan_side_px``, gives Canny edges; the cells they
+enclose (connected non-edge pixels) are measured all at once, and the achromatic, bright ones of a face's
+size are kept. A pole or a wall touching a face is another cell, so it never spoils the outline. The
+cells of one face (a field cut by stripes, a ring around a field) overlap in their boxes and are joined;
+their union, holes filled and stripes bridged, is read as a disc (the smallest circle around it, its
+perimeter on strong edges) or a rectangle (:func:`.shape.classify_shape`). Depth decides later
+(``white_signs``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import List, Optional, Sequence, Tuple
+
+import cv2
+import numpy as np
+
+from ..geometry import Camera
+from .boxes import box_iou
+from .colour import Segment
+from .config import PipelineConfig
+from .shape import classify_shape
+
+Box = Tuple[int, int, int, int]  # x, y, w, h
+RADIAL_COS = 0.8  # cos 37 deg: an outline's gradient points along the radius, within a pixel step of a slant
+
+
+@dataclass(frozen=True)
+class WhiteCandidate:
+    """An outline that may be a white or grey sign: its segment (full-image pixels) and its outline shape."""
+
+    segment: Segment
+    shape: str  # "circle" or "rectangle"
+
+
+def white_formats(catalogue, config: PipelineConfig) -> List[Tuple[float, float]]:
+    """(width_m, height_m) of every format of the catalogue's white entries up to ``white_max_side_m``."""
+    return [f for e in catalogue.filter(colours=["white"], exclude=tuple(config.classification.exclude))
+            for f in e.formats.values() if max(f) <= config.white.white_max_side_m]
+
+
+def face_side_range_px(camera: Camera, formats: Sequence[Tuple[float, float]], config: PipelineConfig
+                       ) -> Tuple[float, float]:
+    """(smallest shorter side, largest longer side) in pixels of the formats anywhere in near..far,
+    widened by the size tolerance."""
+    if not formats:
+        return 0.0, 0.0
+    f = min(camera.fx, camera.fy)
+    tol = config.size.size_tolerance
+    lo = min(min(w, h) for w, h in formats) * f / config.depth.far_m * (1.0 - tol)
+    hi = max(max(w, h) for w, h in formats) * f / config.depth.near_m * (1.0 + tol)
+    return lo, hi
+
+
+def scan_scale(smallest_side_px: float, config: PipelineConfig) -> float:
+    """Scale of the scanned image: the smallest face sought keeps ``white_scan_side_px`` (never enlarged)."""
+    if smallest_side_px <= 0:
+        return 1.0
+    return float(min(1.0, config.white.white_scan_side_px / smallest_side_px))
+
+
+def edge_map(grey: np.ndarray, config: PipelineConfig) -> np.ndarray:
+    """Strong edges (Canny), one pixel wider so a thin outline line closes."""
+    edges = cv2.Canny(cv2.GaussianBlur(grey, (3, 3), 0), config.white.white_canny_low, config.white.white_canny_high)
+    return cv2.dilate(edges, np.ones((3, 3), np.uint8))
+
+
+def white_cells(hsv: np.ndarray, edges: np.ndarray, side_range: Tuple[float, float], config: PipelineConfig
+                ) -> Tuple[np.ndarray, np.ndarray, List[Box]]:
+    """(labels, ids of the cells that may be a white face or a part of one): cells enclosed by ``edges``,
+    achromatic (``white_min_achromatic`` of their pixels), bright (mean value at least
+    ``white_min_brightness`` x the scene's median), compact, from a part of the smallest face to the largest;
+    and their boxes."""
+    n, labels, stats, _ = cv2.connectedComponentsWithStats((edges == 0).astype(np.uint8), connectivity=4)
+    flat = labels.ravel()
+    area = np.maximum(stats[:, cv2.CC_STAT_AREA].astype(np.float64), 1.0)
+    grey_px = np.bincount(flat, weights=(hsv[:, :, 1] <= config.white.white_max_saturation).ravel(), minlength=n) / area
+    value = np.bincount(flat, weights=hsv[:, :, 2].ravel(), minlength=n) / area
+    w, h = stats[:, cv2.CC_STAT_WIDTH], stats[:, cv2.CC_STAT_HEIGHT]
+    lo, hi = side_range
+    keep = ((np.maximum(w, h) >= config.white.white_part_share * lo) & (np.maximum(w, h) <= hi)
+            & (grey_px >= config.white.white_min_achromatic)
+            & (value >= config.white.white_min_brightness * float(np.median(hsv[:, :, 2])))
+            & (area >= config.white.white_min_cell_fill * w * h))
+    keep[0] = False  # the edges
+    ids = np.flatnonzero(keep)
+    return labels, ids, [tuple(int(v) for v in stats[i, :4]) for i in ids]
+
+
+def _union(a: Box, b: Box) -> Box:
+    x0, y0 = min(a[0], b[0]), min(a[1], b[1])
+    return x0, y0, max(a[0] + a[2], b[0] + b[2]) - x0, max(a[1] + a[3], b[1] + b[3]) - y0
+
+
+def group_cells(boxes: Sequence[Box], side_range: Tuple[float, float], reach: float, max_aspect: float,
+                gap: float = 0.0, max_steps: int = 12) -> List[Tuple[Box, Tuple[int, ...]]]:
+    """(union box, indices) of the cells that may be read together as one face, largest cell first.
+
+    From each cell, the cells are joined one at a time, the nearest first, while one lies within
+    ``reach`` of its own size or ``gap`` pixels of the union (the parts of a field cut by a stripe band, by
+    digits or by a ring, a ring around its field); every union on the way that has a face's size
+    (``side_range``) and aspect is a reading, the stripes between two stacked panels tell them apart as
+    two readings before their union grows too long. At most ``max_steps`` joins from a cell.
+    """
+    if not boxes:
+        return []
+    b = np.asarray(boxes, np.float64)
+    x0, y0, x1, y1 = b[:, 0], b[:, 1], b[:, 0] + b[:, 2], b[:, 1] + b[:, 3]
+    lo, hi = side_range
+    groups, seen = [], set()
+    for i in np.argsort(-(b[:, 2] * b[:, 3]), kind="stable"):
+        members = [int(i)]
+        ux0, uy0, ux1, uy1 = x0[i], y0[i], x1[i], y1[i]
+        for _ in range(max_steps + 1):
+            w, h = ux1 - ux0, uy1 - uy0
+            key = tuple(sorted(members))
+            if key not in seen and lo <= min(w, h) and max(w, h) <= hi and max(w, h) <= max_aspect * min(w, h):
+                seen.add(key)
+                groups.append(((int(ux0), int(uy0), int(w), int(h)), key))
+            # distance of every cell's box to the union box; a cell joins within its reach or the gap
+            dx = np.maximum(0.0, np.maximum(x0 - ux1, ux0 - x1))
+            dy = np.maximum(0.0, np.maximum(y0 - uy1, uy0 - y1))
+            dist = np.maximum(dx, dy)
+            allowed = np.maximum(gap, reach * np.maximum(b[:, 2], b[:, 3]))
+            dist[members] = np.inf
+            dist[dist > allowed] = np.inf
+            nx0, ny0 = np.minimum(ux0, x0), np.minimum(uy0, y0)
+            nx1, ny1 = np.maximum(ux1, x1), np.maximum(uy1, y1)
+            dist[np.maximum(nx1 - nx0, ny1 - ny0) > hi] = np.inf
+            j = int(np.argmin(dist))
+            if not np.isfinite(dist[j]):
+                break
+            members.append(j)
+            ux0, uy0, ux1, uy1 = nx0[j], ny0[j], nx1[j], ny1[j]
+    return groups
+
+
+def filled(mask: np.ndarray) -> np.ndarray:
+    """``mask`` with its holes (pictogram, digits) filled."""
+    contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_SIMPLE)
+    out = np.zeros_like(mask)
+    cv2.drawContours(out, contours, -1, 255, -1)
+    return out
+
+
+def edge_support(gradients: Tuple[np.ndarray, np.ndarray], cu, cv, r, min_gradient: float, samples: int = 48):
+    """Share of points on the circle (cu, cv, r), each looked for a pixel inward or outward, where the grey
+    image has a strong gradient pointing along the radius: an outline, where texture (leaves, noise) has
+    strong gradients in every direction. ``cu``, ``cv``, ``r`` may be arrays of circles (then an array)."""
+    gx, gy = gradients
+    cu, cv, r = (np.asarray(a, np.float64)[..., None] for a in (cu, cv, r))
+    angles = np.linspace(0.0, 2 * np.pi, samples, endpoint=False)
+    c, s = np.cos(angles), np.sin(angles)
+    hit = np.zeros(np.broadcast_shapes(cu.shape, r.shape, c.shape), bool)
+    for dr in (-1.0, 0.0, 1.0):
+        us = np.round(cu + (r + dr) * c).astype(int)
+        vs = np.round(cv + (r + dr) * s).astype(int)
+        inside = (us >= 0) & (vs >= 0) & (us < gx.shape[1]) & (vs < gx.shape[0])
+        us, vs = np.where(inside, us, 0), np.where(inside, vs, 0)
+        a, b = np.where(inside, gx[vs, us], 0.0), np.where(inside, gy[vs, us], 0.0)
+        norm = np.hypot(a, b)
+        hit |= (norm >= min_gradient) & (np.abs(a * c + b * s) >= RADIAL_COS * norm)
+    share = np.count_nonzero(hit, axis=-1) / float(samples)
+    return float(share) if share.ndim == 0 else share
+
+
+def refine_circle(gradients: Tuple[np.ndarray, np.ndarray], cu: float, cv: float, r: float, config: PipelineConfig
+                  ) -> Tuple[float, float, float, float]:
+    """(cu, cv, r, edge support) of the circle near (cu, cv, r) whose perimeter lies best on radial
+    gradients: the cells around which it was drawn stop short of a weak stretch of the outline (a grey ring
+    before a grey wall), so the radius is sought up to ``white_circle_search`` of it outward, the centre as
+    far around."""
+    k = config.white.white_circle_search * r
+    du, dv, dr = np.meshgrid(np.linspace(-k, k, 5), np.linspace(-k, k, 5), np.linspace(-0.5 * k, 1.5 * k, 5),
+                             indexing="ij")
+    support = edge_support(gradients, cu + du.ravel(), cv + dv.ravel(), r + dr.ravel(), config.white.white_min_gradient,
+                           config.white.white_support_samples)
+    best = int(np.argmax(support))
+    return cu + du.ravel()[best], cv + dv.ravel()[best], r + dr.ravel()[best], float(support[best])
+
+
+def box_edge_support(gradients: Tuple[np.ndarray, np.ndarray], box: Box, min_gradient: float, samples: int = 48
+                     ) -> float:
+    """Share of points on the sides of ``box`` (each looked for a pixel inward or outward) where the grey
+    image has a strong gradient across the side: the outline of a panel."""
+    gx, gy = gradients
+    x, y, w, h = box
+    n = max(2, samples // 4)
+    t = (np.arange(n) + 0.5) / n
+    sides = [(x + t * w, np.full(n, y - 0.5), 1), (x + t * w, np.full(n, y + h - 0.5), 1),
+             (np.full(n, x - 0.5), y + t * h, 0), (np.full(n, x + w - 0.5), y + t * h, 0)]
+    hits = 0
+    for us, vs, vertical_gradient in sides:
+        hit = np.zeros(n, bool)
+        for d in (-1.0, 0.0, 1.0):
+            uu = np.round(us + (0 if vertical_gradient else d)).astype(int)
+            vv = np.round(vs + (d if vertical_gradient else 0)).astype(int)
+            inside = (uu >= 0) & (vv >= 0) & (uu < gx.shape[1]) & (vv < gx.shape[0])
+            across = np.zeros(n, np.float32)
+            along = np.zeros(n, np.float32)
+            g_across, g_along = (gy, gx) if vertical_gradient else (gx, gy)
+            across[inside], along[inside] = g_across[vv[inside], uu[inside]], g_along[vv[inside], uu[inside]]
+            hit |= (np.abs(across) >= min_gradient) & (np.abs(across) >= RADIAL_COS * np.hypot(across, along))
+        hits += int(np.count_nonzero(hit))
+    return hits / float(4 * n)
+
+
+def refine_box(gradients: Tuple[np.ndarray, np.ndarray], box: Box, max_grow: float) -> Box:
+    """``box`` with each side moved outward (up to ``max_grow`` of its size) to the line of the strongest
+    gradient across it: a panel's outline, where its field's cells stop short of a ring, a stripe or
+    lettering running into the frame."""
+    gx, gy = np.abs(gradients[0]), np.abs(gradients[1])
+    height, width = gx.shape
+    x, y, w, h = box
+    kx, ky = max(1, int(round(max_grow * w))), max(1, int(round(max_grow * h)))
+    rows, cols = slice(max(0, y), min(height, y + h)), slice(max(0, x), min(width, x + w))
+
+    def best(values, offsets):
+        return offsets[int(np.argmax(values))] if len(values) else 0
+
+    left = [o for o in range(0, kx + 1) if 0 <= x - o < width]
+    right = [o for o in range(0, kx + 1) if 0 <= x + w - 1 + o < width]
+    top = [o for o in range(0, ky + 1) if 0 <= y - o < height]
+    bottom = [o for o in range(0, ky + 1) if 0 <= y + h - 1 + o < height]
+    dl = best([gx[rows, x - o].mean() for o in left], left)
+    dr = best([gx[rows, x + w - 1 + o].mean() for o in right], right)
+    dt = best([gy[y - o, cols].mean() for o in top], top)
+    db = best([gy[y + h - 1 + o, cols].mean() for o in bottom], bottom)
+    return x - dl, y - dt, w + dl + dr, h + dt + db
+
+
+def read_face(mask: np.ndarray, box: Box, gradients: Tuple[np.ndarray, np.ndarray], config: PipelineConfig
+              ) -> Optional[Tuple[str, Box, np.ndarray]]:
+    """(shape, box, outline mask in that box) of the face that the joined cells ``mask`` (in ``box``) fill,
+    or None: a rectangle whose outline the cells fill, or the smallest circle around them when its
+    perimeter lies on strong edges (a field cut by a stripe band still spans the disc's diameter)."""
+    x, y, w, h = box
+    contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_SIMPLE)
+    if not contours:
+        return None
+    hull = cv2.convexHull(np.vstack(contours))  # bridges stripe bands, digits and frame lines of a convex face
+    closed = np.zeros_like(mask)
+    cv2.fillConvexPoly(closed, hull, 255)
+    result = classify_shape(closed, config.white.white_min_shape_fit, config.shape.shape_fill_window)
+    if result.shape in ("rectangle", "square") and max(w, h) <= config.white.white_max_aspect * min(w, h) and \
+            np.count_nonzero(mask) >= config.white.white_min_panel_cover * w * h:
+        face = refine_box(gradients, box, config.white.white_panel_grow)
+        if box_edge_support(gradients, face, config.white.white_min_gradient, config.white.white_support_samples) >= \
+                config.white.white_min_edge_support:
+            return "rectangle", face, np.full((face[3], face[2]), 255, np.uint8)
+        return None
+    (cu, cv), r = cv2.minEnclosingCircle(hull)
+    if r < 2 or np.count_nonzero(mask) < config.white.white_min_disc_cover * np.pi * r * r:
+        return None
+    r += 1.5  # the cells end where the (widened) edge band of the outline begins: the outline is its middle
+    if edge_support(gradients, x + cu, y + cv, r, config.white.white_min_gradient, config.white.white_support_samples) < \
+            config.white.white_min_edge_support - config.white.white_refine_margin:
+        return None
+    cu, cv, r, support = refine_circle(gradients, x + cu, y + cv, r, config)
+    if support < config.white.white_min_edge_support:
+        return None
+    cu, cv = cu - x, cv - y
+    side = int(round(2 * r)) + 1
+    disc = np.zeros((side, side), np.uint8)
+    cv2.circle(disc, (side // 2, side // 2), side // 2, 255, -1)
+    return "circle", (int(round(x + cu - side / 2)), int(round(y + cv - side / 2)), side, side), disc
+
+
+def _centre_inside(a: Box, b: Box) -> bool:
+    cu, cv = a[0] + a[2] / 2.0, a[1] + a[3] / 2.0
+    return b[0] <= cu < b[0] + b[2] and b[1] <= cv < b[1] + b[3]
+
+
+def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config: PipelineConfig
+                     ) -> List[WhiteCandidate]:
+    """Candidates of white and grey signs in ``bgr`` (a whole image or a window; pixels of that image).
+
+    ``side_range_px``: the smallest and the largest face side sought (:func:`face_side_range_px`).
+    The faces read from the cells, largest first; one whose centre lies inside a larger one is a part of it
+    (the ring on a zone panel). At most ``white_max_candidates``.
+    """
+    lo, hi = side_range_px
+    height, width = bgr.shape[:2]
+    if lo <= 0 or hi <= 0:
+        return []
+    scale = scan_scale(lo, config)
+    small = cv2.resize(bgr, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA) if scale < 1 else bgr
+    grey = cv2.cvtColor(small, cv2.COLOR_BGR2GRAY)
+    edges = edge_map(grey, config)
+    gradients = (cv2.Sobel(grey, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(grey, cv2.CV_32F, 0, 1, ksize=3))
+    labels, ids, boxes = white_cells(cv2.cvtColor(small, cv2.COLOR_BGR2HSV), edges, (lo * scale, hi * scale),
+                                     config)
+    faces = []
+    for box, members in group_cells(boxes, (lo * scale, hi * scale), config.white.white_join_reach,
+                                    config.white.white_max_aspect, config.white.white_join_gap * lo * scale,
+                                    config.white.white_join_steps):
+        x, y, w, h = box
+        mask = np.isin(labels[y : y + h, x : x + w], ids[list(members)]).astype(np.uint8) * 255
+        face = read_face(mask, box, gradients, config)
+        if face is not None and lo * scale <= min(face[1][2:]) and max(face[1][2:]) <= hi * scale:
+            faces.append(face)
+    faces.sort(key=lambda f: f[1][2] * f[1][3], reverse=True)
+    kept: List[WhiteCandidate] = []
+    margin = config.colour.border_margin_px
+    for shape, (fx, fy, fw, fh), outline in faces:
+        bx, by = int(round(fx / scale)), int(round(fy / scale))
+        bw, bh = max(1, int(round(fw / scale))), max(1, int(round(fh / scale)))
+        full_box = (bx, by, bw, bh)
+        if bx < 0 or by < 0 or bx + bw > width or by + bh > height:
+            continue
+        if any(box_iou(full_box, c.segment.bbox) > config.white.white_same_iou or _centre_inside(full_box, c.segment.bbox)
+               for c in kept):
+            continue
+        outline = cv2.resize(outline, (bw, bh), interpolation=cv2.INTER_NEAREST)
+        contours, _ = cv2.findContours(outline, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
+        if not contours:
+            continue
+        touches = bx <= margin or by <= margin or bx + bw >= width - margin or by + bh >= height - margin
+        seg = Segment("white", full_box, outline, max(contours, key=cv2.contourArea) + np.array([bx, by]),
+                      int(np.count_nonzero(outline)), touches, source="white")
+        kept.append(WhiteCandidate(seg, shape))
+        if len(kept) >= config.white.white_max_candidates:
+            break
+    return kept
+
+
+def context_boxes(candidates: Sequence[WhiteCandidate], config: PipelineConfig) -> List[Box]:
+    """Boxes around the candidates that depth is needed in: the face, its sides (is it standing free?) and
+    the strip below it (its pole), as multiples of the face's size."""
+    boxes = []
+    for cand in candidates:
+        x, y, w, h = cand.segment.bbox
+        side = int(round((config.white.white_side_gap + config.white.white_side_band) * w))
+        below = int(round((config.white.white_support_gap + config.white.white_support_length) * h))
+        boxes.append((max(0, x - side), y, w + 2 * side, h + below))
+    return boxes

@@ -1,0 +1,169 @@
+"""White and grey signs from their outline candidates (``white_outlines``), judged by depth and templates.
+
+A candidate is a white sign when it stands where signs stand and is what signs are: inside the search
+space, of a standard white format at its depth, planar and upright (the detection indicator, as for
+every sign), standing free (its sides at its own depth are not a wall or a van's body: windows, shop
+signs and house numbers sit in a façade), held by a support below it (a pole, seen as straight vertical
+edges or at its depth, or the sign under it on the same pole; without one it must resemble its template
+more clearly), and resembling a white template. Classification is the paper's template matching (NCC)
+among the white entries: the learned network knows only the families it was trained on.
+"""
+
+from __future__ import annotations
+
+from typing import List, Optional, Sequence
+
+import cv2
+import numpy as np
+
+from ..face_normal import world_face_normal
+from .classify import classify_segment
+from .detection import Detection
+from .hough import weak_colour
+from .locate import bbox_centre, locate
+from .pair_context import PairContext
+from .planarity import segment_planarity
+from .search_space import valid_depth
+from .shape import catalogue_shapes
+from .sizing import measure_segment, metric_size, round_to_format
+from .white_outlines import WhiteCandidate
+
+
+def _same_depth(values: np.ndarray, z: float, config) -> np.ndarray:
+    """Which of ``values`` lie at depth ``z`` (within ``white_same_depth_m`` or ``white_same_depth_share``)."""
+    tol = max(config.white.white_same_depth_m, config.white.white_same_depth_share * z)
+    with np.errstate(invalid="ignore"):
+        return valid_depth(values) & (np.abs(values - z) <= tol)
+
+
+def side_share(depth: np.ndarray, bbox, z: float, config) -> Optional[float]:
+    """Share of the pixels with depth beside the face (left and right bands at its rows, a gap left out) that
+    lie at the face's depth; None where too few have a depth to tell."""
+    x, y, w, h = bbox
+    height, width = depth.shape[:2]
+    gap, band = int(round(config.white.white_side_gap * w)), max(1, int(round(config.white.white_side_band * w)))
+    rows = depth[y : y + h]
+    parts = [rows[:, max(0, x - gap - band) : max(0, x - gap)], rows[:, min(width, x + w + gap) :
+                                                                     min(width, x + w + gap + band)]]
+    values = np.concatenate([p.ravel() for p in parts]) if parts else np.zeros(0)
+    valid = valid_depth(values)
+    if values.size == 0 or np.count_nonzero(valid) < config.white.white_min_side_valid * values.size:
+        return None
+    return float(np.count_nonzero(_same_depth(values, z, config))) / np.count_nonzero(valid)
+
+
+def support_share(depth: np.ndarray, bbox, z: float, config) -> float:
+    """Share of the rows of a strip below the face (its middle, ``white_support_width`` of its width) that hold
+    a pixel at the face's depth: a pole, or the next sign on the same pole."""
+    x, y, w, h = bbox
+    height = depth.shape[0]
+    top = y + h + int(round(config.white.white_support_gap * h))
+    bottom = min(height, top + max(1, int(round(config.white.white_support_length * h))))
+    half = max(1, int(round(config.white.white_support_width * w / 2)))
+    cx = x + w // 2
+    strip = depth[top:bottom, max(0, cx - half) : cx + half + 1]
+    if strip.size == 0:
+        return 0.0
+    return float(np.count_nonzero(_same_depth(strip, z, config).any(axis=1))) / strip.shape[0]
+
+
+def pole_share(grey: np.ndarray, bbox, config) -> float:
+    """Largest share of the rows of the strip below the face (its middle, ``white_support_width`` of its width)
+    in which one column (give or take one) carries a strong vertical edge: the edges of a pole run straight
+    down through every row, where grass, paving or a wall behind give scattered ones. Thin uniform poles often
+    get no depth from matching, so the image speaks for them."""
+    x, y, w, h = bbox
+    height, width = grey.shape[:2]
+    top = y + h + int(round(config.white.white_support_gap * h))
+    bottom = min(height, top + max(1, int(round(config.white.white_support_length * h))))
+    half = max(2, int(round(config.white.white_support_width * w / 2)))
+    cx = x + w // 2
+    x0, x1 = max(0, cx - half), min(width, cx + half + 1)
+    if bottom - top < 3 or x1 - x0 < 3:
+        return 0.0
+    strip = cv2.blur(grey[top:bottom, x0:x1], (1, 7))  # along the pole: its edges stay, pixel noise averages out
+    gx = np.abs(cv2.Sobel(strip, cv2.CV_32F, 1, 0, ksize=3))
+    strong = cv2.dilate((gx >= config.white.white_pole_edge).astype(np.uint8), np.ones((1, 3), np.uint8))
+    return float(strong.mean(axis=0).max())
+
+
+def white_template_ids(catalogue, shape: str, bbox, config) -> List[str]:
+    """Ids of the white entries a ``shape`` outline of box ``bbox`` may be."""
+    shapes = catalogue_shapes(shape, bbox[2], bbox[3])
+    return [e.id for e in catalogue.filter(colours=["white"], shapes=list(shapes), exclude=tuple(config.classification.exclude))]
+
+
+def judge_white(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey: np.ndarray
+                ) -> Optional[Detection]:
+    """The white sign ``cand`` is, or None (cut, off the search space, no white format, not planar, not
+    standing free, no support, no template resembling it). ``grey``: the left image in grey levels."""
+    camera, catalogue, config = pair.camera, pair.catalogue, pair.config
+    seg = cand.segment
+    if seg.touches_border:
+        return None
+    x, y, w, h = seg.bbox
+    if cand.shape == "circle" and weak_colour(pair.left[y : y + h, x : x + w], seg.mask, config) != "white":
+        return None  # a faded red or blue ring: the Hough fallback reads it as its colour
+    ids = white_template_ids(catalogue, cand.shape, seg.bbox, config)
+    if not ids:
+        return None
+    size = measure_segment(camera, depth, seg.bbox, seg.mask, config.depth.near_m, config.depth.far_m)
+    if size is None or size.coverage < config.planarity.min_depth_coverage:
+        return None
+    if cand.shape == "circle":  # a disc seen at an angle: its larger axis is the diameter
+        side = max(w, h)
+        width_m, height_m = metric_size(camera, (x, y, side, side), size.depth_m)
+    else:
+        width_m, height_m = size.width_m, size.height_m
+    match = round_to_format(catalogue, [catalogue[t] for t in ids], width_m, height_m, config.size.size_tolerance)
+    if match is None:
+        return None
+    ids = [t for t in match.template_ids if t in ids]
+    if not ids:
+        return None
+    planarity = segment_planarity(camera, depth, seg.bbox, seg.mask, config,
+                                  pair.depth_source.planarity_tolerance_px(config))
+    if planarity.indicator < config.planarity.detection_threshold:
+        return None
+    u, v = bbox_centre(seg.bbox)
+    z = planarity.depth_at(camera, u, v)
+    slack = config.depth.face_depth_slack
+    if not (np.isfinite(z) and config.depth.near_m * (1.0 - slack) <= z <= config.depth.far_m * (1.0 + slack)):
+        z = size.depth_m
+    beside = side_share(depth, seg.bbox, z, config)
+    if beside is not None and beside > config.white.white_max_side_share:
+        return None
+    supported = support_share(depth, seg.bbox, z, config) >= config.white.white_min_support or \
+        pole_share(grey, seg.bbox, config) >= config.white.white_min_pole_rows
+    cls = classify_segment(pair.left, seg.bbox, catalogue, ids, config)
+    # a face without a support in view (a pole too pale to see or to match) must resemble its template clearly
+    floor = config.white.white_min_score if supported else config.white.white_unsupported_min_score
+    if cls.template_id is None or cls.score < floor:
+        return None
+    entry = catalogue[cls.template_id]
+    names = getattr(entry, "names", None) or {}
+    return Detection(
+        template_id=cls.template_id, name=names.get("de") or next(iter(names.values()), entry.id),
+        colour="white", shape=entry.shape, width_m=match.width_m, height_m=match.height_m, format=match.format,
+        detection_indicator=planarity.indicator, classification_indicator=cls.score,
+        status="accepted" if cls.score >= config.white.white_accept_score else "review",
+        u=u, v=v, bbox=seg.bbox, depth_m=float(z), position=locate(camera, pair.pose, u, v, z), source="white",
+        scores=cls.scores, normal_world=world_face_normal(camera, pair.pose, planarity.plane),
+    )
+
+
+def white_detections(pair: PairContext, depth: np.ndarray, candidates: Sequence[WhiteCandidate],
+                     found: Sequence[Detection]) -> List[Detection]:
+    """White and grey signs among ``candidates`` whose centre lies in no sign ``found`` already (a white rim
+    or panel of a coloured sign)."""
+    taken = [d.bbox for d in found]
+    grey = cv2.cvtColor(pair.left, cv2.COLOR_BGR2GRAY) if candidates else None
+    out = []
+    for cand in candidates:
+        cu, cv = bbox_centre(cand.segment.bbox)
+        if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken):
+            continue
+        det = judge_white(cand, pair, depth, grey)
+        if det is not None:
+            out.append(det)
+    return out

@@ -1,0 +1,171 @@
+"""White and grey signs (issue 16): outline candidates before depth, their judgement with depth, and the
+whole pipeline on small constructed scenes (a sign on its pole, the same face on a façade, a blank board)."""
+
+import cv2
+import numpy as np
+import pytest
+from pipeline_scenes import CAMERA, POSE, noisy_background, sign_scene
+
+from signmapper_core.pipeline import PipelineConfig, detect_pair
+from signmapper_core.pipeline.config import with_settings
+from signmapper_core.pipeline.white_outlines import (
+    edge_support,
+    face_side_range_px,
+    group_cells,
+    scan_scale,
+    white_candidates,
+    white_formats,
+)
+from signmapper_core.pipeline.white_signs import pole_share, side_share, support_share
+
+FORWARD, RIGHT, DOWN = POSE.rotation[:, 2], POSE.rotation[:, 0], POSE.rotation[:, 1]
+CONFIG = PipelineConfig()
+
+
+def _world(ahead, right, up):
+    return POSE.centre + ahead * FORWARD + right * RIGHT - up * DOWN
+
+
+def _sides(catalogue):
+    return face_side_range_px(CAMERA, white_formats(catalogue, CONFIG), CONFIG)
+
+
+def _with_pole(left, depth, bbox, z, background_depth):
+    """A grey pole (6 cm) from under the face to the image bottom, at the face's depth."""
+    x, y, w, h = bbox
+    half = max(2, int(round(0.03 * CAMERA.fx / z)))
+    cx = x + w // 2
+    left[y + h :, cx - half : cx + half + 1] = (150, 152, 150)
+    depth[y + h :, cx - half : cx + half + 1] = z
+    return left, depth
+
+
+def _pole_scene(catalogue, template_id, size, ahead=8.0, background_depth=30.0):
+    """A white sign on its pole before a textured background, seen through a lens (slight blur)."""
+    sign = _world(ahead, 1.2, 0.3)
+    left, depth, bbox = sign_scene(catalogue, template_id, size, sign, background_depth=background_depth)
+    left, depth = _with_pole(left, depth, bbox, ahead, background_depth)
+    return sign, cv2.GaussianBlur(left, (0, 0), 1.0), depth, bbox
+
+
+def test_face_side_range_covers_every_white_format_in_the_search_space(catalogue):
+    lo, hi = _sides(catalogue)
+    # the smallest white format (0.4 m disc) at 14 m, the largest up to 0.9 m (0.9 m disc) at 4 m, +-15 %
+    assert lo == pytest.approx(0.4 * 600 / 14 * 0.85)
+    assert hi == pytest.approx(0.9 * 600 / 4 * 1.15)
+    assert scan_scale(lo, CONFIG) == 1.0  # a small image is scanned as it is
+    assert scan_scale(85.0, CONFIG) == pytest.approx(24 / 85)
+
+
+def test_cells_overlapping_one_face_are_joined_and_far_ones_are_not():
+    # the two halves of a striped field (a band between them) and a cell far away
+    boxes = [(10, 10, 30, 14), (10, 28, 30, 14), (200, 10, 30, 30)]
+    groups = group_cells(boxes, (20, 100), 0.35, 1.6)
+    members = {tuple(sorted(m)) for _, m in groups}
+    assert (0, 1) in members and (2,) in members
+    box = next(b for b, m in groups if tuple(sorted(m)) == (0, 1))
+    assert box == (10, 10, 30, 32)
+
+
+def _gradients(grey):
+    return cv2.Sobel(grey, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(grey, cv2.CV_32F, 0, 1, ksize=3)
+
+
+def test_edge_support_counts_circle_points_on_radial_gradients():
+    grey = np.full((100, 100), 60, np.uint8)
+    cv2.circle(grey, (50, 50), 30, 220, -1)  # a bright disc
+    assert edge_support(_gradients(grey), 50, 50, 30, 80.0) == pytest.approx(1.0)
+    assert edge_support(_gradients(grey), 50, 50, 15, 80.0) == 0.0  # inside: no gradient
+    grey[:50] = 60  # the upper half of the outline gone
+    assert 0.4 <= edge_support(_gradients(grey), 50, 50, 30, 80.0) <= 0.6
+    # texture has strong gradients everywhere, but not along the radii of a circle
+    noise = np.random.default_rng(1).integers(0, 2, (100, 100), np.uint8) * 200
+    assert edge_support(_gradients(noise), 50, 50, 30, 80.0) < 0.7
+
+
+@pytest.mark.parametrize("template_id,size,ahead,shape", [
+    ("2.55", "normal", 8.0, "circle"), ("2.53-60", "small", 5.0, "circle"), ("2.58", "normal", 8.0, "circle"),
+    ("2.59.2", "normal", 5.0, "rectangle"), ("2.59.6", "normal", 5.0, "rectangle")])
+def test_white_faces_are_outline_candidates_with_their_box(catalogue, template_id, size, ahead, shape):
+    _, left, _, bbox = _pole_scene(catalogue, template_id, size, ahead)
+    cands = white_candidates(left, _sides(catalogue), CONFIG)
+    x, y, w, h = bbox
+    near = [c for c in cands if abs(c.segment.bbox[0] + c.segment.bbox[2] / 2 - (x + w / 2)) < 0.1 * w
+            and abs(c.segment.bbox[1] + c.segment.bbox[3] / 2 - (y + h / 2)) < 0.1 * h]
+    assert [c.shape for c in near] == [shape]
+    bw, bh = near[0].segment.bbox[2:]
+    assert abs(bw - w) <= 0.1 * w and abs(bh - h) <= 0.1 * h
+    assert near[0].segment.source == "white" and near[0].segment.colour == "white"
+
+
+def test_coloured_signs_are_no_white_signs_and_dark_windows_no_candidates(catalogue):
+    _, left, depth, _ = _pole_scene(catalogue, "2.30-50", "normal")
+    cv2.rectangle(left, (40, 60), (100, 150), (40, 38, 35), -1)  # a dark window pane with a light frame
+    cv2.rectangle(left, (40, 60), (100, 150), (230, 230, 230), 3)
+    assert not any(c.segment.bbox[0] < 110 for c in white_candidates(left, _sides(catalogue), CONFIG))
+    dets = detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG)
+    assert [(d.template_id, d.source) for d in dets] == [("2.30-50", "colour")]  # its white field is no sign
+
+
+def test_side_share_tells_a_free_standing_face_from_one_in_a_wall():
+    depth = np.full((100, 200), 30.0, np.float32)
+    bbox = (80, 30, 40, 40)
+    depth[30:70, 80:120] = 8.0
+    assert side_share(depth, bbox, 8.0, CONFIG) == 0.0  # background far behind
+    depth[:] = 8.1  # a façade right behind the face
+    assert side_share(depth, bbox, 8.0, CONFIG) == 1.0
+    depth[:] = np.nan  # sky or a blank wall: no depth beside it, no verdict
+    assert side_share(depth, bbox, 8.0, CONFIG) is None
+
+
+def test_support_below_from_depth_and_from_a_pole_in_the_image():
+    bbox = (80, 20, 40, 40)
+    depth = np.full((120, 200), 30.0, np.float32)
+    assert support_share(depth, bbox, 8.0, CONFIG) == 0.0
+    depth[60:, 98:102] = 8.0  # a pole at the face's depth
+    assert support_share(depth, bbox, 8.0, CONFIG) == 1.0
+    grey = noisy_background(120, 200)[:, :, 0]
+    assert pole_share(grey, bbox, CONFIG) < CONFIG.white.white_min_pole_rows  # texture alone gives scattered edges
+    grey[60:, 97:103] = 200
+    assert pole_share(grey, bbox, CONFIG) == 1.0
+
+
+def test_white_sign_on_its_pole_is_detected_and_classified(catalogue):
+    sign, left, depth, _ = _pole_scene(catalogue, "2.55", "normal")
+    (det,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG)
+    assert det.template_id == "2.55" and det.source == "white" and det.colour == "white"
+    assert det.format == "normal" and det.status == "accepted"
+    assert np.linalg.norm(det.position - sign) < 0.1
+
+
+def test_zone_end_panel_is_detected(catalogue):
+    _, left, depth, _ = _pole_scene(catalogue, "2.59.2", "normal", ahead=5.0)
+    dets = detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG)
+    assert [(d.template_id, d.source) for d in dets] == [("2.59.2", "white")]
+
+
+def test_white_step_can_be_switched_off(catalogue):
+    _, left, depth, _ = _pole_scene(catalogue, "2.55", "normal")
+    assert detect_pair(left, depth, None, CAMERA, POSE, catalogue, with_settings(CONFIG, {"white": {"white_signs": False}})) == []
+
+
+def test_the_same_face_in_a_facade_is_not_a_sign(catalogue):
+    # a white disc painted on a wall right behind it (an emblem, a house number): it does not stand free
+    sign = _world(8.0, 1.2, 0.3)
+    left, depth, bbox = sign_scene(catalogue, "2.55", "normal", sign, background_depth=8.1)
+    left, depth = _with_pole(left, depth, bbox, 8.0, 8.1)
+    assert detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG) == []
+
+
+def test_a_blank_white_board_on_a_pole_is_not_a_sign(catalogue):
+    # a free-standing white board of a zone panel's size with dark lettering: no white template resembles it
+    sign = _world(7.0, 1.2, 0.3)
+    left, depth, bbox = sign_scene(catalogue, "2.59.2", "normal", sign, background_depth=30.0)
+    x, y, w, h = bbox
+    left[y : y + h, x : x + w] = (236, 236, 234)
+    cv2.rectangle(left, (x, y), (x + w - 1, y + h - 1), (20, 20, 20), 2)
+    for k in range(3):
+        cv2.putText(left, "Zimmer", (x + 6, y + 22 + 22 * k), cv2.FONT_HERSHEY_SIMPLEX, 0.4, (30, 30, 30), 1)
+    left, depth = _with_pole(left, depth, bbox, 7.0, 30.0)
+    assert white_candidates(left, _sides(catalogue), CONFIG) != []  # its outline is a candidate...
+    assert detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG) == []  # ...but no sign
