@@ -56,7 +56,7 @@ def test_the_whole_pipeline_config_survives_json_grouped_by_section():
     data = json.loads(json.dumps(settings_dict(CHANGED)))
     assert pipeline_config_of(data, "test") == CHANGED
     assert set(data) == set(SECTIONS) == {"colour", "scene", "bright_fields", "rims", "shape", "size", "depth",
-                                          "planarity", "classification", "hough", "plates"}
+                                          "planarity", "classification", "hough", "white", "plates"}
     assert data["depth"]["near_m"] == 5.5 and data["classification"]["exclude"] == ["4.17"]
     assert {name for section in data.values() for name in section} == set(SECTION_OF)  # every setting
 
