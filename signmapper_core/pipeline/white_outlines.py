@@ -189,25 +189,24 @@ def box_edge_support(gradients: Tuple[np.ndarray, np.ndarray], box: Box, min_gra
     """Share of points on the sides of ``box`` (each looked for a pixel inward or outward) where the grey
     image has a strong gradient across the side: the outline of a panel."""
     gx, gy = gradients
+    height, width = gx.shape
     x, y, w, h = box
     n = max(2, samples // 4)
     t = (np.arange(n) + 0.5) / n
-    sides = [(x + t * w, np.full(n, y - 0.5), 1), (x + t * w, np.full(n, y + h - 0.5), 1),
-             (np.full(n, x - 0.5), y + t * h, 0), (np.full(n, x + w - 0.5), y + t * h, 0)]
-    hits = 0
-    for us, vs, vertical_gradient in sides:
-        hit = np.zeros(n, bool)
-        for d in (-1.0, 0.0, 1.0):
-            uu = np.round(us + (0 if vertical_gradient else d)).astype(int)
-            vv = np.round(vs + (d if vertical_gradient else 0)).astype(int)
-            inside = (uu >= 0) & (vv >= 0) & (uu < gx.shape[1]) & (vv < gx.shape[0])
-            across = np.zeros(n, np.float32)
-            along = np.zeros(n, np.float32)
-            g_across, g_along = (gy, gx) if vertical_gradient else (gx, gy)
-            across[inside], along[inside] = g_across[vv[inside], uu[inside]], g_along[vv[inside], uu[inside]]
-            hit |= (np.abs(across) >= min_gradient) & (np.abs(across) >= RADIAL_COS * np.hypot(across, along))
-        hits += int(np.count_nonzero(hit))
-    return hits / float(4 * n)
+    along_u, along_v = np.round(x + t * w).astype(int), np.round(y + t * h).astype(int)
+    d = np.array([-1, 0, 1])[:, None]
+    # rows of points (3 offsets x n) on the top, bottom (gradient across: gy) and left, right sides (gx)
+    us = np.concatenate([np.broadcast_to(along_u, (3, n)), np.broadcast_to(along_u, (3, n)),
+                         np.broadcast_to(x + d, (3, n)), np.broadcast_to(x + w - 1 + d, (3, n))], axis=1)
+    vs = np.concatenate([np.broadcast_to(y + d, (3, n)), np.broadcast_to(y + h - 1 + d, (3, n)),
+                         np.broadcast_to(along_v, (3, n)), np.broadcast_to(along_v, (3, n))], axis=1)
+    inside = (us >= 0) & (vs >= 0) & (us < width) & (vs < height)
+    us, vs = np.where(inside, us, 0), np.where(inside, vs, 0)
+    horizontal = np.arange(4 * n) < 2 * n
+    across = np.where(horizontal, gy[vs, us], gx[vs, us]) * inside
+    along = np.where(horizontal, gx[vs, us], gy[vs, us]) * inside
+    hit = (np.abs(across) >= min_gradient) & (np.abs(across) >= RADIAL_COS * np.hypot(across, along))
+    return float(np.count_nonzero(hit.any(axis=0))) / float(4 * n)
 
 
 def refine_box(gradients: Tuple[np.ndarray, np.ndarray], box: Box, max_grow: float) -> Box:
@@ -218,20 +217,31 @@ def refine_box(gradients: Tuple[np.ndarray, np.ndarray], box: Box, max_grow: flo
     height, width = gx.shape
     x, y, w, h = box
     kx, ky = max(1, int(round(max_grow * w))), max(1, int(round(max_grow * h)))
-    rows, cols = slice(max(0, y), min(height, y + h)), slice(max(0, x), min(width, x + w))
+    r0, r1, c0, c1 = max(0, y), min(height, y + h), max(0, x), min(width, x + w)
+    if r1 <= r0 or c1 <= c0:
+        return box
+    column = gx[r0:r1].mean(axis=0)  # mean gradient across each column line over the box's rows
+    row = gy[:, c0:c1].mean(axis=1)
 
-    def best(values, offsets):
-        return offsets[int(np.argmax(values))] if len(values) else 0
+    def outward(profile, start, step, reach, size):
+        offsets = [o for o in range(reach + 1) if 0 <= start + step * o < size]
+        return offsets[int(np.argmax([profile[start + step * o] for o in offsets]))] if offsets else 0
 
-    left = [o for o in range(0, kx + 1) if 0 <= x - o < width]
-    right = [o for o in range(0, kx + 1) if 0 <= x + w - 1 + o < width]
-    top = [o for o in range(0, ky + 1) if 0 <= y - o < height]
-    bottom = [o for o in range(0, ky + 1) if 0 <= y + h - 1 + o < height]
-    dl = best([gx[rows, x - o].mean() for o in left], left)
-    dr = best([gx[rows, x + w - 1 + o].mean() for o in right], right)
-    dt = best([gy[y - o, cols].mean() for o in top], top)
-    db = best([gy[y + h - 1 + o, cols].mean() for o in bottom], bottom)
+    dl, dr = outward(column, x, -1, kx, width), outward(column, x + w - 1, 1, kx, width)
+    dt, db = outward(row, y, -1, ky, height), outward(row, y + h - 1, 1, ky, height)
     return x - dl, y - dt, w + dl + dr, h + dt + db
+
+
+def outline_in_reach(gradients: Tuple[np.ndarray, np.ndarray], box: Box, config: PipelineConfig) -> bool:
+    """Whether strong edges run near the outline of ``box`` at all (its inscribed circle or its sides, a pixel
+    outside): the cheap test that spares most unions of cells reading their outline."""
+    x, y, w, h = box
+    floor = config.white.white_min_edge_support - config.white.white_refine_margin
+    samples = config.white.white_support_samples
+    circle = edge_support(gradients, x + w / 2.0, y + h / 2.0, max(w, h) / 2.0 + 1.5,
+                          config.white.white_min_gradient, samples)
+    return circle >= floor or box_edge_support(gradients, (x - 1, y - 1, w + 2, h + 2),
+                                               config.white.white_min_gradient, samples) >= floor
 
 
 def read_face(mask: np.ndarray, box: Box, gradients: Tuple[np.ndarray, np.ndarray], config: PipelineConfig
@@ -299,6 +309,8 @@ def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config
     for box, members in group_cells(boxes, (lo * scale, hi * scale), config.white.white_join_reach,
                                     config.white.white_max_aspect, config.white.white_join_gap * lo * scale,
                                     config.white.white_join_steps):
+        if not outline_in_reach(gradients, box, config):
+            continue
         x, y, w, h = box
         mask = np.isin(labels[y : y + h, x : x + w], ids[list(members)]).astype(np.uint8) * 255
         face = read_face(mask, box, gradients, config)
