@@ -268,8 +268,9 @@ def read_face(mask: np.ndarray, box: Box, gradients: Tuple[np.ndarray, np.ndarra
     if r < 2 or np.count_nonzero(mask) < config.white.white_min_disc_cover * np.pi * r * r:
         return None
     r += 1.5  # the cells end where the (widened) edge band of the outline begins: the outline is its middle
-    if edge_support(gradients, x + cu, y + cv, r, config.white.white_min_gradient, config.white.white_support_samples) < \
-            config.white.white_min_edge_support - config.white.white_refine_margin:
+    white = config.white
+    if edge_support(gradients, x + cu, y + cv, r, white.white_min_gradient, white.white_support_samples) < \
+            white.white_min_edge_support - white.white_refine_margin:
         return None
     cu, cv, r, support = refine_circle(gradients, x + cu, y + cv, r, config)
     if support < config.white.white_min_edge_support:
@@ -325,8 +326,8 @@ def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config
         full_box = (bx, by, bw, bh)
         if bx < 0 or by < 0 or bx + bw > width or by + bh > height:
             continue
-        if any(box_iou(full_box, c.segment.bbox) > config.white.white_same_iou or _centre_inside(full_box, c.segment.bbox)
-               for c in kept):
+        if any(box_iou(full_box, c.segment.bbox) > config.white.white_same_iou
+               or _centre_inside(full_box, c.segment.bbox) for c in kept):
             continue
         outline = cv2.resize(outline, (bw, bh), interpolation=cv2.INTER_NEAREST)
         contours, _ = cv2.findContours(outline, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)

@@ -90,7 +90,8 @@ def pole_share(grey: np.ndarray, bbox, config) -> float:
 def white_template_ids(catalogue, shape: str, bbox, config) -> List[str]:
     """Ids of the white entries a ``shape`` outline of box ``bbox`` may be."""
     shapes = catalogue_shapes(shape, bbox[2], bbox[3])
-    return [e.id for e in catalogue.filter(colours=["white"], shapes=list(shapes), exclude=tuple(config.classification.exclude))]
+    exclude = tuple(config.classification.exclude)
+    return [e.id for e in catalogue.filter(colours=["white"], shapes=list(shapes), exclude=exclude)]
 
 
 def judge_white(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey: np.ndarray

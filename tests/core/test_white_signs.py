@@ -146,7 +146,8 @@ def test_zone_end_panel_is_detected(catalogue):
 
 def test_white_step_can_be_switched_off(catalogue):
     _, left, depth, _ = _pole_scene(catalogue, "2.55", "normal")
-    assert detect_pair(left, depth, None, CAMERA, POSE, catalogue, with_settings(CONFIG, {"white": {"white_signs": False}})) == []
+    off = with_settings(CONFIG, {"white": {"white_signs": False}})
+    assert detect_pair(left, depth, None, CAMERA, POSE, catalogue, off) == []
 
 
 def test_the_same_face_in_a_facade_is_not_a_sign(catalogue):
