@@ -75,15 +75,19 @@ def test_network_reads_most_faces_of_another_artwork(catalogue, network):
     (README), these drawings differ from the official ones more than most real print runs do. A regression bar,
     not a goal."""
     right, total = 0, 0
+    # the entries the network was trained on (the white signs added later are classified by NCC: white_signs.py)
+    known = [entry for entry in catalogue if network.knows([entry.id])]
+    assert len(known) == len(catalogue) - 4
     for k, (font, seed) in enumerate([("duplex", 3), ("simplex", 5)]):
         style = FaceStyle(stroke_scale=1.1, rim_scale=0.9, palette_jitter=0.5, font=font, detail_jitter=0.3,
                           seed=seed)
-        for entry in catalogue:
+        for entry in known:
             bgr, alpha = render_face(entry.id, 70, style)
             image, bbox = _degraded_scene(bgr, alpha, seed=7 + k)
-            right += network.classify(image, bbox, _candidates(catalogue, entry.id)).template_id == entry.id
+            ids = [t for t in _candidates(catalogue, entry.id) if network.knows([t])]
+            right += network.classify(image, bbox, ids).template_id == entry.id
             total += 1
-    assert total == 2 * len(catalogue)
+    assert total == 2 * len(known)
     assert right >= 0.66 * total
 
 

@@ -52,7 +52,8 @@ def classified():
     out = []
     for sign in load_manifest(SUBSET / "crops.csv", known_ids={e.id for e in catalogue}):
         entry = catalogue[sign.ssv_id]
-        ids = [e.id for e in catalogue.filter(colours=[entry.colour], shapes=[entry.shape])]
+        # the ids the network knows (the white signs added after it was trained are the NCC's, white_signs.py)
+        ids = [e.id for e in catalogue.filter(colours=[entry.colour], shapes=[entry.shape]) if network.knows([e.id])]
         result = network.classify(sign.load_image(), sign.bbox, ids)
         out.append((sign, result.template_id, result.score))
     return out, network.accept_threshold
