@@ -6,7 +6,7 @@ template route compares signs: the plate's crop, grey, scaled to each template's
 aspect at ``COMPARE_HEIGHT_PX``, correlated with it over a few pixels of shift
 (the plate's box is found to a pixel or two) and a few insets (a box taken for
 the inside of a frame is that much larger than the plate). Pixels hidden by
-something in front (a branch) are left out of the correlation. Below
+something in front (a branch) are painted the plate's paper first. Below
 ``min_score`` it is a text plate and OCR reads it.
 """
 
@@ -28,51 +28,44 @@ def _scaled(grey: np.ndarray, width: int, height: int) -> np.ndarray:
     return cv2.resize(grey, (width, height), interpolation=interpolation)
 
 
-def _masked_ncc(seen: np.ndarray, drawn: np.ndarray, weight: np.ndarray) -> float:
-    """Best zero-mean normalised correlation of ``drawn`` over ``seen`` (padded by SHIFT_PX), over the
-    pixels ``weight`` marks as seen."""
-    h, w = drawn.shape
-    best = -1.0
-    for dy in range(0, seen.shape[0] - h + 1):
-        for dx in range(0, seen.shape[1] - w + 1):
-            m = weight[dy:dy + h, dx:dx + w]
-            if m.sum() < MIN_SEEN * m.size:
-                continue
-            a, b = seen[dy:dy + h, dx:dx + w][m], drawn[m]
-            a, b = a - a.mean(), b - b.mean()
-            denominator = np.sqrt((a * a).sum() * (b * b).sum())
-            if denominator > 0:
-                best = max(best, float((a * b).sum() / denominator))
-    return best
+_DRAWN: dict = {}  # (id, variant, width) -> the template scaled for comparing (the masters never change)
+
+
+def _drawn(template, width: int) -> np.ndarray:
+    key = (template.id, template.variant, width)
+    if key not in _DRAWN:
+        _DRAWN[key] = _scaled(template.grey, width, COMPARE_HEIGHT_PX).astype(np.float32)
+    return _DRAWN[key]
+
+
+def _score(grey: np.ndarray, template, inset: float) -> float:
+    cut = int(round(inset * grey.shape[0]))
+    if grey.shape[0] - 2 * cut < 8 or grey.shape[1] - 2 * cut < 8:
+        return -1.0
+    width = max(8, int(round(COMPARE_HEIGHT_PX * template.aspect)))
+    part = grey[cut:grey.shape[0] - cut, cut:grey.shape[1] - cut]
+    seen = cv2.copyMakeBorder(_scaled(part, width, COMPARE_HEIGHT_PX), SHIFT_PX, SHIFT_PX, SHIFT_PX, SHIFT_PX,
+                              cv2.BORDER_REPLICATE).astype(np.float32)
+    return float(cv2.matchTemplate(seen, _drawn(template, width), cv2.TM_CCOEFF_NORMED).max())
 
 
 def pictogram_scores(crop: np.ndarray, templates: Sequence, hidden: Optional[np.ndarray] = None) -> list:
-    """Correlation (-1..1) of a plate crop (BGR or grey) with each template, best shift and inset.
+    """Correlation (-1..1) of a plate crop (BGR or grey) with each template, best shift and inset (the insets
+    only for the two templates the crop is most like as it is).
 
-    ``hidden``: the crop's pixels hidden by something in front (same size), left out."""
+    ``hidden``: the crop's pixels hidden by something in front (same size): painted the plate's paper (the
+    median of what is seen) before comparing, so a branch counts as a missing part, not as a dark one. Less than
+    MIN_SEEN of it seen: no score (-1)."""
     grey = cv2.cvtColor(crop, cv2.COLOR_BGR2GRAY) if crop.ndim == 3 else crop
-    partial = hidden is not None and hidden.any()
-    scores = []
-    for template in templates:
-        width = max(8, int(round(COMPARE_HEIGHT_PX * template.aspect)))
-        drawn = _scaled(template.grey, width, COMPARE_HEIGHT_PX).astype(np.float32)
-        best = -1.0
-        for inset in INSETS:
-            cut = int(round(inset * grey.shape[0]))
-            if grey.shape[0] - 2 * cut < 8 or grey.shape[1] - 2 * cut < 8:
-                continue
-            part = grey[cut:grey.shape[0] - cut, cut:grey.shape[1] - cut]
-            seen = cv2.copyMakeBorder(_scaled(part, width, COMPARE_HEIGHT_PX), SHIFT_PX, SHIFT_PX, SHIFT_PX,
-                                      SHIFT_PX, cv2.BORDER_REPLICATE).astype(np.float32)
-            if partial:
-                mask = hidden[cut:grey.shape[0] - cut, cut:grey.shape[1] - cut].astype(np.uint8)
-                shown = (cv2.resize(mask, (width, COMPARE_HEIGHT_PX), interpolation=cv2.INTER_NEAREST) == 0)
-                visible = cv2.copyMakeBorder(shown.astype(np.uint8), SHIFT_PX, SHIFT_PX, SHIFT_PX, SHIFT_PX,
-                                             cv2.BORDER_CONSTANT, value=0).astype(bool)
-                best = max(best, _masked_ncc(seen, drawn, visible))
-            else:
-                best = max(best, float(cv2.matchTemplate(seen, drawn, cv2.TM_CCOEFF_NORMED).max()))
-        scores.append(best)
+    if hidden is not None and hidden.any():
+        shown = ~hidden.astype(bool)
+        if shown.mean() < MIN_SEEN:
+            return [-1.0] * len(templates)
+        grey = grey.copy()
+        grey[~shown] = int(np.median(grey[shown]))
+    scores = [_score(grey, template, INSETS[0]) for template in templates]
+    for k in np.argsort(scores)[::-1][:2]:
+        scores[k] = max([scores[k]] + [_score(grey, templates[k], inset) for inset in INSETS[1:]])
     return scores
 
 

@@ -16,6 +16,7 @@ a pictogram plate (``plate_classify``) takes that plate's id, name and size.
 from __future__ import annotations
 
 import math
+import threading
 from typing import List, Optional, Sequence
 
 import cv2
@@ -29,6 +30,7 @@ from .pair_context import PairContext
 from .plate_classify import classify_plate
 
 BELOW, ABOVE = 1, -1
+NOTCHED_FILL = 0.6  # a region filling less of its box is no plate with notches: its fill is not re-measured
 
 
 def plate_templates(pair: PairContext) -> tuple:
@@ -136,7 +138,7 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
     count, labels, stats, _ = cv2.connectedComponentsWithStats(filled, connectivity=4)
     # a region's fill is measured with notches as thin as a wire or a pole's edge across the plate closed (they
     # are not its outline); the regions themselves stay as found, so a closed gap never joins plate and wall
-    solid = _filled(mask, int(round(config.plates.plate_notch_m * pair.camera.fy / z)) | 1)
+    solid = None
     # the region is the whole plate, or the inside of its black frame (its white margin lost in a white
     # wall behind it, or in the sky): then the plate is that much larger
     grow = config.plates.plate_frame_share / (1.0 - 2.0 * config.plates.plate_frame_share)
@@ -149,7 +151,11 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
             continue  # cut by the window: part of something larger (a wall, the sky)
         if (by >= sign_edge - touch_px) if side == BELOW else (by + bh <= sign_edge + touch_px):
             pieces.append(k)  # off the sign's side: may be a piece of a plate
-        fill = max(area / float(bw * bh), float(solid[by:by + bh, bx:bx + bw].mean()))
+        fill = area / float(bw * bh)
+        if NOTCHED_FILL <= fill < config.plates.plate_min_fill and bw >= 6 and bh >= 4:
+            if solid is None:
+                solid = _filled(mask, int(round(config.plates.plate_notch_m * pair.camera.fy / z)) | 1)
+            fill = max(fill, float(solid[by:by + bh, bx:bx + bw].mean()))
         if bw < 6 or bh < 4 or fill < config.plates.plate_min_fill:
             continue
         for margin in (0.0, grow * bh):
@@ -161,8 +167,12 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
         return best
     # a plate partly hidden by something in front: its pieces together (a branch across it), and a piece or
     # those pieces completed sideways under what hides the rest (a lamp post over one end), to a plate's width
-    groups = [[k] for k in pieces] + ([pieces] if len(pieces) > 1 else [])
     px_per_m = pair.camera.fx / z
+    # a piece alone is completed only if it can be the seen share of the smallest plate (not a speck)
+    smallest = min(w * h for w, h in PLATE_FORMATS.values()) * px_per_m * pair.camera.fy / z
+    alone = [k for k in pieces if stats[k, cv2.CC_STAT_AREA] >= config.plates.plate_min_visible * smallest]
+    groups = [[k] for k in alone] + ([pieces] if len(pieces) > 1 else [])
+    hidden_here = hidden[y0:y1, x0:x1].astype(bool)
     for group in groups:
         lo = np.min(stats[group, :2], axis=0)
         hi = np.max(stats[group, :2] + stats[group, 2:4], axis=0)
@@ -172,22 +182,25 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
             extra = int(round(width_m * px_per_m)) - bw
             if extra > 0.1 * bw:
                 boxes += [(bx - extra, by, bw + extra, bh), (bx, by, bw + extra, bh)]
+        member = np.zeros(count, bool)
+        member[group] = True
         for box in boxes:
-            best = _hidden_reading(pair, sign, box, group, labels, window, z, side, touch_px, hidden, grow, best)
+            best = _hidden_reading(pair, sign, box, member, labels, window, z, side, touch_px, hidden, hidden_here,
+                                   grow, best)
     return best
 
 
-def _hidden_reading(pair, sign, box, group, labels, window, z, side, touch_px, hidden, grow, best):
-    """``best`` or the reading of ``box`` (window coordinates) as a plate whose pixels not in ``group`` are
-    hidden by something in front: most of them must be (``plate_min_fill`` of the box seen or hidden), and
-    ``plate_min_visible`` of it seen."""
+def _hidden_reading(pair, sign, box, member, labels, window, z, side, touch_px, hidden, hidden_here, grow, best):
+    """``best`` or the reading of ``box`` (window coordinates) as a plate whose pixels not in its pieces
+    (``member[label]``) are hidden by something in front (``hidden_here``, window-sized): most of them must be
+    (``plate_min_fill`` of the box seen or hidden), and ``plate_min_visible`` of it seen."""
     config = pair.config
     x0, y0, x1, y1 = window
     bx, by, bw, bh = box
     if bx < 0 or by < 0 or bx + bw > x1 - x0 or by + bh > y1 - y0:
         return best
-    inside = np.isin(labels[by:by + bh, bx:bx + bw], group)
-    covered = inside | hidden[y0 + by:y0 + by + bh, x0 + bx:x0 + bx + bw].astype(bool)
+    inside = member[labels[by:by + bh, bx:bx + bw]]
+    covered = inside | hidden_here[by:by + bh, bx:bx + bw]
     seen_share, fill = float(inside.mean()), float(covered.mean())
     if fill < config.plates.plate_min_fill or seen_share < config.plates.plate_min_visible:
         return best
@@ -208,6 +221,20 @@ def hidden_mask(bgr: np.ndarray, depth: np.ndarray, z: float, config) -> np.ndar
     coloured = hsv[:, :, 1] > config.plates.plate_max_saturation
     nearer = np.isfinite(depth) & (depth < z - max(config.plates.plate_depth_tolerance_m, 0.05 * z))
     return (coloured | nearer).astype(np.uint8)
+
+
+class _HiddenCanvas:
+    """One image-sized mask per image size and thread, reused by every window (allocating and zeroing a
+    full-frame mask per sign and side cost more than the plate search itself)."""
+
+    _local = threading.local()
+
+    @classmethod
+    def of(cls, shape) -> np.ndarray:
+        canvas = getattr(cls._local, "canvas", None)
+        if canvas is None or canvas.shape != tuple(shape):
+            canvas = cls._local.canvas = np.zeros(shape, np.uint8)
+        return canvas
 
 
 def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: int,
@@ -237,19 +264,27 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     window = pair.left[y0:y1, x0:x1]
     near = depth[y0:y1, x0:x1]
     elsewhere = np.isfinite(near) & (np.abs(near - z) > max(config.plates.plate_depth_tolerance_m, 0.05 * z))
-    hidden = np.zeros(pair.left.shape[:2], np.uint8)
-    hidden[y0:y1, x0:x1] = hidden_mask(window, near, z, config)
-    signs_there = np.zeros(pair.left.shape[:2], bool)
-    for other in others:
+    in_window = hidden_mask(window, near, z, config)
+    for other in others:  # the window's part of the pair's other signs
         ox, oy, ow, oh = other.bbox
-        signs_there[max(oy, 0):oy + oh, max(ox, 0):ox + ow] = True
-    hidden[signs_there] = 0
-    elsewhere |= signs_there[y0:y1, x0:x1]
+        ox0, oy0, ox1, oy1 = max(ox, x0) - x0, max(oy, y0) - y0, min(ox + ow, x1) - x0, min(oy + oh, y1) - y0
+        if ox1 > ox0 and oy1 > oy0:
+            in_window[oy0:oy1, ox0:ox1] = 0
+            elsewhere[oy0:oy1, ox0:ox1] = True
+    hidden = _HiddenCanvas.of(pair.left.shape[:2])  # image-sized: the readings index it in image coordinates
+    hidden[y0:y1, x0:x1] = in_window
     best = None
     plates = config.plates
-    for mask in white_masks(window, plates.plate_max_saturation, plates.plate_min_value, plates.plate_value_steps):
-        mask[elsewhere] = 0
-        best = _best_region(pair, sign, mask, (x0, y0, x1, y1), z, side, touch_px, best, hidden)
+    try:
+        for mask in white_masks(window, plates.plate_max_saturation, plates.plate_min_value,
+                                plates.plate_value_steps):
+            mask[elsewhere] = 0
+            best = _best_region(pair, sign, mask, (x0, y0, x1, y1), z, side, touch_px, best, hidden)
+        if best is not None:
+            cx, cy, cw, ch = _clipped(best[1], pair.left.shape)
+            crop_hidden = hidden[cy:cy + ch, cx:cx + cw].copy()
+    finally:
+        hidden[y0:y1, x0:x1] = 0  # the canvas is shared by the pair's windows
     if best is None:
         return None
     score, box, (name, (pw, ph), _), fill = best
@@ -259,7 +294,7 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     crop = np.ascontiguousarray(pair.left[by:by + bh, bx:bx + bw])
     template_id, label, printed = PLATE_ID, PLATE_NAMES["de"], None
     pictogram, likeness = classify_plate(crop, plate_templates(pair), config.plates.plate_pictogram_min_score,
-                                         hidden[by:by + bh, bx:bx + bw])
+                                         crop_hidden)
     if pictogram is not None:  # its drawing's own size at the plate's width; its score is the likeness
         template_id, label, printed = pictogram.id, pictogram.name("de"), pictogram.text
         (pw, ph), name, score = pictogram.size_m(pw), f"{pictogram.id}@{pw:.2f}", min(score, likeness)
