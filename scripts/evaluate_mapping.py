@@ -41,7 +41,7 @@ from signmapper_core.family_evaluation import (  # noqa: E402
 )
 from signmapper_core.mapping import map_drive  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
-from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig  # noqa: E402
+from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, WhiteConfig  # noqa: E402
 from signmapper_core.plate_evaluation import PlateFigures, evaluate_plates  # noqa: E402
 from signmapper_core.plate_fusion import is_plate  # noqa: E402
 from signmapper_core.visibility import mappable_signs  # noqa: E402
@@ -102,6 +102,8 @@ def main(argv=None) -> int:
     parser.add_argument("--catalogue", type=Path, default=None)
     parser.add_argument("--classifier", default="auto", help="auto, cnn or ncc")
     parser.add_argument("--workers", type=int, default=0, help="worker processes (0 = all cores)")
+    parser.add_argument("--white-signs", action="store_true",
+                        help="also look for white and grey signs (the white step, off by default)")
     args = parser.parse_args(argv)
 
     folders = list(args.drives) + [generated_drive(s, args.pairs, args.depth, args.legacy_faces, args.white_share)
@@ -110,7 +112,8 @@ def main(argv=None) -> int:
         parser.error("give drive folders or --generate SEEDS")
     catalogue = load_catalogue(args.catalogue)
     config = PipelineConfig(depth=DepthConfig(near_m=args.near, far_m=args.far),
-                            classification=ClassificationConfig(classifier=args.classifier))
+                            classification=ClassificationConfig(classifier=args.classifier),
+                            white=WhiteConfig(white_signs=args.white_signs))
     reports = {"detections": [], "signs": []}
     all_azimuth_errors = []
     accepted_total, accepted_wrong, accepted_unmatched = 0, 0, 0

@@ -47,6 +47,9 @@ def build_parser() -> argparse.ArgumentParser:
                                        "cluster a folder of your own must be at the same path on every worker")
     p.add_argument("--settings-from", metavar="GPKG",
                    help="map with the settings an earlier output's run table records (pipeline, fusion, catalogue)")
+    p.add_argument("--white-signs", action="store_true",
+                   help="also look for white and grey signs (end-of-restriction discs and panels; slower, as the "
+                        "mapsigns option)")
     p.add_argument("--language", choices=LANGUAGES,
                    help="language of sign names (default: the environment's locale, else English)")
     p.add_argument("--crops", action="store_true",
@@ -86,14 +89,16 @@ def settings(args, say):
     from .catalogue import load_catalogue
     from .fusion import FusionConfig
     from .pipeline import PipelineConfig
+    from .pipeline.config import with_settings
     from .run_settings import load_run_settings
 
     earlier = load_run_settings(args.settings_from, say) if args.settings_from else None
     folder = args.catalogue or (earlier.catalogue if earlier is not None else None)
     catalogue = load_catalogue(folder)
-    if earlier is None:
-        return catalogue, PipelineConfig(), FusionConfig()
-    return catalogue, earlier.config, earlier.fusion
+    config, fusion = (PipelineConfig(), FusionConfig()) if earlier is None else (earlier.config, earlier.fusion)
+    if args.white_signs:  # given, it wins over the record (as a changed dialog value in mapsigns)
+        config = with_settings(config, {"white": {"white_signs": True}})
+    return catalogue, config, fusion
 
 
 class Printer:

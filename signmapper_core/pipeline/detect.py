@@ -366,7 +366,7 @@ def _hough_detections(pair: PairContext, depth: np.ndarray, search: np.ndarray,
         sub = search[y0:y1, x0:x1]
         scale = hough_scale(r_min, config.hough.hough_scale, config.hough.hough_min_radius_px)
         for seg in hough_segments(pair.left[y0:y1, x0:x1], sub, r_min, r_max, scale, config):
-            if seg.colour == "white":  # white and grey discs are the white step's (white_signs)
+            if seg.colour == "white" and config.white.white_signs:  # the white step's discs
                 continue
             seg = _shift_segment(seg, x0, y0)
             cu, cv = bbox_centre(seg.bbox)

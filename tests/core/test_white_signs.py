@@ -19,7 +19,7 @@ from signmapper_core.pipeline.white_outlines import (
 from signmapper_core.pipeline.white_signs import pole_share, side_share, support_share
 
 FORWARD, RIGHT, DOWN = POSE.rotation[:, 2], POSE.rotation[:, 0], POSE.rotation[:, 1]
-CONFIG = PipelineConfig()
+CONFIG = with_settings(PipelineConfig(), {"white": {"white_signs": True}})
 
 
 def _world(ahead, right, up):
