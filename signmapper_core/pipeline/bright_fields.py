@@ -117,12 +117,12 @@ def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: Pip
     """White fields enclosed by a red ring, found by brightness (the colour step makes them "hole" segments).
 
     ``search`` (bool, image size) limits where fields may lie; ``min_face_px`` is the
-    smallest face worth finding (its field is ~0.6 of it; never below ``config.bright_fields.field_min_px``).
+    smallest face worth finding (its field ``field_of_face`` of it; never below ``field_min_px``).
     Each bright component is first judged on the reduced image by means (cheap, loose), then
     at full resolution by medians.
     """
     fields = config.bright_fields
-    min_field = max(fields.field_min_px, 0.6 * (min_face_px or 0))
+    min_field = max(fields.field_min_px, fields.field_of_face * (min_face_px or 0))
     # the reduced image keeps the smallest field field_min_side_px wide (labelling each level costs per pixel);
     # an integer reduction, which OpenCV averages fast
     scale = min(fields.field_scale, 1.0 / max(1, int(min_field // fields.field_min_side_px)))

@@ -80,7 +80,7 @@ def weak_rim_circles(image: np.ndarray, config: PipelineConfig, taken: Sequence[
                      search: Optional[np.ndarray] = None) -> List[Segment]:
     """Hough circles of ``hough.hough_min_face_px`` .. ``hough.max_face_px`` (of ``config``) no face candidate covers.
 
-    A circle counts as covered when a candidate's box matches it (IoU >= 0.5); a colour
+    A circle counts as covered when a candidate's box matches it (IoU >= ``hough_covered_iou``); a colour
     segment that swallowed the disc together with a neighbour (blue sky, a second sign)
     does not cover it. White circles stay: end-of-restriction signs have no colour.
     """
@@ -90,7 +90,7 @@ def weak_rim_circles(image: np.ndarray, config: PipelineConfig, taken: Sequence[
     scale = hough_scale(r_min, config.hough.hough_scale, config.hough.hough_min_radius_px)
     for seg in hough_segments(image, search, r_min, r_max, scale, config):
         if (seg.colour in config.colour.colours or seg.colour == "white") and not any(
-                box_iou(seg.bbox, box) >= 0.5 for box in taken):
+                box_iou(seg.bbox, box) >= config.hough.hough_covered_iou for box in taken):
             out.append(seg)
     return out
 

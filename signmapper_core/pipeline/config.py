@@ -76,6 +76,8 @@ class SceneConfig:
     neutral_max_saturation: int = 40  # below this saturation (0-255) a pixel is grey seen in a cast (10 % cast: ~25);
     # higher lets beige façades pass for grey and tints the road blue (synthetic drives)
     max_white_balance_gain: float = 1.2  # a scene of mostly one colour (hedge, sky) must not be over-corrected
+    neutral_value_range: Tuple[int, int] = (41, 239)  # a neutral pixel is neither dark (noise) nor clipped
+    neutral_min_share: float = 0.02  # with fewer neutral pixels (of the sampled image) the scene is left as it is
     weak_colour: bool = True
     # colours the scene pass looks for: faded red rings and dim or orange-yellow priority roads (3.03) were
     # misses on GTSDB's tune split (weak yellow: +11 of 382 signs >= 30 px, +2.3 candidates per image);
@@ -119,6 +121,8 @@ class BrightFieldConfig:
     # smallest field side (px): the field of a 30 px triangle is ~20 x 17; smaller components (leaves, windows,
     # JPEG blocks) were 80 % of all (GTSDB tune split) and hardly a sign among them
     field_min_px: int = 16
+    field_of_face: float = 0.6  # a ring's field is at least this share of its face's side (Swiss triangles 0.64,
+    # circles 0.83): the smallest field sought for the smallest face
     field_min_fill: float = 0.35  # component area / box: a field's fill is 0.5 (triangle) to 0.79 (disc)
     field_max_fill: float = 0.95
     field_max_aspect: float = 1.6  # longer / shorter box side: a disc turned 50 deg; no field on a sign of the
@@ -154,12 +158,20 @@ class RimConfig:
     """
 
     rim_max_saturation: int = 70  # a white rim read as bright pixels joined to the part: white and grey in shade
+    rim_min_value: int = 60  # ...at least this bright...
+    rim_value_ratio: float = 0.9  # ...and at least this x the part's median brightness (both in the same light)
+    rim_window_margin: float = 0.3  # the window read around the part: twice the template's rim plus this x the
+    # part (designs with wider rims than the template's)
+    # the face so measured spans this range x the part; narrower is the part itself, wider a wall or the sky
+    rim_measured_scales: Tuple[float, float] = (1.08, 2.6)
+    rim_outline_min_inside: float = 0.8  # an outline laid at a scale counts with this share of it in the image
     rim_max_scale: float = 2.4  # widest rim sought: face / coloured part (GTSDB tune split: 1.9-2.3 for 3.03)
     rim_inner_scale: float = 1.12  # the part's own edge lies within this of its colour segment's box
     rim_edge_contrast: float = 3.0  # the outer edge is this x stronger than the plain rim inside it
     rim_edge_noise: float = 8.0  # Sobel units (~2 grey levels) added to the rim's strength: a spotless rim
     rim_border_scale: float = 1.15  # a dark border line's outer edge within this of its inner one (up to 7 %
     # of the face wide) ends the face; GTSDB's boxes end there
+    rim_border_min_strength: float = 0.6  # that outer edge is at least this x as strong as the inner one
     rim_blur_px: float = 1.5  # a part's colour segment misses this much of its blurred edge on each side
     # (GTSDB: a 15 px priority-road diamond's face is 2.3-2.6 x its segment, not 2.0)
     ring_edge_max_scale: float = 1.8  # widest ring sought around a field: face / field (Swiss circles 1.21,
@@ -250,6 +262,8 @@ class PlanarityConfig:
     sgbm_planarity_tolerance_px: float = 1.0  # the same for half-scale SGBM depth (noisier: 17% of true
     # signs fell below 0.5 at 0.6 px on a synthetic drive, 3% at 1.0 px)
     max_slant_deg: float = 45.0  # signs face the road, roughly along the optical axis
+    planarity_refit_band: float = 3.0  # the dominant plane is refitted on the pixels within this x the tolerance
+    # of it (twice): robust to a few outliers, wide enough to keep a first fit's slightly tilted plane
     min_depth_coverage: float = 0.3  # share of a segment's pixels needing a valid depth
     # depths farther than this share from the segment's median are matching artefacts (SGBM gives a sign's left
     # edge the background's depth) or background through the outline; a slanted face stays within a few per cent.
@@ -306,6 +320,8 @@ class HoughConfig:
     max_face_px: int = 200  # largest round face the Hough route (and the bright-field pass) looks for without
     # depth (radius range = cost)
     hough_min_face_px: int = 28  # smallest one: circles under ~28 px double its time and are mostly clutter
+    hough_covered_iou: float = 0.5  # a circle whose box matches a face candidate's this much is that candidate
+    # (a colour segment that swallowed the disc with a neighbour matches less and does not cover it)
     # a Hough ring is named by the hue of its pixels at least this saturated: below the colour step's weak
     # floor (weak_sat_min) so a rim too pale for it is still read as red/blue, above grey noise (~10)
     hough_tint_min_saturation: int = 22
@@ -410,6 +426,13 @@ class TemplateGeometry:
 
     template_min_fit: float = 0.72  # a drawn part fits its ideal outline closely (a segment needs 0.68)
     template_fill_window: float = 0.15  # and fills its box as that outline does (a segment: 0.2)
+    template_min_part_share: float = 0.02  # a colour covering less of the face is a detail (letters, a thin line)
+    template_full_snap: float = 0.03  # a part this close to the face's edges on every side is the whole face
+    # (rendering's rounding, no rim to correct for)
+    template_min_field_share: float = 0.05  # an enclosed field smaller than this share of the face is a letter's hole
+    # a panel's inset part of another shape covers between these shares of the panel (a zone sign's disc);
+    # smaller is a detail, larger is the panel's own colour
+    template_panel_part_area: Tuple[float, float] = (0.1, 0.8)
 
 
 TEMPLATE_GEOMETRY = TemplateGeometry()

@@ -72,10 +72,10 @@ def _part_of(mask: Optional[np.ndarray]) -> Tuple[Optional[Extent], Optional[str
     if mask is None:
         return extent, shape
     ys, xs = np.nonzero(mask)
-    if ys.size > 0.02 * mask.size:
+    if ys.size > TEMPLATE_GEOMETRY.template_min_part_share * mask.size:
         h, w = mask.shape
         extent = (xs.min() / w, ys.min() / h, (xs.max() + 1) / w, (ys.max() + 1) / h)
-        if all(abs(a - b) < 0.03 for a, b in zip(extent, FULL)):
+        if all(abs(a - b) < TEMPLATE_GEOMETRY.template_full_snap for a, b in zip(extent, FULL)):
             extent = FULL  # colour reaches the edge: no correction, avoid rounding noise
         filled = np.zeros_like(mask)
         contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
@@ -92,7 +92,8 @@ def _part_of(mask: Optional[np.ndarray]) -> Tuple[Optional[Extent], Optional[str
 
 def hole_part(catalogue, template_id: str, colour: str, hsv_ranges) -> Tuple[Optional[Extent], Optional[str]]:
     """(extent, shape) of the largest field the template's ``colour`` encloses (the white field inside a
-    red ring or border, the bar of no entry); (None, None) if it encloses none of at least 5 % of the face."""
+    red ring or border, the bar of no entry); (None, None) if it encloses none of at least
+    ``TEMPLATE_GEOMETRY.template_min_field_share`` of the face."""
     return _measured_once(catalogue, (id(catalogue), template_id, "hole:" + colour),
                           lambda: _hole_of(_colour_mask(catalogue, template_id, colour, hsv_ranges)))
 
@@ -106,7 +107,7 @@ def _hole_of(mask: Optional[np.ndarray]) -> Tuple[Optional[Extent], Optional[str
     h, w = mask.shape
     if holes:
         hole = max(holes, key=cv2.contourArea)
-        if cv2.contourArea(hole) >= 0.05 * h * w:
+        if cv2.contourArea(hole) >= TEMPLATE_GEOMETRY.template_min_field_share * h * w:
             x, y, hw, hh = cv2.boundingRect(hole)
             extent = (x / w, y / h, (x + hw) / w, (y + hh) / h)
             filled = np.zeros((hh, hw), np.uint8)
@@ -168,9 +169,14 @@ def candidate_entries(catalogue, colour: str, shapes: Iterable[str], hsv_ranges,
             continue
         elif extent == FULL and entry.shape in shapes:
             out.append((entry, extent))
-        elif entry.shape in ("rectangle", "square") and part_shape in shapes and 0.1 < _area(extent) < 0.8:
+        elif entry.shape in ("rectangle", "square") and part_shape in shapes and _panel_part(extent):
             out.append((entry, extent))
     return out
+
+
+def _panel_part(extent: Extent) -> bool:
+    smallest, largest = TEMPLATE_GEOMETRY.template_panel_part_area
+    return smallest < _area(extent) < largest
 
 
 def measured_rim_bbox(image: np.ndarray, segment_bbox, segment_mask: np.ndarray, extent: Extent,
@@ -187,14 +193,17 @@ def measured_rim_bbox(image: np.ndarray, segment_bbox, segment_mask: np.ndarray,
     x, y, w, h = segment_bbox
     fx0, fy0, fx1, fy1 = extent
     grow = max(fx0, fy0, 1 - fx1, 1 - fy1) / max(0.05, min(fx1 - fx0, fy1 - fy0))  # rim / coloured part
-    gx, gy = int(np.ceil(w * (2.0 * grow + 0.3))), int(np.ceil(h * (2.0 * grow + 0.3)))
+    margin = config.rims.rim_window_margin
+    gx, gy = int(np.ceil(w * (2.0 * grow + margin))), int(np.ceil(h * (2.0 * grow + margin)))
     height, width = image.shape[:2]
     x0, y0, x1, y1 = max(0, x - gx), max(0, y - gy), min(width, x + w + gx), min(height, y + h + gy)
     hsv = cv2.cvtColor(image[y0:y1, x0:x1], cv2.COLOR_BGR2HSV)
     inner = hsv[y - y0 : y - y0 + h, x - x0 : x - x0 + w, 2][segment_mask > 0]
     if inner.size == 0:
         return None
-    bright = (hsv[..., 1] < config.rims.rim_max_saturation) & (hsv[..., 2] >= max(60, np.median(inner) * 0.9))
+    rims = config.rims
+    bright = (hsv[..., 1] < rims.rim_max_saturation) & (hsv[..., 2] >= max(rims.rim_min_value,
+                                                                          np.median(inner) * rims.rim_value_ratio))
     mask = bright.astype(np.uint8) * 255
     mask[y - y0 : y - y0 + h, x - x0 : x - x0 + w][segment_mask > 0] = 255
     mask = cv2.morphologyEx(mask, cv2.MORPH_CLOSE, np.ones((3, 3), np.uint8))
@@ -208,7 +217,8 @@ def measured_rim_bbox(image: np.ndarray, segment_bbox, segment_mask: np.ndarray,
     bx, by, bw, bh = cv2.boundingRect(contour)
     if bx == 0 or by == 0 or bx + bw >= x1 - x0 or by + bh >= y1 - y0:
         return None  # the bright area runs out of the window: sky or a wall, not a rim
-    if not (1.08 * w <= bw <= 2.6 * w and 1.08 * h <= bh <= 2.6 * h):
+    lo, hi = rims.rim_measured_scales
+    if not (lo * w <= bw <= hi * w and lo * h <= bh <= hi * h):
         return None
     filled = np.zeros((bh, bw), np.uint8)
     cv2.drawContours(filled, [cv2.convexHull(contour)], -1, 255, thickness=cv2.FILLED, offset=(-bx, -by))
@@ -240,9 +250,10 @@ def outline_samples(shape: str, count: int = 96) -> Tuple[np.ndarray, np.ndarray
     return np.vstack(points), np.vstack(normals)
 
 
-def outline_edge_profile(image: np.ndarray, segment_bbox, shape: str, scales: np.ndarray) -> np.ndarray:
+def outline_edge_profile(image: np.ndarray, segment_bbox, shape: str, scales: np.ndarray,
+                         min_inside: float) -> np.ndarray:
     """Median edge strength across the ideal ``shape`` outline of the segment's box scaled by each of ``scales``
-    about its centre (0 where the outline leaves the image)."""
+    about its centre (0 where less than ``min_inside`` of the outline lies in the image)."""
     x, y, w, h = segment_bbox
     cx, cy = x + w / 2.0, y + h / 2.0
     reach = float(scales.max()) * max(w, h) / 2.0 + 3
@@ -258,7 +269,7 @@ def outline_edge_profile(image: np.ndarray, segment_bbox, shape: str, scales: np
         px = np.round(cx - fw / 2.0 + points[:, 0] * fw - 0.5 - x0).astype(int)
         py = np.round(cy - fh / 2.0 + points[:, 1] * fh - 0.5 - y0).astype(int)
         inside = (px >= 0) & (py >= 0) & (px < gx.shape[1]) & (py < gx.shape[0])
-        if inside.mean() < 0.8:
+        if inside.mean() < min_inside:
             continue
         n = normals[inside] / np.array([fw, fh])  # the normal of the outline stretched to the box
         n /= np.linalg.norm(n, axis=1, keepdims=True)
@@ -289,7 +300,7 @@ def edge_rim_bbox(image: np.ndarray, segment_bbox, shape: str, max_scale: float,
     blur = 2.0 * blur_px / max(1, min(w, h))
     max_scale, inner_scale = max_scale * (1.0 + blur), inner_scale + blur
     scales = step ** np.arange(int(np.floor(np.log(max_scale) / np.log(step))) + 1)
-    profile = outline_edge_profile(image, segment_bbox, shape, scales)
+    profile = outline_edge_profile(image, segment_bbox, shape, scales, rims.rim_outline_min_inside)
     inner = int(np.argmax(np.where(scales <= inner_scale, profile, -1.0)))
     best, best_k = 0.0, None
     for k in range(inner + 2, len(scales) - 1):
@@ -302,7 +313,8 @@ def edge_rim_bbox(image: np.ndarray, segment_bbox, shape: str, max_scale: float,
         return None
     # a dark border line has two edges: the face ends at its outer one, a strong maximum just beyond
     outer = [k for k in range(best_k + 1, len(scales) - 1) if scales[k] <= border_scale * scales[best_k]
-             and profile[k] >= profile[k - 1] and profile[k] >= profile[k + 1] and profile[k] >= 0.6 * profile[best_k]]
+             and profile[k] >= profile[k - 1] and profile[k] >= profile[k + 1]
+             and profile[k] >= rims.rim_border_min_strength * profile[best_k]]
     s = scales[outer[-1] if outer else best_k]
     fw, fh = s * w, s * h
     return (int(round(x + w / 2.0 - fw / 2.0)), int(round(y + h / 2.0 - fh / 2.0)), int(round(fw)), int(round(fh)))

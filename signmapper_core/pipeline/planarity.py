@@ -150,7 +150,7 @@ def segment_planarity(
         return PlanarityResult(0.0, coverage, None, float("nan"))
     for _ in range(2):
         resid = np.abs(d - (coef[0] + coef[1] * u_img + coef[2] * v_img))
-        near = resid <= 3 * tolerance_px
+        near = resid <= config.planarity.planarity_refit_band * tolerance_px
         if near.sum() < 3:
             break
         coef = _fit_plane(u_img.astype(float), v_img.astype(float), d, near)

@@ -38,19 +38,22 @@ class SceneColour:
     weak_ranges: Dict[str, Tuple[HsvRange, ...]]  # per colour: lowered saturation/value floors
 
 
-def white_balance_gains(bgr: np.ndarray, max_saturation: int, max_gain: float) -> Tuple[float, float, float]:
+def white_balance_gains(bgr: np.ndarray, scene) -> Tuple[float, float, float]:
     """Per-channel gains that bring the mean of the near-neutral pixels to grey (B = G = R).
 
-    Near-neutral: saturation below ``max_saturation`` and neither dark nor clipped.
-    Gains are limited to ``1/max_gain .. max_gain``: a scene dominated by one colour
-    (a green hedge) must not be turned magenta. Without enough neutral pixels: no change.
+    ``scene``: the config's scene section. Near-neutral: saturation below ``neutral_max_saturation``
+    and brightness within ``neutral_value_range``. Gains are limited to ``1/max_white_balance_gain ..
+    max_white_balance_gain``: a scene dominated by one colour (a green hedge) must not be turned
+    magenta. With less than ``neutral_min_share`` neutral pixels: no change.
     """
+    max_saturation, max_gain = scene.neutral_max_saturation, scene.max_white_balance_gain
+    low, high = scene.neutral_value_range
     sample = np.ascontiguousarray(bgr[::_SAMPLE_STEP, ::_SAMPLE_STEP])
     if sample.size == 0:
         return (1.0, 1.0, 1.0)
     hsv = cv2.cvtColor(sample, cv2.COLOR_BGR2HSV)
-    neutral = cv2.inRange(hsv, (0, 0, 41), (180, max_saturation - 1, 239))
-    if cv2.countNonZero(neutral) < 0.02 * neutral.size:
+    neutral = cv2.inRange(hsv, (0, 0, low), (180, max_saturation - 1, high))
+    if cv2.countNonZero(neutral) < scene.neutral_min_share * neutral.size:
         return (1.0, 1.0, 1.0)
     means = np.array(cv2.mean(sample, mask=neutral)[:3])
     gains = np.clip(means.mean() / np.maximum(means, 1.0), 1.0 / max_gain, max_gain)
@@ -108,8 +111,7 @@ def _median_u8(values: np.ndarray) -> float:
 
 def scene_colour(bgr: np.ndarray, config: PipelineConfig) -> SceneColour:
     """White balance and weak colour ranges of one image (or image window)."""
-    gains = white_balance_gains(bgr, config.scene.neutral_max_saturation, config.scene.max_white_balance_gain) \
-        if config.scene.white_balance else (1.0, 1.0, 1.0)
+    gains = white_balance_gains(bgr, config.scene) if config.scene.white_balance else (1.0, 1.0, 1.0)
     sample = apply_gains(np.ascontiguousarray(bgr[::_SAMPLE_STEP, ::_SAMPLE_STEP]), gains)
     hsv = cv2.cvtColor(sample, cv2.COLOR_BGR2HSV) if sample.size else np.zeros((1, 1, 3), np.uint8)
     saturation, brightness = _median_u8(hsv[..., 1]), _median_u8(hsv[..., 2])

@@ -91,9 +91,9 @@ def test_scene_floors_follow_the_scene_saturation():
 
 def test_white_balance_removes_a_colour_cast_and_keeps_a_neutral_scene():
     grey = noisy_background(sigma=6)
-    assert all(abs(g - 1.0) < 0.02 for g in white_balance_gains(grey, 40, 1.2))
+    assert all(abs(g - 1.0) < 0.02 for g in white_balance_gains(grey, CONFIG.scene))
     cast = np.clip(grey.astype(np.float32) * (1.0, 0.97, 1.1), 0, 255).astype(np.uint8)  # warm light
-    gains = white_balance_gains(cast, 40, 1.2)
+    gains = white_balance_gains(cast, CONFIG.scene)
     balanced = apply_gains(cast, gains).reshape(-1, 3).mean(axis=0)
     assert np.ptp(cast.reshape(-1, 3).mean(axis=0)) > 10 > 4 * np.ptp(balanced)
 
