@@ -226,7 +226,7 @@ class ColourFrame:
         if not config.scene.weak_colour:
             return cls(hsv, hsv, None, {})
         scene = scene_colour(image, config)
-        balanced = apply_gains(image, scene.gains)
+        balanced = apply_gains(image, scene.gains, config.scene.white_balance_min_change)
         hsv_weak = hsv if balanced is image else cv2.cvtColor(balanced, cv2.COLOR_BGR2HSV)
         colourful = chroma_at_least(hsv_weak, config.scene.weak_min_chroma).view(np.uint8) * 255
         return cls(hsv, hsv_weak, colourful, scene.weak_ranges)
@@ -366,12 +366,12 @@ def merge_segments(a: Segment, b: Segment) -> Segment:
                    a.touches_border or b.touches_border, a.source, 1.0, pieces)
 
 
-def merge_candidates(segments: Sequence[Segment], max_gap_fraction: float) -> List[Segment]:
+def merge_candidates(segments: Sequence[Segment], max_gap_fraction: float, max_aspect: float) -> List[Segment]:
     """Merged segments of same-coloured pieces close to each other, for faces split by an occluder.
 
     Two pieces qualify when the gap between their boxes is at most ``max_gap_fraction``
     of the merged box's size (``config.colour.merge_max_gap``) and the merged box is not
-    elongated beyond 2:1.
+    longer than ``max_aspect`` x its width (``config.colour.merge_max_aspect``).
     """
     out = []
     for i, a in enumerate(segments):
@@ -382,7 +382,7 @@ def merge_candidates(segments: Sequence[Segment], max_gap_fraction: float) -> Li
             x1 = max(a.bbox[0] + a.bbox[2], b.bbox[0] + b.bbox[2])
             y1 = max(a.bbox[1] + a.bbox[3], b.bbox[1] + b.bbox[3])
             w, h = x1 - x0, y1 - y0
-            if box_gap(a.bbox, b.bbox) > max_gap_fraction * max(w, h) or max(w, h) > 2 * min(w, h):
+            if box_gap(a.bbox, b.bbox) > max_gap_fraction * max(w, h) or max(w, h) > max_aspect * min(w, h):
                 continue
             out.append(merge_segments(a, b))
     return out
@@ -406,6 +406,7 @@ def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment
     before its pieces.
     """
     min_fit, max_gap_fraction = config.shape.min_shape_fit, config.colour.merge_max_gap
+    max_aspect = config.colour.merge_max_aspect
     min_span_overlap, min_gain = config.colour.split_min_span_overlap, config.colour.split_min_gain
     min_diagonal, fill_window = config.colour.split_min_diagonal_overlap, config.shape.compare_fill_window
     fits: dict = {}
@@ -425,7 +426,7 @@ def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment
             bx, by, bw, bh = b.bbox
             x0, y0 = min(ax, bx), min(ay, by)
             w, h = max(ax + aw, bx + bw) - x0, max(ay + ah, by + bh) - y0
-            if box_gap(a.bbox, b.bbox) > max_gap_fraction * max(w, h) or max(w, h) > 2 * min(w, h):
+            if box_gap(a.bbox, b.bbox) > max_gap_fraction * max(w, h) or max(w, h) > max_aspect * min(w, h):
                 continue
             across = _span_overlap(ax, ax + aw, bx, bx + bw)  # of the columns: one above the other
             along = _span_overlap(ay, ay + ah, by, by + bh)  # of the rows: side by side

@@ -50,6 +50,8 @@ class ColourConfig:
     min_face_px: int = 16  # smallest face to find without depth (GTSDB's smallest signs); sets the small pass
     max_merge_pieces: int = 40  # rejected segments tried in pairs (faces split by an occluder)
     merge_max_gap: float = 0.35  # two pieces of one face are at most this x the merged box's size apart
+    merge_max_aspect: float = 2.0  # ...and their merged box is at most this much longer than wide: beyond it the
+    # pieces are two faces one above the other (a sign and the one under it), not one face cut by a bar or pole
     # a bar (2.02) or a pole cuts a face into pieces stacked along one axis: they overlap along the other by this
     # share of the shorter one...
     split_min_span_overlap: float = 0.6
@@ -76,6 +78,8 @@ class SceneConfig:
     neutral_max_saturation: int = 40  # below this saturation (0-255) a pixel is grey seen in a cast (10 % cast: ~25);
     # higher lets beige façades pass for grey and tints the road blue (synthetic drives)
     max_white_balance_gain: float = 1.2  # a scene of mostly one colour (hedge, sky) must not be over-corrected
+    white_balance_min_change: float = 0.03  # gains all within this of 1 leave the image as it is: so slight a cast
+    # moves no hue across a class border, and skipping it saves two full-frame passes
     neutral_value_range: Tuple[int, int] = (41, 239)  # a neutral pixel is neither dark (noise) nor clipped
     neutral_min_share: float = 0.02  # with fewer neutral pixels (of the sampled image) the scene is left as it is
     weak_colour: bool = True
@@ -242,6 +246,14 @@ class DepthConfig:
     sgbm_row_margin_px: int = 24  # margin around candidates, rows and columns
     sgbm_far_factor: float = 2.0  # search disparities down to far*2: far points then match outside the range
     sgbm_uniqueness: int = 15
+    # OpenCV's smoothness penalties per pixel of the block (x block size^2): small disparity steps (P1) and larger
+    # jumps (P2) along a path; the ratio 1:4 and these values are OpenCV's documented choice for SGBM
+    sgbm_p1: int = 8
+    sgbm_p2: int = 32
+    sgbm_disp12_max_diff: int = 2  # left-right check: disparities of both views differing more are invalid
+    sgbm_speckle_window: int = 60  # disparity blobs smaller than this (pixels at the matcher's scale) are noise...
+    sgbm_speckle_range: int = 2  # ...where their disparities vary at most this much within
+    sgbm_prefilter_cap: int = 31  # clip of the x-derivative prefilter: limits the weight of strong texture
     # colour candidates whose box height cannot be a face (or a coloured part of one) anywhere in the depth range
     # get no stereo rows: taller than this x the tallest format at the near limit (perspective, rims)...
     sgbm_band_max_height: float = 1.3
@@ -311,6 +323,8 @@ class HoughConfig:
     # is read at 1/3 (half the cost at 0.5); the colour step without depth (r 14 px) stays at 0.5
     hough_min_radius_px: float = 6.0
     hough_circularity: float = 0.85  # param2 of HOUGH_GRADIENT_ALT
+    hough_dp: float = 1.5  # accumulator resolution of HOUGH_GRADIENT_ALT: 1.5 x coarser than the image (OpenCV's
+    # advice for that method); finer finds no more signs and costs more
     hough_edge_threshold: float = 150.0  # param1 of HOUGH_GRADIENT_ALT
     hough_max_status: str = "review"  # status cap of Hough finds whose ring is not in full colour
     hough_max_diameter_m: float = 0.6  # larger round formats only by colour: the radius range sets the cost
@@ -406,6 +420,11 @@ class PlateConfig:
     plate_notch_m: float = 0.02  # thin dark lines across a plate (a wire, a pole's edge) do not count against it
     plate_max_offset: float = 0.35  # centre off the sign's axis, share of the wider of the two
     plate_size_tolerance: float = 0.2  # relative deviation from a plate format (PLATE_FORMATS)
+    plate_ink_darkness: float = 0.6  # a plate pixel darker than this x the plate's median is ink (text, pictogram,
+    # frame): printed black on white stays below half of the paper's brightness even in shade
+    plate_min_seen: float = 0.3  # at least this share of a plate's box seen (not hidden in front) to judge its ink
+    plate_depth_tolerance_share: float = 0.05  # ...the depth tolerance grows to this share of the depth (SGBM's
+    # depth error grows with distance)
     plate_min_ink: float = 0.02  # share of dark pixels (text, pictogram, frame): a blank white region is no plate
     plate_max_ink: float = 0.5
     plate_accept_score: float = 0.8  # fill and fit to its format: above, the plate is "accepted"

@@ -52,18 +52,20 @@ def largest_disparity_px(camera: Camera, near_m: float, far_m: float, scale: flo
     return int(math.ceil((min_disp + num_disp) / scale))
 
 
-def _sgbm(min_disp: int, num_disp: int, block: int, channels: int, uniqueness: int):
+def _sgbm(min_disp: int, num_disp: int, channels: int, settings):
+    """OpenCV's semi-global matcher with the depth section's settings (``settings``: a ``DepthConfig``)."""
+    block = settings.sgbm_block_size
     return cv2.StereoSGBM_create(
         minDisparity=min_disp,
         numDisparities=num_disp,
         blockSize=block,
-        P1=8 * channels * block * block,
-        P2=32 * channels * block * block,
-        disp12MaxDiff=2,
-        uniquenessRatio=uniqueness,
-        speckleWindowSize=60,
-        speckleRange=2,
-        preFilterCap=31,
+        P1=settings.sgbm_p1 * channels * block * block,
+        P2=settings.sgbm_p2 * channels * block * block,
+        disp12MaxDiff=settings.sgbm_disp12_max_diff,
+        uniquenessRatio=settings.sgbm_uniqueness,
+        speckleWindowSize=settings.sgbm_speckle_window,
+        speckleRange=settings.sgbm_speckle_range,
+        preFilterCap=settings.sgbm_prefilter_cap,
         mode=cv2.STEREO_SGBM_MODE_SGBM_3WAY,
     )
 
@@ -115,7 +117,7 @@ def sgbm_depth(
     """
     settings = config.depth
     near_m, far_m, scale, far_factor = settings.near_m, settings.far_m, settings.sgbm_scale, settings.sgbm_far_factor
-    block_size, uniqueness = settings.sgbm_block_size, settings.sgbm_uniqueness
+    block_size = settings.sgbm_block_size
     height, width = left.shape[:2]
     depth = np.full((height, width), np.nan, dtype=np.float32)
     if windows is None:
@@ -125,7 +127,7 @@ def sgbm_depth(
     reach = largest_disparity_px(camera, near_m, far_m, scale, far_factor)
     grey_l = cv2.cvtColor(left, cv2.COLOR_BGR2GRAY) if left.ndim == 3 else left
     grey_r = cv2.cvtColor(right, cv2.COLOR_BGR2GRAY) if right.ndim == 3 else right
-    matcher = _sgbm(min_disp, num_disp, block_size, 1, uniqueness)
+    matcher = _sgbm(min_disp, num_disp, 1, settings)
     context = block_size + 2  # rows around a band so its edges are matched like the interior
     for x0, start, x1, stop in windows:
         a, b = max(0, start - context), min(height, stop + context)

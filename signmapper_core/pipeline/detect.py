@@ -329,7 +329,8 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
             elif not seg.touches_border:
                 rejected.append(seg)
         # pieces that fail alone are also tried together when no whole outline formed (a branch cut them)
-        for seg in merge_candidates(rejected[: config.colour.max_merge_pieces], config.colour.merge_max_gap):
+        for seg in merge_candidates(rejected[: config.colour.max_merge_pieces], config.colour.merge_max_gap,
+                                    config.colour.merge_max_aspect):
             det = evaluate_segment(seg, pair, depth)
             if det is not None:
                 detections.append(det)

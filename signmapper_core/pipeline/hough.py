@@ -18,8 +18,6 @@ import numpy as np
 from .colour import Segment, hsv_mask
 from .config import PipelineConfig
 
-HOUGH_DP = 1.5
-
 
 def radius_range_px(fx: float, near_m: float, far_m: float, diameters_m: Sequence[float], slack: float):
     """(min, max) radius in pixels of round signs of the given diameters within near..far, widened by ``slack``."""
@@ -54,8 +52,8 @@ def find_circles(
     grey[mask < 128] = 0
     lo, hi = max(2, int(r_min * scale)), max(3, int(np.ceil(r_max * scale)))
     circles = cv2.HoughCircles(
-        grey, cv2.HOUGH_GRADIENT_ALT, dp=HOUGH_DP, minDist=max(4, lo), param1=config.hough.hough_edge_threshold,
-        param2=config.hough.hough_circularity, minRadius=lo, maxRadius=hi,
+        grey, cv2.HOUGH_GRADIENT_ALT, dp=config.hough.hough_dp, minDist=max(4, lo),
+        param1=config.hough.hough_edge_threshold, param2=config.hough.hough_circularity, minRadius=lo, maxRadius=hi,
     )
     if circles is None:
         return np.zeros((0, 3))

@@ -33,6 +33,12 @@ BELOW, ABOVE = 1, -1
 NOTCHED_FILL = 0.6  # a region filling less of its box is no plate with notches: its fill is not re-measured
 
 
+def depth_tolerance_m(z: float, config) -> float:
+    """How far from a sign's depth ``z`` a plate's pixels may lie: the fixed tolerance, or a share of the depth
+    where SGBM's error has grown beyond it."""
+    return max(config.plates.plate_depth_tolerance_m, config.plates.plate_depth_tolerance_share * z)
+
+
 def plate_templates(pair: PairContext) -> tuple:
     """The pictogram plate templates of the pair's catalogue (none for a catalogue without ``plates/``)."""
     folder = getattr(pair.catalogue, "folder", None)
@@ -110,9 +116,9 @@ def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int,
         return None
     grey = cv2.cvtColor(pair.left[cy:cy + ch, cx:cx + cw], cv2.COLOR_BGR2GRAY)
     seen = np.ones(grey.shape, bool) if hidden is None else ~hidden[cy:cy + ch, cx:cx + cw].astype(bool)
-    if seen.sum() < 0.3 * seen.size:
+    if seen.sum() < config.plates.plate_min_seen * seen.size:
         return None
-    ink = float(np.mean(grey[seen] < 0.6 * np.median(grey[seen])))  # text, pictogram and frame
+    ink = float(np.mean(grey[seen] < config.plates.plate_ink_darkness * np.median(grey[seen])))
     if not config.plates.plate_min_ink <= ink <= config.plates.plate_max_ink:
         return None
     return 1.0 - min(fmt[2] / math.log(1.0 + config.plates.plate_size_tolerance), 1.0) * 0.5, fmt
@@ -219,7 +225,7 @@ def hidden_mask(bgr: np.ndarray, depth: np.ndarray, z: float, config) -> np.ndar
     never a white plate's paper or its black print) and, where depth is known, nearer ones (a lamp post)."""
     hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
     coloured = hsv[:, :, 1] > config.plates.plate_max_saturation
-    nearer = np.isfinite(depth) & (depth < z - max(config.plates.plate_depth_tolerance_m, 0.05 * z))
+    nearer = np.isfinite(depth) & (depth < z - depth_tolerance_m(z, config))
     return (coloured | nearer).astype(np.uint8)
 
 
@@ -263,7 +269,7 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
         return None
     window = pair.left[y0:y1, x0:x1]
     near = depth[y0:y1, x0:x1]
-    elsewhere = np.isfinite(near) & (np.abs(near - z) > max(config.plates.plate_depth_tolerance_m, 0.05 * z))
+    elsewhere = np.isfinite(near) & (np.abs(near - z) > depth_tolerance_m(z, config))
     in_window = hidden_mask(window, near, z, config)
     for other in others:  # the window's part of the pair's other signs
         ox, oy, ow, oh = other.bbox

@@ -60,11 +60,10 @@ def white_balance_gains(bgr: np.ndarray, scene) -> Tuple[float, float, float]:
     return tuple(float(g) for g in gains)
 
 
-def apply_gains(bgr: np.ndarray, gains: Tuple[float, float, float]) -> np.ndarray:
+def apply_gains(bgr: np.ndarray, gains: Tuple[float, float, float], min_change: float) -> np.ndarray:
     """The image with each channel scaled by its gain (saturating at 255); unchanged (the same array) when
-    every gain is within 3 % of 1: so slight a cast moves no hue across a class border, and skipping it
-    saves two full-frame passes."""
-    if all(abs(g - 1.0) < 0.03 for g in gains):
+    every gain is within ``min_change`` of 1 (``scene.white_balance_min_change``)."""
+    if all(abs(g - 1.0) < min_change for g in gains):
         return bgr
     levels = np.arange(256, dtype=np.float32)[:, None] * np.asarray(gains, np.float32)[None, :]
     lut = np.clip(np.round(levels), 0, 255).astype(np.uint8).reshape(256, 1, 3)
@@ -112,7 +111,8 @@ def _median_u8(values: np.ndarray) -> float:
 def scene_colour(bgr: np.ndarray, config: PipelineConfig) -> SceneColour:
     """White balance and weak colour ranges of one image (or image window)."""
     gains = white_balance_gains(bgr, config.scene) if config.scene.white_balance else (1.0, 1.0, 1.0)
-    sample = apply_gains(np.ascontiguousarray(bgr[::_SAMPLE_STEP, ::_SAMPLE_STEP]), gains)
+    sample = apply_gains(np.ascontiguousarray(bgr[::_SAMPLE_STEP, ::_SAMPLE_STEP]), gains,
+                         config.scene.white_balance_min_change)
     hsv = cv2.cvtColor(sample, cv2.COLOR_BGR2HSV) if sample.size else np.zeros((1, 1, 3), np.uint8)
     saturation, brightness = _median_u8(hsv[..., 1]), _median_u8(hsv[..., 2])
     return SceneColour(gains, saturation, brightness, weak_ranges(config, saturation, brightness))
