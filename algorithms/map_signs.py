@@ -123,8 +123,9 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             "yellow (priority road).",
         )
         self.add_parameter(
+            # optional: models saved before this parameter existed stay valid (QGIS asks for every mandatory one)
             QgsProcessingParameterBoolean(self.WHITE_SIGNS, self.tr("Also look for white and grey signs (slower)"),
-                                          defaultValue=default("white", "white_signs")),
+                                          defaultValue=default("white", "white_signs"), optional=True),
             "End-of-restriction discs and panels (2.53-2.59) have no sign colour: they are found by their outlines "
             "and the depth map over the whole image and classified by template matching. Off by default: on "
             "held-out synthetic drives it finds about half of them (names four in five of those right, no false "
