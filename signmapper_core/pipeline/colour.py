@@ -31,7 +31,7 @@ from .boxes import box_iou
 from .bright_fields import red_ring_fields
 from .config import ColourConfig, HsvRange, PipelineConfig
 from .scene_colour import apply_gains, chroma_at_least, scene_colour
-from .shape import classify_shape, outline_margin, outline_shapes
+from .shape import classify_shape, plausible_outlines
 
 
 @dataclass
@@ -235,8 +235,7 @@ class ColourFrame:
 def _weak_outline(seg: Segment, colour: str, config: PipelineConfig) -> bool:
     """Whether a scene-pass segment has an outline a face of its colour has (``config.scene.weak_shapes``; any
     ideal outline for colours not listed there)."""
-    result = classify_shape(seg.mask, config.shape.min_shape_fit, config.shape.shape_fill_window)
-    shapes = outline_shapes(result, outline_margin(config, seg.bbox[2], seg.bbox[3]), config.shape.min_shape_fit)
+    shapes = plausible_outlines(seg.mask, config)[1]
     allowed = config.scene.weak_shapes.get(colour)
     return bool(shapes) and (allowed is None or any(s in allowed for s in shapes))
 

@@ -30,10 +30,9 @@ from .face_extent import FULL, candidate_entries, face_bbox, hole_candidates, ri
 from .hough import hough_scale, hough_segments, radius_range_px, ring_colour_share
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
-from .planarity import segment_planarity
 from .plates import find_plates
 from .search_space import search_space_mask
-from .shape import IDEAL_FILL, catalogue_shapes, classify_shape, outline_margin, outline_shapes
+from .shape import IDEAL_FILL, catalogue_shapes, plausible_outlines
 from .sizing import measure_segment, metric_size, round_to_format
 from .white_outlines import WhiteCandidate, context_boxes, face_side_range_px, white_candidates, white_formats
 from .white_signs import white_detections
@@ -142,8 +141,7 @@ def segment_outline(seg: Segment, config: PipelineConfig) -> Tuple[Tuple[str, ..
     """
     if seg.source == "hough":
         return ("circle",), False
-    result = classify_shape(seg.mask, config.shape.min_shape_fit, config.shape.shape_fill_window)
-    shapes = outline_shapes(result, outline_margin(config, seg.bbox[2], seg.bbox[3]), config.shape.min_shape_fit)
+    result, shapes = plausible_outlines(seg.mask, config)
     marginal = bool(shapes) and (result.fit < config.shape.confident_shape_fit
                                  or abs(result.fill_ratio - IDEAL_FILL[shapes[0]]) > config.shape.confident_fill_window)
     return shapes, marginal
@@ -192,8 +190,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     fits = size_to_format(seg, candidates, size.depth_m, shape, pair)
     if not fits:
         return None
-    planarity = segment_planarity(camera, depth, seg.bbox, seg.surface_mask, config,
-                                  pair.depth_source.planarity_tolerance_px(config))
+    planarity = pair.planarity(depth, seg.bbox, seg.surface_mask)
     if planarity.indicator < config.planarity.detection_threshold:
         return None
     # A reading that grows the segment into a larger face (a zone panel around its red ring) wins

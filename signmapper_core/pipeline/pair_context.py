@@ -13,6 +13,7 @@ from ..geometry import Camera, Pose
 from .classifiers import classifier_for
 from .config import PipelineConfig
 from .depth_sources import DepthSource
+from .planarity import PlanarityResult, segment_planarity
 
 Roi = Tuple[int, int, int, int]  # x0, y0, x1, y1 (exclusive)
 
@@ -43,6 +44,11 @@ class PairContext:
     def classifier(self):
         """The classifier the config names for the catalogue (:func:`.classifiers.classifier_for`)."""
         return classifier_for(self.catalogue, self.config)
+
+    def planarity(self, depth: np.ndarray, bbox, mask: np.ndarray) -> PlanarityResult:
+        """:func:`.planarity.segment_planarity` of a segment, allowing for the noise of the pair's depth source."""
+        return segment_planarity(self.camera, depth, bbox, mask, self.config,
+                                 self.depth_source.planarity_tolerance_px(self.config))
 
     @cached_property
     def smallest_face_px(self) -> float:

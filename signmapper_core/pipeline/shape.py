@@ -122,10 +122,15 @@ def ambiguity_margin(base: float, blur_px: float, width_px: int, height_px: int,
     return base + blur_px / max(1, short)
 
 
-def outline_margin(config, width_px: int, height_px: int) -> float:
-    """:func:`ambiguity_margin` with a run's settings (``config``: a ``PipelineConfig``)."""
-    return ambiguity_margin(config.shape.shape_ambiguity, config.shape.shape_ambiguity_px, width_px, height_px,
-                            config.size.min_round_axis_ratio)
+def plausible_outlines(mask: np.ndarray, config) -> Tuple[ShapeResult, Tuple[str, ...]]:
+    """(the outline's fits, the shapes it may have, best first) of a segment mask with a run's settings
+    (``config``: a ``PipelineConfig``): the best fit and every other within :func:`ambiguity_margin` of it."""
+    shape = config.shape
+    result = classify_shape(mask, shape.min_shape_fit, shape.shape_fill_window)
+    height, width = mask.shape[:2]
+    margin = ambiguity_margin(shape.shape_ambiguity, shape.shape_ambiguity_px, width, height,
+                              config.size.min_round_axis_ratio)
+    return result, outline_shapes(result, margin, shape.min_shape_fit)
 
 
 def catalogue_shapes(shape: str, width_px: int, height_px: int) -> tuple:

@@ -22,7 +22,6 @@ from .detection import Detection
 from .hough import weak_colour
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
-from .planarity import segment_planarity
 from .search_space import valid_depth
 from .shape import catalogue_shapes
 from .sizing import measure_segment, metric_size, round_to_format
@@ -122,8 +121,7 @@ def judge_white(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
     ids = [t for t in match.template_ids if t in ids]
     if not ids:
         return None
-    planarity = segment_planarity(camera, depth, seg.bbox, seg.mask, config,
-                                  pair.depth_source.planarity_tolerance_px(config))
+    planarity = pair.planarity(depth, seg.bbox, seg.mask)
     if planarity.indicator < config.planarity.detection_threshold:
         return None
     u, v = bbox_centre(seg.bbox)
