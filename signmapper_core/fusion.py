@@ -89,6 +89,11 @@ class FusionConfig:
     accept_classification: float = 0.6  # the classifier's threshold for "accepted" (mapping passes it)
     single_margin: float = 0.4  # a sign seen once needs this share of the way from that threshold to 1 on top
     min_obs_accepted: int = 2
+    # supplementary plates' text (plate_fusion.py): read from the crops of a plate's this many largest (nearest)
+    # observations; more add OCR time and rarely a better text
+    plate_readings: int = 3
+    plate_well_formed_weight: float = 2.0  # a reading whose lines all have a form plates print counts this much
+    # more in the vote on a plate's text: a misreading rarely has one
 
 
 @dataclass

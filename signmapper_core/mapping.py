@@ -212,7 +212,7 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     plates = fuse_plates(detections, signs, fusion)
     if plates:
         report(progress, PAIRS_SHARE, f"Reading the text of {len(plates)} supplementary plates")
-        read_plate_texts(plates, warn)
+        read_plate_texts(plates, warn, config=fusion)
     signs += plates
     set_mounting_heights(drive, signs)
     report(progress, 1.0, f"{len(detections)} detections fused into {len(signs)} signs")

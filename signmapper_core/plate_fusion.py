@@ -23,9 +23,6 @@ from .plate_formats import PLATE_ID
 from .plate_text import is_plate_line, normalise_text
 from .progress import WarnCallback, send_warning
 
-READINGS_PER_PLATE = 3  # the nearest observations' crops are read: more add time, rarely a better text
-WELL_FORMED_WEIGHT = 2.0
-
 
 def is_plate(observation: Observation) -> bool:
     return getattr(observation.detection, "plate_of", None) is not None
@@ -60,22 +57,24 @@ def fuse_plates(observations: Sequence[Observation], signs: Sequence[FusedSign],
     return fused
 
 
-def reading_crops(plate: FusedSign, per_plate: int = READINGS_PER_PLATE) -> list:
+def reading_crops(plate: FusedSign, per_plate: int) -> list:
     """The crops its text is read from: those of its ``per_plate`` largest (nearest) observations."""
     seen = sorted((o for o in plate.observations if getattr(o.detection, "crop", None) is not None),
                   key=lambda o: o.bbox[3], reverse=True)
     return [o.detection.crop for o in seen[:per_plate]]
 
 
-def vote_text(readings) -> tuple[Optional[str], Optional[float]]:
+def vote_text(readings, config: Optional[FusionConfig] = None) -> tuple[Optional[str], Optional[float]]:
     """(text, confidence) of one plate from its readings: the normalised text with the largest summed OCR
-    confidence (doubled for a reading whose lines all have a form plates print, ``is_plate_line``); confidence =
-    its summed OCR confidence over the number of readings. (None, None) when nothing was read."""
+    confidence (x ``plate_well_formed_weight`` for a reading whose lines all have a form plates print,
+    ``is_plate_line``); confidence = its summed OCR confidence over the number of readings. (None, None) when
+    nothing was read."""
+    well_formed = (config or FusionConfig()).plate_well_formed_weight
     weights = defaultdict(float)
     for reading in readings:
         text = normalise_text(reading.lines)
         if text:  # a reading in the forms plates print counts twice: a misreading rarely is one
-            weights[text] += reading.confidence * (WELL_FORMED_WEIGHT if all(is_plate_line(line) for line in
+            weights[text] += reading.confidence * (well_formed if all(is_plate_line(line) for line in
                                                                              text.split(" / ")) else 1.0)
     if not weights:
         return None, None
@@ -85,18 +84,19 @@ def vote_text(readings) -> tuple[Optional[str], Optional[float]]:
 
 
 def read_plate_texts(plates: Sequence[FusedSign], warn: Optional[WarnCallback] = None,
-                     read: Callable = read_texts) -> int:
+                     read: Callable = read_texts, config: Optional[FusionConfig] = None) -> int:
     """Set each plate's ``text`` and ``text_confidence``; returns the number of plates with a text.
 
-    One OCR run for all plates. Without Tesseract (or when it fails) the plates keep
-    no text and ``warn`` hears once why and how to install it.
+    One OCR run for all plates (``config``: the run's fusion settings; default ``FusionConfig()``). Without
+    Tesseract (or when it fails) the plates keep no text and ``warn`` hears once why and how to install it.
     """
+    config = config or FusionConfig()
     owners, crops = [], []
     for k, plate in enumerate(plates):
         if plate.template_id != PLATE_ID:  # a pictogram plate: the words of its drawing, no OCR
             plate.text, plate.text_confidence = printed_text(plate)
             continue
-        for crop in reading_crops(plate):
+        for crop in reading_crops(plate, config.plate_readings):
             owners.append(k)
             crops.append(crop)
     if not crops:
@@ -112,7 +112,7 @@ def read_plate_texts(plates: Sequence[FusedSign], warn: Optional[WarnCallback] =
     done = 0
     for k, plate in enumerate(plates):
         if plate.template_id == PLATE_ID:
-            plate.text, plate.text_confidence = vote_text(by_plate.get(k, []))
+            plate.text, plate.text_confidence = vote_text(by_plate.get(k, []), config)
         done += plate.text is not None
     return done
 

@@ -105,6 +105,8 @@ class SceneConfig:
     # box reached them). GTSDB tune split, signs >= 30 px: 0.1 -> 0.03 found 2 more (fewer false segments
     # displaced true ones), 18.9 -> 15.6 candidates per image; 0.01 lost 4, 0 lost 14
     pass_duplicate_iou: float = 0.5  # a later pass's segment overlapping an earlier one this much is the same
+    scene_sample_step: int = 4  # the scene's statistics (white balance, medians) are read on every this-th pixel of
+    # every this-th row: 1/16 of the cost at 4, the same percentiles
 
 
 @dataclass(frozen=True)
@@ -254,6 +256,8 @@ class DepthConfig:
     sgbm_speckle_window: int = 60  # disparity blobs smaller than this (pixels at the matcher's scale) are noise...
     sgbm_speckle_range: int = 2  # ...where their disparities vary at most this much within
     sgbm_prefilter_cap: int = 31  # clip of the x-derivative prefilter: limits the weight of strong texture
+    sgbm_warm_up_px: int = 64  # full-resolution columns matched left of a window before its own, so the matcher's
+    # left-to-right pass enters the window settled (sgbm_depth)
     # colour candidates whose box height cannot be a face (or a coloured part of one) anywhere in the depth range
     # get no stereo rows: taller than this x the tallest format at the near limit (perspective, rims)...
     sgbm_band_max_height: float = 1.3
@@ -401,6 +405,13 @@ class WhiteConfig:
     white_min_score: float = 0.5  # NCC among the white entries: below it no template resembles the face...
     white_unsupported_min_score: float = 0.65  # ...or below this without a support seen below it
     white_accept_score: float = 0.65  # and from this on it is "accepted"
+    white_radial_cos: float = 0.8  # an outline point's gradient points across the outline (along the radius, or
+    # across a panel's side) within this cosine (37 deg): a pixel step of a slanted outline stays within,
+    # texture's gradients point anywhere
+    white_edge_band_px: float = 1.5  # cells end where the outline's edge band (Canny, a pixel wider) begins: the
+    # outline is sought this far outside them, in the band's middle (reduced image's pixels)
+    white_pole_blur_rows: int = 7  # the strip below a face is averaged over this many rows along the pole before
+    # its edges are measured: a pole's edges stay, pixel noise averages out (white_pole_edge is measured after it)
 
 
 @dataclass(frozen=True)
@@ -433,6 +444,30 @@ class PlateConfig:
     plate_min_visible: float = 0.4
     plate_hidden_weight: float = 0.9  # ... and scores this much less than a plate seen whole
     plate_pictogram_min_score: float = 0.6  # correlation with a pictogram plate's drawing: below, a text plate
+    plate_min_size_px: Tuple[int, int] = (6, 4)  # (width, height) of the smallest region read as a plate: smaller
+    # ones are specks (the smallest format, 0.40 x 0.15 m, is ~50 x 19 px at 14 m with fy 1750)
+    plate_notched_min_fill: float = 0.6  # a region filling at least this share of its box (but less than
+    # plate_min_fill) is measured again with its thin notches closed (plate_notch_m); one filling less lacks more
+    # than thin lines across it explain, and is spared the second measurement
+    plate_max_value_floor: int = 250  # brightness floors (plate_value_steps) from this up are not tried: they keep
+    # only clipped highlights, no plate's paper
+    plate_min_widening: float = 0.1  # a hidden plate's seen pieces are completed to a format's width only where
+    # that adds more than this share of their width: a piece nearly that wide is read as a region already
+    plate_misfit_weight: float = 0.5  # a plate at the edge of plate_size_tolerance scores this much less than one
+    # of exactly a format's size (its score falls linearly in the log size error between)
+    # a pictogram plate (plate_classify.py): the crop, grey, and each drawing are compared at this height (the
+    # drawing's aspect), enough for the strokes of its pictogram and words without enlarging a far plate much
+    plate_compare_height_px: int = 36
+    plate_compare_min_px: int = 8  # a crop (after its inset) or a drawing narrower or lower than this shows no
+    # pictogram to compare: no score
+    plate_compare_shift_px: int = 3  # the best correlation over shifts up to this: a plate's box is found to a
+    # pixel or two
+    plate_compare_insets: Tuple[float, ...] = (0.0, 0.06, 0.12)  # share of the crop's height cut from each side
+    # before comparing (the best counts): a box taken for the inside of a frame is that much larger than the plate
+    plate_inset_candidates: int = 2  # the insets beyond the first are tried on only this many drawings the crop is
+    # most like uncut (each inset costs a correlation per drawing)
+    plate_pictogram_min_seen: float = 0.4  # share of a plate's crop seen (not hidden in front) to compare it with
+    # the drawings at all: less leaves too little of a pictogram to tell it from the others
 
 
 @dataclass(frozen=True)

@@ -27,8 +27,6 @@ import numpy as np
 
 from ..geometry import Camera
 
-WARM_UP_PX = 64  # full-resolution columns matched left of a window before its own (see sgbm_depth)
-
 
 def disparity_range(camera: Camera, near_m: float, far_m: float, scale: float = 1.0,
                     far_factor: float = 1.0) -> Tuple[int, int]:
@@ -111,7 +109,7 @@ def sgbm_depth(
 
     The matcher computes disparities only for columns that have all searched disparities to
     their left (OpenCV leaves the first min+num columns of its input out): each window is cut
-    with the largest disparity of the right image's context on its left, plus ``WARM_UP_PX``
+    with the largest disparity of the right image's context on its left, plus ``sgbm_warm_up_px``
     columns matched before the window so that the left-to-right pass of the matcher enters it
     settled; at the image's left edge the pair is padded instead.
     """
@@ -131,7 +129,7 @@ def sgbm_depth(
     context = block_size + 2  # rows around a band so its edges are matched like the interior
     for x0, start, x1, stop in windows:
         a, b = max(0, start - context), min(height, stop + context)
-        first = max(0, x0 - WARM_UP_PX)  # first column matched
+        first = max(0, x0 - settings.sgbm_warm_up_px)  # first column matched
         ca, cb = max(0, first - reach), min(width, x1 + context)
         pad = max(0, skipped - int(round((first - ca) * scale)))  # at the left edge: columns to stand in
         small_w = max(1, int(round((cb - ca) * scale)))

@@ -24,12 +24,19 @@ from .config import TEMPLATE_GEOMETRY
 from .shape import classify_shape
 
 FULL = (0.0, 0.0, 1.0, 1.0)
-_cache: Dict[Tuple[int, str, str], tuple] = {}
+_cache: Dict[tuple, tuple] = {}
 Extent = Tuple[float, float, float, float]  # x0, y0, x1, y1 as fractions of the face box
 
 
+def _ranges_key(hsv_ranges, colour: str) -> tuple:
+    """The thresholds of ``colour`` as a hashable value: a measurement holds for those thresholds only (a run
+    may change the colour table)."""
+    return tuple(tuple(int(v) for v in r) for r in hsv_ranges.get(colour, ()))
+
+
 def _measured_once(catalogue, key: tuple, measure):
-    """``measure()`` of one template, kept per catalogue object (a template's rendering does not change)."""
+    """``measure()`` of one template, kept per catalogue object and colour thresholds (``key``: the catalogue's
+    id, the template, what is measured and :func:`_ranges_key`; a template's rendering does not change)."""
     hit = _cache.get(key)
     if hit is not None and hit[0] is catalogue:
         return hit[1]
@@ -58,7 +65,7 @@ def colour_part(catalogue, template_id: str, colour: str, hsv_ranges) -> Tuple[O
     outline alone (3.04's halves), the hull of all pieces, as the colour step
     merges them (``colour.split_face_merges``).
     """
-    return _measured_once(catalogue, (id(catalogue), template_id, colour),
+    return _measured_once(catalogue, (id(catalogue), template_id, colour, _ranges_key(hsv_ranges, colour)),
                           lambda: _part_of(_colour_mask(catalogue, template_id, colour, hsv_ranges)))
 
 
@@ -94,7 +101,8 @@ def hole_part(catalogue, template_id: str, colour: str, hsv_ranges) -> Tuple[Opt
     """(extent, shape) of the largest field the template's ``colour`` encloses (the white field inside a
     red ring or border, the bar of no entry); (None, None) if it encloses none of at least
     ``TEMPLATE_GEOMETRY.template_min_field_share`` of the face."""
-    return _measured_once(catalogue, (id(catalogue), template_id, "hole:" + colour),
+    return _measured_once(catalogue, (id(catalogue), template_id, "hole:" + colour,
+                                      _ranges_key(hsv_ranges, colour)),
                           lambda: _hole_of(_colour_mask(catalogue, template_id, colour, hsv_ranges)))
 
 

@@ -30,7 +30,6 @@ from .pair_context import PairContext
 from .plate_classify import classify_plate
 
 BELOW, ABOVE = 1, -1
-NOTCHED_FILL = 0.6  # a region filling less of its box is no plate with notches: its fill is not re-measured
 
 
 def depth_tolerance_m(z: float, config) -> float:
@@ -56,16 +55,19 @@ def nearest_plate_format(width_m: float, height_m: float, tolerance: float, form
     return best if best is not None and best[2] <= math.log(1.0 + tolerance) else None
 
 
-def white_masks(bgr: np.ndarray, max_saturation: int, min_value: int, steps: Sequence[int]) -> List[np.ndarray]:
-    """Bright unsaturated pixels at rising brightness floors: from Otsu's split of the window (or ``min_value``)
-    up by each of ``steps``. A white plate before a pale wall or sky is one region only at a floor between the
-    two, so each floor is looked at (the stable bright regions of MSER, a few levels only)."""
+def white_masks(bgr: np.ndarray, config) -> List[np.ndarray]:
+    """Bright unsaturated pixels at rising brightness floors: from Otsu's split of the window (or
+    ``plate_min_value``) up by each of ``plate_value_steps`` (below ``plate_max_value_floor``). A white plate
+    before a pale wall or sky is one region only at a floor between the two, so each floor is looked at (the
+    stable bright regions of MSER, a few levels only)."""
+    plates = config.plates
     hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
     value = hsv[:, :, 2]
     otsu, _ = cv2.threshold(value, 0, 255, cv2.THRESH_BINARY + cv2.THRESH_OTSU)
-    floor = max(min_value, int(otsu))
-    grey = hsv[:, :, 1] <= max_saturation
-    return [(grey & (value >= floor + step)).astype(np.uint8) for step in steps if floor + step < 250]
+    floor = max(plates.plate_min_value, int(otsu))
+    grey = hsv[:, :, 1] <= plates.plate_max_saturation
+    return [(grey & (value >= floor + step)).astype(np.uint8) for step in plates.plate_value_steps
+            if floor + step < plates.plate_max_value_floor]
 
 
 def _filled(mask: np.ndarray, close_px: int) -> np.ndarray:
@@ -110,7 +112,7 @@ def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int,
         shown = template_by_id(templates, fmt[0].split("@")[0])
         seen_crop = pair.left[cy:cy + ch, cx:cx + cw]
         part_hidden = None if hidden is None else hidden[cy:cy + ch, cx:cx + cw]
-        if classify_plate(seen_crop, [shown], plates.plate_pictogram_min_score, part_hidden)[0] is None:
+        if classify_plate(seen_crop, [shown], config, part_hidden)[0] is None:
             fmt = nearest_plate_format(*size, plates.plate_size_tolerance)
     if fmt is None:
         return None
@@ -121,7 +123,8 @@ def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int,
     ink = float(np.mean(grey[seen] < config.plates.plate_ink_darkness * np.median(grey[seen])))
     if not config.plates.plate_min_ink <= ink <= config.plates.plate_max_ink:
         return None
-    return 1.0 - min(fmt[2] / math.log(1.0 + config.plates.plate_size_tolerance), 1.0) * 0.5, fmt
+    misfit = min(fmt[2] / math.log(1.0 + config.plates.plate_size_tolerance), 1.0)
+    return 1.0 - misfit * config.plates.plate_misfit_weight, fmt
 
 
 def _box_of(stats_row, x0, y0, margin):
@@ -139,6 +142,8 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
     ``hidden``, image-sized) hides part of it, its pieces are read together and completed under what hides
     them (``_hidden_reading``)."""
     config = pair.config
+    plates = config.plates
+    min_w, min_h = plates.plate_min_size_px
     x0, y0, x1, y1 = window
     filled = _filled(mask, int(round(config.plates.plate_close_m * pair.camera.fy / z)) | 1)
     count, labels, stats, _ = cv2.connectedComponentsWithStats(filled, connectivity=4)
@@ -158,11 +163,11 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
         if (by >= sign_edge - touch_px) if side == BELOW else (by + bh <= sign_edge + touch_px):
             pieces.append(k)  # off the sign's side: may be a piece of a plate
         fill = area / float(bw * bh)
-        if NOTCHED_FILL <= fill < config.plates.plate_min_fill and bw >= 6 and bh >= 4:
+        if plates.plate_notched_min_fill <= fill < plates.plate_min_fill and bw >= min_w and bh >= min_h:
             if solid is None:
                 solid = _filled(mask, int(round(config.plates.plate_notch_m * pair.camera.fy / z)) | 1)
             fill = max(fill, float(solid[by:by + bh, bx:bx + bw].mean()))
-        if bw < 6 or bh < 4 or fill < config.plates.plate_min_fill:
+        if bw < min_w or bh < min_h or fill < plates.plate_min_fill:
             continue
         for margin in (0.0, grow * bh):
             box = _box_of(stats[k], x0, y0, margin)
@@ -186,7 +191,7 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
         boxes = [(bx, by, bw, bh)] if len(group) > 1 else []
         for width_m in sorted({w for w, h in PLATE_FORMATS.values()}):
             extra = int(round(width_m * px_per_m)) - bw
-            if extra > 0.1 * bw:
+            if extra > plates.plate_min_widening * bw:
                 boxes += [(bx - extra, by, bw + extra, bh), (bx, by, bw + extra, bh)]
         member = np.zeros(count, bool)
         member[group] = True
@@ -280,10 +285,8 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     hidden = _HiddenCanvas.of(pair.left.shape[:2])  # image-sized: the readings index it in image coordinates
     hidden[y0:y1, x0:x1] = in_window
     best = None
-    plates = config.plates
     try:
-        for mask in white_masks(window, plates.plate_max_saturation, plates.plate_min_value,
-                                plates.plate_value_steps):
+        for mask in white_masks(window, config):
             mask[elsewhere] = 0
             best = _best_region(pair, sign, mask, (x0, y0, x1, y1), z, side, touch_px, best, hidden)
         if best is not None:
@@ -299,8 +302,7 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     bx, by, bw, bh = box
     crop = np.ascontiguousarray(pair.left[by:by + bh, bx:bx + bw])
     template_id, label, printed = PLATE_ID, PLATE_NAMES["de"], None
-    pictogram, likeness = classify_plate(crop, plate_templates(pair), config.plates.plate_pictogram_min_score,
-                                         crop_hidden)
+    pictogram, likeness = classify_plate(crop, plate_templates(pair), config, crop_hidden)
     if pictogram is not None:  # its drawing's own size at the plate's width; its score is the likeness
         template_id, label, printed = pictogram.id, pictogram.name("de"), pictogram.text
         (pw, ph), name, score = pictogram.size_m(pw), f"{pictogram.id}@{pw:.2f}", min(score, likeness)

@@ -27,7 +27,6 @@ from .config import PipelineConfig
 from .shape import classify_shape
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
-RADIAL_COS = 0.8  # cos 37 deg: an outline's gradient points along the radius, within a pixel step of a slant
 
 
 @dataclass(frozen=True)
@@ -98,7 +97,7 @@ def _union(a: Box, b: Box) -> Box:
 
 
 def group_cells(boxes: Sequence[Box], side_range: Tuple[float, float], reach: float, max_aspect: float,
-                gap: float = 0.0, max_steps: int = 12) -> List[Tuple[Box, Tuple[int, ...]]]:
+                gap: float, max_steps: int) -> List[Tuple[Box, Tuple[int, ...]]]:
     """(union box, indices) of the cells that may be read together as one face, largest cell first.
 
     From each cell, the cells are joined one at a time, the nearest first, while one lies within
@@ -148,10 +147,13 @@ def filled(mask: np.ndarray) -> np.ndarray:
     return out
 
 
-def edge_support(gradients: Tuple[np.ndarray, np.ndarray], cu, cv, r, min_gradient: float, samples: int = 48):
-    """Share of points on the circle (cu, cv, r), each looked for a pixel inward or outward, where the grey
-    image has a strong gradient pointing along the radius: an outline, where texture (leaves, noise) has
-    strong gradients in every direction. ``cu``, ``cv``, ``r`` may be arrays of circles (then an array)."""
+def edge_support(gradients: Tuple[np.ndarray, np.ndarray], cu, cv, r, config: PipelineConfig):
+    """Share of ``white_support_samples`` points on the circle (cu, cv, r), each looked for a pixel inward or
+    outward, where the grey image has a strong gradient (``white_min_gradient``) pointing along the radius
+    (``white_radial_cos``): an outline, where texture (leaves, noise) has strong gradients in every direction.
+    ``cu``, ``cv``, ``r`` may be arrays of circles (then an array)."""
+    white = config.white
+    min_gradient, samples = white.white_min_gradient, white.white_support_samples
     gx, gy = gradients
     cu, cv, r = (np.asarray(a, np.float64)[..., None] for a in (cu, cv, r))
     angles = np.linspace(0.0, 2 * np.pi, samples, endpoint=False)
@@ -164,7 +166,7 @@ def edge_support(gradients: Tuple[np.ndarray, np.ndarray], cu, cv, r, min_gradie
         us, vs = np.where(inside, us, 0), np.where(inside, vs, 0)
         a, b = np.where(inside, gx[vs, us], 0.0), np.where(inside, gy[vs, us], 0.0)
         norm = np.hypot(a, b)
-        hit |= (norm >= min_gradient) & (np.abs(a * c + b * s) >= RADIAL_COS * norm)
+        hit |= (norm >= min_gradient) & (np.abs(a * c + b * s) >= white.white_radial_cos * norm)
     share = np.count_nonzero(hit, axis=-1) / float(samples)
     return float(share) if share.ndim == 0 else share
 
@@ -178,16 +180,16 @@ def refine_circle(gradients: Tuple[np.ndarray, np.ndarray], cu: float, cv: float
     k = config.white.white_circle_search * r
     du, dv, dr = np.meshgrid(np.linspace(-k, k, 5), np.linspace(-k, k, 5), np.linspace(-0.5 * k, 1.5 * k, 5),
                              indexing="ij")
-    support = edge_support(gradients, cu + du.ravel(), cv + dv.ravel(), r + dr.ravel(), config.white.white_min_gradient,
-                           config.white.white_support_samples)
+    support = edge_support(gradients, cu + du.ravel(), cv + dv.ravel(), r + dr.ravel(), config)
     best = int(np.argmax(support))
     return cu + du.ravel()[best], cv + dv.ravel()[best], r + dr.ravel()[best], float(support[best])
 
 
-def box_edge_support(gradients: Tuple[np.ndarray, np.ndarray], box: Box, min_gradient: float, samples: int = 48
-                     ) -> float:
+def box_edge_support(gradients: Tuple[np.ndarray, np.ndarray], box: Box, config: PipelineConfig) -> float:
     """Share of points on the sides of ``box`` (each looked for a pixel inward or outward) where the grey
-    image has a strong gradient across the side: the outline of a panel."""
+    image has a strong gradient across the side: the outline of a panel (the settings of :func:`edge_support`)."""
+    white = config.white
+    min_gradient, samples = white.white_min_gradient, white.white_support_samples
     gx, gy = gradients
     height, width = gx.shape
     x, y, w, h = box
@@ -205,7 +207,7 @@ def box_edge_support(gradients: Tuple[np.ndarray, np.ndarray], box: Box, min_gra
     horizontal = np.arange(4 * n) < 2 * n
     across = np.where(horizontal, gy[vs, us], gx[vs, us]) * inside
     along = np.where(horizontal, gx[vs, us], gy[vs, us]) * inside
-    hit = (np.abs(across) >= min_gradient) & (np.abs(across) >= RADIAL_COS * np.hypot(across, along))
+    hit = (np.abs(across) >= min_gradient) & (np.abs(across) >= white.white_radial_cos * np.hypot(across, along))
     return float(np.count_nonzero(hit.any(axis=0))) / float(4 * n)
 
 
@@ -233,15 +235,14 @@ def refine_box(gradients: Tuple[np.ndarray, np.ndarray], box: Box, max_grow: flo
 
 
 def outline_in_reach(gradients: Tuple[np.ndarray, np.ndarray], box: Box, config: PipelineConfig) -> bool:
-    """Whether strong edges run near the outline of ``box`` at all (its inscribed circle or its sides, a pixel
-    outside): the cheap test that spares most unions of cells reading their outline."""
+    """Whether strong edges run near the outline of ``box`` at all (its inscribed circle ``white_edge_band_px``
+    outside, or its sides a pixel outside): the cheap test that spares most unions of cells reading their
+    outline."""
     x, y, w, h = box
     floor = config.white.white_min_edge_support - config.white.white_refine_margin
-    samples = config.white.white_support_samples
-    circle = edge_support(gradients, x + w / 2.0, y + h / 2.0, max(w, h) / 2.0 + 1.5,
-                          config.white.white_min_gradient, samples)
-    return circle >= floor or box_edge_support(gradients, (x - 1, y - 1, w + 2, h + 2),
-                                               config.white.white_min_gradient, samples) >= floor
+    circle = edge_support(gradients, x + w / 2.0, y + h / 2.0, max(w, h) / 2.0 + config.white.white_edge_band_px,
+                          config)
+    return circle >= floor or box_edge_support(gradients, (x - 1, y - 1, w + 2, h + 2), config) >= floor
 
 
 def read_face(mask: np.ndarray, box: Box, gradients: Tuple[np.ndarray, np.ndarray], config: PipelineConfig
@@ -260,17 +261,15 @@ def read_face(mask: np.ndarray, box: Box, gradients: Tuple[np.ndarray, np.ndarra
     if result.shape in ("rectangle", "square") and max(w, h) <= config.white.white_max_aspect * min(w, h) and \
             np.count_nonzero(mask) >= config.white.white_min_panel_cover * w * h:
         face = refine_box(gradients, box, config.white.white_panel_grow)
-        if box_edge_support(gradients, face, config.white.white_min_gradient, config.white.white_support_samples) >= \
-                config.white.white_min_edge_support:
+        if box_edge_support(gradients, face, config) >= config.white.white_min_edge_support:
             return "rectangle", face, np.full((face[3], face[2]), 255, np.uint8)
         return None
     (cu, cv), r = cv2.minEnclosingCircle(hull)
     if r < 2 or np.count_nonzero(mask) < config.white.white_min_disc_cover * np.pi * r * r:
         return None
-    r += 1.5  # the cells end where the (widened) edge band of the outline begins: the outline is its middle
     white = config.white
-    if edge_support(gradients, x + cu, y + cv, r, white.white_min_gradient, white.white_support_samples) < \
-            white.white_min_edge_support - white.white_refine_margin:
+    r += white.white_edge_band_px  # the cells end where the (widened) edge band of the outline begins
+    if edge_support(gradients, x + cu, y + cv, r, config) < white.white_min_edge_support - white.white_refine_margin:
         return None
     cu, cv, r, support = refine_circle(gradients, x + cu, y + cv, r, config)
     if support < config.white.white_min_edge_support:

@@ -80,7 +80,7 @@ def pole_share(grey: np.ndarray, bbox, config) -> float:
     x0, x1 = max(0, cx - half), min(width, cx + half + 1)
     if bottom - top < 3 or x1 - x0 < 3:
         return 0.0
-    strip = cv2.blur(grey[top:bottom, x0:x1], (1, 7))  # along the pole: its edges stay, pixel noise averages out
+    strip = cv2.blur(grey[top:bottom, x0:x1], (1, config.white.white_pole_blur_rows))  # along the pole
     gx = np.abs(cv2.Sobel(strip, cv2.CV_32F, 1, 0, ksize=3))
     strong = cv2.dilate((gx >= config.white.white_pole_edge).astype(np.uint8), np.ones((1, 3), np.uint8))
     return float(strong.mean(axis=0).max())

@@ -192,7 +192,8 @@ def test_a_pictogram_plate_partly_hidden_by_a_branch_is_classified_by_what_is_se
     depth[y - 10:y + h + 10, x - 5:x - 5 + w // 3] = np.nan
     (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
     assert plate.template_id == "5.31-1" and plate.printed_text == "gestattet" and _iou(plate.bbox, box) > 0.8
-    assert max(pictogram_scores(plate.crop, templates)) < 0.6  # the branch counted: no pictogram plate
+    # the branch counted: no pictogram plate
+    assert max(pictogram_scores(plate.crop, templates, PipelineConfig())) < 0.6
 
 
 def test_a_text_plate_is_no_pictogram_plate(catalogue):
@@ -200,7 +201,7 @@ def test_a_text_plate_is_no_pictogram_plate(catalogue):
     left, depth, _ = scene(catalogue, pose, plate_lines=("ausgenommen", "Bus"), plate_size=(0.60, 0.30))
     (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
     assert plate.template_id == PLATE_ID and plate.printed_text is None
-    scores = pictogram_scores(plate.crop, load_plate_templates(catalogue.folder))
+    scores = pictogram_scores(plate.crop, load_plate_templates(catalogue.folder), PipelineConfig())
     assert max(scores) < PipelineConfig().plates.plate_pictogram_min_score
 
 

@@ -12,6 +12,7 @@ from signmapper_core.catalogue.model import DEFAULT_CATALOGUE_DIR
 from signmapper_core.drive import TruthSign, read_truth
 from signmapper_core.drive_writer import write_truth_csv
 from signmapper_core.errors import DriveFormatError
+from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.pipeline.plate_classify import classify_plate
 from signmapper_core.plate_catalogue import load_plate_templates
 from signmapper_core.plate_formats import PLATE_FORMATS, PLATE_ID
@@ -61,7 +62,7 @@ def test_pictogram_plate_faces_are_worn_prints_of_their_drawing_not_its_pixels()
     for face in faces:
         grey = cv2.cvtColor(face, cv2.COLOR_BGR2GRAY).astype(float)
         assert 1.0 < np.abs(grey - drawn).mean() < 40.0  # the same drawing, not the same pixels
-        (best, score) = classify_plate(face, templates, 0.6)
+        (best, score) = classify_plate(face, templates, PipelineConfig())
         assert (best.id, best.variant) == ("5.31-2", "fr") and score > 0.8
     assert np.abs(faces[0].astype(float) - faces[1]).mean() > 1.0  # each plate its own print and wear
 

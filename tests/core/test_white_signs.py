@@ -60,7 +60,7 @@ def test_face_side_range_covers_every_white_format_in_the_search_space(catalogue
 def test_cells_overlapping_one_face_are_joined_and_far_ones_are_not():
     # the two halves of a striped field (a band between them) and a cell far away
     boxes = [(10, 10, 30, 14), (10, 28, 30, 14), (200, 10, 30, 30)]
-    groups = group_cells(boxes, (20, 100), 0.35, 1.6)
+    groups = group_cells(boxes, (20, 100), 0.35, 1.6, 0.0, 12)
     members = {tuple(sorted(m)) for _, m in groups}
     assert (0, 1) in members and (2,) in members
     box = next(b for b, m in groups if tuple(sorted(m)) == (0, 1))
@@ -74,13 +74,16 @@ def _gradients(grey):
 def test_edge_support_counts_circle_points_on_radial_gradients():
     grey = np.full((100, 100), 60, np.uint8)
     cv2.circle(grey, (50, 50), 30, 220, -1)  # a bright disc
-    assert edge_support(_gradients(grey), 50, 50, 30, 80.0) == pytest.approx(1.0)
-    assert edge_support(_gradients(grey), 50, 50, 15, 80.0) == 0.0  # inside: no gradient
+    assert edge_support(_gradients(grey), 50, 50, 30, CONFIG) == pytest.approx(1.0)
+    assert edge_support(_gradients(grey), 50, 50, 15, CONFIG) == 0.0  # inside: no gradient
     grey[:50] = 60  # the upper half of the outline gone
-    assert 0.4 <= edge_support(_gradients(grey), 50, 50, 30, 80.0) <= 0.6
+    assert 0.4 <= edge_support(_gradients(grey), 50, 50, 30, CONFIG) <= 0.6
     # texture has strong gradients everywhere, but not along the radii of a circle
     noise = np.random.default_rng(1).integers(0, 2, (100, 100), np.uint8) * 200
-    assert edge_support(_gradients(noise), 50, 50, 30, 80.0) < 0.7
+    assert edge_support(_gradients(noise), 50, 50, 30, CONFIG) < 0.7
+    # ...which count where any gradient direction would: it is the radial direction that tells them apart
+    any_direction = with_settings(CONFIG, {"white": {"white_radial_cos": 0.0}})
+    assert edge_support(_gradients(noise), 50, 50, 30, any_direction) == 1.0
 
 
 @pytest.mark.parametrize("template_id,size,ahead,shape", [
