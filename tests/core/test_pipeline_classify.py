@@ -6,7 +6,7 @@ from pipeline_scenes import noisy_background, paste
 from signmapper_core.catalogue import FaceStyle, load_catalogue, render_face
 from signmapper_core.pipeline.classify import classify_segment
 from signmapper_core.pipeline.config import DEFAULT_HSV_RANGES, ClassificationConfig, PipelineConfig
-from signmapper_core.pipeline.face_extent import candidate_entries, colour_extent
+from signmapper_core.pipeline.face_extent import candidate_entries, colour_extent, hole_part
 
 CONFIG = PipelineConfig()
 GROW = CONFIG.classification.surround_grow
@@ -150,6 +150,23 @@ def test_colour_extent_of_rimmed_and_panel_faces(catalogue):
     assert y0 > 0.2 and y1 < 0.8
     assert colour_extent(catalogue, "2.30-50", "red", DEFAULT_HSV_RANGES) == (0.0, 0.0, 1.0, 1.0)
     assert colour_extent(catalogue, "2.30-50", "blue", DEFAULT_HSV_RANGES) is None
+
+
+def test_colour_extents_follow_the_runs_colour_table(catalogue):
+    """The extents are measured once per template and kept: a later run with other thresholds for a colour (a
+    run record's colour table) must get them measured with its own, not the first run's."""
+    before = colour_extent(catalogue, "3.03", "yellow", DEFAULT_HSV_RANGES)
+    field_before = hole_part(catalogue, "2.30-50", "red", DEFAULT_HSV_RANGES)
+    assert before is not None and field_before[0] is not None
+    no_yellow = dict(DEFAULT_HSV_RANGES, yellow=((100, 101, 250, 255, 250, 255),))  # blue hues only: no pixel
+    no_red = dict(DEFAULT_HSV_RANGES, red=((100, 101, 250, 255, 250, 255),))
+    assert colour_extent(catalogue, "3.03", "yellow", no_yellow) is None
+    assert hole_part(catalogue, "2.30-50", "red", no_red) == (None, None)
+    assert colour_extent(catalogue, "3.03", "yellow", DEFAULT_HSV_RANGES) == before  # each table its own
+    assert hole_part(catalogue, "2.30-50", "red", DEFAULT_HSV_RANGES) == field_before
+    # thresholds given as lists (as JSON reads them) are the same thresholds
+    as_lists = {colour: [list(r) for r in ranges] for colour, ranges in no_yellow.items()}
+    assert colour_extent(catalogue, "3.03", "yellow", as_lists) is None
 
 
 def test_surround_tells_a_zone_panel_from_a_round_sign_on_a_wall(catalogue):

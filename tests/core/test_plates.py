@@ -11,12 +11,13 @@ from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive import TruthSign, open_drive
 from signmapper_core.drive_writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
 from signmapper_core.evaluation import evaluate
+from signmapper_core.fusion import FusionConfig
 from signmapper_core.geometry import Camera, Pose, world_to_pixel
 from signmapper_core.mapping import map_drive
 from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.config import PlateConfig
-from signmapper_core.pipeline.plate_classify import pictogram_scores
+from signmapper_core.pipeline.plate_classify import classify_plate, pictogram_scores
 from signmapper_core.plate_catalogue import load_plate_templates
 from signmapper_core.plate_evaluation import evaluate_plates
 from signmapper_core.plate_formats import PLATE_ID
@@ -196,6 +197,28 @@ def test_a_pictogram_plate_partly_hidden_by_a_branch_is_classified_by_what_is_se
     assert max(pictogram_scores(plate.crop, templates, PipelineConfig())) < 0.6
 
 
+def test_a_box_around_a_pictogram_plates_frame_needs_an_inset_and_a_plate_must_be_seen_enough(catalogue):
+    """A box taken a few pixels around a pictogram plate (wall in it) matches the drawing only cut by one of
+    ``plate_compare_insets``; a plate hidden beyond ``plate_pictogram_min_seen`` is not compared at all."""
+    templates = load_plate_templates(catalogue.folder)
+    template = next(t for t in templates if (t.id, t.variant) == ("5.31-2", "de"))
+    h = 40
+    w = int(round(h * template.aspect))
+    face = pictogram_face(template, w, h, np.random.default_rng(7))
+    around = np.full((h + 12, w + 12, 3), 235, np.uint8)
+    around[6:6 + h, 6:6 + w] = face
+    config = PipelineConfig()
+    found, score = classify_plate(around, templates, config)
+    assert (found.id, found.variant) == ("5.31-2", "de") and score > 0.8
+    uncut = PipelineConfig(plates=PlateConfig(plate_compare_insets=(0.0,)))
+    assert classify_plate(around, templates, uncut)[0] is None
+    half_hidden = np.zeros((h, w), np.uint8)
+    half_hidden[:, :w // 2] = 1
+    assert max(pictogram_scores(face, templates, config, half_hidden)) > 0.5  # compared (seen half > 0.4)
+    stricter = PipelineConfig(plates=PlateConfig(plate_pictogram_min_seen=0.6))
+    assert pictogram_scores(face, templates, stricter, half_hidden) == [-1.0] * len(templates)
+
+
 def test_a_text_plate_is_no_pictogram_plate(catalogue):
     pose = pose_at(0.0)
     left, depth, _ = scene(catalogue, pose, plate_lines=("ausgenommen", "Bus"), plate_size=(0.60, 0.30))
@@ -219,6 +242,10 @@ def test_a_thin_line_into_a_plate_does_not_make_it_less_of_a_rectangle(catalogue
     unclosed = detect_pair(left, depth, None, CAMERA, pose, catalogue,
                            PipelineConfig(plates=PlateConfig(plate_notch_m=0.0)))
     assert [d for d in unclosed if d.is_plate] == []
+    # the region fills too little of its box to be measured again with its notches closed: no plate either
+    unmeasured = detect_pair(left, depth, None, CAMERA, pose, catalogue,
+                             PipelineConfig(plates=PlateConfig(plate_notched_min_fill=0.85)))
+    assert [d for d in unmeasured if d.is_plate] == []
 
 
 @pytest.mark.parametrize("occluder", ["branch", "lamp post", "lamp post over its end"])
@@ -246,6 +273,10 @@ def test_a_plate_cut_apart_by_something_in_front_is_found_whole(catalogue, occlu
                              PipelineConfig(plates=PlateConfig(plate_min_visible=1.0)))
     # seen pieces only: none, or (its end hidden) the seen part taken for a smaller plate
     assert all(_iou(d.bbox, box) < 0.8 for d in whole_only if d.is_plate)
+    if occluder.endswith("end"):  # completing the piece needs it widened by more than plate_min_widening
+        unwidened = detect_pair(left, depth, None, CAMERA, pose, catalogue,
+                                PipelineConfig(plates=PlateConfig(plate_min_widening=10.0)))
+        assert all(_iou(d.bbox, box) < 0.8 for d in unwidened if d.is_plate)
 
 
 def _write_drive(root, catalogue, lines=("200 m",), n=3):
@@ -326,6 +357,9 @@ def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
     assert calls == [[50, 45, 40, 60]]  # the three nearest of the first, all in one call
     assert a.text == "200 m" and a.text_confidence == pytest.approx((0.9 + 0.8) / 3)  # "ZOO m" disagrees
     assert b.text == "Mo–Fr"
+    calls.clear()
+    assert read_plate_texts([a], read=fake_read, config=FusionConfig(plate_readings=1)) == 1
+    assert calls == [[50]] and a.text == "200 m" and a.text_confidence == pytest.approx(0.9)  # the nearest alone
 
     def missing(crops):
         raise OcrUnavailable(f"no tesseract; {INSTALL_HINT}")
@@ -355,6 +389,8 @@ def test_a_reading_in_a_form_plates_print_outweighs_a_surer_misreading():
     def reading(text, confidence):
         return TextReading(tuple(Word(w, confidence, 0) for w in text.split()))
 
-    text, confidence = vote_text([reading("100 nil", 0.9), reading("100 m", 0.6), reading("", 0.0)])
+    readings = [reading("100 nil", 0.9), reading("100 m", 0.6), reading("", 0.0)]
+    text, confidence = vote_text(readings)
     assert text == "100 m" and confidence == pytest.approx(0.6 / 3)
+    assert vote_text(readings, FusionConfig(plate_well_formed_weight=1.0))[0] == "100 nil"  # no bonus: surer wins
     assert vote_text([reading("100 nil", 0.9), reading("10O nil", 0.5)]) == ("100 nil", pytest.approx(0.7))

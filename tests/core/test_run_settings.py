@@ -19,7 +19,9 @@ from signmapper_core.pipeline.config import (
     DepthConfig,
     HoughConfig,
     PlanarityConfig,
+    PlateConfig,
     SceneConfig,
+    WhiteConfig,
 )
 from signmapper_core.run_settings import (
     SETTINGS_VERSION,
@@ -37,18 +39,25 @@ from signmapper_core.sign_colours import SIGN_COLOURS
 # before the sections: rows settings_version, pipeline, fusion, near_m, far_m of
 # tests/qgis/golden/mapsigns-seed11.json at main 8b16f86 (mapsigns with its defaults)
 RECORD_V1 = Path(__file__).parent.parent / "data" / "run_record_v1.json"
+# rows software, settings_version, pipeline, fusion, near_m, far_m of settings version 2 as mapsigns wrote them at
+# main a6850fd (tests/qgis/golden/mapsigns-seed11.json then), before the plate, white-sign, depth, scene and
+# plate-text module constants became settings
+RECORD_V2_A6850FD = Path(__file__).parent.parent / "data" / "run_record_v2_a6850fd.json"
 
 # every kind of field changed: numbers, None, tuples, dicts of tuples, booleans
 CHANGED = PipelineConfig(
-    depth=DepthConfig(near_m=5.5, far_m=18.0),
+    depth=DepthConfig(near_m=5.5, far_m=18.0, sgbm_warm_up_px=32),
     colour=ColourConfig(colours=("blue",), hsv_ranges={"red": ((0, 8, 95, 255, 50, 255),),
                                                        "blue": ((101, 129, 110, 255, 40, 255),)},
                         min_part_px={"yellow": 80, "blue": 70}),
     classification=ClassificationConfig(exclude=("4.17",), classification_threshold=0.71, classifier="ncc",
                                         scales=(0.9, 1.0), tie_margin=0.05),
-    scene=SceneConfig(weak_shapes={"yellow": ("diamond", "square")}, white_balance=True),
+    scene=SceneConfig(weak_shapes={"yellow": ("diamond", "square")}, white_balance=True, scene_sample_step=2),
     planarity=PlanarityConfig(max_depth_deviation=None),
     hough=HoughConfig(hough_tint_min_share=0.3),
+    plates=PlateConfig(plate_compare_insets=(0.0, 0.1), plate_min_size_px=(8, 5), plate_notched_min_fill=0.5,
+                       plate_compare_height_px=48, plate_pictogram_min_seen=0.5),
+    white=WhiteConfig(white_radial_cos=0.75, white_edge_band_px=1.0, white_pole_blur_rows=5),
 )
 
 
@@ -58,6 +67,7 @@ def test_the_whole_pipeline_config_survives_json_grouped_by_section():
     assert set(data) == set(SECTIONS) == {"colour", "scene", "bright_fields", "rims", "shape", "size", "depth",
                                           "planarity", "classification", "hough", "white", "plates"}
     assert data["depth"]["near_m"] == 5.5 and data["classification"]["exclude"] == ["4.17"]
+    assert data["plates"]["plate_compare_insets"] == [0.0, 0.1] and data["white"]["white_radial_cos"] == 0.75
     assert {name for section in data.values() for name in section} == set(SECTION_OF)  # every setting
 
 
@@ -67,7 +77,8 @@ def test_setting_names_are_unique_across_the_sections():
 
 
 def test_fusion_config_survives_json():
-    fusion = FusionConfig(gate_m=0.8, max_gap_pairs=6, accept_classification=0.75)
+    fusion = FusionConfig(gate_m=0.8, max_gap_pairs=6, accept_classification=0.75, plate_readings=2,
+                          plate_well_formed_weight=1.5)
     assert settings_of(FusionConfig, json.loads(json.dumps(settings_dict(fusion))), "test") == fusion
 
 
@@ -109,6 +120,25 @@ def test_a_version_1_run_table_of_the_earlier_writer_reads_into_its_sections(tmp
     settings = load_run_settings(path, warnings.append)
     assert warnings == []  # every setting it holds has a section
     assert settings.config == PipelineConfig()  # mapped with the defaults, which have not changed since
+    assert settings.fusion == FusionConfig(accept_classification=0.8512)
+
+
+def test_a_version_2_record_written_before_settings_were_added_reads_them_as_their_defaults(tmp_path):
+    rows = json.loads(RECORD_V2_A6850FD.read_text())
+    path = tmp_path / "before.gpkg"
+    with closing(sqlite3.connect(path)) as db:
+        db.execute(f"CREATE TABLE {RUN_TABLE} (fid INTEGER PRIMARY KEY, key TEXT, value TEXT)")
+        db.executemany(f"INSERT INTO {RUN_TABLE} (key, value) VALUES (?, ?)", rows.items())
+        db.commit()
+    record = read_run_record(path)
+    assert record["settings_version"] == 2
+    assert "plate_compare_insets" not in record["pipeline"]["plates"]  # written before these were settings
+    assert "white_radial_cos" not in record["pipeline"]["white"] and "plate_readings" not in record["fusion"]
+    warnings = []
+    settings = load_run_settings(path, warnings.append)
+    assert warnings == []
+    assert settings.config == PipelineConfig()  # the constants had the values their settings now default to
+    assert settings.config.plates.plate_compare_insets == (0.0, 0.06, 0.12)
     assert settings.fusion == FusionConfig(accept_classification=0.8512)
 
 
