@@ -94,6 +94,18 @@ class FusionConfig:
     plate_readings: int = 3
     plate_well_formed_weight: float = 2.0  # a reading whose lines all have a form plates print counts this much
     # more in the vote on a plate's text: a misreading rarely has one
+    # how a crop is prepared for Tesseract (ocr.prepare_crop): its printed black frame (this share of its height on
+    # each side) is cut off, as it is no letter...
+    ocr_frame_share: float = 0.09
+    ocr_crop_height_px: int = 120  # ...it is scaled up to this height (1-3 lines of 30+ px, as Tesseract likes them)
+    ocr_max_upscale: float = 8.0  # ...but at most this much (a tiny crop's letters would only grow blur)
+    ocr_border_px: int = 12  # ...and given a plain border: Tesseract reads nothing on a line that touches a frame
+    # what of Tesseract's reading is print (ocr.TextReading.kept): words at least this share of the height of the
+    # words read with ocr_confident_word confidence (smaller "words" are dirt or a frame's remains)...
+    ocr_min_word_height_share: float = 0.45
+    ocr_confident_word: float = 0.6
+    ocr_min_line_confidence: float = 0.35  # ...on lines read with at least this mean confidence (less: a frame's
+    # edge, a shadow)
 
 
 @dataclass

@@ -17,7 +17,7 @@ import tempfile
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
-from typing import List, Optional, Sequence
+from typing import Any, List, Optional, Sequence
 
 import numpy as np
 
@@ -26,9 +26,6 @@ DEBIAN_PACKAGES = ("tesseract-ocr", "tesseract-ocr-deu", "tesseract-ocr-fra", "t
 INSTALL_HINT = "sudo apt-get install " + " ".join(DEBIAN_PACKAGES)
 BASE_TIMEOUT_S = 60.0  # loading three language models on a busy machine takes several seconds
 TIMEOUT_PER_IMAGE_S = 2.0
-CROP_HEIGHT_PX = 120  # a smaller crop is scaled up to this height: 1-3 lines of 30+ px, as Tesseract likes them
-FRAME_SHARE = 0.09  # of the crop's height cut from each side: a plate's printed black frame is no letter
-BORDER_PX = 12
 
 
 class OcrUnavailable(RuntimeError):
@@ -39,9 +36,13 @@ class OcrError(RuntimeError):
     """Tesseract ran but failed (timeout, crash, unreadable output)."""
 
 
-MIN_WORD_HEIGHT_SHARE = 0.45  # of the tallest confident line's word height: smaller "words" are dirt or a frame's
-MIN_LINE_CONFIDENCE = 0.35  # a line read with less (mean over its words) is no print: a frame's edge, a shadow
-CONFIDENT = 0.6
+def _settings(config):
+    """The run's fusion settings (``fusion.FusionConfig``), which hold the OCR's; the defaults for None."""
+    if config is not None:
+        return config
+    from .fusion import FusionConfig
+
+    return FusionConfig()
 
 
 @dataclass(frozen=True)
@@ -54,22 +55,26 @@ class Word:
 
 @dataclass(frozen=True)
 class TextReading:
-    """What Tesseract read in one crop: its words by line, and their mean confidence (0..1; 0 when none)."""
+    """What Tesseract read in one crop: its words by line, and their mean confidence (0..1; 0 when none).
+
+    ``config``: the fusion settings whose ``ocr_*`` thresholds tell print from the rest (None: the defaults)."""
 
     words: tuple
+    config: Any = None
 
     @property
     def kept(self) -> tuple:
         """The words that are print: not much smaller than the letters of the tallest confident line (remains
         of a frame, dirt and a shadow's edge are read as small, unsure "words"), on lines read with some
         confidence."""
-        confident = [w.height for w in self.words if w.confidence >= CONFIDENT and w.height > 0]
-        floor = MIN_WORD_HEIGHT_SHARE * max(confident) if confident else 0.0
+        config = _settings(self.config)
+        confident = [w.height for w in self.words if w.confidence >= config.ocr_confident_word and w.height > 0]
+        floor = config.ocr_min_word_height_share * max(confident) if confident else 0.0
         words = [w for w in self.words if w.height >= floor]
         by_line = {}
         for word in words:
             by_line.setdefault(word.line, []).append(word.confidence)
-        sure = {k for k, c in by_line.items() if np.mean(c) >= MIN_LINE_CONFIDENCE}
+        sure = {k for k, c in by_line.items() if np.mean(c) >= config.ocr_min_line_confidence}
         return tuple(w for w in words if w.line in sure)
 
     @property
@@ -117,29 +122,34 @@ def find_tesseract(executable: Optional[str] = None) -> tuple:
     return path, languages
 
 
-def prepare_crop(crop: np.ndarray) -> np.ndarray:
-    """A plate crop as Tesseract reads it best: its frame cut off, grey, scaled up to ``CROP_HEIGHT_PX``,
-    a plain border (Tesseract reads nothing at all on a line that touches a frame).
+def prepare_crop(crop: np.ndarray, config=None) -> np.ndarray:
+    """A plate crop as Tesseract reads it best: its frame cut off, grey, scaled up to ``ocr_crop_height_px``,
+    a plain border (Tesseract reads nothing at all on a line that touches a frame). ``config``: the fusion
+    settings (None: the defaults).
 
     The crop is the plate's box as the plate step found it, to a pixel or two: the printed frame lies at a
     known share of its height. (Warping a looser crop square-on from the corners of its brightest region was
-    tried: on the drives' crops it read fewer plates, as the outline found is often the frame's inside.)"""
+    tried: on the drives' crops it read fewer plates, as the outline found is often the frame's inside.)
+    """
     import cv2
 
+    config = _settings(config)
     if crop.ndim == 3:
         crop = cv2.cvtColor(crop, cv2.COLOR_BGR2GRAY)
-    cut = int(round(FRAME_SHARE * crop.shape[0]))
+    cut = int(round(config.ocr_frame_share * crop.shape[0]))
     if crop.shape[0] > 2 * cut + 4 and crop.shape[1] > 2 * cut + 4:
         crop = crop[cut:-cut or None, cut:-cut or None]
     height = max(crop.shape[0], 1)
-    scale = np.clip(CROP_HEIGHT_PX / height, 1.0, 8.0)
+    scale = np.clip(config.ocr_crop_height_px / height, 1.0, config.ocr_max_upscale)
     grey = cv2.resize(crop, None, fx=scale, fy=scale, interpolation=cv2.INTER_CUBIC)
     grey = cv2.normalize(grey, None, 0, 255, cv2.NORM_MINMAX)
-    return cv2.copyMakeBorder(grey, BORDER_PX, BORDER_PX, BORDER_PX, BORDER_PX, cv2.BORDER_REPLICATE)
+    border = config.ocr_border_px
+    return cv2.copyMakeBorder(grey, border, border, border, border, cv2.BORDER_REPLICATE)
 
 
-def parse_tsv(tsv: str, pages: int) -> List[TextReading]:
-    """Tesseract's TSV output of ``pages`` images as one :class:`TextReading` per image (in input order)."""
+def parse_tsv(tsv: str, pages: int, config=None) -> List[TextReading]:
+    """Tesseract's TSV output of ``pages`` images as one :class:`TextReading` per image (in input order), read
+    with the fusion settings ``config`` (None: the defaults)."""
     words: List[list] = [[] for _ in range(pages)]
     rows = tsv.splitlines()
     if not rows or not rows[0].startswith("level"):
@@ -162,12 +172,13 @@ def parse_tsv(tsv: str, pages: int) -> List[TextReading]:
         line = line_ids[page].setdefault(key, len(line_ids[page]))
         confidence = max(float(cells[col["conf"]]), 0.0) / 100.0
         words[page].append(Word(text, confidence, line, float(cells[col["height"]])))
-    return [TextReading(tuple(w)) for w in words]
+    return [TextReading(tuple(w), config) for w in words]
 
 
-def read_texts(crops: Sequence[np.ndarray], executable: Optional[str] = None,
+def read_texts(crops: Sequence[np.ndarray], config=None, executable: Optional[str] = None,
                timeout_s: Optional[float] = None) -> List[TextReading]:
-    """The text of each plate crop (BGR or grey uint8, the plate's box), read in one Tesseract run.
+    """The text of each plate crop (BGR or grey uint8, the plate's box), read in one Tesseract run with the
+    ``ocr_*`` settings of ``config`` (the run's ``fusion.FusionConfig``; None: the defaults).
 
     :class:`OcrUnavailable`
     when Tesseract or its language data are missing, :class:`OcrError` when it fails.
@@ -182,7 +193,7 @@ def read_texts(crops: Sequence[np.ndarray], executable: Optional[str] = None,
         names = []
         for i, crop in enumerate(crops):
             name = Path(folder) / f"{i:05d}.png"
-            if not cv2.imwrite(str(name), prepare_crop(crop)):
+            if not cv2.imwrite(str(name), prepare_crop(crop, config)):
                 raise OcrError(f"could not write the crop {name} for Tesseract")
             names.append(str(name))
         listing = Path(folder) / "crops.txt"
@@ -196,4 +207,4 @@ def read_texts(crops: Sequence[np.ndarray], executable: Optional[str] = None,
                 from exc
         if out.returncode != 0:
             raise OcrError(f"Tesseract failed (exit {out.returncode}): {out.stderr.strip()[:300]}")
-    return parse_tsv(out.stdout, len(crops))
+    return parse_tsv(out.stdout, len(crops), config)

@@ -102,7 +102,7 @@ def read_plate_texts(plates: Sequence[FusedSign], warn: Optional[WarnCallback] =
     if not crops:
         return sum(p.text is not None for p in plates)
     try:
-        readings = read(crops)
+        readings = read(crops, config)
     except (OcrUnavailable, OcrError) as exc:
         send_warning(warn, f"{len(set(owners))} supplementary plates mapped without their text: {exc}")
         return sum(p.text is not None for p in plates)

@@ -7,6 +7,7 @@ import stat
 import cv2
 import pytest
 
+from signmapper_core.fusion import FusionConfig
 from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable, find_tesseract, parse_tsv, read_texts
 from signmapper_core.plate_text import is_plate_line, normalise_line, normalise_text
 from signmapper_core.simulate.plate_faces import draw_plate
@@ -99,6 +100,9 @@ def test_tsv_words_are_grouped_by_image_and_line():
     first, second, third = parse_tsv("\n".join(rows), 3)
     assert first.lines == ["Mo-Fr", "7-19 h"] and first.confidence == pytest.approx(0.8)
     assert second.text == "" and third.text == "bus"
+    # the run's OCR settings decide what is print: a line read with less mean confidence than asked is not
+    (first,) = parse_tsv("\n".join(rows[:4]), 1, FusionConfig(ocr_min_line_confidence=0.8))
+    assert first.lines == ["Mo-Fr"] and first.confidence == pytest.approx(0.9)
 
 
 def test_a_hanging_tesseract_is_stopped_by_the_timeout(tmp_path):

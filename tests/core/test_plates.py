@@ -346,7 +346,7 @@ def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
 
     calls = []
 
-    def fake_read(crops):
+    def fake_read(crops, config):
         calls.append([c.shape[0] for c in crops])
         texts = {50: ("2OOm", 0.9), 45: ("200 m", 0.8), 40: ("ZOO m", 0.3), 30: ("", 0.0), 60: ("Mo-Fr", 0.9)}
         return [TextReading(tuple(Word(t, c, 0) for t in [texts[c_.shape[0]][0]] if t
@@ -361,7 +361,7 @@ def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
     assert read_plate_texts([a], read=fake_read, config=FusionConfig(plate_readings=1)) == 1
     assert calls == [[50]] and a.text == "200 m" and a.text_confidence == pytest.approx(0.9)  # the nearest alone
 
-    def missing(crops):
+    def missing(crops, config):
         raise OcrUnavailable(f"no tesseract; {INSTALL_HINT}")
 
     heard = []
