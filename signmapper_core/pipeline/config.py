@@ -184,6 +184,7 @@ class RimConfig:
     # triangles 1.4-1.56; GTSDB tune split: 1.4-1.9 to the annotated box)
     rim_same_iou: float = 0.8  # a measured face box overlapping an earlier reading this much is that reading
     rim_scale_step: float = 1.03  # the outline is laid at scales this factor apart (3 %: a pixel at 33 px)
+    rim_outline_samples: int = 96  # points along the outline at each scale; their median edge strength counts
 
 
 @dataclass(frozen=True)
@@ -274,6 +275,10 @@ class PlanarityConfig:
 
     detection_threshold: float = 0.5  # planar share of a segment needed to keep it
     planarity_window_px: int = 7
+    # a window's local plane is fitted only where at least this share of its pixels have a depth, and at least
+    # planarity_window_min_px of them: fewer fit a plane to noise (any three points lie on one)
+    planarity_window_min_share: float = 1 / 3
+    planarity_window_min_px: int = 6
     planarity_tolerance_px: float = 0.6  # residual in full-resolution disparity pixels, given depth
     sgbm_planarity_tolerance_px: float = 1.0  # the same for half-scale SGBM depth (noisier: 17% of true
     # signs fell below 0.5 at 0.6 px on a synthetic drive, 3% at 1.0 px)
@@ -330,6 +335,10 @@ class HoughConfig:
     hough_dp: float = 1.5  # accumulator resolution of HOUGH_GRADIENT_ALT: 1.5 x coarser than the image (OpenCV's
     # advice for that method); finer finds no more signs and costs more
     hough_edge_threshold: float = 150.0  # param1 of HOUGH_GRADIENT_ALT
+    hough_mask_median_px: int = 5  # the search space's outline is smoothed by a median of this (odd) size first:
+    # speckle in a matched depth map would feed the transform many short edges (slow, and false circles)
+    hough_ring_share: float = 0.1  # a circle's colour is read in its outer ring this share of its diameter deep,
+    # where a round sign carries it (an SSV prohibition ring: ~9.5 %)
     hough_max_status: str = "review"  # status cap of Hough finds whose ring is not in full colour
     hough_max_diameter_m: float = 0.6  # larger round formats only by colour: the radius range sets the cost
     hough_fallback_diameters_m: Tuple[float, ...] = (0.4, 0.6)  # where the catalogue has no round format up to it
@@ -384,6 +393,7 @@ class WhiteConfig:
     white_min_edge_support: float = 0.65  # ...this share of them on a strong gradient across the outline
     white_refine_margin: float = 0.25  # circles this far below it are moved and resized to their best outline...
     white_circle_search: float = 0.12  # ...within this x the radius (centre and radius)
+    white_circle_search_steps: int = 5  # ...on a grid of this many steps along each of the three
     white_min_gradient: float = 80.0  # Sobel magnitude of that gradient (about 20 grey levels across the outline)
     white_max_candidates: int = 40  # per pair, largest first: bounds the stereo matching they ask for
     white_same_iou: float = 0.6  # a face overlapping a kept one this much is the same

@@ -226,7 +226,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         # spoiled its outline); faded or white ones stay for review
         x, y, w, h = seg.bbox
         ranges = config.colour.hsv_ranges.get(seg.colour)
-        strong = ranges is not None and ring_colour_share(left[y : y + h, x : x + w], seg.mask, ranges) >= \
+        strong = ranges is not None and ring_colour_share(left[y : y + h, x : x + w], seg.mask, ranges, config) >= \
             config.hough.hough_strong_ring_share
         status = status if strong else config.hough.hough_max_status
     u, v = bbox_centre(face)

@@ -237,7 +237,7 @@ def measured_rim_bbox(image: np.ndarray, segment_bbox, segment_mask: np.ndarray,
     return (x0 + bx, y0 + by, bw, bh)
 
 
-def outline_samples(shape: str, count: int = 96) -> Tuple[np.ndarray, np.ndarray]:
+def outline_samples(shape: str, count: int) -> Tuple[np.ndarray, np.ndarray]:
     """(points, outward normals), each (N, 2), evenly along the ideal outline of ``shape`` in the unit box."""
     from .shape import IDEAL_POLYGONS
 
@@ -259,9 +259,9 @@ def outline_samples(shape: str, count: int = 96) -> Tuple[np.ndarray, np.ndarray
 
 
 def outline_edge_profile(image: np.ndarray, segment_bbox, shape: str, scales: np.ndarray,
-                         min_inside: float) -> np.ndarray:
-    """Median edge strength across the ideal ``shape`` outline of the segment's box scaled by each of ``scales``
-    about its centre (0 where less than ``min_inside`` of the outline lies in the image)."""
+                         min_inside: float, samples: int) -> np.ndarray:
+    """Median edge strength across the ideal ``shape`` outline (``samples`` points) of the segment's box scaled
+    by each of ``scales`` about its centre (0 where less than ``min_inside`` of the outline lies in the image)."""
     x, y, w, h = segment_bbox
     cx, cy = x + w / 2.0, y + h / 2.0
     reach = float(scales.max()) * max(w, h) / 2.0 + 3
@@ -270,7 +270,7 @@ def outline_edge_profile(image: np.ndarray, segment_bbox, shape: str, scales: np
     x1, y1 = int(min(width, cx + reach + 1)), int(min(height, cy + reach + 1))
     grey = cv2.GaussianBlur(cv2.cvtColor(image[y0:y1, x0:x1], cv2.COLOR_BGR2GRAY), (3, 3), 0)
     gx, gy = cv2.Sobel(grey, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(grey, cv2.CV_32F, 0, 1, ksize=3)
-    points, normals = outline_samples(shape)
+    points, normals = outline_samples(shape, samples)
     out = np.zeros(len(scales))
     for k, s in enumerate(scales):
         fw, fh = s * w, s * h
@@ -308,7 +308,8 @@ def edge_rim_bbox(image: np.ndarray, segment_bbox, shape: str, max_scale: float,
     blur = 2.0 * blur_px / max(1, min(w, h))
     max_scale, inner_scale = max_scale * (1.0 + blur), inner_scale + blur
     scales = step ** np.arange(int(np.floor(np.log(max_scale) / np.log(step))) + 1)
-    profile = outline_edge_profile(image, segment_bbox, shape, scales, rims.rim_outline_min_inside)
+    profile = outline_edge_profile(image, segment_bbox, shape, scales, rims.rim_outline_min_inside,
+                                   rims.rim_outline_samples)
     inner = int(np.argmax(np.where(scales <= inner_scale, profile, -1.0)))
     best, best_k = 0.0, None
     for k in range(inner + 2, len(scales) - 1):

@@ -48,7 +48,7 @@ def find_circles(
         mask = cv2.resize(mask, (grey.shape[1], grey.shape[0]), interpolation=cv2.INTER_AREA)
     # a smooth search-space outline: speckle in a matched depth map would otherwise feed the
     # transform with many short edges (slow, and false circles)
-    mask = cv2.medianBlur(mask, 5)
+    mask = cv2.medianBlur(mask, config.hough.hough_mask_median_px)
     grey[mask < 128] = 0
     lo, hi = max(2, int(r_min * scale)), max(3, int(np.ceil(r_max * scale)))
     circles = cv2.HoughCircles(
@@ -60,14 +60,16 @@ def find_circles(
     return circles.reshape(-1, 3) / scale
 
 
-def outer_ring(mask: np.ndarray) -> np.ndarray:
-    """The outer tenth of a disc mask, where a round sign carries its colour."""
-    return cv2.subtract(mask, cv2.erode(mask, np.ones((3, 3), np.uint8), iterations=max(1, mask.shape[0] // 10)))
+def outer_ring(mask: np.ndarray, config: PipelineConfig) -> np.ndarray:
+    """The outer ring of a disc mask (``hough_ring_share`` of its diameter deep), where a round sign carries its
+    colour."""
+    depth_px = max(1, int(mask.shape[0] * config.hough.hough_ring_share))
+    return cv2.subtract(mask, cv2.erode(mask, np.ones((3, 3), np.uint8), iterations=depth_px))
 
 
-def ring_colour_share(bgr: np.ndarray, mask: np.ndarray, ranges) -> float:
+def ring_colour_share(bgr: np.ndarray, mask: np.ndarray, ranges, config: PipelineConfig) -> float:
     """Share of the outer ring's pixels inside the colour step's HSV ranges (a full-colour ring: ~1)."""
-    ring = outer_ring(mask) > 0
+    ring = outer_ring(mask, config) > 0
     if not ring.any():
         return 0.0
     return float(np.count_nonzero(hsv_mask(cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV), ranges)[ring])) / ring.sum()
@@ -76,7 +78,7 @@ def ring_colour_share(bgr: np.ndarray, mask: np.ndarray, ranges) -> float:
 def weak_colour(bgr: np.ndarray, mask: np.ndarray, config: PipelineConfig) -> str:
     """Dominant weak colour of the outer ring of a disc mask (``config.hough.hough_tint_hues``): red/blue/yellow, else
     white."""
-    ring = outer_ring(mask)
+    ring = outer_ring(mask, config)
     hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
     pixels = hsv[ring > 0]
     if pixels.size == 0:

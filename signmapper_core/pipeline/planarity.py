@@ -58,8 +58,9 @@ def _fit_plane(u, v, d, weights=None):
     return coef
 
 
-def local_plane_fit(disparity: np.ndarray, weight: np.ndarray, window: int):
-    """Per-pixel weighted plane fit in a window: (residual_rms, d, du, dv, ok) maps."""
+def local_plane_fit(disparity: np.ndarray, weight: np.ndarray, window: int, min_valid: int):
+    """Per-pixel weighted plane fit in a window: (residual_rms, d, du, dv, ok) maps; ok where the window holds at
+    least ``min_valid`` pixels of weight."""
     k = (window, window)
 
     def box(a):
@@ -73,7 +74,7 @@ def local_plane_fit(disparity: np.ndarray, weight: np.ndarray, window: int):
     s1, sx, sy = box(wgt), box(wgt * xs), box(wgt * ys)
     sxx, sxy, syy = box(wgt * xs * xs), box(wgt * xs * ys), box(wgt * ys * ys)
     sd, sdx, sdy, sdd = box(dw), box(dw * xs), box(dw * ys), box(dw * disparity)
-    ok = (weight > 0) & (s1 >= max(6, window * window // 3))
+    ok = (weight > 0) & (s1 >= min_valid)
     idx = np.nonzero(ok)
     rms = np.full((h, w), np.inf)
     d0 = np.zeros((h, w))
@@ -138,7 +139,9 @@ def segment_planarity(
 
     # The slant is judged on the dominant plane only: a window's gradient is too noisy for it
     # (0.05 px/px of SGBM noise at d = 140 px reads as 30 deg).
-    rms, _, _, _, ok = local_plane_fit(disparity, has_depth, window)
+    settings = config.planarity
+    min_valid = max(settings.planarity_window_min_px, int(window * window * settings.planarity_window_min_share))
+    rms, _, _, _, ok = local_plane_fit(disparity, has_depth, window, min_valid)
     ys, xs = np.nonzero(has_depth)
     u_img, v_img = xs + x, ys + y
     local_ok = ok[ys, xs] & (rms[ys, xs] <= tolerance_px)

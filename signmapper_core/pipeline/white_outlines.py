@@ -177,9 +177,9 @@ def refine_circle(gradients: Tuple[np.ndarray, np.ndarray], cu: float, cv: float
     gradients: the cells around which it was drawn stop short of a weak stretch of the outline (a grey ring
     before a grey wall), so the radius is sought up to ``white_circle_search`` of it outward, the centre as
     far around."""
-    k = config.white.white_circle_search * r
-    du, dv, dr = np.meshgrid(np.linspace(-k, k, 5), np.linspace(-k, k, 5), np.linspace(-0.5 * k, 1.5 * k, 5),
-                             indexing="ij")
+    k, steps = config.white.white_circle_search * r, config.white.white_circle_search_steps
+    du, dv, dr = np.meshgrid(np.linspace(-k, k, steps), np.linspace(-k, k, steps),
+                             np.linspace(-0.5 * k, 1.5 * k, steps), indexing="ij")
     support = edge_support(gradients, cu + du.ravel(), cv + dv.ravel(), r + dr.ravel(), config)
     best = int(np.argmax(support))
     return cu + du.ravel()[best], cv + dv.ravel()[best], r + dr.ravel()[best], float(support[best])

@@ -2,8 +2,8 @@ import cv2
 import numpy as np
 from pipeline_scenes import CAMERA, noisy_background, pixels_for
 
-from signmapper_core.pipeline.config import PipelineConfig
-from signmapper_core.pipeline.hough import find_circles, hough_segments, radius_range_px, weak_colour
+from signmapper_core.pipeline.config import PipelineConfig, with_settings
+from signmapper_core.pipeline.hough import find_circles, hough_segments, radius_range_px, ring_colour_share, weak_colour
 from signmapper_core.pipeline.search_space import search_space_mask
 
 CONFIG = PipelineConfig()
@@ -57,3 +57,18 @@ def test_weak_colour_of_grey_ring_is_white():
     mask = np.zeros((41, 41), np.uint8)
     cv2.circle(mask, (20, 20), 20, 255, -1)
     assert weak_colour(patch, mask, CONFIG) == "white"
+
+
+def test_the_ring_read_for_a_circles_colour_is_its_outer_share():
+    """A thin red ring (5 % of the diameter deep) around a white field: read to 10 % of the diameter it is
+    red; read to 40 %, the field outweighs it and the circle is white."""
+    size = 101
+    crop = np.full((size, size, 3), 235, np.uint8)
+    cv2.circle(crop, (50, 50), 50, (40, 40, 200), -1)
+    cv2.circle(crop, (50, 50), 45, (235, 235, 235), -1)
+    mask = np.zeros((size, size), np.uint8)
+    cv2.circle(mask, (50, 50), 50, 255, -1)
+    red = CONFIG.colour.hsv_ranges["red"]
+    deeper = with_settings(CONFIG, {"hough": {"hough_ring_share": 0.4}})
+    assert weak_colour(crop, mask, CONFIG) == "red" and ring_colour_share(crop, mask, red, CONFIG) > 0.4
+    assert weak_colour(crop, mask, deeper) == "white" and ring_colour_share(crop, mask, red, deeper) < 0.25

@@ -97,3 +97,14 @@ def test_background_depth_on_the_signs_edge_is_ignored():
     assert segment_planarity(CAMERA, depth, BBOX, _disc(), CONFIG, GIVEN).indicator > 0.95
     all_depths = with_settings(CONFIG, {"planarity": {"max_depth_deviation": None}})
     assert segment_planarity(CAMERA, depth, BBOX, _disc(), all_depths, GIVEN).indicator < 0.9
+
+
+def test_a_window_needs_its_share_of_pixels_with_depth_to_fit_a_plane():
+    """Depth on every other row (a stereo pair matched on half its rows): a 7 x 7 window holds 21-28 pixels with
+    depth, above a third of it; asking for 60 % leaves no window to fit, and no planar pixel."""
+    depth = np.full((H, W), np.nan, np.float32)
+    depth[150:210, 300:360] = 8.0
+    depth[::2, :] = np.nan
+    assert segment_planarity(CAMERA, depth, BBOX, _disc(), CONFIG, GIVEN).indicator > 0.8
+    stricter = with_settings(CONFIG, {"planarity": {"planarity_window_min_share": 0.6}})
+    assert segment_planarity(CAMERA, depth, BBOX, _disc(), stricter, GIVEN).indicator == 0.0
