@@ -386,6 +386,8 @@ class WhiteConfig:
     white_max_aspect: float = 1.6  # longer / shorter side of a rectangle: zone panels are 1.4
     white_min_panel_cover: float = 0.2  # the cells fill this share of a rectangle (a zone panel's field around
     # its ring, stripes and lettering: 0.2-0.4)
+    white_min_panel_support: float = 0.8  # a rectangle whose cells' hull fits no rectangle (stripes cut off its
+    # corners) is a panel when this share of its sides lies on strong edges (a disc's box: ~0.3)
     white_panel_grow: float = 0.2  # a panel's outline is sought up to this x its size beyond its cells
     white_min_disc_cover: float = 0.2  # the cells fill this share of their smallest circle (a field cut by digits
     # and a stripe band: 0.35-0.45 on end-of-limit discs)
@@ -394,6 +396,9 @@ class WhiteConfig:
     white_refine_margin: float = 0.25  # circles this far below it are moved and resized to their best outline...
     white_circle_search: float = 0.12  # ...within this x the radius (centre and radius)
     white_circle_search_steps: int = 5  # ...on a grid of this many steps along each of the three
+    white_rim_saturation_step: float = 10.0  # a disc's ring is a faded coloured rim when it is this much more
+    # saturated than its field (tune drives 1700-1705: tinted white faces -8..+6; without it 12 of 56 views lost)
+    white_rim_field_depth: float = 0.25  # its field: the disc without this share of its diameter all round
     white_min_gradient: float = 80.0  # Sobel magnitude of that gradient (about 20 grey levels across the outline)
     white_max_candidates: int = 40  # per pair, largest first: bounds the stereo matching they ask for
     white_same_iou: float = 0.6  # a face overlapping a kept one this much is the same

@@ -15,7 +15,7 @@ perimeter on strong edges) or a rectangle (:func:`.shape.classify_shape`). Depth
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import List, Optional, Sequence, Tuple
+from typing import List, Sequence, Tuple
 
 import cv2
 import numpy as np
@@ -215,22 +215,25 @@ def refine_box(gradients: Tuple[np.ndarray, np.ndarray], box: Box, max_grow: flo
     """``box`` with each side moved outward (up to ``max_grow`` of its size) to the line of the strongest
     gradient across it: a panel's outline, where its field's cells stop short of a ring, a stripe or
     lettering running into the frame."""
-    gx, gy = np.abs(gradients[0]), np.abs(gradients[1])
+    gx, gy = gradients
     height, width = gx.shape
     x, y, w, h = box
     kx, ky = max(1, int(round(max_grow * w))), max(1, int(round(max_grow * h)))
     r0, r1, c0, c1 = max(0, y), min(height, y + h), max(0, x), min(width, x + w)
     if r1 <= r0 or c1 <= c0:
         return box
-    column = gx[r0:r1].mean(axis=0)  # mean gradient across each column line over the box's rows
-    row = gy[:, c0:c1].mean(axis=1)
+    # mean gradient across each column line over the box's rows (and each row line over its columns), only
+    # within the reach of its sides: the profiles start at u0 and v0
+    u0, v0 = max(0, x - kx), max(0, y - ky)
+    column = np.abs(gx[r0:r1, u0 : min(width, x + w + kx)]).mean(axis=0)
+    row = np.abs(gy[v0 : min(height, y + h + ky), c0:c1]).mean(axis=1)
 
-    def outward(profile, start, step, reach, size):
+    def outward(profile, first, start, step, reach, size):
         offsets = [o for o in range(reach + 1) if 0 <= start + step * o < size]
-        return offsets[int(np.argmax([profile[start + step * o] for o in offsets]))] if offsets else 0
+        return offsets[int(np.argmax([profile[start + step * o - first] for o in offsets]))] if offsets else 0
 
-    dl, dr = outward(column, x, -1, kx, width), outward(column, x + w - 1, 1, kx, width)
-    dt, db = outward(row, y, -1, ky, height), outward(row, y + h - 1, 1, ky, height)
+    dl, dr = outward(column, u0, x, -1, kx, width), outward(column, u0, x + w - 1, 1, kx, width)
+    dt, db = outward(row, v0, y, -1, ky, height), outward(row, v0, y + h - 1, 1, ky, height)
     return x - dl, y - dt, w + dl + dr, h + dt + db
 
 
@@ -246,39 +249,47 @@ def outline_in_reach(gradients: Tuple[np.ndarray, np.ndarray], box: Box, config:
 
 
 def read_face(mask: np.ndarray, box: Box, gradients: Tuple[np.ndarray, np.ndarray], config: PipelineConfig
-              ) -> Optional[Tuple[str, Box, np.ndarray]]:
-    """(shape, box, outline mask in that box) of the face that the joined cells ``mask`` (in ``box``) fill,
-    or None: a rectangle whose outline the cells fill, or the smallest circle around them when its
-    perimeter lies on strong edges (a field cut by a stripe band still spans the disc's diameter)."""
+              ) -> List[Tuple[str, Box, np.ndarray]]:
+    """The readings (shape, box, outline mask in that box) of the face that the joined cells ``mask`` (in
+    ``box``) fill: a rectangle whose sides lie on strong edges, and, unless the cells' hull fits a rectangle,
+    the smallest circle around them when its perimeter lies on strong edges (a field cut by a stripe band
+    still spans the disc's diameter). A zone panel cut by its stripes may read as both: depth and the
+    templates decide."""
     x, y, w, h = box
     contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_SIMPLE)
     if not contours:
-        return None
+        return []
     hull = cv2.convexHull(np.vstack(contours))  # bridges stripe bands, digits and frame lines of a convex face
     closed = np.zeros_like(mask)
     cv2.fillConvexPoly(closed, hull, 255)
     result = classify_shape(closed, config.white.white_min_shape_fit, config.shape.shape_fill_window)
-    if result.shape in ("rectangle", "square") and max(w, h) <= config.white.white_max_aspect * min(w, h) and \
-            np.count_nonzero(mask) >= config.white.white_min_panel_cover * w * h:
-        face = refine_box(gradients, box, config.white.white_panel_grow)
-        if box_edge_support(gradients, face, config) >= config.white.white_min_edge_support:
-            return "rectangle", face, np.full((face[3], face[2]), 255, np.uint8)
-        return None
-    (cu, cv), r = cv2.minEnclosingCircle(hull)
-    if r < 2 or np.count_nonzero(mask) < config.white.white_min_disc_cover * np.pi * r * r:
-        return None
+    fitted = result.shape in ("rectangle", "square")
+    readings = []
     white = config.white
+    cover = np.count_nonzero(mask)
+    if max(w, h) <= white.white_max_aspect * min(w, h) and cover >= white.white_min_panel_cover * w * h:
+        # a panel whose field the stripes cut into pieces that leave its corners out still has four straight
+        # sides on strong edges, where a disc's box touches its outline at four points only
+        face = refine_box(gradients, box, white.white_panel_grow)
+        support = box_edge_support(gradients, face, config)
+        if support >= (white.white_min_edge_support if fitted else white.white_min_panel_support):
+            readings.append(("rectangle", face, np.full((face[3], face[2]), 255, np.uint8)))
+    if fitted:
+        return readings
+    (cu, cv), r = cv2.minEnclosingCircle(hull)
+    if r < 2 or cover < white.white_min_disc_cover * np.pi * r * r:
+        return readings
     r += white.white_edge_band_px  # the cells end where the (widened) edge band of the outline begins
     if edge_support(gradients, x + cu, y + cv, r, config) < white.white_min_edge_support - white.white_refine_margin:
-        return None
+        return readings
     cu, cv, r, support = refine_circle(gradients, x + cu, y + cv, r, config)
-    if support < config.white.white_min_edge_support:
-        return None
+    if support < white.white_min_edge_support:
+        return readings
     cu, cv = cu - x, cv - y
     side = int(round(2 * r)) + 1
     disc = np.zeros((side, side), np.uint8)
     cv2.circle(disc, (side // 2, side // 2), side // 2, 255, -1)
-    return "circle", (int(round(x + cu - side / 2)), int(round(y + cv - side / 2)), side, side), disc
+    return readings + [("circle", (int(round(x + cu - side / 2)), int(round(y + cv - side / 2)), side, side), disc)]
 
 
 def _centre_inside(a: Box, b: Box) -> bool:
@@ -313,9 +324,8 @@ def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config
             continue
         x, y, w, h = box
         mask = np.isin(labels[y : y + h, x : x + w], ids[list(members)]).astype(np.uint8) * 255
-        face = read_face(mask, box, gradients, config)
-        if face is not None and lo * scale <= min(face[1][2:]) and max(face[1][2:]) <= hi * scale:
-            faces.append(face)
+        faces += [face for face in read_face(mask, box, gradients, config)
+                  if lo * scale <= min(face[1][2:]) and max(face[1][2:]) <= hi * scale]
     faces.sort(key=lambda f: f[1][2] * f[1][3], reverse=True)
     kept: List[WhiteCandidate] = []
     margin = config.colour.border_margin_px
@@ -325,8 +335,11 @@ def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config
         full_box = (bx, by, bw, bh)
         if bx < 0 or by < 0 or bx + bw > width or by + bh > height:
             continue
+        # a face inside a larger one of the same shape is a part of it (the ring on a zone panel); of the other
+        # shape it may be the face itself (a disc above its plate, read together as a panel): depth and the
+        # templates decide, and the best of overlapping detections is kept (detect.suppress_overlaps)
         if any(box_iou(full_box, c.segment.bbox) > config.white.white_same_iou
-               or _centre_inside(full_box, c.segment.bbox) for c in kept):
+               or (c.shape == shape and _centre_inside(full_box, c.segment.bbox)) for c in kept):
             continue
         outline = cv2.resize(outline, (bw, bh), interpolation=cv2.INTER_NEAREST)
         contours, _ = cv2.findContours(outline, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)

@@ -19,7 +19,7 @@ import numpy as np
 from ..face_normal import world_face_normal
 from .classify import classify_segment
 from .detection import Detection
-from .hough import weak_colour
+from .hough import outer_ring, weak_colour
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
 from .search_space import valid_depth
@@ -86,6 +86,23 @@ def pole_share(grey: np.ndarray, bbox, config) -> float:
     return float(strong.mean(axis=0).max())
 
 
+def coloured_rim(bgr: np.ndarray, mask: np.ndarray, config) -> bool:
+    """Whether a disc's outer ring carries a weak colour of its own (a faded red or blue rim), not merely the
+    tint of the light on a white face: the ring names a colour (:func:`.hough.weak_colour`) and is more
+    saturated than the field inside it by ``white_rim_saturation_step``. Warm façades and a low sun tint a
+    whole white face pink or yellow alike (ring and field within a few levels); a faded rim stands out."""
+    if weak_colour(bgr, mask, config) == "white":
+        return False
+    ring = outer_ring(mask, config) > 0
+    inner = cv2.erode(mask, np.ones((3, 3), np.uint8),
+                      iterations=max(1, int(mask.shape[0] * config.white.white_rim_field_depth))) > 0
+    if not ring.any() or not inner.any():
+        return True
+    saturation = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)[:, :, 1]
+    step = float(np.median(saturation[ring])) - float(np.median(saturation[inner]))
+    return step >= config.white.white_rim_saturation_step
+
+
 def white_template_ids(catalogue, shape: str, bbox, config) -> List[str]:
     """Ids of the white entries a ``shape`` outline of box ``bbox`` may be."""
     shapes = catalogue_shapes(shape, bbox[2], bbox[3])
@@ -102,7 +119,7 @@ def judge_white(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
     if seg.touches_border:
         return None
     x, y, w, h = seg.bbox
-    if cand.shape == "circle" and weak_colour(pair.left[y : y + h, x : x + w], seg.mask, config) != "white":
+    if cand.shape == "circle" and coloured_rim(pair.left[y : y + h, x : x + w], seg.mask, config):
         return None  # a faded red or blue ring: the Hough fallback reads it as its colour
     ids = white_template_ids(catalogue, cand.shape, seg.bbox, config)
     if not ids:

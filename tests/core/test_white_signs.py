@@ -12,11 +12,12 @@ from signmapper_core.pipeline.white_outlines import (
     edge_support,
     face_side_range_px,
     group_cells,
+    read_face,
     scan_scale,
     white_candidates,
     white_formats,
 )
-from signmapper_core.pipeline.white_signs import pole_share, side_share, support_share
+from signmapper_core.pipeline.white_signs import coloured_rim, pole_share, side_share, support_share
 
 FORWARD, RIGHT, DOWN = POSE.rotation[:, 2], POSE.rotation[:, 0], POSE.rotation[:, 1]
 CONFIG = with_settings(PipelineConfig(), {"white": {"white_signs": True}})
@@ -95,10 +96,88 @@ def test_white_faces_are_outline_candidates_with_their_box(catalogue, template_i
     x, y, w, h = bbox
     near = [c for c in cands if abs(c.segment.bbox[0] + c.segment.bbox[2] / 2 - (x + w / 2)) < 0.1 * w
             and abs(c.segment.bbox[1] + c.segment.bbox[3] / 2 - (y + h / 2)) < 0.1 * h]
-    assert [c.shape for c in near] == [shape]
+    assert near and near[0].shape == shape  # largest first: a zone panel's ring may follow as a disc reading
+    assert all(c.shape != shape for c in near[1:])
     bw, bh = near[0].segment.bbox[2:]
     assert abs(bw - w) <= 0.1 * w and abs(bh - h) <= 0.1 * h
     assert near[0].segment.source == "white" and near[0].segment.colour == "white"
+
+
+def _hsv_disc(ring_hsv, field_hsv, size=61):
+    """A disc (BGR) whose outer ring and inner field have the given HSV colours, and its mask."""
+    mask = np.zeros((size, size), np.uint8)
+    cv2.circle(mask, (size // 2, size // 2), size // 2, 255, -1)
+    hsv = np.zeros((size, size, 3), np.uint8)
+    hsv[mask > 0] = ring_hsv
+    cv2.circle(hsv, (size // 2, size // 2), int(size * 0.38), tuple(int(v) for v in field_hsv), -1)
+    return cv2.cvtColor(hsv, cv2.COLOR_HSV2BGR), mask
+
+
+def test_a_tinted_white_face_has_no_coloured_rim_but_a_faded_red_ring_has():
+    # a white face in the pink light of a warm façade: ring and field equally tinted (saturation 30)
+    tinted, mask = _hsv_disc((175, 30, 220), (175, 30, 225))
+    assert not coloured_rim(tinted, mask, CONFIG)
+    # a faded red ring (saturation 60) around a white field (12): the Hough fallback's red sign
+    faded, mask = _hsv_disc((178, 60, 200), (175, 12, 230))
+    assert coloured_rim(faded, mask, CONFIG)
+    white, mask = _hsv_disc((0, 5, 220), (0, 5, 225))
+    assert not coloured_rim(white, mask, CONFIG)
+
+
+def _striped_panel_cells(w=40, h=56, pad=6):
+    """Gradients of a bright panel with a dark frame before a darker background, and the mask of its field's
+    cells as the stripes leave them: the two corners the diagonal stripe band crosses are cut off."""
+    grey = np.full((h + 2 * pad, w + 2 * pad), 90, np.uint8)
+    cv2.rectangle(grey, (pad, pad), (pad + w - 1, pad + h - 1), 225, -1)
+    cv2.rectangle(grey, (pad, pad), (pad + w - 1, pad + h - 1), 30, 1)
+    mask = np.zeros((h, w), np.uint8)
+    triangle_top = np.array([[0, 0], [w - 14, 0], [0, h - 20]], np.int32)
+    triangle_bottom = np.array([[w - 1, 14], [w - 1, h - 1], [14, h - 1]], np.int32)
+    cv2.fillConvexPoly(mask, triangle_top, 255)
+    cv2.fillConvexPoly(mask, triangle_bottom, 255)
+    gradients = (cv2.Sobel(grey, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(grey, cv2.CV_32F, 0, 1, ksize=3))
+    return gradients, mask, (pad + 1, pad + 1, w - 2, h - 2)
+
+
+def test_a_panel_cut_by_its_stripes_reads_as_a_rectangle_on_its_four_sides():
+    gradients, mask, box = _striped_panel_cells()
+    x, y, w, h = box
+    readings = read_face(mask[1 : 1 + h, 1 : 1 + w], box, gradients, CONFIG)
+    rectangles = [r for r in readings if r[0] == "rectangle"]
+    assert len(rectangles) == 1
+    rx, ry, rw, rh = rectangles[0][1]
+    assert abs(rx - (x - 1)) <= 1 and abs(ry - (y - 1)) <= 1 and abs(rw - (w + 2)) <= 2 and abs(rh - (h + 2)) <= 2
+
+
+def test_a_disc_does_not_read_as_a_rectangle():
+    grey = np.full((80, 80), 90, np.uint8)
+    cv2.circle(grey, (40, 40), 28, 225, -1)
+    gradients = (cv2.Sobel(grey, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(grey, cv2.CV_32F, 0, 1, ksize=3))
+    mask = np.zeros((80, 80), np.uint8)
+    cv2.circle(mask, (40, 40), 26, 255, -1)
+    mask[36:44] = 0  # a stripe band across its field
+    box = (14, 14, 53, 53)
+    readings = read_face(mask[14:67, 14:67], box, gradients, CONFIG)
+    assert [r[0] for r in readings] == ["circle"]
+
+
+def test_a_disc_above_its_plate_stays_a_candidate_beside_their_joint_panel_reading(catalogue):
+    # a 2.55 disc right above a white plate on the same pole: the cells of both may read as one tall panel,
+    # the disc inside it must still be judged on its own
+    sign, left, depth, bbox = _pole_scene(catalogue, "2.55", "normal")
+    x, y, w, h = bbox
+    plate = (x, y + h + 3, w, int(0.5 * h))  # as wide as the disc: disc and plate fill one panel's outline
+    px, py, pw, ph = plate
+    left[py : py + ph, px : px + pw] = (232, 232, 230)
+    cv2.rectangle(left, (px, py), (px + pw - 1, py + ph - 1), (25, 25, 25), 2)
+    depth[py : py + ph, px : px + pw] = depth[y + h // 2, x + w // 2]
+    cands = white_candidates(left, _sides(catalogue), CONFIG)
+    assert any(c.shape == "rectangle" and c.segment.bbox[3] > 1.3 * h for c in cands)  # the joint reading
+    discs = [c for c in cands if c.shape == "circle" and abs(c.segment.bbox[0] - x) <= 0.1 * w
+             and abs(c.segment.bbox[1] - y) <= 0.1 * h]
+    assert len(discs) == 1
+    dets = [d for d in detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG) if d.source == "white"]
+    assert [d.template_id for d in dets] == ["2.55"]
 
 
 def test_coloured_signs_are_no_white_signs_and_dark_windows_no_candidates(catalogue):
