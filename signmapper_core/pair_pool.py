@@ -69,10 +69,15 @@ def python_executable() -> str:
                        f"(looked for {', '.join(str(c) for c in candidates)}); map with 1 worker process")
 
 
-def _start_worker(drive, catalogue, config, detect: Optional[Callable], opencv_threads: int) -> None:
+def _start_worker(drive, catalogue, config, detect: Optional[Callable], opencv_threads: int,
+                  templates: Optional[dict] = None) -> None:
     import cv2
 
     cv2.setNumThreads(opencv_threads)
+    if templates:
+        from .pipeline.classify import seed_canonical_templates
+
+        seed_canonical_templates(catalogue, templates)
     _worker_state.update(drive=drive, catalogue=catalogue, config=config, detect=detect)
 
 
@@ -82,6 +87,15 @@ def _map_in_worker(index: int):
     state = _worker_state
     return map_pair(state["drive"], state["drive"].pairs[index], state["catalogue"], state["config"],
                     state["detect"])
+
+
+def _rendered_templates(catalogue) -> Optional[dict]:
+    """The catalogue's templates rendered once here for all workers (each would decode the PNGs itself); None
+    for a catalogue that is not one of the project's (a test's stand-in)."""
+    from .catalogue import Catalogue
+    from .pipeline.classify import canonical_templates
+
+    return canonical_templates(catalogue) if isinstance(catalogue, Catalogue) else None
 
 
 def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[CancelCheck] = None,
@@ -100,7 +114,8 @@ def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[
     # the workers read pairs: the ground truth and what was wrong with it (an exception) stay here
     pairs_only = replace(drive, truth=None, truth_error=None, warnings=[])
     executor = ProcessPoolExecutor(workers, mp_context=context, initializer=_start_worker,
-                                   initargs=(pairs_only, catalogue, config, detect, OPENCV_THREADS_PER_WORKER))
+                                   initargs=(pairs_only, catalogue, config, detect, OPENCV_THREADS_PER_WORKER,
+                                             _rendered_templates(catalogue)))
     try:
         pending, submitted = {}, 0
         for index in range(len(pairs)):

@@ -129,27 +129,35 @@ class Catalogue:
     def master(self, template_id: str) -> tuple[np.ndarray, np.ndarray]:
         """The full-resolution (bgr, alpha) of an entry, read once and cached."""
         if template_id not in self._masters:
-            entry = self[template_id]
-            path = self.folder / entry.png
-            img = cv2.imread(str(path), cv2.IMREAD_UNCHANGED)
-            if img is None:
-                raise CatalogueError(path, f"cannot read the image of template {template_id!r}")
-            if img.ndim == 2:
-                img = cv2.cvtColor(img, cv2.COLOR_GRAY2BGR)
-            if img.dtype != np.uint8:
-                img = (img / 257).astype(np.uint8)
-            if img.shape[2] == 4:
-                bgr, alpha = np.ascontiguousarray(img[:, :, :3]), np.ascontiguousarray(img[:, :, 3])
-            else:
-                bgr = img
-                alpha = shape_mask(entry.shape, img.shape[1], img.shape[0])
-            self._masters[template_id] = (bgr, alpha)
+            self._masters[template_id] = self.read_master(template_id)
         return self._masters[template_id]
 
-    def render(self, template_id: str, size_px) -> tuple[np.ndarray, np.ndarray]:
-        """(bgr, alpha) at ``size_px`` (longer side, or (w, h)); alpha is 255 inside the sign outline."""
+    def read_master(self, template_id: str) -> tuple[np.ndarray, np.ndarray]:
+        """The full-resolution (bgr, alpha) of an entry read from its PNG, not cached (:meth:`master` caches)."""
         entry = self[template_id]
-        bgr, alpha = self.master(template_id)
+        path = self.folder / entry.png
+        img = cv2.imread(str(path), cv2.IMREAD_UNCHANGED)
+        if img is None:
+            raise CatalogueError(path, f"cannot read the image of template {template_id!r}")
+        if img.ndim == 2:
+            img = cv2.cvtColor(img, cv2.COLOR_GRAY2BGR)
+        if img.dtype != np.uint8:
+            img = (img / 257).astype(np.uint8)
+        if img.shape[2] == 4:
+            bgr, alpha = np.ascontiguousarray(img[:, :, :3]), np.ascontiguousarray(img[:, :, 3])
+        else:
+            bgr = img
+            alpha = shape_mask(entry.shape, img.shape[1], img.shape[0])
+        return bgr, alpha
+
+    def render(self, template_id: str, size_px, keep_master: bool = True) -> tuple[np.ndarray, np.ndarray]:
+        """(bgr, alpha) at ``size_px`` (longer side, or (w, h)); alpha is 255 inside the sign outline.
+
+        ``keep_master``: cache the full-resolution image (:meth:`master`) for the next rendering.
+        """
+        entry = self[template_id]
+        bgr, alpha = self.master(template_id) if keep_master or template_id in self._masters \
+            else self.read_master(template_id)
         w, h = pixel_size(entry.aspect, size_px)
         return _resize(bgr, w, h), _resize(alpha, w, h)
 

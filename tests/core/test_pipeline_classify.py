@@ -196,3 +196,21 @@ def test_pole_across_a_flat_field_sign_does_not_read_as_stripes():
     result = classify_segment(scene, (25, 25, face.shape[1], face.shape[0]), catalogue, ["3.03", "3.04"],
                               PipelineConfig(classification=ClassificationConfig(tie_margin=1.0)))
     assert result.template_id == "3.03", result.scores
+
+
+def test_templates_rendered_for_worker_processes_are_those_a_worker_renders_and_its_catalogue_reads_no_png():
+    import pickle
+
+    from signmapper_core.pipeline.classify import canonical_template, canonical_templates, seed_canonical_templates
+
+    here = load_catalogue()
+    rendered = canonical_templates(here)
+    assert set(rendered) == set(here.ids())
+    assert not here._masters  # the full-size images are not kept
+    worker = pickle.loads(pickle.dumps(load_catalogue()))  # what a worker process receives
+    seed_canonical_templates(worker, pickle.loads(pickle.dumps(rendered)))
+    fresh = load_catalogue()
+    for template_id in here.ids():
+        for got, want in zip(canonical_template(worker, template_id), canonical_template(fresh, template_id)):
+            assert got.shape == want.shape and np.array_equal(got, want)
+    assert not worker._masters and len(fresh._masters) == len(here)  # the seeded one decoded no PNG
