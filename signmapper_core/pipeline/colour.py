@@ -107,9 +107,9 @@ def colour_masks(bgr: np.ndarray, settings: ColourConfig, colours: Iterable[str]
     return masks
 
 
-def _filled_segment(contour, colour, width, height, border_margin_px, source, min_solidity):
-    """Segment of one contour: its filled outline (hull where far from convex) in its box."""
-    x, y, w, h = cv2.boundingRect(contour)
+def _filled_segment(contour, colour, width, height, border_margin_px, source, min_solidity, box):
+    """Segment of one contour (its bounding ``box``): its filled outline (hull where far from convex) in its box."""
+    x, y, w, h = box
     filled = np.zeros((h, w), dtype=np.uint8)
     cv2.drawContours(filled, [contour], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
     hull = cv2.convexHull(contour)
@@ -150,14 +150,16 @@ def segments_from_mask(mask: np.ndarray, colour: str, min_area_px: int, settings
         if w < min_bbox_px or h < min_bbox_px:
             continue
         if parent < 0:
-            seg = _filled_segment(contour, colour, width, height, border_margin_px, "colour", min_solidity)
+            seg = _filled_segment(contour, colour, width, height, border_margin_px, "colour", min_solidity,
+                                  (x, y, w, h))
             if seg.area_px >= min_area_px:
                 out.append(seg)
             continue
         _, _, pw, ph = cv2.boundingRect(contours[parent])
         if pw <= max_ring_ratio * w and ph <= max_ring_ratio * h or cv2.contourArea(contour) < min_hole_px:
             continue
-        out.append(_filled_segment(contour, colour, width, height, border_margin_px, "hole", min_solidity))
+        out.append(_filled_segment(contour, colour, width, height, border_margin_px, "hole", min_solidity,
+                                   (x, y, w, h)))
     return out
 
 

@@ -11,6 +11,7 @@ the bounding box, so mild perspective (ellipses, sheared boxes) still fits.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Dict, Optional, Tuple
 
 import cv2
@@ -59,8 +60,25 @@ def ideal_mask(shape: str, width: int, height: int) -> np.ndarray:
     return mask
 
 
+_CACHED_IDEAL_PX = 128 * 128  # larger boxes are rare and each would hold much memory
+
+
+@lru_cache(maxsize=512)
+def _cached_ideal(shape: str, width: int, height: int) -> np.ndarray:
+    ideal = ideal_mask(shape, width, height) > 0
+    ideal.flags.writeable = False
+    return ideal
+
+
+def _ideal_pixels(shape: str, width: int, height: int) -> np.ndarray:
+    """Bool mask of :func:`ideal_mask`: a segment's outline is fitted several times a pair, at the same size."""
+    if width * height <= _CACHED_IDEAL_PX:
+        return _cached_ideal(shape, width, height)
+    return ideal_mask(shape, width, height) > 0
+
+
 def _iou(a: np.ndarray, b: np.ndarray) -> float:
-    a, b = a > 0, b > 0
+    """IoU of two bool masks."""
     union = np.count_nonzero(a | b)
     return float(np.count_nonzero(a & b)) / union if union else 0.0
 
@@ -84,9 +102,10 @@ def classify_shape(mask: np.ndarray, min_fit: float, fill_window: float) -> Shap
             hull = cv2.convexHull(contour)
             corners = len(cv2.approxPolyDP(hull, 0.04 * cv2.arcLength(hull, True), True))
     fits = {}
+    pixels = mask > 0
     for shape, ideal_fill in IDEAL_FILL.items():
         if abs(fill - ideal_fill) <= fill_window:
-            fits[shape] = _iou(mask, ideal_mask(shape, width, height))
+            fits[shape] = _iou(pixels, _ideal_pixels(shape, width, height))
     best = max(fits, key=fits.get) if fits else None
     if best is None or fits[best] < min_fit:
         return ShapeResult(None, fits.get(best, 0.0) if best else 0.0, fill, circularity, corners, fits)
