@@ -141,8 +141,13 @@ def segments_from_mask(mask: np.ndarray, colour: str, min_area_px: int, settings
     # two levels: outer outlines of every component, also of one inside another's hole (a sign's colour
     # inside its white rim, in front of background of the same colour), and the holes
     contours, hierarchy = cv2.findContours(mask, cv2.RETR_CCOMP, cv2.CHAIN_APPROX_NONE)
+    # a closed outline of every pixel along it that spans min_bbox_px columns or rows walks there and back:
+    # fewer points cannot make a box that large (most contours are speckle: skipped without measuring them)
+    min_points = 2 * (min_bbox_px - 1)
     out = []
     for k, contour in enumerate(contours):
+        if len(contour) < min_points:
+            continue
         parent = hierarchy[0][k][3] if hierarchy is not None else -1
         if parent >= 0 and not holes:
             continue
