@@ -164,8 +164,18 @@ def candidate_entries(catalogue, colour: str, shapes: Iterable[str], hsv_ranges,
     - entries of that colour and shape (extent as measured, FULL if not measurable);
     - entries of another allowed colour and that shape outlined by this colour;
     - rectangular panels carrying an inset part of this colour and shape (zone signs).
+
+    Kept per catalogue like the templates' parts it is read from: a pair asks for the same few
+    (colour, shapes) readings again and again.
     """
-    shapes, allowed, excluded = set(shapes), set(allowed_colours), set(exclude)
+    shapes, allowed, excluded = frozenset(shapes), frozenset(allowed_colours), frozenset(exclude)
+    ranges = tuple(sorted((name, tuple(map(tuple, r))) for name, r in hsv_ranges.items()))
+    key = ("candidates", id(catalogue), colour, shapes, ranges, allowed, excluded)
+    return list(_measured_once(catalogue, key, lambda: _candidate_entries(catalogue, colour, shapes, hsv_ranges,
+                                                                          allowed, excluded)))
+
+
+def _candidate_entries(catalogue, colour: str, shapes, hsv_ranges, allowed, excluded) -> List[Tuple[object, Extent]]:
     out = []
     for entry in catalogue:
         if entry.id in excluded or entry.colour not in allowed:
