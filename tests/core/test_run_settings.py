@@ -106,13 +106,18 @@ def _flat(config: PipelineConfig) -> dict:
     return {name: value for section in settings_dict(config).values() for name, value in section.items()}
 
 
-def test_a_version_1_run_table_of_the_earlier_writer_reads_into_its_sections(tmp_path):
-    rows = json.loads(RECORD_V1.read_text())
-    path = tmp_path / "old.gpkg"
+def _run_table_of(record: Path, path: Path) -> Path:
+    """A GeoPackage-like file holding only a run table with the rows of a recorded run (key -> value JSON)."""
+    rows = json.loads(record.read_text())
     with closing(sqlite3.connect(path)) as db:
         db.execute(f"CREATE TABLE {RUN_TABLE} (fid INTEGER PRIMARY KEY, key TEXT, value TEXT)")
         db.executemany(f"INSERT INTO {RUN_TABLE} (key, value) VALUES (?, ?)", rows.items())
         db.commit()
+    return path
+
+
+def test_a_version_1_run_table_of_the_earlier_writer_reads_into_its_sections(tmp_path):
+    path = _run_table_of(RECORD_V1, tmp_path / "old.gpkg")
     record = read_run_record(path)
     assert record["settings_version"] == 1 and "near_m" in record["pipeline"]  # flat, as written then
     assert set(record["pipeline"]) < set(SECTION_OF)  # settings named since then keep their defaults
@@ -124,12 +129,7 @@ def test_a_version_1_run_table_of_the_earlier_writer_reads_into_its_sections(tmp
 
 
 def test_a_version_2_record_written_before_settings_were_added_reads_them_as_their_defaults(tmp_path):
-    rows = json.loads(RECORD_V2_A6850FD.read_text())
-    path = tmp_path / "before.gpkg"
-    with closing(sqlite3.connect(path)) as db:
-        db.execute(f"CREATE TABLE {RUN_TABLE} (fid INTEGER PRIMARY KEY, key TEXT, value TEXT)")
-        db.executemany(f"INSERT INTO {RUN_TABLE} (key, value) VALUES (?, ?)", rows.items())
-        db.commit()
+    path = _run_table_of(RECORD_V2_A6850FD, tmp_path / "before.gpkg")
     record = read_run_record(path)
     assert record["settings_version"] == 2
     assert "plate_compare_insets" not in record["pipeline"]["plates"]  # written before these were settings
