@@ -1,4 +1,4 @@
-"""Red-ringed faces found by their white field: the sign carries its own white reference.
+"""Faces found by their white: red rings by their field, priority roads by their frame (one grey ladder).
 
 In dim light (dusk, shade, an overcast backlight) the red ring of a prohibition or
 danger sign keeps hardly any saturation: its hue drifts with the camera's cast and
@@ -25,6 +25,7 @@ import cv2
 import numpy as np
 
 from .config import PipelineConfig
+from .framed_diamonds import box_yellow_against_frame, framed_diamond
 from .shape import classify_shape
 
 # shapes of the fields red rings and borders enclose (triangles, discs, the octagon's field is no field:
@@ -62,7 +63,7 @@ def _box_ious(box: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     y0 = np.maximum(box[1], boxes[:, 1])
     x1 = np.minimum(box[0] + box[2], boxes[:, 0] + boxes[:, 2])
     y1 = np.minimum(box[1] + box[3], boxes[:, 1] + boxes[:, 3])
-    inter = np.clip(x1 - x0, 0, None) * np.clip(y1 - y0, 0, None)
+    inter = np.maximum(x1 - x0, 0) * np.maximum(y1 - y0, 0)
     return inter / (box[2] * box[3] + boxes[:, 2] * boxes[:, 3] - inter)
 
 
@@ -121,6 +122,26 @@ def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: Pip
     Each bright component is first judged on the reduced image by means (cheap, loose), then
     at full resolution by medians.
     """
+    return bright_faces(image, search, config, min_face_px).fields
+
+
+@dataclass(frozen=True)
+class BrightFaces:
+    """What the ladder of grey levels shows in one image: fields in red rings, yellow parts in white frames."""
+
+    fields: List[Field]
+    diamonds: List[Field]  # white-framed diamonds with a yellow middle (priority roads): their whole outline
+
+
+def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
+                 min_face_px: Optional[float] = None) -> BrightFaces:
+    """Faces that carry their own white reference, found on one ladder of grey levels (one labelling per level).
+
+    - a white field enclosed by a red ring (:func:`red_ring_fields`);
+    - a white-framed diamond whose middle is yellow relative to its frame (:mod:`.framed_diamonds`): a
+      priority road in dim or washed-out light, whose yellow drifts to orange or to white and out of the hue
+      band, or whose yellow joins yellow autumn leaves behind it (only with ``diamond_pass``).
+    """
     fields = config.bright_fields
     min_field = max(fields.field_min_px, fields.field_of_face * (min_face_px or 0))
     # the reduced image keeps the smallest field field_min_side_px wide (labelling each level costs per pixel);
@@ -134,11 +155,15 @@ def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: Pip
     height, width = grey.shape
     min_side = max(3, int(np.floor(min_field * scale)))
     max_side = int(np.ceil(config.hough.max_face_px * scale))
+    diamonds_wanted = fields.diamond_pass and "yellow" in config.colour.colours
+    min_diamond = max(3, int(np.floor(max(fields.field_min_px, min_face_px or 0) * scale)))
     seen = np.zeros((0, 4), np.int64)  # boxes already judged (the same field recurs at neighbouring levels)
+    seen_diamonds = np.zeros((0, 4), np.int64)
     out: List[Field] = []
+    diamonds: List[Field] = []
     at_most = np.bincount(grey.ravel(), minlength=256).cumsum()  # pixels at or below each grey value
     for level in grey_levels(fields.field_first_level, fields.field_level_ratio):
-        if grey.size - at_most[level] < fields.field_min_fill * min_side * min_side or at_most[level] < 4 * min_side:
+        if grey.size - at_most[level] < fields.diamond_min_fill * min_side * min_side or at_most[level] < 4 * min_side:
             continue  # too few pixels above the level for a field, or below it for a ring around one
         bright = cv2.compare(grey, level, cv2.CMP_GT)
         n, labels, stats, _ = cv2.connectedComponentsWithStats(bright, connectivity=4)
@@ -146,9 +171,10 @@ def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: Pip
             break
         xs, ys, ws, hs, areas = stats[1:].T
         short, long_ = np.minimum(ws, hs), np.maximum(ws, hs)
-        keep = ((short >= min_side) & (long_ <= max_side) & (long_ <= fields.field_max_aspect * short)
+        inside_image = (xs > 0) & (ys > 0) & (xs + ws < width) & (ys + hs < height) & (long_ <= max_side)
+        keep = ((short >= min_side) & (long_ <= fields.field_max_aspect * short)
                 & (areas >= fields.field_min_fill * ws * hs) & (areas <= fields.field_max_fill * ws * hs)
-                & (xs > 0) & (ys > 0) & (xs + ws < width) & (ys + hs < height))
+                & inside_image)
         for k in np.flatnonzero(keep) + 1:
             box = stats[k, :4]
             if len(seen) and _box_ious(box, seen).max() >= fields.field_same_iou:
@@ -162,7 +188,23 @@ def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: Pip
             if field is not None and not any(_box_ious(np.asarray(field.bbox), np.asarray([f.bbox]))[0]
                                              >= config.scene.pass_duplicate_iou for f in out):
                 out.append(field)  # the first level that shows a field in its ring stands for it
-    return out
+        if not diamonds_wanted:
+            continue
+        framed = ((short >= min_diamond) & (long_ <= fields.diamond_max_aspect * short)
+                  & (areas >= fields.diamond_min_fill * ws * hs) & (areas <= fields.diamond_max_fill * ws * hs)
+                  & inside_image)
+        for k in np.flatnonzero(framed) + 1:
+            box = stats[k, :4]
+            if not box_yellow_against_frame(small, labels, k, tuple(int(v) for v in box), config):
+                continue  # most bright components (leaves, windows, sky) end here, before anything else is read
+            if len(seen_diamonds) and _box_ious(box, seen_diamonds).max() >= fields.field_same_iou:
+                continue
+            seen_diamonds = np.vstack([seen_diamonds, box[None]])
+            diamond = framed_diamond(image, small, labels, k, tuple(int(v) for v in box), scale, config)
+            if diamond is not None and not any(_box_ious(np.asarray(diamond[0]), np.asarray([d.bbox]))[0]
+                                               >= config.scene.pass_duplicate_iou for d in diamonds):
+                diamonds.append(Field(*diamond))  # the first level that shows the diamond stands for it
+    return BrightFaces(out, diamonds)
 
 
 def _coarse_contrast(small: np.ndarray, labels: np.ndarray, label: int, box, ring_fraction: float):

@@ -21,6 +21,7 @@ from .colour import Segment, faces_with_split_pieces_merged, find_colour_segment
 from .config import PipelineConfig
 from .detect import segment_candidates, segment_shapes
 from .face_extent import FULL, face_bbox, rim_face_bboxes, ring_edge_bbox
+from .half_discs import with_half_discs
 from .hough import hough_scale, hough_segments
 
 
@@ -112,6 +113,7 @@ def colour_step(image: np.ndarray, catalogue, config: Optional[PipelineConfig] =
     config = config or PipelineConfig()
     segments = find_colour_segments(image, search, config, None)
     segments = faces_with_split_pieces_merged(segments, config)
+    segments = with_half_discs(segments, (image.shape[1], image.shape[0]), config)
     out = []
     for seg in segments:
         candidate = _candidate(seg, catalogue, config, image)

@@ -28,7 +28,7 @@ import cv2
 import numpy as np
 
 from .boxes import box_iou
-from .bright_fields import red_ring_fields
+from .bright_fields import bright_faces
 from .config import ColourConfig, HsvRange, PipelineConfig
 from .scene_colour import apply_gains, chroma_at_least, scene_colour
 from .shape import classify_shape, plausible_outlines
@@ -208,13 +208,20 @@ class ColourFrame:
     colourful: Optional[np.ndarray]  # uint8 0/255: chroma high enough for the scene pass
     weak_ranges: Dict[str, Tuple[HsvRange, ...]]
     masks: Dict[Tuple[str, bool], np.ndarray] = field(default_factory=dict)  # filled by colour_mask
-    fields: Dict[Optional[float], List[Segment]] = field(default_factory=dict)  # filled by ring_fields
+    # filled by bright_segments: (fields in red rings, white-framed yellow diamonds) per smallest face
+    fields: Dict[Optional[float], Tuple[List[Segment], List[Segment]]] = field(default_factory=dict)
+
+    def bright_segments(self, image: np.ndarray, config: PipelineConfig,
+                        small_face_px: Optional[float]) -> Tuple[List[Segment], List[Segment]]:
+        """(white fields in red rings, yellow parts of white-framed diamonds) of the whole image
+        (:func:`bright_face_segments`); found once per image."""
+        if small_face_px not in self.fields:
+            self.fields[small_face_px] = bright_face_segments(image, None, config, small_face_px)
+        return self.fields[small_face_px]
 
     def ring_fields(self, image: np.ndarray, config: PipelineConfig, small_face_px: Optional[float]) -> List[Segment]:
         """The image's white fields in red rings (:func:`field_segments` of the whole image); found once per image."""
-        if small_face_px not in self.fields:
-            self.fields[small_face_px] = field_segments(image, None, config, small_face_px)
-        return self.fields[small_face_px]
+        return self.bright_segments(image, config, small_face_px)[0]
 
     def colour_mask(self, colour: str, scene: bool, config: PipelineConfig) -> np.ndarray:
         """uint8 0/255 mask of one colour class, strong or of the scene pass; computed once per image."""
@@ -311,6 +318,11 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
             if not any(o.colour == "red" and (box_iou(o.bbox, seg.bbox) >= config.scene.pass_duplicate_iou
                                               or _field_of(seg.bbox, o.bbox, config)) for o in out):
                 out.append(seg)
+    if config.bright_fields.diamond_pass and "yellow" in config.colour.colours:
+        for seg in frame.bright_segments(image, config, small_face_px)[1]:
+            if search is not None and inside_share(seg, search) < config.bright_fields.field_min_inside_share:
+                continue
+            out.append(seg)  # a priority road's whole outline; its yellow part (if found) gives other readings
     return out
 
 
@@ -334,15 +346,25 @@ def inside_share(seg: Segment, search: np.ndarray) -> float:
 def field_segments(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
                    small_face_px: Optional[float] = None) -> List[Segment]:
     """The white fields of red-ringed faces found by brightness (:mod:`.bright_fields`) as "hole" segments."""
+    return bright_face_segments(image, search, config, small_face_px)[0]
+
+
+def bright_face_segments(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
+                         small_face_px: Optional[float] = None) -> Tuple[List[Segment], List[Segment]]:
+    """(the white fields of red-ringed faces as red "hole" segments, white-framed diamonds with a yellow middle
+    as yellow "frame" segments, the face's whole outline), both found by brightness
+    (:func:`.bright_fields.bright_faces`)."""
     height, width = image.shape[:2]
     m = config.colour.border_margin_px
-    out = []
-    for found in red_ring_fields(image, search, config, small_face_px):
-        x, y, w, h = found.bbox
+    found = bright_faces(image, search, config, small_face_px)
+
+    def segment(part, colour: str, source: str) -> Segment:
+        x, y, w, h = part.bbox
         touches = x <= m or y <= m or x + w >= width - m or y + h >= height - m
-        out.append(Segment("red", found.bbox, found.mask, found.contour, int(np.count_nonzero(found.mask)),
-                           touches, "hole"))
-    return out
+        return Segment(colour, part.bbox, part.mask, part.contour, int(np.count_nonzero(part.mask)), touches, source)
+
+    return ([segment(f, "red", "hole") for f in found.fields],
+            [segment(d, "yellow", "frame") for d in found.diamonds])
 
 
 def box_gap(a, b) -> float:
@@ -372,6 +394,12 @@ def merge_segments(a: Segment, b: Segment) -> Segment:
                    a.touches_border or b.touches_border, a.source, 1.0, pieces)
 
 
+def is_piece(seg: Segment) -> bool:
+    """Whether a segment may be a piece of a face: not a face's whole outline found as such (a white frame, the
+    disc read from its half)."""
+    return seg.source not in ("frame", "half")
+
+
 def merge_candidates(segments: Sequence[Segment], max_gap_fraction: float, max_aspect: float) -> List[Segment]:
     """Merged segments of same-coloured pieces close to each other, for faces split by an occluder.
 
@@ -382,7 +410,7 @@ def merge_candidates(segments: Sequence[Segment], max_gap_fraction: float, max_a
     out = []
     for i, a in enumerate(segments):
         for b in segments[i + 1 :]:
-            if a.colour != b.colour:
+            if a.colour != b.colour or not (is_piece(a) and is_piece(b)):
                 continue
             x0, y0 = min(a.bbox[0], b.bbox[0]), min(a.bbox[1], b.bbox[1])
             x1 = max(a.bbox[0] + a.bbox[2], b.bbox[0] + b.bbox[2])
@@ -427,7 +455,7 @@ def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment
         ax, ay, aw, ah = a.bbox
         for j in range(i + 1, len(segments)):
             b = segments[j]
-            if a.colour != b.colour or a.touches_border or b.touches_border:
+            if a.colour != b.colour or a.touches_border or b.touches_border or not (is_piece(a) and is_piece(b)):
                 continue
             bx, by, bw, bh = b.bbox
             x0, y0 = min(ax, bx), min(ay, by)

@@ -151,6 +151,22 @@ class BrightFieldConfig:
     # box, a triangle's ~50 %)
     field_in_outline_slack_px: int = 2
     field_in_outline_min_share: float = 0.3
+    # priority roads by their white frame (framed_diamonds.py): on GTSDB's tune split 7 of 382 signs >= 30 px
+    # were priority roads with no yellow segment (dusk orange below the hue band, washed out, joined to yellow
+    # leaves); on the same ladder of grey levels their sign or frame is a bright diamond
+    diamond_pass: bool = True
+    diamond_max_aspect: float = 1.25  # longer / shorter box side: a diamond seen at up to ~35 deg
+    # component area / box: the whole sign fills 0.5 of its box, its frame alone (the middle darker than the
+    # level) ~0.3
+    diamond_min_fill: float = 0.25
+    diamond_max_fill: float = 0.7
+    diamond_min_fit: float = 0.85  # the filled outline's fit to the ideal diamond (tune split: 0.87-0.94)
+    diamond_core_scale: float = 0.45  # the middle read for its colour: the outline shrunk to this (yellow: ~0.6)
+    diamond_frame_scale: float = 0.8  # the frame read for its colour: outside the outline shrunk to this
+    # middle / frame per channel: blue / red at most this (tune split, priority roads: 0.29-0.76; white: ~1) and
+    # green / red at least this (yellow keeps its green; a red or orange middle loses it)
+    diamond_max_blue_red: float = 0.8
+    diamond_min_green_red: float = 0.55
 
 
 @dataclass(frozen=True)
@@ -213,6 +229,18 @@ class ShapeConfig:
     # and white rim) rather than one read alone, they use the window these comparisons were tuned with, before
     # shape_fill_window was widened for small real triangles
     compare_fill_window: float = 0.15
+    # a round face of which only one half kept its colour (a no-entry disc whose lower half joined the sign
+    # below, a ring in shade: GTSDB tune split, 3 of 382 signs >= 30 px) is a segment this many times as wide as
+    # high (a half disc: 2; seen at an angle or with a bit of the other half: less)...
+    half_disc_aspect: Tuple[float, float] = (1.5, 2.6)
+    half_disc_min_fit: float = 0.88  # ...whose hull fits the ideal half disc this well (IoU; a rectangle: 0.79)
+    # ...unless a segment of the same colour outlines that disc already: its box overlaps the disc's this much
+    # (IoU; a half overlaps it by ~0.5, so the pass's duplicate IoU would take the half itself for one)
+    half_disc_same_iou: float = 0.7
+    # ...or unless the depth range cut the other half off: with depth, that half must lie in the search space by
+    # this share (a disc at the far end of the range halved by the cut was a false sign 5 m off, synthetic drive
+    # 1024)
+    half_disc_min_search_share: float = 0.5
 
 
 @dataclass(frozen=True)
@@ -502,6 +530,9 @@ class TemplateGeometry:
     # a panel's inset part of another shape covers between these shares of the panel (a zone sign's disc);
     # smaller is a detail, larger is the panel's own colour
     template_panel_part_area: Tuple[float, float] = (0.1, 0.8)
+    # a face's bright part (white and light colours: a priority road's white frame with its yellow) is its pixels
+    # at least this grey (0-255): the frame's edge line is black, its yellow ~190 grey
+    template_bright_grey: int = 128
 
 
 TEMPLATE_GEOMETRY = TemplateGeometry()

@@ -26,7 +26,8 @@ from .colour import ColourFrame, Segment, find_colour_segments, merge_candidates
 from .config import PipelineConfig, with_settings
 from .depth_sources import depth_source_for
 from .detection import Detection
-from .face_extent import FULL, candidate_entries, face_bbox, hole_candidates, rim_face_bboxes
+from .face_extent import FULL, candidate_entries, face_bbox, frame_candidates, hole_candidates, rim_face_bboxes
+from .half_discs import with_half_discs
 from .hough import hough_scale, hough_segments, radius_range_px, ring_colour_share
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
@@ -141,6 +142,8 @@ def segment_outline(seg: Segment, config: PipelineConfig) -> Tuple[Tuple[str, ..
     """
     if seg.source == "hough":
         return ("circle",), False
+    if seg.source == "half":  # the disc was read from its half: a guess that a clear match must confirm
+        return ("circle",), True
     result, shapes = plausible_outlines(seg.mask, config)
     marginal = bool(shapes) and (result.fit < config.shape.confident_shape_fit
                                  or abs(result.fill_ratio - IDEAL_FILL[shapes[0]]) > config.shape.confident_fill_window)
@@ -160,8 +163,10 @@ def segment_candidates(seg: Segment, shape, catalogue, config: PipelineConfig):
     outlines = (shape,) if isinstance(shape, str) else tuple(shape)
     shapes = tuple(dict.fromkeys(c for s in outlines for c in catalogue_shapes(s, seg.bbox[2], seg.bbox[3])))
     exclude, hsv_ranges = config.classification.exclude, config.colour.hsv_ranges
-    if seg.source == "hough":  # the circle is the face's outline, whatever its weak colour
+    if seg.source in ("hough", "half"):  # the circle is the face's outline, whatever its weak colour
         return [(e, FULL) for e in catalogue.filter(colours=[seg.colour], shapes=shapes, exclude=exclude)]
+    if seg.source == "frame":  # a white frame found by brightness: the face is grown from its bright part
+        return frame_candidates(catalogue, seg.colour, shapes, exclude)
     if seg.source == "hole":  # the field inside a ring: the face is grown from it
         return hole_candidates(catalogue, seg.colour, shapes, hsv_ranges, tuple(config.colour.colours) + ("white",),
                                exclude)
@@ -307,7 +312,10 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
         search &= inside
     detections = []
     with timer("colour"):
-        segments = colour_segments(pair, source.search_cut(search, config), frame)
+        cut = source.search_cut(search, config)
+        segments = colour_segments(pair, cut, frame)
+        # discs that kept their colour on one half only (not those the search space halved)
+        segments = with_half_discs(segments, (left.shape[1], left.shape[0]), config, cut)
     with timer("segments"):
         # faces split by a bar (no entry) or a pole: the whole face is judged before its pieces
         taken = set()

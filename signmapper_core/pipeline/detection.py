@@ -33,7 +33,9 @@ class Detection:
     bbox: Tuple[int, int, int, int]
     depth_m: float
     position: np.ndarray
-    source: str = "colour"  # "colour" segmentation or "hough" fallback
+    # "colour" segmentation, "hole" (the field inside a ring), "frame" (a white-framed diamond, by brightness),
+    # "half" (a disc read from the half that kept its colour) or "hough" fallback
+    source: str = "colour"
     scores: Dict[str, float] = field(default_factory=dict)  # NCC per candidate template
     normal_world: Optional[np.ndarray] = None  # unit face normal (E, N, H) from the fitted plane, towards the camera
     # a supplementary plate (pipeline/plates.py): the sign's detection it belongs to, and its image for OCR

@@ -138,6 +138,33 @@ def hole_candidates(catalogue, colour: str, shapes: Iterable[str], hsv_ranges, a
     return out
 
 
+def bright_part(catalogue, template_id: str) -> Tuple[Optional[Extent], Optional[str]]:
+    """(extent, shape) of the template's bright part (white and light colours inside its dark edge line, if
+    any): what a white frame found by brightness outlines (:mod:`.framed_diamonds`)."""
+    def measure():
+        bgr, alpha = canonical_template(catalogue, template_id)
+        grey = cv2.cvtColor(bgr, cv2.COLOR_BGR2GRAY)
+        mask = ((grey >= TEMPLATE_GEOMETRY.template_bright_grey) & (alpha > 127)).astype(np.uint8) * 255
+        return _part_of(mask)
+
+    return _measured_once(catalogue, (id(catalogue), template_id, "bright"), measure)
+
+
+def frame_candidates(catalogue, colour: str, shapes: Iterable[str],
+                     exclude: Iterable[str] = ()) -> List[Tuple[object, Extent]]:
+    """(entry, bright extent) of the templates of ``colour`` and one of ``shapes`` whose bright part has that
+    shape too: what a white-framed ``colour`` face found by brightness may be."""
+    shapes, excluded = set(shapes), set(exclude)
+    out = []
+    for entry in catalogue:
+        if entry.id in excluded or entry.colour != colour or entry.shape not in shapes:
+            continue
+        extent, shape = bright_part(catalogue, entry.id)
+        if extent is not None and shape in shapes:
+            out.append((entry, extent))
+    return out
+
+
 def colour_extent(catalogue, template_id: str, colour: str, hsv_ranges) -> Optional[Extent]:
     """Bounding box of the template's ``colour`` pixels as fractions of its face box; None if it has none."""
     return colour_part(catalogue, template_id, colour, hsv_ranges)[0]
