@@ -83,7 +83,8 @@ def test_thirty_pixel_priority_road_is_a_face_candidate_by_its_small_yellow_part
 
     def best(config):
         return max((box_iou(r.bbox, face) for c in face_candidates(image, catalogue, config, hough=False)
-                    if c.segment.colour == "yellow" for r in c.readings if "3.03" in r.template_ids), default=0.0)
+                    if c.segment.colour == "yellow" and c.segment.source == "colour"
+                    for r in c.readings if "3.03" in r.template_ids), default=0.0)
 
     assert best(PipelineConfig(colour=ColourConfig(min_part_px={}))) == 0.0
     assert best(PipelineConfig()) > 0.6

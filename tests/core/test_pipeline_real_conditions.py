@@ -19,7 +19,8 @@ from signmapper_core.pipeline.scene_colour import apply_gains, scene_colour, whi
 
 CONFIG = PipelineConfig()
 # the strong colour pass alone: no scene pass, no bright fields
-STRONG_ONLY = PipelineConfig(scene=SceneConfig(weak_colour=False), bright_fields=BrightFieldConfig(field_pass=False))
+STRONG_ONLY = PipelineConfig(scene=SceneConfig(weak_colour=False),
+                             bright_fields=BrightFieldConfig(field_pass=False, diamond_pass=False))
 
 
 CATALOGUE = "reference drawing"  # scenes and templates of our reference drawing (tests/conftest.py)
@@ -187,7 +188,9 @@ def test_wide_white_rim_of_a_priority_sign_is_measured_in_the_image(catalogue):
     inner = np.array([[40 + n // 2, 40 + inset], [40 + n - inset, 40 + n // 2], [40 + n // 2, 40 + n - inset],
                       [40 + inset, 40 + n // 2]])
     cv2.fillPoly(image, [inner], (0, 200, 240))  # yellow
-    (cand,) = [c for c in face_candidates(image, catalogue, hough=False) if c.segment.colour == "yellow"]
+    # the yellow part found by colour (its white frame is found by brightness too: test_framed_diamonds.py)
+    (cand,) = [c for c in face_candidates(image, catalogue, hough=False)
+               if c.segment.colour == "yellow" and c.segment.source == "colour"]
     assert cand.shape == "diamond" and box_iou(cand.segment.bbox, (60, 60, 41, 41)) > 0.8
     readings = [r for r in cand.readings if "3.03" in r.template_ids]
     assert max(box_iou(r.bbox, (40, 40, n + 1, n + 1)) for r in readings) > 0.85
@@ -227,7 +230,8 @@ def test_rim_blending_into_a_white_wall_is_measured_by_the_face_outer_edge(catal
     image = noisy_background(level=235, sigma=3)  # a white wall: the rim's white runs into it
     n = 70
     _priority_sign(image, 100, 60, n, 0.5)
-    (cand,) = [c for c in face_candidates(image, catalogue, hough=False) if c.segment.colour == "yellow"]
+    (cand,) = [c for c in face_candidates(image, catalogue, hough=False)
+               if c.segment.colour == "yellow" and c.segment.source == "colour"]
     seg = cand.segment
     assert measured_rim_bbox(image, seg.bbox, seg.mask, (0.11, 0.11, 0.89, 0.89), CONFIG) is None
     face = (100, 60, n + 1, n + 1)
@@ -251,11 +255,13 @@ def test_orange_yellow_priority_sign_is_found_by_the_scene_pass(catalogue):
     _priority_sign(image, 200, 100, 70, 0.5, yellow=orange)
     strong = find_colour_segments(image, None, STRONG_ONLY, None)
     assert [s for s in strong if s.colour == "yellow"] == []
-    (seg,) = [s for s in find_colour_segments(image, None, PipelineConfig(), None) if s.colour == "yellow"]
+    (seg,) = [s for s in find_colour_segments(image, None, PipelineConfig(), None)
+              if s.colour == "yellow" and s.source == "colour"]
     assert box_iou(seg.bbox, (218, 118, 35, 35)) > 0.7
     face = (200, 100, 71, 71)
     assert any(box_iou(r.bbox, face) > 0.8 and "3.03" in r.template_ids
-               for c in face_candidates(image, catalogue, hough=False) for r in c.readings)
+               for c in face_candidates(image, catalogue, hough=False) if c.segment.source == "colour"
+               for r in c.readings)
 
 
 def test_scene_pass_keeps_yellow_only_in_a_diamond_outline():
