@@ -48,6 +48,7 @@ from ..signmapper_core.catalogue.families import by_family, family_name
 from ..signmapper_core.catalogue.names import sign_name
 from ..signmapper_core.output_schema import DETECTIONS, MANUAL, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
 from ..signmapper_core.plate_formats import PLATE_ID, PLATE_NAMES
+from ..signmapper_core.sign_colours import DISPLAY_COLOURS
 
 PICTOGRAM_MM = 7.0
 REJECTED_OPACITY = 35  # percent: a rejected sign stays visible, faded under its cross
@@ -56,7 +57,6 @@ SIGNS_LABEL = (f"\"template_id\" || CASE WHEN \"status\" = '{REVIEW}' THEN ' ?' 
 # catalogue shape -> the plain marker drawn where a template has no SVG pictogram
 PLAIN_SHAPES = {"circle": "Circle", "triangle": "EquilateralTriangle", "triangle-down": "EquilateralTriangle",
                 "octagon": "Octagon", "diamond": "Diamond", "square": "Square", "rectangle": "Square"}
-PLAIN_COLOURS = {"red": "#d52b1e", "blue": "#1f5fae", "yellow": "#f5c400", "white": "#f0f0f0"}
 
 
 def _when(status: str) -> QgsProperty:
@@ -121,7 +121,7 @@ def _plain_layer(entry, size_mm: float) -> QgsSimpleMarkerSymbolLayer:
     shape = getattr(QgsSimpleMarkerSymbolLayerBase, PLAIN_SHAPES.get(entry.shape, "Circle"),
                     QgsSimpleMarkerSymbolLayerBase.Circle)
     layer = QgsSimpleMarkerSymbolLayer(shape, size_mm * 0.7)
-    layer.setColor(QColor(PLAIN_COLOURS.get(entry.colour, "#d52b1e")))
+    layer.setColor(QColor(DISPLAY_COLOURS.get(entry.colour, DISPLAY_COLOURS["red"])))
     layer.setStrokeColor(QColor("#222222"))
     if entry.shape == "triangle-down":
         layer.setAngle(180.0)

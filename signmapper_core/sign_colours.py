@@ -1,4 +1,5 @@
-"""The sign colours, declared once: the HSV thresholds of each colour the pipeline segments.
+"""The sign colours, declared once: the HSV thresholds of each colour the pipeline segments, and how a map
+draws it.
 
 ``PipelineConfig`` takes its defaults from here and ``mapsigns`` offers these
 colours as its choices, so adding a sign colour is a row in each table below
@@ -39,5 +40,9 @@ HOUGH_TINT_HUES: Dict[str, HueBands] = {
     "yellow": ((16, 35),),
     "blue": ((95, 135),),
 }
+
+# The colour a map draws each catalogue colour in (a plain marker where a template has no SVG pictogram); white
+# is a catalogue colour too, found by outline rather than hue
+DISPLAY_COLOURS: Dict[str, str] = {"red": "#d52b1e", "blue": "#1f5fae", "yellow": "#f5c400", "white": "#f0f0f0"}
 
 SIGN_COLOURS: Tuple[str, ...] = tuple(HSV_RANGES)  # the colours a run may segment, in the order offered
