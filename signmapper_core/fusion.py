@@ -257,9 +257,12 @@ def build_tracks(observations: Sequence[Observation], config: FusionConfig) -> l
     for obs in observations:
         by_pair[obs.pair_index].append(obs)
     tracks: list[_Track] = []
+    open_ids: list[int] = []  # tracks still within the gap, in their order: a closed track never reopens
     for pair_index in sorted(by_pair):
-        open_ids = [i for i, t in enumerate(tracks) if pair_index - t.last_pair <= config.max_gap_pairs]
+        open_ids = [i for i in open_ids if pair_index - tracks[i].last_pair <= config.max_gap_pairs]
+        before = len(tracks)
         _assign_pair(tracks, open_ids, by_pair[pair_index], config)
+        open_ids += range(before, len(tracks))
     return [t.observations for t in tracks]
 
 
@@ -271,6 +274,68 @@ def _vote(observations: Sequence[Observation]) -> tuple[str, float]:
     return winner, weights[winner] / sum(weights.values())
 
 
+@dataclass
+class _TrackSummary:
+    """What the merge test reads of a track, computed once per track (and again when it grows)."""
+
+    observations: list
+    pairs: set
+    position: np.ndarray  # median of the observations' positions
+    colours: set
+    winner: str  # the class the weighted vote gives it
+    face: np.ndarray
+
+    @classmethod
+    def of(cls, observations: list) -> _TrackSummary:
+        return cls(observations, {o.pair_index for o in observations},
+                   np.median([o.position for o in observations], axis=0), {o.colour for o in observations},
+                   _vote(observations)[0], mean_face(observations))
+
+
+def _one_sign(a: _TrackSummary, b: _TrackSummary, config: FusionConfig) -> bool:
+    """Whether two tracks are one sign (the test of :func:`_merge_tracks`)."""
+    if a.pairs & b.pairs:
+        return False  # seen side by side in one pair: two signs
+    return (np.linalg.norm(a.position - b.position) <= config.merge_gate_m
+            and abs(a.position[2] - b.position[2]) <= config.vertical_gate_m
+            and bool(a.colours & b.colours or a.winner == b.winner)
+            and _angle_deg(a.face, b.face) <= config.face_gate_deg)
+
+
+class _Neighbours:
+    """Tracks by the grid cell of their median position: only tracks in neighbouring cells can be within the
+    merge gate, so a long drive's thousands of tracks are not all compared with each other."""
+
+    def __init__(self, cell_m: float):
+        self.cell_m = cell_m
+        self.cells: dict = defaultdict(set)
+        self.cell_of: dict = {}
+
+    def _key(self, position: np.ndarray) -> tuple:
+        return int(np.floor(position[0] / self.cell_m)), int(np.floor(position[1] / self.cell_m))
+
+    def put(self, index: int, position: np.ndarray) -> None:
+        self.drop(index)
+        key = self._key(position)
+        self.cells[key].add(index)
+        self.cell_of[index] = key
+
+    def drop(self, index: int) -> None:
+        key = self.cell_of.pop(index, None)
+        if key is not None:
+            self.cells[key].discard(index)
+
+    def around(self, index: int) -> list:
+        """The other tracks in the 3 x 3 cells around this one's, in their order."""
+        cx, cy = self.cell_of[index]
+        found = set()
+        for dx in (-1, 0, 1):
+            for dy in (-1, 0, 1):
+                found |= self.cells.get((cx + dx, cy + dy), set())
+        found.discard(index)
+        return sorted(found)
+
+
 def _merge_tracks(tracks: list[list[Observation]], config: FusionConfig) -> list[list[Observation]]:
     """Join tracks of one sign: separate passes, a long occlusion, or a sign read two ways.
 
@@ -279,29 +344,44 @@ def _merge_tracks(tracks: list[list[Observation]], config: FusionConfig) -> list
     panel read as its inner speed ring in some pairs); the weighted vote then
     decides its class. Distinct signs this close are back-to-back (face gate) or
     stacked (vertical gate).
+
+    Pairs are merged in the order of the tracks (the first pair of tracks, by the earlier one and then the
+    later one, that is one sign joins, the later into the earlier, and the search starts again), but only
+    tracks in neighbouring cells of a grid are compared, and after a join only the pairs that the grown track
+    can have changed: earlier tracks with it first, then it with later ones.
     """
-    merged = True
-    tracks = [list(t) for t in tracks]
-    while merged:
-        merged = False
-        for i in range(len(tracks)):
-            for j in range(i + 1, len(tracks)):
-                a, b = tracks[i], tracks[j]
-                pairs_a, pairs_b = {o.pair_index for o in a}, {o.pair_index for o in b}
-                if pairs_a & pairs_b:
-                    continue  # seen side by side in one pair: two signs
-                pa = np.median([o.position for o in a], axis=0)
-                pb = np.median([o.position for o in b], axis=0)
-                if (np.linalg.norm(pa - pb) <= config.merge_gate_m and abs(pa[2] - pb[2]) <= config.vertical_gate_m
-                        and ({o.colour for o in a} & {o.colour for o in b} or _vote(a)[0] == _vote(b)[0])
-                        and _angle_deg(mean_face(a), mean_face(b)) <= config.face_gate_deg):
-                    tracks[i] = sorted(a + b, key=lambda o: o.pair_index)
-                    del tracks[j]
-                    merged = True
-                    break
-            if merged:
+    summaries = {i: _TrackSummary.of(list(t)) for i, t in enumerate(tracks)}
+    grid = _Neighbours(max(config.merge_gate_m, 0.5))
+    for i, summary in summaries.items():
+        grid.put(i, summary.position)
+
+    def join(keep: int, gone: int) -> None:
+        observations = sorted(summaries[keep].observations + summaries[gone].observations,
+                              key=lambda o: o.pair_index)
+        summaries[keep] = _TrackSummary.of(observations)
+        del summaries[gone]
+        grid.drop(gone)
+        grid.put(keep, summaries[keep].position)
+
+    order = sorted(summaries)
+    k = 0
+    while k < len(order):
+        i = order[k]
+        later = next((j for j in grid.around(i) if j > i and _one_sign(summaries[i], summaries[j], config)), None)
+        if later is None:
+            k += 1
+            continue
+        join(i, later)
+        while True:  # the grown track may now be one sign with an earlier track: that pair comes first
+            earlier = next((j for j in grid.around(i) if j < i and _one_sign(summaries[j], summaries[i], config)),
+                           None)
+            if earlier is None:
                 break
-    return tracks
+            join(earlier, i)
+            i = earlier
+        order = sorted(summaries)
+        k = order.index(i)
+    return [summaries[i].observations for i in sorted(summaries)]
 
 
 def robust_position(observations: Sequence[Observation], outlier_min_m: float,

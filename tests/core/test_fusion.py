@@ -175,3 +175,45 @@ def test_observations_wrap_their_detection_and_are_linked_to_their_sign_by_id():
     assert [o.sign_id for o in obs] == [1] * 5 + [2]
     assert {o.id for o in signs[0].observations} == {1, 2, 3, 4, 5}
     assert signs[1].colour == "red" and signs[1].shape == "triangle" and signs[1].best is obs[5]
+
+
+def _merged_by_definition(tracks, config):
+    """The merge rule read literally: the first pair of tracks (earlier, then later) that is one sign joins, the
+    later into the earlier, and the search starts again from the beginning."""
+    from signmapper_core.fusion import _one_sign, _TrackSummary
+
+    tracks = [list(t) for t in tracks]
+    merged = True
+    while merged:
+        merged = False
+        for i in range(len(tracks)):
+            for j in range(i + 1, len(tracks)):
+                if _one_sign(_TrackSummary.of(tracks[i]), _TrackSummary.of(tracks[j]), config):
+                    tracks[i] = sorted(tracks[i] + tracks[j], key=lambda o: o.pair_index)
+                    del tracks[j]
+                    merged = True
+                    break
+            if merged:
+                break
+    return tracks
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_track_merging_compares_neighbours_only_and_joins_in_the_order_of_its_rule(seed):
+    from signmapper_core.fusion import _merge_tracks
+
+    rng = np.random.default_rng(seed)
+    config = FusionConfig()
+    sites = rng.uniform(0, 40, (6, 3)) * np.array([1.0, 1.0, 0.05]) + np.array([0.0, 0.0, 2.0])
+    tracks = []
+    for _ in range(80):  # fragments of signs at a few sites: passes, occlusions, readings of two ways
+        site = sites[rng.integers(len(sites))] + rng.normal(0, 0.5 * config.merge_gate_m, 3)
+        start = int(rng.integers(0, 200))
+        kwargs = dict(template_id=str(rng.choice(["2.01", "2.30-50", "4.17"])),
+                      colour=str(rng.choice(["red", "blue", "yellow"])),
+                      normal=WEST if rng.random() < 0.8 else EAST)
+        tracks.append([observe(site, k, **kwargs) for k in range(start, start + int(rng.integers(1, 4)))])
+    expected = _merged_by_definition(tracks, config)
+    got = _merge_tracks(tracks, config)
+    assert len(expected) < len(tracks)  # the scene does merge
+    assert [[id(o) for o in t] for t in got] == [[id(o) for o in t] for t in expected]
