@@ -3,6 +3,13 @@
 from __future__ import annotations
 
 
+def touches_border(box, width: int, height: int, margin: int) -> bool:
+    """Whether a box comes within ``margin`` pixels of the border of a ``width`` x ``height`` image (a face cut
+    by the border cannot be sized or matched)."""
+    x, y, w, h = box
+    return x <= margin or y <= margin or x + w >= width - margin or y + h >= height - margin
+
+
 def box_iou(a, b) -> float:
     """Intersection over union of two boxes; 0.0 when they do not overlap."""
     ax, ay, aw, ah = a

@@ -127,7 +127,7 @@ def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: Pip
 
 @dataclass(frozen=True)
 class BrightFaces:
-    """What the ladder of grey levels shows in one image: fields in red rings, yellow parts in white frames."""
+    """What the ladder of grey levels shows in one image: fields in red rings, white-framed yellow diamonds."""
 
     fields: List[Field]
     diamonds: List[Field]  # white-framed diamonds with a yellow middle (priority roads): their whole outline
@@ -161,9 +161,10 @@ def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: Pipeli
     seen_diamonds = np.zeros((0, 4), np.int64)
     out: List[Field] = []
     diamonds: List[Field] = []
+    min_fill = min(fields.field_min_fill, fields.diamond_min_fill) if diamonds_wanted else fields.field_min_fill
     at_most = np.bincount(grey.ravel(), minlength=256).cumsum()  # pixels at or below each grey value
     for level in grey_levels(fields.field_first_level, fields.field_level_ratio):
-        if grey.size - at_most[level] < fields.diamond_min_fill * min_side * min_side or at_most[level] < 4 * min_side:
+        if grey.size - at_most[level] < min_fill * min_side * min_side or at_most[level] < 4 * min_side:
             continue  # too few pixels above the level for a field, or below it for a ring around one
         bright = cv2.compare(grey, level, cv2.CMP_GT)
         n, labels, stats, _ = cv2.connectedComponentsWithStats(bright, connectivity=4)

@@ -27,7 +27,7 @@ from typing import Dict, Iterable, List, Optional, Sequence, Tuple
 import cv2
 import numpy as np
 
-from .boxes import box_iou
+from .boxes import box_iou, touches_border
 from .bright_fields import bright_faces
 from .config import ColourConfig, HsvRange, PipelineConfig
 from .scene_colour import apply_gains, chroma_at_least, scene_colour
@@ -56,6 +56,15 @@ class Segment:
     def surface_mask(self) -> np.ndarray:
         """The pixels known to lie on the face: ``depth_mask`` if set, else ``mask``."""
         return self.mask if self.depth_mask is None else self.depth_mask
+
+
+def inscribed_disc(size: int) -> Tuple[np.ndarray, np.ndarray]:
+    """(uint8 0/255 mask, outer contour in box pixels) of the disc inscribed in a ``size`` x ``size`` box: the
+    outline of a round face known by its circle (a Hough circle, the disc read from its half)."""
+    mask = np.zeros((size, size), np.uint8)
+    cv2.circle(mask, (size // 2, size // 2), size // 2, 255, thickness=cv2.FILLED)
+    contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
+    return mask, contours[0]
 
 
 def hsv_mask(hsv: np.ndarray, ranges: Sequence[HsvRange]) -> np.ndarray:
@@ -117,8 +126,7 @@ def _filled_segment(contour, colour, width, height, border_margin_px, source, mi
     solidity = min(1.0, cv2.contourArea(contour) / hull_area)
     if solidity < min_solidity:
         cv2.drawContours(filled, [hull], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
-    m = border_margin_px
-    touches = x <= m or y <= m or x + w >= width - m or y + h >= height - m
+    touches = touches_border(box, width, height, border_margin_px)
     return Segment(colour, (x, y, w, h), filled, contour, int(np.count_nonzero(filled)), touches, source, solidity)
 
 
@@ -213,7 +221,7 @@ class ColourFrame:
 
     def bright_segments(self, image: np.ndarray, config: PipelineConfig,
                         small_face_px: Optional[float]) -> Tuple[List[Segment], List[Segment]]:
-        """(white fields in red rings, yellow parts of white-framed diamonds) of the whole image
+        """(white fields in red rings, white-framed yellow diamonds) of the whole image
         (:func:`bright_face_segments`); found once per image."""
         if small_face_px not in self.fields:
             self.fields[small_face_px] = bright_face_segments(image, None, config, small_face_px)
@@ -355,12 +363,10 @@ def bright_face_segments(image: np.ndarray, search: Optional[np.ndarray], config
     as yellow "frame" segments, the face's whole outline), both found by brightness
     (:func:`.bright_fields.bright_faces`)."""
     height, width = image.shape[:2]
-    m = config.colour.border_margin_px
     found = bright_faces(image, search, config, small_face_px)
 
     def segment(part, colour: str, source: str) -> Segment:
-        x, y, w, h = part.bbox
-        touches = x <= m or y <= m or x + w >= width - m or y + h >= height - m
+        touches = touches_border(part.bbox, width, height, config.colour.border_margin_px)
         return Segment(colour, part.bbox, part.mask, part.contour, int(np.count_nonzero(part.mask)), touches, source)
 
     return ([segment(f, "red", "hole") for f in found.fields],

@@ -196,8 +196,7 @@ def candidate_entries(catalogue, colour: str, shapes: Iterable[str], hsv_ranges,
     (colour, shapes) readings again and again.
     """
     shapes, allowed, excluded = frozenset(shapes), frozenset(allowed_colours), frozenset(exclude)
-    ranges = tuple(sorted((name, tuple(map(tuple, r))) for name, r in hsv_ranges.items()))
-    key = ("candidates", id(catalogue), colour, shapes, ranges, allowed, excluded)
+    key = ("candidates", id(catalogue), colour, shapes, _ranges_key(hsv_ranges, colour), allowed, excluded)
     return list(_measured_once(catalogue, key, lambda: _candidate_entries(catalogue, colour, shapes, hsv_ranges,
                                                                           allowed, excluded)))
 

@@ -15,9 +15,10 @@ from typing import List, Optional, Sequence, Tuple
 import cv2
 import numpy as np
 
-from .boxes import box_iou
-from .colour import Segment
+from .boxes import box_iou, touches_border
+from .colour import Segment, inscribed_disc
 from .config import PipelineConfig
+from .shape import mask_iou
 
 
 def half_disc_mask(width: int, height: int, upper: bool) -> np.ndarray:
@@ -26,11 +27,6 @@ def half_disc_mask(width: int, height: int, upper: bool) -> np.ndarray:
     centre = (width / 2.0 - 0.5, height - 0.5 if upper else -0.5)
     cv2.ellipse(mask, (centre, (float(width), 2.0 * height), 0.0), 255, thickness=cv2.FILLED)
     return mask
-
-
-def _iou(a: np.ndarray, b: np.ndarray) -> float:
-    union = cv2.countNonZero(cv2.bitwise_or(a, b))
-    return cv2.countNonZero(cv2.bitwise_and(a, b)) / float(union) if union else 0.0
 
 
 def half_disc_side(seg: Segment, config: PipelineConfig) -> Optional[bool]:
@@ -42,7 +38,7 @@ def half_disc_side(seg: Segment, config: PipelineConfig) -> Optional[bool]:
     hull = np.zeros((h, w), np.uint8)  # an arc of a ring is a crescent; its hull is the half disc
     cv2.drawContours(hull, [cv2.convexHull(seg.contour.reshape(-1, 1, 2))], -1, 255, thickness=cv2.FILLED,
                      offset=(-x, -y))
-    upper, lower = _iou(hull, half_disc_mask(w, h, True)), _iou(hull, half_disc_mask(w, h, False))
+    upper, lower = (mask_iou(hull > 0, half_disc_mask(w, h, side) > 0) for side in (True, False))
     if max(upper, lower) < config.shape.half_disc_min_fit:
         return None
     return upper >= lower
@@ -52,16 +48,13 @@ def whole_disc(seg: Segment, upper: bool, image_size: Tuple[int, int], config: P
     """The disc a half belongs to: the square on its width across its flat side, the half's pixels its surface."""
     x, y, w, h = seg.bbox
     top = y if upper else y + h - w
-    mask = np.zeros((w, w), np.uint8)
-    cv2.circle(mask, (w // 2, w // 2), w // 2, 255, thickness=cv2.FILLED)
-    contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
+    mask, contour = inscribed_disc(w)
     surface = np.zeros((w, w), np.uint8)
     rows = slice(0, h) if upper else slice(w - h, w)
     surface[rows] = seg.surface_mask
     surface = cv2.bitwise_and(surface, mask)
-    m = config.colour.border_margin_px
-    touches = x <= m or top <= m or x + w >= image_size[0] - m or top + w >= image_size[1] - m
-    return Segment(seg.colour, (x, top, w, w), mask, contours[0] + np.array([x, top]),
+    touches = touches_border((x, top, w, w), image_size[0], image_size[1], config.colour.border_margin_px)
+    return Segment(seg.colour, (x, top, w, w), mask, contour + np.array([x, top]),
                    int(np.count_nonzero(mask)), seg.touches_border or touches, "half", 1.0, surface)
 
 

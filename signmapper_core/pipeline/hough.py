@@ -15,7 +15,8 @@ from typing import List, Optional, Sequence
 import cv2
 import numpy as np
 
-from .colour import Segment, hsv_mask
+from .boxes import touches_border
+from .colour import Segment, hsv_mask, inscribed_disc
 from .config import PipelineConfig
 
 
@@ -102,16 +103,13 @@ def circle_segment(bgr: np.ndarray, u: float, v: float, r: float, config: Pipeli
     size = int(round(2 * r)) + 1
     if size < 3:
         return None
-    m = config.colour.border_margin_px
-    touches = x0 <= m or y0 <= m or x0 + size >= width - m or y0 + size >= height - m
+    touches = touches_border((x0, y0, size, size), width, height, config.colour.border_margin_px)
     if x0 < 0 or y0 < 0 or x0 + size > width or y0 + size > height:
         return None
-    mask = np.zeros((size, size), np.uint8)
-    cv2.circle(mask, (size // 2, size // 2), size // 2, 255, -1)
+    mask, contour = inscribed_disc(size)
     crop = bgr[y0 : y0 + size, x0 : x0 + size]
     colour = weak_colour(crop, mask, config)
-    contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
-    return Segment(colour, (x0, y0, size, size), mask, contours[0] + np.array([x0, y0]),
+    return Segment(colour, (x0, y0, size, size), mask, contour + np.array([x0, y0]),
                    int(np.count_nonzero(mask)), touches, source="hough")
 
 

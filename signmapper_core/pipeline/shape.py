@@ -77,7 +77,7 @@ def _ideal_pixels(shape: str, width: int, height: int) -> np.ndarray:
     return ideal_mask(shape, width, height) > 0
 
 
-def _iou(a: np.ndarray, b: np.ndarray) -> float:
+def mask_iou(a: np.ndarray, b: np.ndarray) -> float:
     """IoU of two bool masks."""
     union = np.count_nonzero(a | b)
     return float(np.count_nonzero(a & b)) / union if union else 0.0
@@ -105,7 +105,7 @@ def classify_shape(mask: np.ndarray, min_fit: float, fill_window: float) -> Shap
     pixels = mask > 0
     for shape, ideal_fill in IDEAL_FILL.items():
         if abs(fill - ideal_fill) <= fill_window:
-            fits[shape] = _iou(pixels, _ideal_pixels(shape, width, height))
+            fits[shape] = mask_iou(pixels, _ideal_pixels(shape, width, height))
     best = max(fits, key=fits.get) if fits else None
     if best is None or fits[best] < min_fit:
         return ShapeResult(None, fits.get(best, 0.0) if best else 0.0, fill, circularity, corners, fits)

@@ -16,6 +16,7 @@ from signmapper_core.geometry import Camera, Pose, world_to_pixel
 from signmapper_core.mapping import map_drive
 from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable
 from signmapper_core.pipeline import PipelineConfig, detect_pair
+from signmapper_core.pipeline.boxes import box_iou
 from signmapper_core.pipeline.config import PlateConfig
 from signmapper_core.pipeline.plate_classify import classify_plate, pictogram_scores
 from signmapper_core.plate_catalogue import load_plate_templates
@@ -78,14 +79,6 @@ def _detect(catalogue, left, depth, pose):
     return detect_pair(left, depth, None, CAMERA, pose, catalogue, PipelineConfig())
 
 
-def _iou(a, b):
-    ax, ay, aw, ah = a
-    bx, by, bw, bh = b
-    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
-    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
-    return iw * ih / float(aw * ah + bw * bh - iw * ih)
-
-
 def test_a_plate_below_a_sign_is_found_and_linked_to_it(catalogue):
     pose = pose_at(0.0)
     left, depth, box = scene(catalogue, pose)
@@ -97,7 +90,7 @@ def test_a_plate_below_a_sign_is_found_and_linked_to_it(catalogue):
     assert plate.plate_of is signs[0]
     assert plate.template_id == PLATE_ID and plate.format == "normal-1"
     assert (plate.width_m, plate.height_m) == (0.60, 0.20)
-    assert _iou(plate.bbox, box) > 0.8
+    assert box_iou(plate.bbox, box) > 0.8
     expected = sign_world(7.0, 1.3, 0.5 - 0.30 - 0.04 - 0.10)
     assert np.linalg.norm(plate.position - expected) < 0.05
     assert plate.crop.shape[:2] == (plate.bbox[3], plate.bbox[2])
@@ -107,7 +100,7 @@ def test_a_two_line_plate_above_a_sign_is_found(catalogue):
     pose = pose_at(0.0)
     left, depth, box = scene(catalogue, pose, plate_lines=("Mo–Fr", "7–19 h"), plate_size=(0.60, 0.30), above=True)
     (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
-    assert plate.format == "normal-2" and _iou(plate.bbox, box) > 0.8
+    assert plate.format == "normal-2" and box_iou(plate.bbox, box) > 0.8
     assert plate.position[2] > plate.plate_of.position[2] + 0.4
 
 
@@ -161,7 +154,7 @@ def test_a_plate_before_a_pale_wall_without_depth_is_found_at_a_higher_brightnes
     depth[y:y + h, x:x + w] = np.nan
     found = detect_pair(left, depth, None, CAMERA, pose, catalogue, PipelineConfig())
     (plate_det,) = [d for d in found if d.is_plate]
-    assert _iou(plate_det.bbox, box) > 0.8 and plate_det.format == "normal-1"
+    assert box_iou(plate_det.bbox, box) > 0.8 and plate_det.format == "normal-1"
     otsu_floor = PipelineConfig(plates=PlateConfig(plate_value_steps=(0,)))
     only_otsu = detect_pair(left, depth, None, CAMERA, pose, catalogue, otsu_floor)
     assert [d for d in only_otsu if d.is_plate] == []
@@ -177,7 +170,7 @@ def test_a_pictogram_plate_is_classified_by_its_drawing_and_takes_its_size(catal
     left, depth, box = scene(catalogue, pose, plate_size=template.size_m(width), plate_face=face)
     (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
     assert plate.template_id == template_id and plate.name == template.name("de")
-    assert (plate.width_m, plate.height_m) == template.size_m(width) and _iou(plate.bbox, box) > 0.8
+    assert (plate.width_m, plate.height_m) == template.size_m(width) and box_iou(plate.bbox, box) > 0.8
     assert plate.printed_text == template.text and plate.classification_indicator > 0.6
 
 
@@ -192,7 +185,7 @@ def test_a_pictogram_plate_partly_hidden_by_a_branch_is_classified_by_what_is_se
     left[y - 10:y + h + 10, x - 5:x - 5 + w // 3] = np.stack([20 + leaves, 90 + leaves, 30 + leaves // 2], -1)
     depth[y - 10:y + h + 10, x - 5:x - 5 + w // 3] = np.nan
     (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
-    assert plate.template_id == "5.31-1" and plate.printed_text == "gestattet" and _iou(plate.bbox, box) > 0.8
+    assert plate.template_id == "5.31-1" and plate.printed_text == "gestattet" and box_iou(plate.bbox, box) > 0.8
     # the branch counted: no pictogram plate
     assert max(pictogram_scores(plate.crop, templates, PipelineConfig())) < 0.6
 
@@ -238,7 +231,7 @@ def test_a_thin_line_into_a_plate_does_not_make_it_less_of_a_rectangle(catalogue
         left[y + h // 5:y + h, x + k * w // 7 - 2:x + k * w // 7 + 2] = 115
     depth[y:y + h, x:x + w] = np.nan  # nothing says it is in front
     (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
-    assert plate.format == "normal-2" and _iou(plate.bbox, box) > 0.8
+    assert plate.format == "normal-2" and box_iou(plate.bbox, box) > 0.8
     unclosed = detect_pair(left, depth, None, CAMERA, pose, catalogue,
                            PipelineConfig(plates=PlateConfig(plate_notch_m=0.0)))
     assert [d for d in unclosed if d.is_plate] == []
@@ -268,15 +261,15 @@ def test_a_plate_cut_apart_by_something_in_front_is_found_whole(catalogue, occlu
         depth[band] = depth[y, x] - 2.0
     found = _detect(catalogue, left, depth, pose)
     (plate,) = [d for d in found if d.is_plate]
-    assert plate.format == "normal-2" and _iou(plate.bbox, box) > 0.8
+    assert plate.format == "normal-2" and box_iou(plate.bbox, box) > 0.8
     whole_only = detect_pair(left, depth, None, CAMERA, pose, catalogue,
                              PipelineConfig(plates=PlateConfig(plate_min_visible=1.0)))
     # seen pieces only: none, or (its end hidden) the seen part taken for a smaller plate
-    assert all(_iou(d.bbox, box) < 0.8 for d in whole_only if d.is_plate)
+    assert all(box_iou(d.bbox, box) < 0.8 for d in whole_only if d.is_plate)
     if occluder.endswith("end"):  # completing the piece needs it widened by more than plate_min_widening
         unwidened = detect_pair(left, depth, None, CAMERA, pose, catalogue,
                                 PipelineConfig(plates=PlateConfig(plate_min_widening=10.0)))
-        assert all(_iou(d.bbox, box) < 0.8 for d in unwidened if d.is_plate)
+        assert all(box_iou(d.bbox, box) < 0.8 for d in unwidened if d.is_plate)
 
 
 def _write_drive(root, catalogue, lines=("200 m",), n=3):
