@@ -26,7 +26,7 @@ import numpy as np
 
 from .config import PipelineConfig
 from .framed_diamonds import box_yellow_against_frame, framed_diamond
-from .shape import classify_shape
+from .shape import plausible_outlines
 
 # shapes of the fields red rings and borders enclose (triangles, discs, the octagon's field is no field:
 # STOP is a red field with white letters)
@@ -65,6 +65,17 @@ def _box_ious(box: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     y1 = np.minimum(box[1] + box[3], boxes[:, 1] + boxes[:, 3])
     inter = np.maximum(x1 - x0, 0) * np.maximum(y1 - y0, 0)
     return inter / (box[2] * box[3] + boxes[:, 2] * boxes[:, 3] - inter)
+
+
+def _same_component(box: np.ndarray, area: int, seen: np.ndarray, seen_areas: np.ndarray, fields) -> bool:
+    """Whether a component was judged already at a lower level: nearly the same box and pixel count.
+
+    A field whose ring's lighter pixels join it at one level has the same box one level up but
+    fewer pixels; there it may be the field alone (a thin dusk ring around a speed limit), so it
+    is judged again.
+    """
+    same_box = _box_ious(box, seen) >= fields.field_same_iou
+    return bool(np.any(same_box & (area >= (1.0 - fields.field_same_area_drop) * seen_areas)))
 
 
 def ring_contrast(image: np.ndarray, bbox, field: np.ndarray, ring_fraction: float) -> Optional[Tuple[float, float,
@@ -158,6 +169,7 @@ def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: Pipeli
     diamonds_wanted = fields.diamond_pass and "yellow" in config.colour.colours
     min_diamond = max(3, int(np.floor(max(fields.field_min_px, min_face_px or 0) * scale)))
     seen = np.zeros((0, 4), np.int64)  # boxes already judged (the same field recurs at neighbouring levels)
+    seen_areas = np.zeros(0, np.int64)  # and their components' pixel counts
     seen_diamonds = np.zeros((0, 4), np.int64)
     out: List[Field] = []
     diamonds: List[Field] = []
@@ -178,9 +190,10 @@ def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: Pipeli
                 & inside_image)
         for k in np.flatnonzero(keep) + 1:
             box = stats[k, :4]
-            if len(seen) and _box_ious(box, seen).max() >= fields.field_same_iou:
+            if len(seen) and _same_component(box, areas[k - 1], seen, seen_areas, fields):
                 continue  # the same field at a lower level
             seen = np.vstack([seen, box[None]])
+            seen_areas = np.append(seen_areas, areas[k - 1])
             box = tuple(int(v) for v in box)
             if not is_red_ring(_coarse_contrast(small, labels, k, box, fields.field_ring_fraction), config,
                                fields.field_coarse_share):
@@ -236,6 +249,9 @@ def _ring_field(image, labels, label: int, box, scale: float, config: PipelineCo
     cv2.drawContours(field, [contour], -1, 255, thickness=cv2.FILLED, offset=(-bbox[0], -bbox[1]))
     if not is_red_ring(ring_contrast(image, bbox, field, config.bright_fields.field_ring_fraction), config):
         return None
-    if classify_shape(field, config.shape.min_shape_fit, config.shape.shape_fill_window).shape not in FIELD_SHAPES:
+    # a small round field fits an octagon as well as a circle; a stop sign has no white field, so an
+    # octagon reading only hides the circle (dusk speed limits on GTSDB's tune split)
+    fit, shapes = plausible_outlines(field, config)
+    if fit.shape not in FIELD_SHAPES and not (fit.shape == "octagon" and "circle" in shapes):
         return None
     return Field(tuple(int(v) for v in bbox), field, contour)

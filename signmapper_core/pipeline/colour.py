@@ -323,8 +323,11 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
         for seg in frame.ring_fields(image, config, small_face_px):
             if search is not None and inside_share(seg, search) < config.bright_fields.field_min_inside_share:
                 continue  # a field mostly outside the search space
-            if not any(o.colour == "red" and (box_iou(o.bbox, seg.bbox) >= config.scene.pass_duplicate_iou
-                                              or _field_of(seg.bbox, o.bbox, config)) for o in out):
+            # the same field from the colour passes' holes, or the field of a ring they outlined whole (a part of
+            # a ring overlapping the field is no outline of it)
+            if not any(o.colour == "red" and (o.source == "hole" and box_iou(o.bbox, seg.bbox)
+                                              >= config.scene.pass_duplicate_iou or _field_of(seg.bbox, o.bbox, config))
+                       for o in out):
                 out.append(seg)
     if config.bright_fields.diamond_pass and "yellow" in config.colour.colours:
         for seg in frame.bright_segments(image, config, small_face_px)[1]:
@@ -402,8 +405,9 @@ def merge_segments(a: Segment, b: Segment) -> Segment:
 
 def is_piece(seg: Segment) -> bool:
     """Whether a segment may be a piece of a face: not a face's whole outline found as such (a white frame, the
-    disc read from its half)."""
-    return seg.source not in ("frame", "half")
+    disc read from its half), nor a ring's white field: a bar or pole splits a ring, and two fields close to each
+    other are those of two signs stacked on one pole."""
+    return seg.source not in ("frame", "half", "hole")
 
 
 def merge_candidates(segments: Sequence[Segment], max_gap_fraction: float, max_aspect: float) -> List[Segment]:

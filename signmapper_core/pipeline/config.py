@@ -134,6 +134,9 @@ class BrightFieldConfig:
     field_max_aspect: float = 1.6  # longer / shorter box side: a disc turned 50 deg; no field on a sign of the
     # tune split was longer (a fifth of all components are)
     field_same_iou: float = 0.85  # a component whose box overlaps one of a lower level this much is that one
+    # ... unless it lost this share of its pixels: then the level split off the ring's lighter pixels that a
+    # lower level joined to the field (GTSDB tune split: thin dusk rings, a field's fill 0.82 -> 0.68)
+    field_same_area_drop: float = 0.1
     field_ring_fraction: float = 0.12  # band around a field read as its ring, x the field's size (SSV: 0.11)
     # the ring's colour relative to its field (per channel band / field): GTSDB tune split, components
     # with a field's box and fill: red rings R/G, R/B 1.2-2.2 (10th-75th percentile), other
