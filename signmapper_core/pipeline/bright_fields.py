@@ -31,6 +31,7 @@ from .shape import plausible_outlines
 # shapes of the fields red rings and borders enclose (triangles, discs, the octagon's field is no field:
 # STOP is a red field with white letters)
 FIELD_SHAPES = ("circle", "triangle", "triangle-down")
+DARK_RING_SHAPES = ("triangle", "triangle-down")  # outlines sharp enough to stand without the ring's colour
 
 
 @dataclass(frozen=True)
@@ -124,6 +125,18 @@ def is_red_ring(contrast, config: PipelineConfig, share: float = 1.0) -> bool:
             and brightness <= 1.0 - share * (1.0 - config.bright_fields.field_ring_max_brightness))
 
 
+def is_dark_ring(contrast, config: PipelineConfig, share: float = 1.0) -> bool:
+    """Whether ring-to-field ratios (:func:`ring_contrast`) are those of a much darker ring of no other colour:
+    a red ring in the dark, whose colour the camera lost (only a sharp triangle is then taken for a face)."""
+    if contrast is None:
+        return False
+    fields = config.bright_fields
+    red_green, red_blue, brightness = contrast
+    least = 1.0 - share * (1.0 - fields.dark_ring_min_ratio)
+    return (red_green >= least and red_blue >= least
+            and brightness <= 1.0 - share * (1.0 - fields.dark_ring_max_brightness))
+
+
 def red_ring_fields(image: np.ndarray, search: Optional[np.ndarray], config: PipelineConfig,
                     min_face_px: Optional[float] = None) -> List[Field]:
     """White fields enclosed by a red ring, found by brightness (the colour step makes them "hole" segments).
@@ -195,8 +208,9 @@ def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: Pipeli
             seen = np.vstack([seen, box[None]])
             seen_areas = np.append(seen_areas, areas[k - 1])
             box = tuple(int(v) for v in box)
-            if not is_red_ring(_coarse_contrast(small, labels, k, box, fields.field_ring_fraction), config,
-                               fields.field_coarse_share):
+            coarse = _coarse_contrast(small, labels, k, box, fields.field_ring_fraction)
+            if not (is_red_ring(coarse, config, fields.field_coarse_share)
+                    or is_dark_ring(coarse, config, fields.field_coarse_share)):
                 continue
             field = _ring_field(image, labels, k, box, scale, config)
             if field is not None and not any(_box_ious(np.asarray(field.bbox), np.asarray([f.bbox]))[0]
@@ -247,11 +261,14 @@ def _ring_field(image, labels, label: int, box, scale: float, config: PipelineCo
     bbox = cv2.boundingRect(contour)
     field = np.zeros((bbox[3], bbox[2]), np.uint8)
     cv2.drawContours(field, [contour], -1, 255, thickness=cv2.FILLED, offset=(-bbox[0], -bbox[1]))
-    if not is_red_ring(ring_contrast(image, bbox, field, config.bright_fields.field_ring_fraction), config):
-        return None
-    # a small round field fits an octagon as well as a circle; a stop sign has no white field, so an
-    # octagon reading only hides the circle (dusk speed limits on GTSDB's tune split)
+    contrast = ring_contrast(image, bbox, field, config.bright_fields.field_ring_fraction)
     fit, shapes = plausible_outlines(field, config)
-    if fit.shape not in FIELD_SHAPES and not (fit.shape == "octagon" and "circle" in shapes):
+    if is_red_ring(contrast, config):
+        # a small round field fits an octagon as well as a circle; a stop sign has no white field, so an
+        # octagon reading only hides the circle (dusk speed limits on GTSDB's tune split)
+        if fit.shape not in FIELD_SHAPES and not (fit.shape == "octagon" and "circle" in shapes):
+            return None
+    elif not (is_dark_ring(contrast, config) and fit.shape in DARK_RING_SHAPES
+              and fit.fit >= config.bright_fields.dark_ring_min_fit):
         return None
     return Field(tuple(int(v) for v in bbox), field, contour)

@@ -147,6 +147,12 @@ class BrightFieldConfig:
     # a component is first judged on the reduced image by means, asking this share of each margin above
     # (GTSDB tune split: 15 % of the components pass, every field later kept on a sign among them)
     field_coarse_share: float = 0.5
+    # a ring in the dark loses its colour in the camera (GTSDB tune split: dusk danger triangles, ring/field R/G
+    # 1.00-1.08, brightness 0.47-0.63): a ring this much darker than its field and of no other colour (R/G, R/B at
+    # least dark_ring_min_ratio) still counts when the field is a triangle fitting its ideal outline this well
+    dark_ring_max_brightness: float = 0.7
+    dark_ring_min_ratio: float = 0.97
+    dark_ring_min_fit: float = 0.88
     field_min_inside_share: float = 0.5  # the pass reads the whole image: a field counts with this share inside
     # the search space (one mostly outside it is another depth's)
     # a field whose box lies inside a colour segment's box (give or take this many pixels) and fills at least this

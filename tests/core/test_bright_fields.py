@@ -199,3 +199,26 @@ def test_fields_of_two_signs_on_one_pole_are_never_merged_as_pieces_of_one_face(
     assert merge_candidates(fields, 0.35, 2.0) == [] and split_face_merges(fields, PipelineConfig()) == []
     as_pieces = [replace(s, source="colour") for s in fields]
     assert len(merge_candidates(as_pieces, 0.35, 2.0)) == 1  # two red pieces that close would be tried as one face
+
+
+def _dark_face(shape, ring=(18, 17, 18), field=(42, 40, 40)):
+    """A face in the dark: ring and field only differ in brightness, the camera kept no colour of the ring."""
+    image = np.clip(np.random.default_rng(2).normal(30, 3, (200, 300, 3)), 0, 255).astype(np.uint8)
+    if shape == "triangle":
+        outer = np.array([(150, 60), (176, 105), (124, 105)], np.int32)
+        inner = np.round(outer.mean(axis=0) + 0.62 * (outer - outer.mean(axis=0))).astype(np.int32)
+        cv2.fillPoly(image, [outer], ring, cv2.LINE_AA)
+        cv2.fillPoly(image, [inner], field, cv2.LINE_AA)
+    else:
+        cv2.circle(image, (150, 90), 24, ring, -1, cv2.LINE_AA)
+        cv2.circle(image, (150, 90), 17, field, -1, cv2.LINE_AA)
+    return cv2.GaussianBlur(image, (3, 3), 0)
+
+
+def test_a_sharp_triangle_in_a_dark_ring_of_no_colour_is_a_field_but_a_disc_or_a_blue_ring_is_not():
+    (field,) = red_ring_fields(_dark_face("triangle"), None, PipelineConfig())
+    assert box_iou(field.bbox, (134, 70, 33, 29)) > 0.8
+    assert red_ring_fields(_dark_face("circle"), None, PipelineConfig()) == []  # a round outline is too common
+    assert red_ring_fields(_dark_face("triangle", ring=(26, 17, 14)), None, PipelineConfig()) == []  # a blue ring
+    strict = PipelineConfig(bright_fields=BrightFieldConfig(dark_ring_min_fit=0.99))
+    assert red_ring_fields(_dark_face("triangle"), None, strict) == []
