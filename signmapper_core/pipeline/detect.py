@@ -203,7 +203,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     # higher, and the panel reading alone scores ~0.65 on any round sign.
     readings, panels = [], []
     same_shapes = {c for s in shapes for c in catalogue_shapes(s, seg.bbox[2], seg.bbox[3])}
-    classifier = pair.classifier
+    classifier = pair.classifier_knowing([i for *_, ids, _ in fits for i in ids])
     accept = accept_threshold(classifier, config)
     for match, face, ids, ext in fits:
         cls = classifier.classify(left, face, ids)

@@ -5,12 +5,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Tuple
+from typing import Sequence, Tuple
 
 import numpy as np
 
 from ..geometry import Camera, Pose
-from .classifiers import classifier_for
+from .classifiers import NccClassifier, classifier_for
 from .config import PipelineConfig
 from .depth_sources import DepthSource
 from .planarity import PlanarityResult, segment_planarity
@@ -44,6 +44,18 @@ class PairContext:
     def classifier(self):
         """The classifier the config names for the catalogue (:func:`.classifiers.classifier_for`)."""
         return classifier_for(self.catalogue, self.config)
+
+    @cached_property
+    def template_matcher(self) -> NccClassifier:
+        """The paper's template matching, which knows every template of the catalogue."""
+        return NccClassifier(self.catalogue, self.config)
+
+    def classifier_knowing(self, template_ids: Sequence[str]):
+        """The configured classifier where it knows every one of ``template_ids``, else template matching: a
+        learned network knows only the ids it was trained on (not the white family's newer entries), and a
+        white circle from the Hough route may be any of them."""
+        classifier = self.classifier
+        return classifier if classifier.knows(template_ids) else self.template_matcher
 
     def planarity(self, depth: np.ndarray, bbox, mask: np.ndarray) -> PlanarityResult:
         """:func:`.planarity.segment_planarity` of a segment, allowing for the noise of the pair's depth source."""
