@@ -192,6 +192,7 @@ def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: Pipeli
         if grey.size - at_most[level] < min_fill * min_side * min_side or at_most[level] < 4 * min_side:
             continue  # too few pixels above the level for a field, or below it for a ring around one
         bright = cv2.compare(grey, level, cv2.CMP_GT)
+        dark = level <= fields.dark_ring_max_level  # a ring may have lost its colour only in the dark
         n, labels, stats, _ = cv2.connectedComponentsWithStats(bright, connectivity=4)
         if n < 2:
             break
@@ -209,10 +210,10 @@ def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: Pipeli
             seen_areas = np.append(seen_areas, areas[k - 1])
             box = tuple(int(v) for v in box)
             coarse = _coarse_contrast(small, labels, k, box, fields.field_ring_fraction)
-            if not (is_red_ring(coarse, config, fields.field_coarse_share)
-                    or is_dark_ring(coarse, config, fields.field_coarse_share)):
+            red = is_red_ring(coarse, config, fields.field_coarse_share)
+            if not (red or dark and is_dark_ring(coarse, config, fields.field_coarse_share)):
                 continue
-            field = _ring_field(image, labels, k, box, scale, config)
+            field = _ring_field(image, labels, k, box, scale, config, dark)
             if field is not None and not any(_box_ious(np.asarray(field.bbox), np.asarray([f.bbox]))[0]
                                              >= config.scene.pass_duplicate_iou for f in out):
                 out.append(field)  # the first level that shows a field in its ring stands for it
@@ -250,8 +251,10 @@ def _coarse_contrast(small: np.ndarray, labels: np.ndarray, label: int, box, rin
     return float(q[2] / q[1]), float(q[2] / q[0]), float(b.sum() / f.sum())
 
 
-def _ring_field(image, labels, label: int, box, scale: float, config: PipelineConfig) -> Optional[Field]:
-    """One bright component (``label`` in ``labels``, box ``box`` at ``scale``) if it is a field in a red ring."""
+def _ring_field(image, labels, label: int, box, scale: float, config: PipelineConfig,
+                dark: bool = False) -> Optional[Field]:
+    """One bright component (``label`` in ``labels``, box ``box`` at ``scale``) if it is a field in a red ring
+    (with ``dark``, also a triangle in a dark ring of no colour: :func:`is_dark_ring`)."""
     x, y, w, h = box
     small = cv2.compare(labels[y : y + h, x : x + w], float(label), cv2.CMP_EQ)
     contours, _ = cv2.findContours(small, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE, offset=(x, y))
@@ -262,13 +265,15 @@ def _ring_field(image, labels, label: int, box, scale: float, config: PipelineCo
     field = np.zeros((bbox[3], bbox[2]), np.uint8)
     cv2.drawContours(field, [contour], -1, 255, thickness=cv2.FILLED, offset=(-bbox[0], -bbox[1]))
     contrast = ring_contrast(image, bbox, field, config.bright_fields.field_ring_fraction)
+    red = is_red_ring(contrast, config)
+    if not (red or dark and is_dark_ring(contrast, config)):
+        return None
     fit, shapes = plausible_outlines(field, config)
-    if is_red_ring(contrast, config):
+    if red:
         # a small round field fits an octagon as well as a circle; a stop sign has no white field, so an
         # octagon reading only hides the circle (dusk speed limits on GTSDB's tune split)
         if fit.shape not in FIELD_SHAPES and not (fit.shape == "octagon" and "circle" in shapes):
             return None
-    elif not (is_dark_ring(contrast, config) and fit.shape in DARK_RING_SHAPES
-              and fit.fit >= config.bright_fields.dark_ring_min_fit):
+    elif not (fit.shape in DARK_RING_SHAPES and fit.fit >= config.bright_fields.dark_ring_min_fit):
         return None
     return Field(tuple(int(v) for v in bbox), field, contour)

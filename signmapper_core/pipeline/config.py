@@ -153,6 +153,7 @@ class BrightFieldConfig:
     dark_ring_max_brightness: float = 0.7
     dark_ring_min_ratio: float = 0.97
     dark_ring_min_fit: float = 0.88
+    dark_ring_max_level: int = 57  # ...on grey levels up to this (tune split: dusk fields separate at 15-46)
     field_min_inside_share: float = 0.5  # the pass reads the whole image: a field counts with this share inside
     # the search space (one mostly outside it is another depth's)
     # a field whose box lies inside a colour segment's box (give or take this many pixels) and fills at least this

@@ -222,3 +222,7 @@ def test_a_sharp_triangle_in_a_dark_ring_of_no_colour_is_a_field_but_a_disc_or_a
     assert red_ring_fields(_dark_face("triangle", ring=(26, 17, 14)), None, PipelineConfig()) == []  # a blue ring
     strict = PipelineConfig(bright_fields=BrightFieldConfig(dark_ring_min_fit=0.99))
     assert red_ring_fields(_dark_face("triangle"), None, strict) == []
+    # the field separates from its ring at grey 19-37: above dark_ring_max_level colour is kept, a colourless
+    # ring is no red one
+    daylight_only = PipelineConfig(bright_fields=BrightFieldConfig(dark_ring_max_level=15))
+    assert red_ring_fields(_dark_face("triangle"), None, daylight_only) == []
