@@ -257,9 +257,10 @@ class ColourFrame:
 def _weak_outline(seg: Segment, colour: str, config: PipelineConfig) -> bool:
     """Whether a scene-pass segment has an outline a face of its colour has (``config.scene.weak_shapes``; any
     ideal outline for colours not listed there)."""
-    shapes = plausible_outlines(seg.mask, config)[1]
+    result, shapes = plausible_outlines(seg.mask, config)
     allowed = config.scene.weak_shapes.get(colour)
-    return bool(shapes) and (allowed is None or any(s in allowed for s in shapes))
+    return (bool(shapes) and (allowed is None or any(s in allowed for s in shapes))
+            and result.fit >= config.scene.weak_min_fit.get(colour, 0.0))
 
 
 def _outline_lost(earlier: Segment, later: Segment, config: PipelineConfig) -> bool:
@@ -311,10 +312,10 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
             for seg in segments_from_mask(mask, colour, min_px, segmenting, holes=colour in segmenting.hole_colours):
                 if max_side is not None and max(seg.bbox[2], seg.bbox[3]) > max_side:
                     continue
-                if weak and outline_surround_share(raw, seg, scene.weak_surround_px) > scene.weak_max_surround:
-                    continue  # part of a larger coloured area (sky, hedge, façade), not a face of its own
                 if weak and not _weak_outline(seg, colour, config):
                     continue  # the scene pass's extra segments must look like a face to be worth depth
+                if weak and outline_surround_share(raw, seg, scene.weak_surround_px) > scene.weak_max_surround:
+                    continue  # part of a larger coloured area (sky, hedge, façade), not a face of its own
                 if any(o.colour == colour and box_iou(o.bbox, seg.bbox) >= scene.pass_duplicate_iou
                        and not _outline_lost(o, seg, config) for o in out):
                     continue  # an earlier pass outlined this face already

@@ -119,3 +119,17 @@ def test_a_later_pass_with_the_same_outline_is_still_a_duplicate():
     cv2.circle(image, (200, 150), 24, WHITE, -1)
     red = [s for s in find_colour_segments(image, None, NO_FIELDS, None) if s.colour == "red"]
     assert len(red) == 1 and isinstance(red[0], Segment)
+
+
+def test_a_dark_blue_disc_is_found_by_the_scene_pass_only_when_blue_is_asked_for_and_only_as_a_sharp_disc():
+    # a dark blue disc at dusk (V 36): below the strong blue's value floor, within the scene pass's
+    image = np.clip(np.random.default_rng(3).normal(70, 4, (200, 300, 3)), 0, 255).astype(np.uint8)
+    cv2.circle(image, (150, 100), 22, (36, 14, 9), -1, cv2.LINE_AA)
+    cv2.arrowedLine(image, (140, 90), (160, 110), (70, 70, 70), 4)
+    image = cv2.GaussianBlur(image, (3, 3), 0)
+    assert find_colour_segments(image, None, PipelineConfig(), None) == []  # blue is no scene colour by default
+    with_blue = with_settings(PipelineConfig(), {"scene": {"weak_colours": ("red", "yellow", "blue")}})
+    (disc,) = find_colour_segments(image, None, with_blue, None)
+    assert disc.colour == "blue" and box_iou(disc.bbox, (128, 78, 45, 45)) > 0.9
+    ragged_only = with_settings(with_blue, {"scene": {"weak_min_fit": {"blue": 0.99}}})
+    assert find_colour_segments(image, None, ragged_only, None) == []

@@ -44,6 +44,9 @@ RECORD_V1 = Path(__file__).parent.parent / "data" / "run_record_v1.json"
 # plate-text module constants became settings
 RECORD_V2_A6850FD = Path(__file__).parent.parent / "data" / "run_record_v2_a6850fd.json"
 
+# defaults changed since those records were written: the records' own values stand for them
+DEFAULTS_THEN = PipelineConfig(scene=SceneConfig(weak_shapes={"yellow": ("diamond",)}))  # no blue circles yet
+
 # every kind of field changed: numbers, None, tuples, dicts of tuples, booleans
 CHANGED = PipelineConfig(
     depth=DepthConfig(near_m=5.5, far_m=18.0, sgbm_warm_up_px=32),
@@ -124,7 +127,7 @@ def test_a_version_1_run_table_of_the_earlier_writer_reads_into_its_sections(tmp
     warnings = []
     settings = load_run_settings(path, warnings.append)
     assert warnings == []  # every setting it holds has a section
-    assert settings.config == PipelineConfig()  # mapped with the defaults, which have not changed since
+    assert settings.config == DEFAULTS_THEN  # mapped with the defaults of its day
     assert settings.fusion == FusionConfig(accept_classification=0.8512)
 
 
@@ -137,7 +140,7 @@ def test_a_version_2_record_written_before_settings_were_added_reads_them_as_the
     warnings = []
     settings = load_run_settings(path, warnings.append)
     assert warnings == []
-    assert settings.config == PipelineConfig()  # the constants had the values their settings now default to
+    assert settings.config == DEFAULTS_THEN  # the constants had the values their settings defaulted to then
     assert settings.config.plates.plate_compare_insets == (0.0, 0.06, 0.12)
     assert settings.fusion == FusionConfig(accept_classification=0.8512)
 
