@@ -49,6 +49,9 @@ class ColourConfig:
     ring_fraction: float = 0.09
     min_face_px: int = 16  # smallest face to find without depth (GTSDB's smallest signs); sets the small pass
     max_merge_pieces: int = 40  # rejected segments tried in pairs (faces split by an occluder)
+    # a red diamond may be the middle of a priority road at dusk, its yellow turned dark orange (hue 5-13): no red
+    # sign is a diamond
+    red_diamonds_as_yellow: bool = True
     merge_max_gap: float = 0.35  # two pieces of one face are at most this x the merged box's size apart
     merge_max_aspect: float = 2.0  # ...and their merged box is at most this much longer than wide: beyond it the
     # pieces are two faces one above the other (a sign and the one under it), not one face cut by a bar or pole

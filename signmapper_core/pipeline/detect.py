@@ -170,8 +170,14 @@ def segment_candidates(seg: Segment, shape, catalogue, config: PipelineConfig):
     if seg.source == "hole":  # the field inside a ring: the face is grown from it
         return hole_candidates(catalogue, seg.colour, shapes, hsv_ranges, tuple(config.colour.colours) + ("white",),
                                exclude)
-    return candidate_entries(catalogue, seg.colour, shapes, hsv_ranges, tuple(config.colour.colours) + ("white",),
-                             exclude)
+    allowed = tuple(config.colour.colours) + ("white",)
+    out = candidate_entries(catalogue, seg.colour, shapes, hsv_ranges, allowed, exclude)
+    dusk_yellow = config.colour.red_diamonds_as_yellow and "yellow" in allowed
+    if dusk_yellow and seg.colour == "red" and outlines[0] == "diamond":
+        # a priority road's yellow turns dark orange at dusk and reads as red; no red sign is a diamond (only as
+        # the best outline: a blob that fits a disc as well is no middle of a priority road)
+        out += candidate_entries(catalogue, "yellow", ("diamond",), hsv_ranges, allowed, exclude)
+    return out
 
 
 def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Optional[Detection]:

@@ -17,7 +17,7 @@ from signmapper_core.pipeline.colour import (
     segments_from_mask,
     split_face_merges,
 )
-from signmapper_core.pipeline.config import BrightFieldConfig
+from signmapper_core.pipeline.config import BrightFieldConfig, with_settings
 from signmapper_core.pipeline.framed_diamonds import yellow_against_frame
 
 FACE = (300, 150, 60, 60)  # x, y, w, h of the pasted face
@@ -95,3 +95,20 @@ def test_split_pieces_are_merged_but_a_frame_never_is():
     as_frame = [replace(halves[0], source="frame"), halves[1]]
     assert split_face_merges(as_frame, PipelineConfig()) == []
     assert merge_candidates(as_frame, 0.35, 2.0) == [] and len(merge_candidates(halves, 0.35, 2.0)) == 1
+
+
+def test_a_priority_road_whose_middle_turned_dark_orange_is_read_from_its_red_diamond(catalogue):
+    # at dusk the yellow middle reads as red (hue 9, below the yellow bands) and is too orange against its frame
+    # for the frame test (green/red 0.42): its red diamond outline stands for the priority road
+    image = np.clip(np.random.default_rng(4).normal(40, 4, (240, 320, 3)), 0, 255).astype(np.uint8)
+    centre = np.array([160, 120])
+    outer = centre + np.array([(0, -40), (40, 0), (0, 40), (-40, 0)])
+    cv2.fillPoly(image, [outer.astype(np.int32)], (120, 120, 120), cv2.LINE_AA)
+    cv2.fillPoly(image, [(centre + 0.62 * (outer - centre)).astype(np.int32)], (20, 50, 120), cv2.LINE_AA)
+    image = cv2.GaussianBlur(image, (3, 3), 0)
+    segments, candidates = colour_step(image, catalogue, hough=False)
+    assert [(s.colour, s.source) for s in segments] == [("red", "colour")]
+    assert any("3.03" in r.template_ids and box_iou(r.bbox, (120, 80, 81, 81)) > 0.9
+               for c in candidates for r in c.readings)
+    off = with_settings(PipelineConfig(), {"colour": {"red_diamonds_as_yellow": False}})
+    assert colour_step(image, catalogue, off, hough=False)[1] == []
