@@ -4,9 +4,10 @@ The disparity search range comes from the search space (``d = fx*B/Z``), not a
 fixed 0..256, and SGBM runs on a downscaled pair and optionally only on the row
 bands that hold colour candidates, because SGBM dominates the time per pair.
 
-With colour candidates known before depth, only windows around them are matched: their row
-bands and, within a band, their columns plus the largest disparity to their left (the right
-image shows the same points up to that far left), about 40 % of a band on synthetic drives.
+With colour candidates known before depth, only windows around them are matched: their boxes grown
+by a margin and joined where they overlap (:func:`box_windows`; or their row bands and, within a band,
+their columns, :func:`match_windows`), each with the largest disparity to its left (the right image
+shows the same points up to that far left).
 
 The range reaches beyond the far limit (``far_factor``, default 2x): a point
 whose true disparity lies below the searched range is forced onto a wrong
@@ -91,6 +92,34 @@ def match_windows(boxes: Iterable[Tuple[int, int, int, int]], width: int, height
         spans = [(x, x + w) for x, y, w, h in boxes if y < b and y + h > a]
         out += [(c0, a, c1, b) for c0, c1 in merge_row_bands(spans, width, col_margin)]
     return out
+
+
+def box_windows(boxes: Iterable[Tuple[int, int, int, int]], width: int, height: int,
+                margin: int) -> List[Tuple[int, int, int, int]]:
+    """Windows (x0, y0, x1, y1) of the left image whose depth is wanted: the boxes' (x, y, w, h) grown by
+    ``margin`` and clipped to the image, overlapping ones joined into their bounding box until none overlap.
+
+    Unlike :func:`match_windows` a box does not take the rows of other boxes beside it: a tall candidate's
+    band gave every small one in the same rows, however far to its side, the band's whole height.
+    """
+    rects = [[max(0, x - margin), max(0, y - margin), min(width, x + w + margin), min(height, y + h + margin)]
+             for x, y, w, h in boxes]
+    rects = [r for r in rects if r[2] > r[0] and r[3] > r[1]]
+    joined = True
+    while joined:
+        joined = False
+        for i in range(len(rects)):
+            a = rects[i]
+            for j in range(i + 1, len(rects)):
+                b = rects[j]
+                if a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]:
+                    rects[i] = [min(a[0], b[0]), min(a[1], b[1]), max(a[2], b[2]), max(a[3], b[3])]
+                    del rects[j]
+                    joined = True
+                    break
+            if joined:
+                break
+    return sorted((x0, y0, x1, y1) for x0, y0, x1, y1 in ((r[0], r[1], r[2], r[3]) for r in rects))
 
 
 def sgbm_depth(

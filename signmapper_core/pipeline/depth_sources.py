@@ -21,7 +21,7 @@ from typing import List, Optional, Protocol, Tuple
 import numpy as np
 
 from ..geometry import Camera
-from .depth import match_windows, merge_row_bands, sgbm_depth
+from .depth import box_windows, match_windows, merge_row_bands, sgbm_depth
 from .search_space import close_holes, grow
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
@@ -70,7 +70,8 @@ class StereoMatching:
     """Depth by semi-global matching of the left image against ``right`` (:func:`.depth.sgbm_depth`).
 
     With ``config.depth.sgbm_rows_only`` it matches only the rows of the colour candidates found before
-    depth (and with ``sgbm_columns_only`` only windows around them), because matching dominates
+    depth (with ``sgbm_box_windows`` only their boxes grown by a margin, else with ``sgbm_columns_only`` windows
+    of their row bands around their columns), because matching dominates
     the time per pair; the Hough fallback then sees only these. Its depth is noisier than a given
     one: planes are allowed ``sgbm_planarity_tolerance_px`` and the search space is grown (SGBM
     loses a sign's left edge in front of a distant background) instead of only closed.
@@ -87,7 +88,9 @@ class StereoMatching:
         x0, y0, x1, y1 = roi
         bands, windows = [(y0, y1)], None
         if candidate_boxes is not None:
-            if config.depth.sgbm_columns_only:
+            if config.depth.sgbm_box_windows:
+                windows = box_windows(candidate_boxes, left.shape[1], left.shape[0], config.depth.sgbm_row_margin_px)
+            elif config.depth.sgbm_columns_only:
                 windows = match_windows(candidate_boxes, left.shape[1], left.shape[0], config.depth.sgbm_row_margin_px,
                                         config.depth.sgbm_row_margin_px)
             bands = merge_row_bands([(y, y + h) for _, y, _, h in candidate_boxes], left.shape[0],

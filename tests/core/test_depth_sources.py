@@ -57,6 +57,25 @@ def test_stereo_matching_matches_only_around_the_candidates():
     assert np.nanmedian(depth) == pytest.approx(6.0, rel=0.02)
 
 
+def test_stereo_matching_gives_a_small_candidate_beside_a_tall_one_only_its_own_rows():
+    rng = np.random.default_rng(4)
+    d = int(round(CAMERA.fx * CAMERA.baseline_m / 6.0))
+    wide = rng.integers(0, 255, (CAMERA.height, CAMERA.width + d, 3), dtype=np.uint8)
+    left, right = wide[:, : CAMERA.width].copy(), wide[:, d : d + CAMERA.width].copy()
+    source, roi = StereoMatching(right), (0, 0, CAMERA.width, CAMERA.height)
+    tall, small = (60, 40, 40, 300), (500, 150, 40, 40)
+    margin = CONFIG.depth.sgbm_row_margin_px
+
+    def rows_beside(config):
+        depth = source.depth_map(left, CAMERA, config, roi, [tall, small])
+        return np.flatnonzero(np.isfinite(depth[:, 500:540]).any(axis=1))
+
+    rows = rows_beside(CONFIG)
+    assert rows.min() == 150 - margin and rows.max() == 190 + margin - 1
+    banded = rows_beside(PipelineConfig(depth=DepthConfig(sgbm_box_windows=False)))
+    assert banded.min() == 40 - margin and banded.max() == 340 + margin - 1  # the tall one's band
+
+
 def test_detect_pair_is_detection_with_the_pairs_depth_source(catalogue):
     sign = POSE.centre + 7.0 * FORWARD + 1.5 * RIGHT - 0.4 * DOWN
     left, depth, _ = sign_scene(catalogue, "2.30-50", "normal", sign)

@@ -6,6 +6,7 @@ from pipeline_scenes import CAMERA
 
 from signmapper_core.pipeline.config import PipelineConfig, with_settings
 from signmapper_core.pipeline.depth import (
+    box_windows,
     disparity_range,
     largest_disparity_px,
     match_windows,
@@ -88,6 +89,18 @@ def test_match_windows_take_the_candidates_rows_and_columns():
     assert windows == [(390, 90, 450, 150), (460, 90, 510, 150), (90, 290, 130, 330)]
     assert match_windows([(400, 100, 40, 40), (455, 110, 30, 30)], 640, 400, 10, 10) == [(390, 90, 495, 150)]
     assert match_windows([], 640, 400, 10, 10) == []
+
+
+def test_box_windows_give_each_candidate_its_own_rows():
+    tall, small = (100, 20, 60, 300), (500, 150, 30, 30)  # side by side: the band of the tall one holds the small
+    (_, band_of_small) = match_windows([tall, small], 640, 400, 10, 10)
+    assert band_of_small == (490, 10, 540, 330)  # the bands gave the small one the tall one's 320 rows
+    assert box_windows([tall, small], 640, 400, 10) == [(90, 10, 170, 330), (490, 140, 540, 190)]
+    # overlapping grown boxes are joined into their bounding box, until no two windows overlap
+    joined = box_windows([(100, 100, 40, 40), (150, 120, 40, 40), (195, 65, 20, 20)], 640, 400, 10)
+    assert joined == [(90, 55, 225, 170)]
+    assert box_windows([(0, 390, 30, 30)], 640, 400, 10) == [(0, 380, 40, 400)]  # clipped to the image
+    assert box_windows([], 640, 400, 10) == []
 
 
 @pytest.mark.parametrize("x", [400, 560, 110])  # a window in the middle, at the right, near the left edge

@@ -333,3 +333,8 @@ def test_outline_surround_share_reads_the_band_along_the_outline():
     mask[80:121, 80:121] = diamond
     mask[:, :70] = 255  # a coloured area 10 px beyond the box's left side: outside the band of a 41 px diamond
     assert outline_surround_share(mask, seg, 0.2) == 0.0
+    # the band reaches g = 0.2 x 41 = 8 px from the outline along rows, columns and diagonals, no farther
+    for x, y, inside in ((72, 100, True), (71, 100, False), (72, 92, True), (71, 91, False)):
+        mask[:] = 0
+        mask[y, x] = 255  # one coloured pixel left of the diamond's left corner (80, 100), or up and left of it
+        assert (outline_surround_share(mask, seg, 0.2) > 0) == inside, (x, y)
