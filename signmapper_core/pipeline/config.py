@@ -416,8 +416,9 @@ class WhiteConfig:
     bright, read as discs and upright rectangles over the whole image; then depth, format, planarity, standing
     free, a support below and NCC among the white entries."""
 
-    # off by default: on held-out drives (seeds 1720-1729) it finds 68 % of the white signs in view and names 71 %
-    # of those right, at ~1.3 x the CPU of a pair (the outline scan covers the whole image); mapsigns offers it
+    # off by default: on held-out drives (seeds 1720-1729) it finds 92 % of the white signs in view and names 87 %
+    # of those right, at ~2 x the CPU of a pair (the outline scan and the Hough transform cover the whole image);
+    # mapsigns offers it
     white_signs: bool = False
     white_max_side_m: float = 0.9  # formats up to this: the 1.2 m discs (motorways) would set the cost
     white_scan_side_px: float = 24.0  # the image is scanned reduced so the smallest face sought keeps this side
@@ -451,6 +452,27 @@ class WhiteConfig:
     white_rim_saturation_step: float = 10.0  # a disc's ring is a faded coloured rim when it is this much more
     # saturated than its field (tune drives 1700-1705: tinted white faces -8..+6; without it 12 of 56 views lost)
     white_rim_field_depth: float = 0.25  # its field: the disc without this share of its diameter all round
+    white_hough: bool = True  # round outlines are also sought by the Hough transform (HOUGH_GRADIENT_ALT) on the
+    # scanned image: tune drives 1700-1705, 12 of 38 disc views had no candidate from the cells (fields cut by
+    # digits and stripes into cells below a part of a face, pale rings before pale walls); Hough found 6 of them
+    white_hough_dp: float = 1.5  # its accumulator's resolution (1.5 x coarser than the scanned image)
+    white_hough_edge: float = 300.0  # its edge threshold on Scharr gradients (~ Canny 110 on Sobel)...
+    white_hough_roundness: float = 0.75  # ...and how round an outline must be (0-1): 4 circles per pair
+    white_hough_min_radius: float = 0.85  # x half the smallest face side: its radius estimate runs short of a
+    # faint outline's (tune drives: at 1.0 a 0.6 m disc at 12.8 m was not found, its radius 1.3 x the floor)
+    white_format_fit: bool = True  # a face whose measured size fits no white format is sought again as the
+    # outline of each format at its depth (format_outline): tune drives 1700-1705, 9 of 58 views fell between
+    # formats (a pale disc read with a white board behind it, 0.73-0.76 m; panels cut short by their stripes)
+    white_format_min_iou: float = 0.5  # the format's outline overlaps the candidate's box at least this much
+    white_disc_in_panel: float = 0.8  # a disc found with this share of its box inside a white panel found too is
+    # the panel's zone disc, not a sign (tune drives 1700-1705: a 2.59.2 panel's ring read as 2.53.1 in 3 views)
+    white_ring_ratios: Tuple[float, float] = (1.25, 1.75)  # a disc is also judged as the outer outline of an
+    # achromatic ring around it, this many times its radius (2.53.1's grey ring: 1.5): held-out drives confused
+    # 2.53.1 with 2.53-60 three times, the candidate its inner field, the ring's outline lost before pale walls
+    white_ring_steps: int = 11  # radii tried between the two
+    white_ring_min_support: float = 0.45  # share of the ring's outline on radial gradients (a face's: 0.65)
+    white_max_coloured_share: float = 0.3  # a panel with more of its pixels coloured is a coloured zone panel
+    # (tune drives: white panels 0.07-0.18 in tinted light; a red-ringed 2.59.5 read by the format refit 0.40)
     white_min_gradient: float = 80.0  # Sobel magnitude of that gradient (about 20 grey levels across the outline)
     white_max_candidates: int = 40  # per pair, largest first: bounds the stereo matching they ask for
     white_same_iou: float = 0.6  # a face overlapping a kept one this much is the same

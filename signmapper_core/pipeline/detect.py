@@ -346,9 +346,10 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
             if det is not None:
                 detections.append(det)
     with timer("white"):  # before Hough: a white disc's ring would be read as a faded coloured one
-        detections += white_detections(pair, depth, whites, detections)
+        panels: List[Tuple[int, int, int, int]] = []  # white panel outlines: their zone discs are no signs
+        detections += white_detections(pair, depth, whites, detections, panels)
     with timer("hough"):
-        detections += _hough_detections(pair, depth, search, detections)
+        detections += _hough_detections(pair, depth, search, detections, panels)
     signs = suppress_overlaps(detections, config.classification.same_sign_max_iou)
     with timer("plates"):  # a window around a click looks for the sign alone
         return signs + (find_plates(pair, depth, signs) if pair.is_whole_image else [])
@@ -366,15 +367,17 @@ def white_outline_candidates(pair: PairContext) -> List[WhiteCandidate]:
 
 
 def _hough_detections(pair: PairContext, depth: np.ndarray, search: np.ndarray,
-                      found: Sequence[Detection]) -> List[Detection]:
-    """Round signs from Hough circles whose centre is not inside an already found sign."""
+                      found: Sequence[Detection], panels: Sequence[Tuple[int, int, int, int]] = ()
+                      ) -> List[Detection]:
+    """Round signs from Hough circles whose centre is not inside an already found sign or a white panel's
+    outline (``panels``)."""
     config = pair.config
     x0, y0, x1, y1 = pair.roi
     detections: List[Detection] = []
     if config.hough.hough_enabled:
         r_min, r_max = radius_range_px(pair.camera.fx, config.depth.near_m, config.depth.far_m,
                                        _round_diameters(pair.catalogue, config), config.hough.hough_radius_slack)
-        taken = [d.bbox for d in found]
+        taken = [d.bbox for d in found] + list(panels)
         sub = search[y0:y1, x0:x1]
         scale = hough_scale(r_min, config.hough.hough_scale, config.hough.hough_min_radius_px)
         for seg in hough_segments(pair.left[y0:y1, x0:x1], sub, r_min, r_max, scale, config):

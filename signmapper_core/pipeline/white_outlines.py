@@ -15,7 +15,7 @@ perimeter on strong edges) or a rectangle (:func:`.shape.classify_shape`). Depth
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import List, Sequence, Tuple
+from typing import List, Optional, Sequence, Tuple
 
 import cv2
 import numpy as np
@@ -292,6 +292,129 @@ def read_face(mask: np.ndarray, box: Box, gradients: Tuple[np.ndarray, np.ndarra
     return readings + [("circle", (int(round(x + cu - side / 2)), int(round(y + cv - side / 2)), side, side), disc)]
 
 
+def hough_discs(grey: np.ndarray, hsv: np.ndarray, gradients: Tuple[np.ndarray, np.ndarray],
+                side_range: Tuple[float, float], config: PipelineConfig) -> List[Tuple[str, Box, np.ndarray]]:
+    """Disc readings (shape, box, outline mask in that box) of the round outlines that the Hough transform
+    finds in the scanned ``grey`` image: a disc whose field digits and stripes cut into cells smaller than
+    a part of a face, or whose pale ring runs into a pale wall, still has a round outline. Each circle is
+    moved to its best outline (:func:`refine_circle`) and kept when that lies on strong radial gradients and
+    the disc inside is achromatic and bright like a white face's cells (``white_cells``)."""
+    white = config.white
+    lo, hi = side_range
+    r_min, r_max = max(2, int(white.white_hough_min_radius * lo / 2)), int(np.ceil(hi / 2))
+    if r_max <= r_min:
+        return []
+    circles = cv2.HoughCircles(grey, cv2.HOUGH_GRADIENT_ALT, white.white_hough_dp,
+                               float(r_min), param1=white.white_hough_edge, param2=white.white_hough_roundness,
+                               minRadius=r_min, maxRadius=r_max)
+    if circles is None:
+        return []
+    floor = white.white_min_brightness * float(np.median(hsv[:, :, 2]))
+    height, width = grey.shape[:2]
+    readings = []
+    for cu, cv, r in circles[0]:
+        cu, cv, r, support = refine_circle(gradients, float(cu), float(cv), float(r), config)
+        if support < white.white_min_edge_support:
+            continue
+        side = int(round(2 * r)) + 1
+        x, y = int(round(cu - side / 2)), int(round(cv - side / 2))
+        if x < 0 or y < 0 or x + side > width or y + side > height:
+            continue
+        disc = np.zeros((side, side), np.uint8)
+        cv2.circle(disc, (side // 2, side // 2), side // 2, 255, -1)
+        inside = hsv[y : y + side, x : x + side][disc > 0]
+        if (np.mean(inside[:, 1] <= white.white_max_saturation) < white.white_min_achromatic
+                or float(np.mean(inside[:, 2])) < floor):
+            continue
+        readings.append(("circle", (x, y, side, side), disc))
+    return readings
+
+
+def format_outline(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[str, float, float]], scale: float,
+                   config: PipelineConfig) -> Optional[Tuple[str, Box, float]]:
+    """(shape, box, edge support) of the outline of a standard size best lying on strong edges near ``bbox``
+    (full-image pixels of ``grey``), or None when none reaches ``white_min_edge_support``.
+
+    ``sizes_px``: (shape, width, height) of the white formats at the face's depth. A face whose measured size
+    fell between two formats had its outline read too large (a pale disc before a white board behind it, read
+    with it) or too small (a panel's field cut short by its stripes): the outline of each format is sought
+    where it overlaps ``bbox`` by at least ``white_format_min_iou``, in the image scanned at ``scale`` like
+    the candidates, and the edges decide between the formats.
+    """
+    white = config.white
+    x, y, w, h = bbox
+    height, width = grey.shape[:2]
+    big = max([w, h] + [max(sw, sh) for _, sw, sh in sizes_px])
+    x0, y0 = max(0, int(x - big)), max(0, int(y - big))
+    x1, y1 = min(width, int(x + w + big)), min(height, int(y + h + big))
+    if x1 - x0 < 8 or y1 - y0 < 8:
+        return None
+    crop = grey[y0:y1, x0:x1]
+    small = cv2.resize(crop, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA) if scale < 1 else crop
+    gradients = (cv2.Sobel(small, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(small, cv2.CV_32F, 0, 1, ksize=3))
+    sx, sy, sw0, sh0 = (x - x0) * scale, (y - y0) * scale, w * scale, h * scale
+    best = None
+    for shape, fw, fh in sizes_px:
+        fw, fh = fw * scale, fh * scale
+        # positions of the format's box overlapping the candidate's: its corner on a one-pixel grid
+        us = np.arange(np.floor(min(sx, sx + sw0 - fw)), np.ceil(max(sx, sx + sw0 - fw)) + 1.0)
+        vs = np.arange(np.floor(min(sy, sy + sh0 - fh)), np.ceil(max(sy, sy + sh0 - fh)) + 1.0)
+        for u in us:
+            for v in vs:
+                if box_iou((u, v, fw, fh), (sx, sy, sw0, sh0)) < white.white_format_min_iou:
+                    continue
+                if shape == "circle":
+                    support = edge_support(gradients, u + fw / 2.0, v + fh / 2.0, fw / 2.0, config)
+                else:
+                    support = box_edge_support(gradients, (int(round(u)), int(round(v)), int(round(fw)),
+                                                           int(round(fh))), config)
+                if best is None or support > best[0]:
+                    best = (support, shape, (u, v, fw, fh))
+    if best is None or best[0] < white.white_min_edge_support:
+        return None
+    support, shape, (u, v, fw, fh) = best
+    return shape, (int(round(x0 + u / scale)), int(round(y0 + v / scale)), int(round(fw / scale)),
+                   int(round(fh / scale))), float(support)
+
+
+def ring_around(bgr: np.ndarray, bbox: Box, scale: float, config: PipelineConfig) -> Optional[Box]:
+    """Box of the outer outline of an achromatic ring around the disc ``bbox`` (full-image pixels of ``bgr``),
+    or None: a grey-ringed disc (2.53.1's GENERELL ring) whose ring runs into a pale wall reads as its inner
+    field alone. The outline is sought concentric, ``white_ring_ratios`` x the disc's radius, in the image
+    scanned at ``scale``; the ring's own outline is weaker than a face's, so ``white_ring_min_support`` of
+    its points on radial gradients suffice, and the ring between must be achromatic."""
+    white = config.white
+    lo_ratio, hi_ratio = white.white_ring_ratios
+    x, y, w, h = bbox
+    height, width = bgr.shape[:2]
+    reach = int(np.ceil(hi_ratio * max(w, h) / 2.0)) + 2
+    cx, cy = x + w / 2.0, y + h / 2.0
+    x0, y0 = max(0, int(cx - reach)), max(0, int(cy - reach))
+    x1, y1 = min(width, int(cx + reach) + 1), min(height, int(cy + reach) + 1)
+    crop = bgr[y0:y1, x0:x1]
+    if crop.shape[0] < 8 or crop.shape[1] < 8:
+        return None
+    small = cv2.resize(crop, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA) if scale < 1 else crop
+    grey = cv2.cvtColor(small, cv2.COLOR_BGR2GRAY)
+    gradients = (cv2.Sobel(grey, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(grey, cv2.CV_32F, 0, 1, ksize=3))
+    cu, cv, r = (cx - x0) * scale, (cy - y0) * scale, max(w, h) / 2.0 * scale
+    du, dv, ratio = np.meshgrid([-1.0, 0.0, 1.0], [-1.0, 0.0, 1.0],
+                                np.linspace(lo_ratio, hi_ratio, white.white_ring_steps), indexing="ij")
+    support = edge_support(gradients, cu + du.ravel(), cv + dv.ravel(), r * ratio.ravel(), config)
+    best = int(np.argmax(support))
+    if support[best] < white.white_ring_min_support:
+        return None
+    ou, ov, outer = cu + du.ravel()[best], cv + dv.ravel()[best], r * ratio.ravel()[best]
+    ring = np.zeros(grey.shape, np.uint8)
+    cv2.circle(ring, (int(round(ou)), int(round(ov))), int(round(outer - 1)), 255, -1)
+    cv2.circle(ring, (int(round(ou)), int(round(ov))), int(round(r + 1)), 0, -1)
+    saturation = cv2.cvtColor(small, cv2.COLOR_BGR2HSV)[:, :, 1][ring > 0]
+    if saturation.size == 0 or np.mean(saturation <= white.white_max_saturation) < white.white_min_achromatic:
+        return None
+    side = int(round(2 * outer / scale))
+    return int(round(x0 + ou / scale - side / 2.0)), int(round(y0 + ov / scale - side / 2.0)), side, side
+
+
 def _centre_inside(a: Box, b: Box) -> bool:
     cu, cv = a[0] + a[2] / 2.0, a[1] + a[3] / 2.0
     return b[0] <= cu < b[0] + b[2] and b[1] <= cv < b[1] + b[3]
@@ -314,9 +437,9 @@ def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config
     grey = cv2.cvtColor(small, cv2.COLOR_BGR2GRAY)
     edges = edge_map(grey, config)
     gradients = (cv2.Sobel(grey, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(grey, cv2.CV_32F, 0, 1, ksize=3))
-    labels, ids, boxes = white_cells(cv2.cvtColor(small, cv2.COLOR_BGR2HSV), edges, (lo * scale, hi * scale),
-                                     config)
-    faces = []
+    hsv = cv2.cvtColor(small, cv2.COLOR_BGR2HSV)
+    labels, ids, boxes = white_cells(hsv, edges, (lo * scale, hi * scale), config)
+    faces = hough_discs(grey, hsv, gradients, (lo * scale, hi * scale), config) if config.white.white_hough else []
     for box, members in group_cells(boxes, (lo * scale, hi * scale), config.white.white_join_reach,
                                     config.white.white_max_aspect, config.white.white_join_gap * lo * scale,
                                     config.white.white_join_steps):

@@ -18,6 +18,7 @@ import numpy as np
 
 from ..face_normal import world_face_normal
 from .classify import classify_segment
+from .colour import Segment, inscribed_disc
 from .detection import Detection
 from .hough import outer_ring, weak_colour
 from .locate import bbox_centre, locate
@@ -25,7 +26,14 @@ from .pair_context import PairContext
 from .search_space import valid_depth
 from .shape import catalogue_shapes
 from .sizing import measure_segment, metric_size, round_to_format
-from .white_outlines import WhiteCandidate
+from .white_outlines import (
+    WhiteCandidate,
+    face_side_range_px,
+    format_outline,
+    ring_around,
+    scan_scale,
+    white_formats,
+)
 
 
 def _same_depth(values: np.ndarray, z: float, config) -> np.ndarray:
@@ -103,6 +111,13 @@ def coloured_rim(bgr: np.ndarray, mask: np.ndarray, config) -> bool:
     return step >= config.white.white_rim_saturation_step
 
 
+def coloured_share(bgr: np.ndarray, bbox, config) -> float:
+    """Share of the pixels in ``bbox`` more saturated than an achromatic pixel (``white_max_saturation``)."""
+    x, y, w, h = bbox
+    saturation = cv2.cvtColor(bgr[y : y + h, x : x + w], cv2.COLOR_BGR2HSV)[:, :, 1]
+    return float(np.count_nonzero(saturation > config.white.white_max_saturation)) / max(1, saturation.size)
+
+
 def white_template_ids(catalogue, shape: str, bbox, config) -> List[str]:
     """Ids of the white entries a ``shape`` outline of box ``bbox`` may be."""
     shapes = catalogue_shapes(shape, bbox[2], bbox[3])
@@ -110,11 +125,56 @@ def white_template_ids(catalogue, shape: str, bbox, config) -> List[str]:
     return [e.id for e in catalogue.filter(colours=["white"], shapes=list(shapes), exclude=exclude)]
 
 
-def judge_white(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey: np.ndarray
-                ) -> Optional[Detection]:
-    """The white sign ``cand`` is, or None (cut, off the search space, no white format, not planar, not
-    standing free, no support, no template resembling it). ``grey``: the left image in grey levels."""
+def format_candidates(cand: WhiteCandidate, pair: PairContext, depth_m: float, grey: np.ndarray
+                      ) -> List[WhiteCandidate]:
+    """``cand`` read again as the outline of a white format at ``depth_m`` that lies best on strong edges near
+    it (:func:`.white_outlines.format_outline`): of its own shape, and of the other (a disc above its plate
+    read as a panel; a panel cut short holds its zone's disc, whose outline may lie on stronger edges). None
+    with ``white_format_fit`` off. ``grey``: the left image in grey levels."""
     camera, catalogue, config = pair.camera, pair.catalogue, pair.config
+    if not config.white.white_format_fit or not depth_m > 0:
+        return []
+    exclude = tuple(config.classification.exclude)
+    sizes = sorted({(e.shape if e.shape == "circle" else "rectangle", fw * camera.fx / depth_m,
+                     fh * camera.fy / depth_m)
+                    for e in catalogue.filter(colours=["white"], exclude=exclude) for fw, fh in e.formats.values()
+                    if max(fw, fh) <= config.white.white_max_side_m})
+    scale = scan_scale(face_side_range_px(camera, white_formats(catalogue, config), config)[0], config)
+    out = []
+    for same in (True, False):
+        found = format_outline(grey, cand.segment.bbox, [s for s in sizes if (s[0] == cand.shape) == same],
+                               scale, config)
+        if found is not None:
+            out += _outline_candidate(found[0], found[1], grey.shape[:2], cand.segment.touches_border)
+    return out
+
+
+def _outline_candidate(shape: str, box, image_shape, touches_border: bool) -> List[WhiteCandidate]:
+    """A candidate of ``shape`` filling ``box`` (none when the box leaves the image)."""
+    x, y, w, h = box
+    height, width = image_shape
+    if x < 0 or y < 0 or x + w > width or y + h > height or w < 2 or h < 2:
+        return []
+    if shape == "circle":
+        mask, contour = inscribed_disc(w)
+        h = w
+    else:
+        mask = np.full((h, w), 255, np.uint8)
+        contour = np.array([[[0, 0]], [[w - 1, 0]], [[w - 1, h - 1]], [[0, h - 1]]], np.int32)
+    seg = Segment("white", (x, y, w, h), mask, contour + np.array([x, y]), int(np.count_nonzero(mask)),
+                  touches_border, source="white")
+    return [WhiteCandidate(seg, shape)]
+
+
+def judge_white(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey: np.ndarray,
+                refit_format: bool = True, panels: Optional[list] = None) -> Optional[Detection]:
+    """The white sign ``cand`` is, or None (cut, off the search space, no white format, not planar, not
+    standing free, no support, no template resembling it). ``grey``: the left image in grey levels. A face
+    whose size fits no white format is judged once more as the best outline of a format at its depth
+    (:func:`format_candidates`), unless ``refit_format`` is off. ``panels``: a list that receives the box of
+    every rectangle standing free with a white panel's format and planarity, whatever its template scores."""
+    camera, catalogue, config = pair.camera, pair.catalogue, pair.config
+    white = config.white
     seg = cand.segment
     if seg.touches_border:
         return None
@@ -133,11 +193,11 @@ def judge_white(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
     else:
         width_m, height_m = size.width_m, size.height_m
     match = round_to_format(catalogue, [catalogue[t] for t in ids], width_m, height_m, config.size.size_tolerance)
-    if match is None:
-        return None
-    ids = [t for t in match.template_ids if t in ids]
+    ids = [t for t in match.template_ids if t in ids] if match is not None else []
     if not ids:
-        return None
+        refits = format_candidates(cand, pair, size.depth_m, grey) if refit_format else []
+        found = [d for d in (judge_white(c, pair, depth, grey, False, panels) for c in refits) if d is not None]
+        return max(found, key=lambda d: d.classification_indicator, default=None)
     planarity = pair.planarity(depth, seg.bbox, seg.mask)
     if planarity.indicator < config.planarity.detection_threshold:
         return None
@@ -149,6 +209,10 @@ def judge_white(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
     beside = side_share(depth, seg.bbox, z, config)
     if beside is not None and beside > config.white.white_max_side_share:
         return None
+    if cand.shape == "rectangle" and coloured_share(pair.left, seg.bbox, config) > white.white_max_coloured_share:
+        return None  # a coloured zone panel (2.59.5's red ring) read by its outline: the colour step's sign
+    if panels is not None and cand.shape == "rectangle":
+        panels.append(seg.bbox)
     supported = support_share(depth, seg.bbox, z, config) >= config.white.white_min_support or \
         pole_share(grey, seg.bbox, config) >= config.white.white_min_pole_rows
     cls = classify_segment(pair.left, seg.bbox, catalogue, ids, config)
@@ -169,17 +233,61 @@ def judge_white(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
 
 
 def white_detections(pair: PairContext, depth: np.ndarray, candidates: Sequence[WhiteCandidate],
-                     found: Sequence[Detection]) -> List[Detection]:
+                     found: Sequence[Detection], panel_boxes: Optional[list] = None) -> List[Detection]:
     """White and grey signs among ``candidates`` whose centre lies in no sign ``found`` already (a white rim
-    or panel of a coloured sign)."""
+    or panel of a coloured sign). ``panel_boxes``: a list that receives the white panel outlines seen (their
+    zone discs are no signs, for the Hough fallback either)."""
     taken = [d.bbox for d in found]
     grey = cv2.cvtColor(pair.left, cv2.COLOR_BGR2GRAY) if candidates else None
-    out = []
+    out, panels = [], []
     for cand in candidates:
         cu, cv = bbox_centre(cand.segment.bbox)
         if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken):
             continue
-        det = judge_white(cand, pair, depth, grey)
+        det = judge_white(cand, pair, depth, grey, panels=panels)
+        ring = ring_candidate(cand, pair)
+        outer = judge_white(ring, pair, depth, grey, panels=panels) if ring is not None else None
+        if outer is not None and (det is None or outer.classification_indicator > det.classification_indicator):
+            det = outer
         if det is not None:
             out.append(det)
-    return out
+    if panel_boxes is not None:
+        panel_boxes += panels
+    return without_panel_discs(out, panels, pair.config)
+
+
+def ring_candidate(cand: WhiteCandidate, pair: PairContext) -> Optional[WhiteCandidate]:
+    """The disc ``cand`` read as the outer outline of an achromatic ring around it
+    (:func:`.white_outlines.ring_around`), or None (no ring, a panel, or ``white_ring_ratios`` empty)."""
+    config = pair.config
+    if cand.shape != "circle" or config.white.white_ring_min_support > 1.0:
+        return None
+    scale = scan_scale(face_side_range_px(pair.camera, white_formats(pair.catalogue, config), config)[0], config)
+    box = ring_around(pair.left, cand.segment.bbox, scale, config)
+    if box is None:
+        return None
+    x, y, side, _ = box
+    height, width = pair.left.shape[:2]
+    if x < 0 or y < 0 or x + side > width or y + side > height or side < 4:
+        return None
+    mask, contour = inscribed_disc(side)
+    seg = Segment("white", box, mask, contour + np.array([x, y]), int(np.count_nonzero(mask)),
+                  cand.segment.touches_border, source="white")
+    return WhiteCandidate(seg, "circle")
+
+
+def _inside_share(a, b) -> float:
+    """Share of box ``a``'s area inside box ``b``."""
+    iw = max(0, min(a[0] + a[2], b[0] + b[2]) - max(a[0], b[0]))
+    ih = max(0, min(a[1] + a[3], b[1] + b[3]) - max(a[1], b[1]))
+    return iw * ih / float(max(1, a[2] * a[3]))
+
+
+def without_panel_discs(detections: Sequence[Detection], panels: Sequence, config) -> List[Detection]:
+    """``detections`` without the discs that lie inside a white panel (``white_disc_in_panel`` of their box),
+    detected or only of a panel's format, planar and standing free (``panels``): an end-of-zone panel carries
+    its zone's disc or ring, which reads as a disc sign of its own and may resemble a disc template (2.53.1's
+    grey ring, 2.58) more than the panel its template."""
+    panels = list(panels) + [d.bbox for d in detections if d.shape != "circle"]
+    return [d for d in detections if d.shape != "circle"
+            or not any(_inside_share(d.bbox, p) >= config.white.white_disc_in_panel for p in panels)]

@@ -8,16 +8,26 @@ from pipeline_scenes import CAMERA, POSE, noisy_background, sign_scene
 
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.config import with_settings
+from signmapper_core.pipeline.detection import Detection
 from signmapper_core.pipeline.white_outlines import (
     edge_support,
     face_side_range_px,
+    format_outline,
     group_cells,
     read_face,
+    ring_around,
     scan_scale,
     white_candidates,
     white_formats,
 )
-from signmapper_core.pipeline.white_signs import coloured_rim, pole_share, side_share, support_share
+from signmapper_core.pipeline.white_signs import (
+    coloured_rim,
+    coloured_share,
+    pole_share,
+    side_share,
+    support_share,
+    without_panel_discs,
+)
 
 FORWARD, RIGHT, DOWN = POSE.rotation[:, 2], POSE.rotation[:, 0], POSE.rotation[:, 1]
 CONFIG = with_settings(PipelineConfig(), {"white": {"white_signs": True}})
@@ -252,3 +262,102 @@ def test_a_blank_white_board_on_a_pole_is_not_a_sign(catalogue):
     left, depth = _with_pole(left, depth, bbox, 7.0, 30.0)
     assert white_candidates(left, _sides(catalogue), CONFIG) != []  # its outline is a candidate...
     assert detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG) == []  # ...but no sign
+
+
+def test_a_disc_whose_field_is_cut_into_small_cells_is_found_by_its_round_outline():
+    # a white disc whose field dark lines cut into cells far below a part of a face (digits and stripes of a
+    # small far disc do that): no union of cells reads as a face, the Hough transform finds its outline
+    background = noisy_background(200, 200, seed=3, level=120, sigma=10)
+    left = background.copy()
+    cv2.circle(left, (100, 100), 32, (228, 228, 228), -1)
+    for k in range(70, 131, 6):
+        cv2.line(left, (k, 60), (k, 140), (60, 60, 60), 2)
+        cv2.line(left, (60, k), (140, k), (60, 60, 60), 2)
+    field = np.zeros((200, 200), np.uint8)
+    cv2.circle(field, (100, 100), 30, 255, -1)
+    left[field == 0] = background[field == 0]
+    cv2.circle(left, (100, 100), 32, (40, 40, 40), 2)
+    left = cv2.GaussianBlur(left, (0, 0), 0.8)
+    no_hough = with_settings(CONFIG, {"white": {"white_hough": False}})
+    assert white_candidates(left, (24.0, 120.0), no_hough) == []
+    cands = white_candidates(left, (24.0, 120.0), CONFIG)
+    assert [c.shape for c in cands] == ["circle"]
+    x, y, w, h = cands[0].segment.bbox
+    assert abs(x + w / 2 - 100) <= 2 and abs(y + h / 2 - 100) <= 2 and 64 <= w <= 72 and w == h
+
+
+def test_a_face_read_too_large_is_read_again_as_the_format_whose_outline_lies_on_edges():
+    # a 45 px disc before a pale board up and left of it: read with the board, its box is 56 px, between the
+    # 30, 45 and 67.5 px formats at its depth; the 45 px circle lies on the disc's outline
+    grey = cv2.cvtColor(noisy_background(160, 160, seed=4, level=110, sigma=8), cv2.COLOR_BGR2GRAY)
+    cv2.rectangle(grey, (40, 40), (95, 85), 205, -1)
+    cv2.circle(grey, (90, 90), 22, 235, -1)
+    cv2.circle(grey, (90, 90), 22, 60, 1)
+    grey = cv2.GaussianBlur(grey, (0, 0), 0.8)
+    sizes = [("circle", 30.0, 30.0), ("circle", 45.0, 45.0), ("circle", 67.5, 67.5), ("rectangle", 37.5, 52.5)]
+    shape, (x, y, w, h), support = format_outline(grey, (58, 58, 56, 56), sizes, 1.0, CONFIG)
+    assert shape == "circle" and (w, h) == (45, 45) and abs(x - 68) <= 1 and abs(y - 68) <= 1
+    assert support >= CONFIG.white.white_min_edge_support
+    # a rectangle cut short (its lower third) reads as the panel format it is part of
+    grey = np.full((200, 160), 100, np.uint8)
+    cv2.rectangle(grey, (50, 40), (99, 109), 230, -1)  # a 50 x 70 px panel
+    grey = cv2.GaussianBlur(grey, (0, 0), 0.8)
+    shape, box, _ = format_outline(grey, (50, 40, 50, 48), [("rectangle", 50.0, 70.0)], 1.0, CONFIG)
+    assert shape == "rectangle" and abs(box[0] - 50) <= 1 and abs(box[1] - 40) <= 1 and box[2:] == (50, 70)
+    # no outline of a format near: none
+    flat = np.full((160, 160), 120, np.uint8)
+    assert format_outline(flat, (58, 58, 56, 56), sizes, 1.0, CONFIG) is None
+
+
+def test_a_grey_ring_around_a_disc_is_its_outer_outline():
+    # 2.53.1: a grey ring (radius 36) around a white field (24) before a pale wall; the field alone was the
+    # candidate, the ring's outer outline is weaker than a face's but still read
+    wall = noisy_background(160, 160, seed=5, level=172, sigma=6)
+    bgr = wall.copy()
+    cv2.circle(bgr, (80, 80), 36, (135, 135, 135), -1)
+    cv2.circle(bgr, (80, 80), 24, (235, 235, 235), -1)
+    cv2.circle(bgr, (80, 80), 24, (50, 50, 50), 1)
+    bgr = cv2.GaussianBlur(bgr, (0, 0), 0.8)
+    x, y, w, h = ring_around(bgr, (56, 56, 49, 49), 1.0, CONFIG)
+    assert abs(x + w / 2 - 80.5) <= 2 and abs(y + h / 2 - 80.5) <= 2 and 69 <= w <= 75 and w == h
+    # a white disc alone before the wall, and a disc in a red ring, have no achromatic ring around them
+    plain = wall.copy()
+    cv2.circle(plain, (80, 80), 24, (235, 235, 235), -1)
+    cv2.circle(plain, (80, 80), 24, (50, 50, 50), 1)
+    assert ring_around(cv2.GaussianBlur(plain, (0, 0), 0.8), (56, 56, 49, 49), 1.0, CONFIG) is None
+    red = wall.copy()
+    cv2.circle(red, (80, 80), 36, (40, 40, 200), -1)
+    cv2.circle(red, (80, 80), 24, (235, 235, 235), -1)
+    assert ring_around(cv2.GaussianBlur(red, (0, 0), 0.8), (56, 56, 49, 49), 1.0, CONFIG) is None
+
+
+def _white_detection(template_id, shape, bbox):
+    return Detection(template_id=template_id, name=template_id, colour="white", shape=shape, width_m=0.6,
+                     height_m=0.6, format="normal", detection_indicator=0.9, classification_indicator=0.8,
+                     status="accepted", u=0.0, v=0.0, bbox=bbox, depth_m=8.0, position=np.zeros(3), source="white")
+
+
+def test_a_disc_inside_a_white_panel_is_the_panels_zone_disc():
+    panel = _white_detection("2.59.2", "rectangle", (100, 100, 50, 70))
+    inner = _white_detection("2.53.1", "circle", (108, 125, 34, 34))  # the zone's ring on the panel
+    alone = _white_detection("2.55", "circle", (300, 100, 50, 50))
+    assert without_panel_discs([panel, inner, alone], [], CONFIG) == [panel, alone]
+    # a panel outline that no template resembled (not detected) still holds its disc
+    assert without_panel_discs([inner, alone], [(100, 100, 50, 70)], CONFIG) == [alone]
+    # a disc merely overlapping a panel's edge is not inside it
+    beside = _white_detection("2.55", "circle", (130, 100, 50, 50))
+    assert without_panel_discs([panel, beside], [], CONFIG) == [panel, beside]
+
+
+def test_a_red_ringed_zone_panel_is_coloured_but_a_white_panel_in_warm_light_is_not():
+    panel = np.full((70, 50, 3), 235, np.uint8)
+    cv2.putText(panel, "30", (10, 45), cv2.FONT_HERSHEY_SIMPLEX, 0.8, (20, 20, 20), 2)
+    warm = cv2.cvtColor(panel, cv2.COLOR_BGR2HSV)
+    warm[:, :, 0], warm[:, :, 1] = 10, np.minimum(warm[:, :, 1] + 40, 255)  # the pink light of a warm façade
+    warm = cv2.cvtColor(warm, cv2.COLOR_HSV2BGR)
+    ringed = panel.copy()
+    cv2.circle(ringed, (25, 35), 19, (40, 40, 200), 10)  # 2.59.5's red ring (0.40 of its panel on a tune drive)
+    box = (0, 0, 50, 70)
+    limit = CONFIG.white.white_max_coloured_share
+    assert coloured_share(panel, box, CONFIG) == 0.0 and coloured_share(warm, box, CONFIG) < limit
+    assert coloured_share(ringed, box, CONFIG) > limit
