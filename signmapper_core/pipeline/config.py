@@ -417,7 +417,7 @@ class WhiteConfig:
     free, a support below and NCC among the white entries."""
 
     # off by default: on held-out drives (seeds 1720-1729) it finds 92 % of the white signs in view and names 87 %
-    # of those right, at ~2 x the CPU of a pair (the outline scan and the Hough transform cover the whole image);
+    # of those right, at ~2.5 x the CPU of a pair (the outline scan and the Hough transform cover the whole image);
     # mapsigns offers it
     white_signs: bool = False
     white_max_side_m: float = 0.9  # formats up to this: the 1.2 m discs (motorways) would set the cost
