@@ -110,16 +110,23 @@ def breakdowns(records: list, columns: Callable[[list], List[str]], header: Sequ
 
 
 def run_classify(args, catalogue, config: PipelineConfig) -> int:
-    signs = select(load_manifest(args.data / args.manifest, known_ids={e.id for e in catalogue}),
-                   args.split, args.limit, args.seed)
     clf = make_classifier(args.classifier, catalogue, args.model)
+    signs = load_manifest(args.data / args.manifest, known_ids={e.id for e in catalogue})
+    # a network knows the ids it was trained on: catalogue entries added since (the white signs, read by NCC in
+    # white_signs.py) are neither its candidates nor signs it can be asked about
+    unknown = Counter(s.ssv_id for s in signs if not clf.knows([s.ssv_id]))
+    if unknown:
+        print(f"left out {sum(unknown.values())} signs whose ids the {clf.name} classifier does not know: "
+              f"{', '.join(f'{t} ({n})' for t, n in sorted(unknown.items()))}")
+    signs = select([s for s in signs if s.ssv_id not in unknown], args.split, args.limit, args.seed)
     chosen = config.classification.classification_threshold
     threshold = chosen if chosen is not None else clf.accept_threshold
     records = []
     start = time.perf_counter()
     for sign in signs:
         entry = catalogue[sign.ssv_id]
-        candidates = [e.id for e in catalogue.filter(colours=[entry.colour], shapes=[entry.shape])]
+        candidates = [e.id for e in catalogue.filter(colours=[entry.colour], shapes=[entry.shape])
+                      if clf.knows([e.id])]
         result = clf.classify(sign.load_image(), sign.bbox, candidates)
         predicted, score = result.template_id, result.score
         records.append({"sign": sign, "id": predicted, "score": score, "n_cand": len(candidates)})

@@ -90,6 +90,9 @@ def test_classify_runs_the_classifier_on_every_selected_crop(tiny_set, capsys, m
     class Fake:
         name, accept_threshold = "fake", 0.6
 
+        def knows(self, ids):
+            return True
+
         def classify(self, image, bbox, candidates):
             calls.append((image.shape, tuple(bbox), set(candidates)))
             return ClassificationResult(candidates[0] if len(candidates) == 1 else "2.30-50", 0.9)
@@ -112,6 +115,27 @@ def test_classify_with_ncc_gets_rendered_templates_right(tiny_set, capsys):
     assert evaluate.main(["classify", "--data", str(tiny_set), "--split", "report"]) == 0
     out = capsys.readouterr().out
     assert "split=report, 2 signs" in out
+    assert _table_row(out, "per SSV id", "2.30-50", "same")[4] == "100.0%"
+
+
+def test_classify_leaves_out_the_signs_and_candidates_the_network_does_not_know(catalogue, tmp_path, capsys):
+    """The white signs were added to the catalogue after the network was trained: a crop of one is left out
+    (and named), and no other sign gets one of them as a candidate, instead of the network refusing the run."""
+    network = evaluate.make_classifier("cnn", catalogue)
+    unknown = [e.id for e in catalogue if not network.knows([e.id])]
+    assert "2.55" in unknown
+    (tmp_path / "crops").mkdir()
+    rows = []
+    for i, tid in enumerate(("2.55", "2.30-50")):
+        canvas = np.full((70, 70, 3), 128, np.uint8)
+        box = _paste(canvas, catalogue, tid, 8, 8, 54)
+        cv2.imwrite(str(tmp_path / "crops" / f"{i}.png"), canvas)
+        rows.append([f"crops/{i}.png", *box, tid, "same", "report", "constructed"])
+    _write_csv(tmp_path / "crops.csv", MANIFEST_COLUMNS, rows)
+    assert evaluate.main(["classify", "--data", str(tmp_path), "--split", "all", "--classifier", "cnn"]) == 0
+    out = capsys.readouterr().out
+    assert "left out 1 signs whose ids the cnn classifier does not know: 2.55 (1)" in out
+    assert "split=all, 1 signs" in out
     assert _table_row(out, "per SSV id", "2.30-50", "same")[4] == "100.0%"
 
 
