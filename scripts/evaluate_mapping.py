@@ -15,6 +15,8 @@ the review step decides on them. Supplementary plates have rows of their own
 for plates at least 40 px high. The white and grey signs and the coloured ones have rows of their own
 too (``family_evaluation``): detected, correctly classified, false positives per 100 pairs;
 ``--white-share`` generates drives with white signs and white distractors.
+``--evidence`` lists, for every fused sign mapped with a wrong id, what each of its observations read
+(``misread_evidence``): whether a vote could have found the true id, or the classifier never saw it.
 """
 
 from __future__ import annotations
@@ -40,6 +42,7 @@ from signmapper_core.family_evaluation import (  # noqa: E402
     family_figures,
 )
 from signmapper_core.mapping import map_drive  # noqa: E402
+from signmapper_core.misread_evidence import misread_lines  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, WhiteConfig  # noqa: E402
 from signmapper_core.plate_evaluation import PlateFigures, evaluate_plates  # noqa: E402
@@ -104,6 +107,8 @@ def main(argv=None) -> int:
     parser.add_argument("--workers", type=int, default=0, help="worker processes (0 = all cores)")
     parser.add_argument("--white-signs", action="store_true",
                         help="also look for white and grey signs (the white step, off by default)")
+    parser.add_argument("--evidence", action="store_true",
+                        help="per-observation readings of every fused sign mapped with a wrong id")
     args = parser.parse_args(argv)
 
     folders = list(args.drives) + [generated_drive(s, args.pairs, args.depth, args.legacy_faces, args.white_share)
@@ -146,6 +151,9 @@ def main(argv=None) -> int:
                 accepted_total, accepted_wrong, accepted_unmatched = (accepted_total + n, accepted_wrong + wrong,
                                                                       accepted_unmatched + unmatched)
             print(format_report(report, f"{head}: {'per-pair detections' if kind == 'detections' else 'fused signs'}"))
+            misread = misread_lines(signs, ref_ids, report.match) if kind == "signs" and args.evidence else []
+            if misread:
+                print("\n".join(["Fused signs with a wrong id, observation by observation:"] + misread))
             print()
         print("\n".join(plates.lines(f"{head}: supplementary plates")))
         print()

@@ -1,0 +1,42 @@
+"""Per-observation evidence of misread fused signs, on constructed observations."""
+
+import numpy as np
+
+from signmapper_core.drive import PairRecord
+from signmapper_core.evaluation import evaluate
+from signmapper_core.fusion import Observation, fuse_observations
+from signmapper_core.geometry import Pose
+from signmapper_core.misread_evidence import NOT_A_CANDIDATE, misread_lines
+from signmapper_core.pipeline.detection import Detection
+
+WEST = np.array([-1.0, 0.0, 0.0])
+
+
+def observe(pos, pair_index, template_id, scores, shape="circle"):
+    camera = np.array([2.0 * pair_index, 0.0, 2.4])
+    depth = float(np.linalg.norm(np.asarray(pos[:2]) - camera[:2]))
+    detection = Detection(template_id, "", "red", shape, 0.6, 0.6, "normal", 0.95, scores[template_id], "accepted",
+                          500.0, 400.0, (10, 10, 40 + pair_index, 42), depth, np.asarray(pos, float), scores=scores,
+                          normal_world=WEST)
+    record = PairRecord(pair_index, f"p{pair_index:03d}", 0.2 * pair_index, Pose(*camera, 90.0, 0.0, 0.0),
+                        None, None, None)
+    return Observation(detection, record)
+
+
+def test_misread_sign_lists_each_observation_with_the_true_ids_score_and_a_right_sign_is_not_listed():
+    misread, right = [20.0, 3.0, 2.5], [40.0, 3.0, 2.5]
+    obs = [observe(misread, 3, "2.07", {"2.07": 0.73, "2.11": 0.02, "2.20-10": 0.10}),
+           observe(misread, 4, "3.01", {"3.01": 0.95}, shape="octagon"),
+           observe(misread, 5, "2.07", {"2.07": 0.57, "2.11": 0.01})]
+    obs += [observe(right, k, "2.01", {"2.01": 0.97, "2.02": 0.01}) for k in (13, 14)]
+    signs = fuse_observations(obs)
+    reference_ids = ["2.11", "2.01"]
+    report = evaluate([s.position for s in signs], [s.template_id for s in signs], [misread, right], reference_ids,
+                      np.array([[0.0, 0.0], [60.0, 0.0]]), 0.75)
+    lines = misread_lines(signs, reference_ids, report.match, top=2)
+    assert len(lines) == 4  # one heading, three observations: the right sign has none
+    assert lines[0].startswith("  sign 1: true 2.11, mapped 2.07") and "3 observations" in lines[0]
+    assert "pair p003: read 2.07 (0.73" in lines[1] and "true id 2.11: 0.02" in lines[1]
+    assert "best: 2.07 0.73, 2.20-10 0.10" in lines[1]
+    assert "read 3.01" in lines[2] and f"true id 2.11: {NOT_A_CANDIDATE}" in lines[2] and "octagon" in lines[2]
+    assert "45x42 px at 10.4 m" in lines[3]  # box 40 + pair index wide; 10 m ahead, 3 m aside
