@@ -366,6 +366,10 @@ class ClassificationConfig:
     # around the colour part (its blurred edge would count as surround)
     same_sign_max_iou: float = 0.3  # detections of one pair overlapping more (or holding the other's centre) are
     # one sign found twice, or a part of it found as a sign: the best (detection x classification) is kept
+    part_max_area_share: float = 0.7  # ...but a detection inside an accepted one's face covering at most this share
+    # of it is that sign's part whatever its indicators: the plain blue field of a no-parking disc (2.50, ~40 % of
+    # its face) was read as a blue disc (2.34) and kept for its flatter patch (tune drives 801-810: 2 of 7 accepted
+    # signs with a wrong id); a face found twice (about the same box) is not a part
 
     def __post_init__(self):
         from .classifiers import CLASSIFIERS

@@ -262,9 +262,28 @@ def _centre_inside(a, b) -> bool:
     return x <= cu < x + w and y <= cv < y + h
 
 
-def suppress_overlaps(detections: Sequence[Detection], max_iou: float) -> List[Detection]:
-    """Keep the best of overlapping detections (one sign found twice, or a part of it found as a sign)."""
-    ranked = sorted(detections, key=lambda d: d.detection_indicator * d.classification_indicator, reverse=True)
+def _part_of(inner, outer, max_area_share: float) -> bool:
+    """Whether box ``inner`` lies inside box ``outer`` (give or take 5 % of its size) and covers at most
+    ``max_area_share`` of it."""
+    x, y, w, h = inner
+    ox, oy, ow, oh = outer
+    sx, sy = 0.05 * ow, 0.05 * oh
+    inside = x >= ox - sx and y >= oy - sy and x + w <= ox + ow + sx and y + h <= oy + oh + sy
+    return inside and w * h <= max_area_share * ow * oh
+
+
+def suppress_overlaps(detections: Sequence[Detection], max_iou: float,
+                      part_max_area_share: float = 0.0) -> List[Detection]:
+    """Keep the best of overlapping detections (one sign found twice, or a part of it found as a sign).
+
+    A detection inside an accepted one's face, covering at most ``part_max_area_share`` of it, is a part of
+    that sign read as a sign of its own (the blue field of a no-parking disc read as a blue disc): it goes
+    whatever its indicators, which a small part inside a face can have higher than the whole (a flatter patch).
+    """
+    parts = {id(d) for d in detections for o in detections
+             if o is not d and o.status == "accepted" and _part_of(d.bbox, o.bbox, part_max_area_share)}
+    ranked = sorted((d for d in detections if id(d) not in parts),
+                    key=lambda d: d.detection_indicator * d.classification_indicator, reverse=True)
     kept: List[Detection] = []
     for det in ranked:
         if all(box_iou(det.bbox, k.bbox) <= max_iou and not _centre_inside(det.bbox, k.bbox)
@@ -350,7 +369,8 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
         detections += white_detections(pair, depth, whites, detections, panels)
     with timer("hough"):
         detections += _hough_detections(pair, depth, search, detections, panels)
-    signs = suppress_overlaps(detections, config.classification.same_sign_max_iou)
+    signs = suppress_overlaps(detections, config.classification.same_sign_max_iou,
+                              config.classification.part_max_area_share)
     with timer("plates"):  # a window around a click looks for the sign alone
         return signs + (find_plates(pair, depth, signs) if pair.is_whole_image else [])
 

@@ -150,6 +150,25 @@ def test_overlapping_detections_keep_the_best():
     assert kept == [whole, other]  # a part inside a sign and the same sign found twice go
 
 
+@pytest.mark.parametrize("face_status, kept_id", [("accepted", "2.50"), ("review", "2.34")])
+def test_a_part_of_an_accepted_face_goes_even_when_its_indicators_are_higher(face_status, kept_id):
+    """The plain blue field of a no-parking disc (2.50) read as a blue disc (2.34): the field is flatter than the
+    whole face, so its detection x classification is higher; inside an accepted face it is that sign's part."""
+    from signmapper_core.pipeline.detect import suppress_overlaps
+
+    def det(template_id, bbox, det_ind, cls, status):
+        return Detection(template_id, "", "red", "circle", 0.6, 0.6, "normal", det_ind, cls, status, 0, 0, bbox, 8.0,
+                         np.zeros(3))
+
+    settings = PipelineConfig().classification
+    face = det("2.50", (1300, 636, 82, 83), 0.91, 0.99, face_status)  # boxes and indicators as on drive seed 809
+    field = det("2.34", (1316, 652, 51, 51), 1.0, 0.97, "accepted")
+    twice = det("2.50", (1302, 637, 80, 82), 0.99, 0.98, "accepted")  # the same face found twice is not a part
+    assert [d.template_id for d in suppress_overlaps([field, face], settings.same_sign_max_iou,
+                                                     settings.part_max_area_share)] == [kept_id]
+    assert suppress_overlaps([face, twice], settings.same_sign_max_iou, settings.part_max_area_share) == [twice]
+
+
 def test_sign_split_by_a_pole_in_front_is_found(catalogue):
     sign = _world(8.0, 0.5, 0.3)
     left, depth, (x, y, w, h) = sign_scene(catalogue, "2.32", "normal", sign, background_depth=30.0)
