@@ -18,7 +18,7 @@ APT_PACKAGES := qgis python3-qgis qgis-providers python3-venv python3-pip python
                 tesseract-ocr tesseract-ocr-deu tesseract-ocr-fra tesseract-ocr-ita fonts-dejavu-core
 # tesseract-ocr*: reading plate texts (optional for the plugin, needed by the tests);
 # fonts-dejavu-core: the font synthetic drives set plate texts in
-# rsvg-convert: only for make catalogue (rendering the official drawings)
+# rsvg-convert: for make catalogue (rendering the official drawings) and the tests of that build
 BUILD_APT_PACKAGES := librsvg2-bin
 
 export PYTHONPATH := $(SITE_PACKAGES)$(if $(PYTHONPATH),:$(PYTHONPATH))
@@ -34,7 +34,7 @@ QGIS_PROFILE_PLUGINS := $(HOME)/.local/share/QGIS/QGIS3/profiles/default/python/
 TRAIN_VENV := .venv-train
 TRAIN_PY := $(TRAIN_VENV)/bin/python
 
-.PHONY: setup apt venv test test-core demo screenshots desktop-check lint zip deploy catalogue catalogue-sheet import-model train-classifier calibrate-classifier clean help
+.PHONY: setup apt build-apt venv test test-core demo screenshots desktop-check lint zip deploy catalogue catalogue-sheet import-model train-classifier calibrate-classifier clean help
 
 help:
 	@echo "make setup     Debian packages (QGIS), venv with pinned requirements"
@@ -62,6 +62,12 @@ apt:
 
 venv: $(VENV)/.installed
 
+build-apt:
+	@if ! command -v rsvg-convert >/dev/null; then \
+		echo "Installing the SVG renderer for the catalogue build: $(BUILD_APT_PACKAGES)"; \
+		$(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $(BUILD_APT_PACKAGES); \
+	fi
+
 # a .venv that is a link to another checkout's venv (a git worktree) is used as it is: venv cannot recreate it
 # through the link; pip still installs what a changed requirements file adds
 $(VENV)/.installed: requirements.txt requirements-dev.txt requirements-dask.txt
@@ -70,7 +76,8 @@ $(VENV)/.installed: requirements.txt requirements-dev.txt requirements-dask.txt
 	$(PY) -c "import cv2, numpy, qgis.core; print('OpenCV', cv2.__version__, 'numpy', numpy.__version__)"
 	touch $@
 
-test: setup
+# build-apt too: the tests of the catalogue build render official drawings and would skip without it
+test: setup build-apt
 	$(PY) -m pytest
 
 test-core: venv
@@ -126,10 +133,7 @@ catalogue: venv
 	@if [ -z "$(SVG)" ]; then \
 		echo "usage: make catalogue SVG=<folder of the official drawings> (signalo project/images/official/original," \
 		     "see templates/README.md)"; exit 2; fi
-	@if ! command -v rsvg-convert >/dev/null; then \
-		echo "Installing the SVG renderer for the catalogue build: $(BUILD_APT_PACKAGES)"; \
-		$(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $(BUILD_APT_PACKAGES); \
-	fi
+	@$(MAKE) --no-print-directory build-apt
 	$(PY) -m signmapper_core.catalogue.build --svg "$(SVG)"
 	$(PY) -m signmapper_core.catalogue.plate_build --svg "$(SVG)"
 
