@@ -186,7 +186,8 @@ def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: Pipeli
     seen_diamonds = np.zeros((0, 4), np.int64)
     out: List[Field] = []
     diamonds: List[Field] = []
-    min_fill = min(fields.field_min_fill, fields.diamond_min_fill) if diamonds_wanted else fields.field_min_fill
+    field_fill = min(fields.field_min_fill, fields.field_min_bitten_fill)
+    min_fill = min(field_fill, fields.diamond_min_fill) if diamonds_wanted else field_fill
     at_most = np.bincount(grey.ravel(), minlength=256).cumsum()  # pixels at or below each grey value
     for level in grey_levels(fields.field_first_level, fields.field_level_ratio):
         if grey.size - at_most[level] < min_fill * min_side * min_side or at_most[level] < 4 * min_side:
@@ -200,7 +201,7 @@ def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: Pipeli
         short, long_ = np.minimum(ws, hs), np.maximum(ws, hs)
         inside_image = (xs > 0) & (ys > 0) & (xs + ws < width) & (ys + hs < height) & (long_ <= max_side)
         keep = ((short >= min_side) & (long_ <= fields.field_max_aspect * short)
-                & (areas >= fields.field_min_fill * ws * hs) & (areas <= fields.field_max_fill * ws * hs)
+                & (areas >= fields.field_min_bitten_fill * ws * hs) & (areas <= fields.field_max_fill * ws * hs)
                 & inside_image)
         for k in np.flatnonzero(keep) + 1:
             box = stats[k, :4]
@@ -213,7 +214,8 @@ def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: Pipeli
             red = is_red_ring(coarse, config, fields.field_coarse_share)
             if not (red or dark and is_dark_ring(coarse, config, fields.field_coarse_share)):
                 continue
-            field = _ring_field(image, labels, k, box, scale, config, dark)
+            bitten = areas[k - 1] < fields.field_min_fill * box[2] * box[3]
+            field = _ring_field(image, labels, k, box, scale, config, dark, bitten)
             if field is not None and not any(_box_ious(np.asarray(field.bbox), np.asarray([f.bbox]))[0]
                                              >= config.scene.pass_duplicate_iou for f in out):
                 out.append(field)  # the first level that shows a field in its ring stands for it
@@ -252,13 +254,40 @@ def _coarse_contrast(small: np.ndarray, labels: np.ndarray, label: int, box, rin
 
 
 def _ring_field(image, labels, label: int, box, scale: float, config: PipelineConfig,
-                dark: bool = False) -> Optional[Field]:
+                dark: bool = False, bitten: bool = False) -> Optional[Field]:
     """One bright component (``label`` in ``labels``, box ``box`` at ``scale``) if it is a field in a red ring
-    (with ``dark``, also a triangle in a dark ring of no colour: :func:`is_dark_ring`)."""
+    (with ``dark``, also a triangle in a dark ring of no colour: :func:`is_dark_ring`).
+
+    A field whose pictogram reaches its ring (a curve arrow, a worker, blurred at the reduced scale) is a field
+    with a bite out of it: when the component itself is no field, its convex hull is judged in its place if the
+    component fills ``field_min_solidity`` of the hull. A ``bitten`` component (filling less than
+    ``field_min_fill`` of its box) is judged by its hull only.
+    """
     x, y, w, h = box
     small = cv2.compare(labels[y : y + h, x : x + w], float(label), cv2.CMP_EQ)
     contours, _ = cv2.findContours(small, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE, offset=(x, y))
     contour = max(contours, key=cv2.contourArea)
+    field = None if bitten else _field_at(image, contour, scale, config, dark)
+    if field is not None or config.bright_fields.field_min_solidity >= 1.0:
+        return field
+    hull = cv2.convexHull(contour)
+    if _filled_area(contour, x, y, w, h) < config.bright_fields.field_min_solidity * _filled_area(hull, x, y, w, h):
+        return None  # a bright blot with a deep bay (leaves, a window frame), not a bitten field
+    return _field_at(image, hull, scale, config, dark, config.bright_fields.field_hull_shapes)
+
+
+def _filled_area(contour: np.ndarray, x: int, y: int, w: int, h: int) -> float:
+    """Pixels of ``contour`` filled, in the box (x, y, w, h) it lies in (the same count for an outline and its
+    hull, so their ratio is the bite's share; holes inside, a pictogram not touching the ring, do not count)."""
+    mask = np.zeros((h, w), np.uint8)
+    cv2.drawContours(mask, [contour], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
+    return float(cv2.countNonZero(mask))
+
+
+def _field_at(image, contour: np.ndarray, scale: float, config: PipelineConfig, dark: bool,
+              shapes_allowed: Tuple[str, ...] = FIELD_SHAPES) -> Optional[Field]:
+    """The outline ``contour`` (reduced image) at full resolution if it is a field in a red (or, with ``dark``,
+    a dark) ring and of a field's shape (one of ``shapes_allowed``)."""
     # the outline at full resolution (pixel centres), its box and filled mask
     contour = np.round((contour.astype(np.float64) + 0.5) / scale - 0.5).astype(np.int32)
     bbox = cv2.boundingRect(contour)
@@ -272,8 +301,9 @@ def _ring_field(image, labels, label: int, box, scale: float, config: PipelineCo
     if red:
         # a small round field fits an octagon as well as a circle; a stop sign has no white field, so an
         # octagon reading only hides the circle (dusk speed limits on GTSDB's tune split)
-        if fit.shape not in FIELD_SHAPES and not (fit.shape == "octagon" and "circle" in shapes):
+        if fit.shape not in shapes_allowed and not (fit.shape == "octagon" and "circle" in shapes_allowed
+                                                    and "circle" in shapes):
             return None
-    elif not (fit.shape in DARK_RING_SHAPES and fit.fit >= config.bright_fields.dark_ring_min_fit):
+    elif not (fit.shape in DARK_RING_SHAPES and fit.shape in shapes_allowed and fit.fit >= config.bright_fields.dark_ring_min_fit):
         return None
     return Field(tuple(int(v) for v in bbox), field, contour)

@@ -141,6 +141,15 @@ class BrightFieldConfig:
     # circles 0.83): the smallest field sought for the smallest face
     field_min_fill: float = 0.35  # component area / box: a field's fill is 0.5 (triangle) to 0.79 (disc)
     field_max_fill: float = 0.95
+    # a pictogram reaching the ring (a curve arrow, a worker) bites into the field: a component that is no field is
+    # judged by its convex hull when it fills at least this share of it (1.0: never)
+    field_min_solidity: float = 0.7
+    # ...and only when the hull is one of these shapes: danger triangles carry pictograms up to their ring; the
+    # hull of a bright blot in a reddish surround fits a circle or an octagon all too often (GTSDB tune split:
+    # 790 circle and octagon hulls in 434 photographs, 2 % on signs; 21 triangles, 9 on signs)
+    field_hull_shapes: Tuple[str, ...] = ("triangle",)
+    # a bitten component fills less of its box than a field does: down to this share it is judged by its hull
+    field_min_bitten_fill: float = 0.28
     field_max_aspect: float = 1.6  # longer / shorter box side: a disc turned 50 deg; no field on a sign of the
     # tune split was longer (a fifth of all components are)
     field_same_iou: float = 0.85  # a component whose box overlaps one of a lower level this much is that one
