@@ -304,6 +304,7 @@ def _field_at(image, contour: np.ndarray, scale: float, config: PipelineConfig, 
         if fit.shape not in shapes_allowed and not (fit.shape == "octagon" and "circle" in shapes_allowed
                                                     and "circle" in shapes):
             return None
-    elif not (fit.shape in DARK_RING_SHAPES and fit.shape in shapes_allowed and fit.fit >= config.bright_fields.dark_ring_min_fit):
+    elif not (fit.shape in DARK_RING_SHAPES and fit.shape in shapes_allowed
+              and fit.fit >= config.bright_fields.dark_ring_min_fit):
         return None
     return Field(tuple(int(v) for v in bbox), field, contour)

@@ -226,3 +226,28 @@ def test_a_sharp_triangle_in_a_dark_ring_of_no_colour_is_a_field_but_a_disc_or_a
     # ring is no red one
     daylight_only = PipelineConfig(bright_fields=BrightFieldConfig(dark_ring_max_level=15))
     assert red_ring_fields(_dark_face("triangle"), None, daylight_only) == []
+
+
+
+def _bitten_triangle():
+    """A red-ringed danger triangle whose dark pictogram reaches the ring on the left: its field is bitten into."""
+    image = np.clip(np.random.default_rng(3).normal(40, 4, (200, 300, 3)), 0, 255).astype(np.uint8)
+    outer = np.array([(150, 50), (184, 109), (116, 109)], np.int32)
+    inner = np.round(outer.mean(axis=0) + 0.64 * (outer - outer.mean(axis=0))).astype(np.int32)
+    cv2.fillPoly(image, [outer], (70, 70, 150), cv2.LINE_AA)
+    cv2.fillPoly(image, [inner], (200, 200, 200), cv2.LINE_AA)
+    cx, cy = (int(round(v)) for v in inner.mean(axis=0))
+    cv2.line(image, (cx + 2, cy + 2), (cx - 26, cy + 10), (40, 40, 40), 8, cv2.LINE_AA)  # a curve arrow's stroke
+    return cv2.GaussianBlur(image, (3, 3), 0)
+
+
+def test_a_triangle_field_bitten_by_its_pictogram_is_read_by_its_hull():
+    # GTSDB: a curve arrow (1.01) or a worker (1.14) reaching the ring left the field a notched outline that no
+    # ideal triangle fits, or too little of its box for a field
+    (field,) = red_ring_fields(_bitten_triangle(), None, PipelineConfig())
+    assert box_iou(field.bbox, (128, 64, 44, 38)) > 0.85, field.bbox  # the whole field (the inner triangle)
+    whole = PipelineConfig(bright_fields=BrightFieldConfig(field_min_solidity=1.0))
+    assert red_ring_fields(_bitten_triangle(), None, whole) == []  # the notched outline alone is no field
+    # a hull stands for a field only in the shapes listed: a disc's hull is all too common around bright blots
+    no_hull_shapes = PipelineConfig(bright_fields=BrightFieldConfig(field_hull_shapes=("circle",)))
+    assert red_ring_fields(_bitten_triangle(), None, no_hull_shapes) == []
