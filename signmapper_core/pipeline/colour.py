@@ -27,7 +27,7 @@ from typing import Dict, Iterable, List, Optional, Sequence, Tuple
 import cv2
 import numpy as np
 
-from .boxes import box_iou, touches_border
+from .boxes import box_iou, nonzero_box, touches_border
 from .bright_fields import bright_faces
 from .config import ColourConfig, HsvRange, PipelineConfig
 from .scene_colour import apply_gains, chroma_at_least, scene_colour
@@ -69,10 +69,11 @@ def inscribed_disc(size: int) -> Tuple[np.ndarray, np.ndarray]:
 
 def hsv_mask(hsv: np.ndarray, ranges: Sequence[HsvRange]) -> np.ndarray:
     """uint8 0/255 mask of pixels inside any of the HSV ranges."""
-    out = np.zeros(hsv.shape[:2], dtype=np.uint8)
+    out = None
     for h0, h1, s0, s1, v0, v1 in ranges:
-        out |= cv2.inRange(hsv, (h0, s0, v0), (h1, s1, v1))
-    return out
+        part = cv2.inRange(hsv, (h0, s0, v0), (h1, s1, v1))
+        out = part if out is None else cv2.bitwise_or(out, part, dst=out)
+    return np.zeros(hsv.shape[:2], dtype=np.uint8) if out is None else out
 
 
 def _kernel(size: int) -> Optional[np.ndarray]:
@@ -85,21 +86,29 @@ def clean_mask(mask: np.ndarray, open_px: int, close_px: int) -> np.ndarray:
     Only the box around the mask's pixels is filtered (sign colours are sparse in most frames);
     the result is the same as filtering the whole mask.
     """
-    x, y, w, h = cv2.boundingRect(mask)
+    part, (x0, y0) = cleaned_part(mask, open_px, close_px)
+    out = np.zeros(mask.shape, np.uint8)
+    out[y0 : y0 + part.shape[0], x0 : x0 + part.shape[1]] = part
+    return out
+
+
+def cleaned_part(mask: np.ndarray, open_px: int, close_px: int) -> Tuple[np.ndarray, Tuple[int, int]]:
+    """(the part of :func:`clean_mask`'s result that can hold pixels, its top-left corner in ``mask``): the box
+    around the mask's pixels grown by more than the filters reach, so that every pixel outside it, and the
+    part's own edge unless it is the mask's, is 0 (an empty part when the mask has no pixels)."""
+    x, y, w, h = nonzero_box(mask)
     if w == 0 or h == 0:
-        return mask.copy()
+        return np.zeros((0, 0), np.uint8), (0, 0)
     pad = max(open_px, close_px) + 1
     x0, y0 = max(0, x - pad), max(0, y - pad)
     x1, y1 = min(mask.shape[1], x + w + pad), min(mask.shape[0], y + h + pad)
-    out = np.zeros_like(mask)
     part = mask[y0:y1, x0:x1]
     k_open, k_close = _kernel(open_px), _kernel(close_px)
     if k_open is not None:
         part = cv2.morphologyEx(part, cv2.MORPH_OPEN, k_open)
     if k_close is not None:
         part = cv2.morphologyEx(part, cv2.MORPH_CLOSE, k_close)
-    out[y0:y1, x0:x1] = part
-    return out
+    return part, (x0, y0)
 
 
 def colour_masks(bgr: np.ndarray, settings: ColourConfig, colours: Iterable[str],
@@ -131,7 +140,8 @@ def _filled_segment(contour, colour, width, height, border_margin_px, source, mi
 
 
 def segments_from_mask(mask: np.ndarray, colour: str, min_area_px: int, settings: ColourConfig,
-                       holes: bool = False) -> List[Segment]:
+                       holes: bool = False, offset: Tuple[int, int] = (0, 0),
+                       image_size: Optional[Tuple[int, int]] = None) -> List[Segment]:
     """Connected segments of ``mask`` as filled outer contours with bounding boxes.
 
     ``settings``: the colour section of the config (``min_bbox_px``, ``border_margin_px``,
@@ -142,13 +152,18 @@ def segments_from_mask(mask: np.ndarray, colour: str, min_area_px: int, settings
     outer outline is just a ring around the field (box at most ``max_ring_ratio`` times the
     field's box): a ring that touches another red thing (a second sign, a roof) gives a
     useless outer outline, but its field still has the face's shape.
+
+    ``mask`` may be a part of the image (:func:`cleaned_part`): ``offset`` is its top-left corner in the image,
+    ``image_size`` the image's (height, width), and the part's edge is 0 unless it is the image's.
     """
     min_bbox_px, border_margin_px = settings.min_bbox_px, settings.border_margin_px
     min_solidity, min_hole_px, max_ring_ratio = settings.min_solidity, settings.min_hole_px, settings.max_ring_ratio
-    height, width = mask.shape[:2]
+    height, width = image_size or mask.shape[:2]
     # two levels: outer outlines of every component, also of one inside another's hole (a sign's colour
     # inside its white rim, in front of background of the same colour), and the holes
-    contours, hierarchy = cv2.findContours(mask, cv2.RETR_CCOMP, cv2.CHAIN_APPROX_NONE)
+    if not mask.size:
+        return []
+    contours, hierarchy = cv2.findContours(mask, cv2.RETR_CCOMP, cv2.CHAIN_APPROX_NONE, offset=offset)
     # a closed outline of every pixel along it that spans min_bbox_px columns or rows walks there and back:
     # fewer points cannot make a box that large (most contours are speckle: skipped without measuring them)
     min_points = 2 * (min_bbox_px - 1)
@@ -309,9 +324,10 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
             raw = frame.colour_mask(colour, weak, config)
             if inside is not None:
                 raw = cv2.bitwise_and(raw, inside)
-            mask = clean_mask(raw, open_px, segmenting.morph_close_px)
+            part, offset = cleaned_part(raw, open_px, segmenting.morph_close_px)  # the rest of the frame is 0
             min_px = segmenting.min_part_px.get(colour, segmenting.min_segment_px)
-            for seg in segments_from_mask(mask, colour, min_px, segmenting, holes=colour in segmenting.hole_colours):
+            for seg in segments_from_mask(part, colour, min_px, segmenting, colour in segmenting.hole_colours,
+                                          offset, raw.shape[:2]):
                 if max_side is not None and max(seg.bbox[2], seg.bbox[3]) > max_side:
                     continue
                 if weak and not _weak_outline(seg, colour, config):
