@@ -33,7 +33,7 @@ def nonzero_box(mask: np.ndarray):
     if mask.ndim != 2 or mask.dtype != np.uint8 or not mask.flags.c_contiguous or mask.shape[1] % 8:
         return cv2.boundingRect(mask)
     words = mask.view(np.uint64)
-    rows = np.flatnonzero(words.any(axis=1))
+    rows = np.flatnonzero(np.bitwise_or.reduce(words, axis=1))
     if not len(rows):
         return 0, 0, 0, 0
     cols = np.flatnonzero(np.bitwise_or.reduce(words[rows[0] : rows[-1] + 1], axis=0).view(np.uint8))

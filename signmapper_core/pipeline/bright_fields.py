@@ -188,7 +188,10 @@ def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: Pipeli
     diamonds: List[Field] = []
     field_fill = min(fields.field_min_fill, fields.field_min_bitten_fill)
     min_fill = min(field_fill, fields.diamond_min_fill) if diamonds_wanted else field_fill
-    at_most = np.bincount(grey.ravel(), minlength=256).cumsum()  # pixels at or below each grey value
+    # pixels at or below each grey value (OpenCV's histogram: float counts, exact below 2**24 pixels)
+    counts = (cv2.calcHist([grey], [0], None, [256], [0, 256]).ravel().astype(np.int64) if grey.size < 1 << 24
+              else np.bincount(grey.ravel(), minlength=256))
+    at_most = counts.cumsum()
     for level in grey_levels(fields.field_first_level, fields.field_level_ratio):
         if grey.size - at_most[level] < min_fill * min_side * min_side or at_most[level] < 4 * min_side:
             continue  # too few pixels above the level for a field, or below it for a ring around one

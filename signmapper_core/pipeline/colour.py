@@ -306,7 +306,7 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
     """
     segmenting, scene = config.colour, config.scene
     frame = frame or ColourFrame.of(image, config)
-    inside = None if search is None else search.astype(np.uint8) * 255
+    inside = None if search is None else search.view(np.uint8) * 255  # bool bytes are 0/1: no copy first
     small_open = ring_open_px(segmenting.min_face_px if small_face_px is None else small_face_px, config)
     # (opening, largest side kept, scene classes, colours)
     passes = [(segmenting.morph_open_px, None, False, segmenting.colours)]

@@ -43,7 +43,7 @@ def find_circles(
 ) -> np.ndarray:
     """Circles (N, 3) as (u, v, r) in full-image pixels, found in the search space (image at ``scale``)."""
     grey = cv2.cvtColor(bgr, cv2.COLOR_BGR2GRAY) if bgr.ndim == 3 else bgr.copy()
-    mask = search_mask.astype(np.uint8) * 255
+    mask = (search_mask.view(np.uint8) if search_mask.dtype == bool else search_mask.astype(np.uint8)) * 255
     if scale != 1.0:
         grey = cv2.resize(grey, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA)
         mask = cv2.resize(mask, (grey.shape[1], grey.shape[0]), interpolation=cv2.INTER_AREA)

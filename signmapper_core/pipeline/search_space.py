@@ -18,6 +18,10 @@ def valid_depth(depth: np.ndarray) -> np.ndarray:
 
 def search_space_mask(depth: np.ndarray, near_m: float, far_m: float) -> np.ndarray:
     """Boolean mask of pixels with ``near_m <= Z <= far_m``; NaN/inf/<=0 are outside."""
+    if depth.dtype in (np.float32, np.float64) and depth.ndim == 2 and depth.flags.c_contiguous:
+        # OpenCV's range test, the same comparisons (NaN fails both): a matched depth map is mostly NaN,
+        # which numpy's comparisons take several times longer over
+        return cv2.inRange(depth, near_m, far_m) > 0
     with np.errstate(invalid="ignore"):
         return (depth >= near_m) & (depth <= far_m)
 
@@ -45,4 +49,6 @@ def grow(mask: np.ndarray, size_px: int) -> np.ndarray:
     if size_px <= 1:
         return mask
     kernel = cv2.getStructuringElement(cv2.MORPH_RECT, (size_px, size_px))
+    if mask.dtype == bool:
+        return cv2.dilate(mask.view(np.uint8), kernel).view(bool)  # 0/1 bytes in, 0/1 out: no conversions
     return cv2.dilate(mask.astype(np.uint8), kernel) > 0
