@@ -31,7 +31,7 @@ Extent = Tuple[float, float, float, float]  # x0, y0, x1, y1 as fractions of the
 def _ranges_key(hsv_ranges, colour: str) -> tuple:
     """The thresholds of ``colour`` as a hashable value: a measurement holds for those thresholds only (a run
     may change the colour table)."""
-    return tuple(tuple(int(v) for v in r) for r in hsv_ranges.get(colour, ()))
+    return tuple(tuple(map(int, r)) for r in hsv_ranges.get(colour, ()))
 
 
 def _measured_once(catalogue, key: tuple, measure):

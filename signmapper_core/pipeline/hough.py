@@ -50,7 +50,7 @@ def find_circles(
     # a smooth search-space outline: speckle in a matched depth map would otherwise feed the
     # transform with many short edges (slow, and false circles)
     mask = cv2.medianBlur(mask, config.hough.hough_mask_median_px)
-    grey[mask < 128] = 0
+    cv2.bitwise_and(grey, cv2.compare(mask, 128, cv2.CMP_GE), dst=grey)  # grey[mask < 128] = 0, in one pass
     lo, hi = max(2, int(r_min * scale)), max(3, int(np.ceil(r_max * scale)))
     circles = cv2.HoughCircles(
         grey, cv2.HOUGH_GRADIENT_ALT, dp=config.hough.hough_dp, minDist=max(4, lo),

@@ -63,18 +63,24 @@ def ideal_mask(shape: str, width: int, height: int) -> np.ndarray:
 _CACHED_IDEAL_PX = 128 * 128  # larger boxes are rare and each would hold much memory
 
 
-@lru_cache(maxsize=512)
-def _cached_ideal(shape: str, width: int, height: int) -> np.ndarray:
+def _ideal(shape: str, width: int, height: int) -> Tuple[np.ndarray, int]:
     ideal = ideal_mask(shape, width, height) > 0
+    return ideal, int(np.count_nonzero(ideal))
+
+
+@lru_cache(maxsize=512)
+def _cached_ideal(shape: str, width: int, height: int) -> Tuple[np.ndarray, int]:
+    ideal, count = _ideal(shape, width, height)
     ideal.flags.writeable = False
-    return ideal
+    return ideal, count
 
 
-def _ideal_pixels(shape: str, width: int, height: int) -> np.ndarray:
-    """Bool mask of :func:`ideal_mask`: a segment's outline is fitted several times a pair, at the same size."""
+def _ideal_pixels(shape: str, width: int, height: int) -> Tuple[np.ndarray, int]:
+    """(bool mask of :func:`ideal_mask`, its pixel count): a segment's outline is fitted several times a pair,
+    at the same size."""
     if width * height <= _CACHED_IDEAL_PX:
         return _cached_ideal(shape, width, height)
-    return ideal_mask(shape, width, height) > 0
+    return _ideal(shape, width, height)
 
 
 def mask_iou(a: np.ndarray, b: np.ndarray) -> float:
@@ -92,7 +98,9 @@ def classify_shape(mask: np.ndarray, min_fit: float, fill_window: float) -> Shap
     height, width = mask.shape[:2]
     area = float(np.count_nonzero(mask))
     fill = area / float(width * height) if width * height else 0.0
-    contours, _ = cv2.findContours((mask > 0).astype(np.uint8), cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
+    # findContours reads any nonzero byte as 1: a uint8 mask needs no conversion
+    contours, _ = cv2.findContours(mask if mask.dtype == np.uint8 else (mask > 0).astype(np.uint8),
+                                   cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
     circularity, corners = 0.0, 0
     if contours:
         contour = max(contours, key=cv2.contourArea)
@@ -103,9 +111,14 @@ def classify_shape(mask: np.ndarray, min_fit: float, fill_window: float) -> Shap
             corners = len(cv2.approxPolyDP(hull, 0.04 * cv2.arcLength(hull, True), True))
     fits = {}
     pixels = mask > 0
+    count = int(area) if mask.dtype in (np.uint8, np.bool_) else int(np.count_nonzero(pixels))
     for shape, ideal_fill in IDEAL_FILL.items():
         if abs(fill - ideal_fill) <= fill_window:
-            fits[shape] = mask_iou(pixels, _ideal_pixels(shape, width, height))
+            # mask_iou with the union counted from both counts and the intersection (the same integers)
+            ideal, ideal_count = _ideal_pixels(shape, width, height)
+            inter = np.count_nonzero(pixels & ideal)
+            union = count + ideal_count - inter
+            fits[shape] = float(inter) / union if union else 0.0
     best = max(fits, key=fits.get) if fits else None
     if best is None or fits[best] < min_fit:
         return ShapeResult(None, fits.get(best, 0.0) if best else 0.0, fill, circularity, corners, fits)
