@@ -15,7 +15,7 @@ from typing import List, Optional, Sequence
 import cv2
 import numpy as np
 
-from .boxes import touches_border
+from .boxes import nonzero_box, touches_border
 from .colour import Segment, hsv_mask, inscribed_disc
 from .config import PipelineConfig
 
@@ -42,15 +42,7 @@ def find_circles(
     config: PipelineConfig,
 ) -> np.ndarray:
     """Circles (N, 3) as (u, v, r) in full-image pixels, found in the search space (image at ``scale``)."""
-    grey = cv2.cvtColor(bgr, cv2.COLOR_BGR2GRAY) if bgr.ndim == 3 else bgr.copy()
-    mask = (search_mask.view(np.uint8) if search_mask.dtype == bool else search_mask.astype(np.uint8)) * 255
-    if scale != 1.0:
-        grey = cv2.resize(grey, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA)
-        mask = cv2.resize(mask, (grey.shape[1], grey.shape[0]), interpolation=cv2.INTER_AREA)
-    # a smooth search-space outline: speckle in a matched depth map would otherwise feed the
-    # transform with many short edges (slow, and false circles)
-    mask = cv2.medianBlur(mask, config.hough.hough_mask_median_px)
-    cv2.bitwise_and(grey, cv2.compare(mask, 128, cv2.CMP_GE), dst=grey)  # grey[mask < 128] = 0, in one pass
+    grey = _reduced_search_grey(bgr, search_mask, scale, config.hough.hough_mask_median_px)
     lo, hi = max(2, int(r_min * scale)), max(3, int(np.ceil(r_max * scale)))
     circles = cv2.HoughCircles(
         grey, cv2.HOUGH_GRADIENT_ALT, dp=config.hough.hough_dp, minDist=max(4, lo),
@@ -59,6 +51,52 @@ def find_circles(
     if circles is None:
         return np.zeros((0, 3))
     return circles.reshape(-1, 3) / scale
+
+
+def _search_grey(bgr: np.ndarray, search_mask: np.ndarray, scale: float, median_px: int) -> np.ndarray:
+    """The grey image at ``scale`` where the search space is (its mask at ``scale`` smoothed by a median of
+    ``median_px``, at least half full), 0 elsewhere: what the transform reads."""
+    grey = cv2.cvtColor(bgr, cv2.COLOR_BGR2GRAY) if bgr.ndim == 3 else bgr.copy()
+    mask = (search_mask.view(np.uint8) if search_mask.dtype == bool else search_mask.astype(np.uint8)) * 255
+    if scale != 1.0:
+        grey = cv2.resize(grey, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA)
+        mask = cv2.resize(mask, (grey.shape[1], grey.shape[0]), interpolation=cv2.INTER_AREA)
+    # a smooth search-space outline: speckle in a matched depth map would otherwise feed the
+    # transform with many short edges (slow, and false circles)
+    mask = cv2.medianBlur(mask, median_px)
+    cv2.bitwise_and(grey, cv2.compare(mask, 128, cv2.CMP_GE), dst=grey)  # grey[mask < 128] = 0, in one pass
+    return grey
+
+
+def _reduced_search_grey(bgr: np.ndarray, search_mask: np.ndarray, scale: float, median_px: int) -> np.ndarray:
+    """:func:`_search_grey`, computed only around the search space's box where the image is reduced by a whole
+    factor that divides its size (the search space of a matched pair is a tenth of the frame).
+
+    Each reduced pixel is then the mean of its own block of pixels, so the box's blocks reduce alone to the
+    same values, and the reduced mask is 0 beyond them: the median is 0 where it sees only those zeros (more
+    than its radius from the box) and reads the same pixels inside (the box's edge is 0 or the image's).
+    """
+    factor = int(round(1.0 / scale)) if scale < 1.0 else 1
+    height, width = search_mask.shape[:2]
+    if (factor < 2 or abs(scale * factor - 1.0) > 1e-9 or height % factor or width % factor
+            or search_mask.dtype != bool or bgr.ndim != 3):
+        return _search_grey(bgr, search_mask, scale, median_px)
+    x, y, w, h = nonzero_box(search_mask.view(np.uint8))
+    small_h, small_w = height // factor, width // factor
+    out = np.zeros((small_h, small_w), np.uint8)
+    if w == 0 or h == 0:
+        return out
+    margin = median_px // 2 + 1
+    c0, r0 = max(0, x // factor - margin), max(0, y // factor - margin)
+    c1 = min(small_w, -(-(x + w) // factor) + margin)
+    r1 = min(small_h, -(-(y + h) // factor) + margin)
+    rows, cols = slice(r0 * factor, r1 * factor), slice(c0 * factor, c1 * factor)
+    size = (c1 - c0, r1 - r0)
+    mask = cv2.resize(search_mask[rows, cols].view(np.uint8) * 255, size, interpolation=cv2.INTER_AREA)
+    mask = cv2.medianBlur(mask, median_px)
+    grey = cv2.resize(cv2.cvtColor(bgr[rows, cols], cv2.COLOR_BGR2GRAY), size, interpolation=cv2.INTER_AREA)
+    cv2.bitwise_and(grey, cv2.compare(mask, 128, cv2.CMP_GE), dst=out[r0:r1, c0:c1])
+    return out
 
 
 def outer_ring(mask: np.ndarray, config: PipelineConfig) -> np.ndarray:
