@@ -9,6 +9,8 @@ from __future__ import annotations
 import cv2
 import numpy as np
 
+from .boxes import nonzero_box
+
 
 def valid_depth(depth: np.ndarray) -> np.ndarray:
     """Boolean mask of pixels with a usable depth (finite and positive)."""
@@ -49,6 +51,15 @@ def grow(mask: np.ndarray, size_px: int) -> np.ndarray:
     if size_px <= 1:
         return mask
     kernel = cv2.getStructuringElement(cv2.MORPH_RECT, (size_px, size_px))
-    if mask.dtype == bool:
-        return cv2.dilate(mask.view(np.uint8), kernel).view(bool)  # 0/1 bytes in, 0/1 out: no conversions
-    return cv2.dilate(mask.astype(np.uint8), kernel) > 0
+    if mask.dtype != bool or mask.ndim != 2:
+        return cv2.dilate(mask.astype(np.uint8), kernel) > 0
+    # only around the mask's box, grown by the kernel's reach (beyond it the dilation is 0; OpenCV's border
+    # adds nothing to a dilation): a matched search space is a tenth of the frame; bool bytes are 0/1
+    x, y, w, h = nonzero_box(mask.view(np.uint8))
+    out = np.zeros(mask.shape, bool)
+    if w and h:
+        reach = size_px // 2 + 1
+        rows = slice(max(0, y - reach), min(mask.shape[0], y + h + reach))
+        cols = slice(max(0, x - reach), min(mask.shape[1], x + w + reach))
+        out[rows, cols] = cv2.dilate(mask[rows, cols].view(np.uint8), kernel).view(bool)
+    return out
