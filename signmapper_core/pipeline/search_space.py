@@ -9,8 +9,6 @@ from __future__ import annotations
 import cv2
 import numpy as np
 
-from .boxes import nonzero_box
-
 
 def valid_depth(depth: np.ndarray) -> np.ndarray:
     """Boolean mask of pixels with a usable depth (finite and positive)."""
@@ -20,10 +18,6 @@ def valid_depth(depth: np.ndarray) -> np.ndarray:
 
 def search_space_mask(depth: np.ndarray, near_m: float, far_m: float) -> np.ndarray:
     """Boolean mask of pixels with ``near_m <= Z <= far_m``; NaN/inf/<=0 are outside."""
-    if depth.dtype in (np.float32, np.float64) and depth.ndim == 2 and depth.flags.c_contiguous:
-        # OpenCV's range test, the same comparisons (NaN fails both): a matched depth map is mostly NaN,
-        # which numpy's comparisons take several times longer over
-        return cv2.inRange(depth, near_m, far_m) > 0
     with np.errstate(invalid="ignore"):
         return (depth >= near_m) & (depth <= far_m)
 
@@ -51,15 +45,6 @@ def grow(mask: np.ndarray, size_px: int) -> np.ndarray:
     if size_px <= 1:
         return mask
     kernel = cv2.getStructuringElement(cv2.MORPH_RECT, (size_px, size_px))
-    if mask.dtype != bool or mask.ndim != 2:
-        return cv2.dilate(mask.astype(np.uint8), kernel) > 0
-    # only around the mask's box, grown by the kernel's reach (beyond it the dilation is 0; OpenCV's border
-    # adds nothing to a dilation): a matched search space is a tenth of the frame; bool bytes are 0/1
-    x, y, w, h = nonzero_box(mask.view(np.uint8))
-    out = np.zeros(mask.shape, bool)
-    if w and h:
-        reach = size_px // 2 + 1
-        rows = slice(max(0, y - reach), min(mask.shape[0], y + h + reach))
-        cols = slice(max(0, x - reach), min(mask.shape[1], x + w + reach))
-        out[rows, cols] = cv2.dilate(mask[rows, cols].view(np.uint8), kernel).view(bool)
-    return out
+    if mask.dtype == bool:
+        return cv2.dilate(mask.view(np.uint8), kernel).view(bool)  # bool bytes are 0/1: dilated, still 0/1
+    return cv2.dilate(mask.astype(np.uint8), kernel) > 0
