@@ -280,6 +280,17 @@ def _ring_field(image, labels, label: int, box, scale: float, config: PipelineCo
     return _field_at(image, hull, scale, config, dark, config.bright_fields.field_hull_shapes)
 
 
+def dark_ring_fit_floor(image: np.ndarray, bbox, field: np.ndarray, config: PipelineConfig) -> float:
+    """The outline fit a field in a dark ring of no colour needs: ``dark_ring_min_fit``, or the looser
+    ``dark_field_min_fit`` when the field itself (``field``, the filled mask in box ``bbox``) is dim (at dusk)."""
+    fields = config.bright_fields
+    if fields.dark_field_min_fit >= fields.dark_ring_min_fit:
+        return fields.dark_ring_min_fit
+    x, y, w, h = bbox
+    brightness = float(np.mean(cv2.mean(image[y : y + h, x : x + w], mask=field)[:3]))
+    return fields.dark_field_min_fit if brightness <= fields.dark_field_max_brightness else fields.dark_ring_min_fit
+
+
 def _filled_area(contour: np.ndarray, x: int, y: int, w: int, h: int) -> float:
     """Pixels of ``contour`` filled, in the box (x, y, w, h) it lies in (the same count for an outline and its
     hull, so their ratio is the bite's share; holes inside, a pictogram not touching the ring, do not count)."""
@@ -309,6 +320,6 @@ def _field_at(image, contour: np.ndarray, scale: float, config: PipelineConfig, 
                                                     and "circle" in shapes):
             return None
     elif not (fit.shape in DARK_RING_SHAPES and fit.shape in shapes_allowed
-              and fit.fit >= config.bright_fields.dark_ring_min_fit):
+              and fit.fit >= dark_ring_fit_floor(image, bbox, field, config)):
         return None
     return Field(tuple(int(v) for v in bbox), field, contour)

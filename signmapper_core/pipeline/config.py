@@ -172,6 +172,11 @@ class BrightFieldConfig:
     dark_ring_max_brightness: float = 0.7
     dark_ring_min_ratio: float = 0.97
     dark_ring_min_fit: float = 0.88
+    # ...or this well when the field itself is dim (mean of B, G, R at most dark_field_max_brightness): at dusk a
+    # field of 20-40 keeps a blurred outline (GTSDB tune split: dusk triangles fit 0.69-0.78), while a field this
+    # dim is rare in daylight scenes, so the looser floor adds few outlines there (1.0: never looser)
+    dark_field_min_fit: float = 0.69
+    dark_field_max_brightness: float = 45.0
     dark_ring_max_level: int = 57  # ...on grey levels up to this (tune split: dusk fields separate at 15-46)
     field_min_inside_share: float = 0.5  # the pass reads the whole image: a field counts with this share inside
     # the search space (one mostly outside it is another depth's)

@@ -220,13 +220,40 @@ def test_a_sharp_triangle_in_a_dark_ring_of_no_colour_is_a_field_but_a_disc_or_a
     assert box_iou(field.bbox, (134, 70, 33, 29)) > 0.8
     assert red_ring_fields(_dark_face("circle"), None, PipelineConfig()) == []  # a round outline is too common
     assert red_ring_fields(_dark_face("triangle", ring=(26, 17, 14)), None, PipelineConfig()) == []  # a blue ring
-    strict = PipelineConfig(bright_fields=BrightFieldConfig(dark_ring_min_fit=0.99))
+    strict = PipelineConfig(bright_fields=BrightFieldConfig(dark_ring_min_fit=0.99, dark_field_min_fit=0.99))
     assert red_ring_fields(_dark_face("triangle"), None, strict) == []
     # the field separates from its ring at grey 19-37: above dark_ring_max_level colour is kept, a colourless
     # ring is no red one
     daylight_only = PipelineConfig(bright_fields=BrightFieldConfig(dark_ring_max_level=15))
     assert red_ring_fields(_dark_face("triangle"), None, daylight_only) == []
 
+
+
+def _blunt_dark_face(field):
+    """A danger triangle in the dark whose field's corners are rounded off (blurred at dusk): it fits the ideal
+    triangle at ~0.75-0.8, below dark_ring_min_fit; ring and field differ only in brightness."""
+    image = np.clip(np.random.default_rng(2).normal(30, 3, (200, 300, 3)), 0, 255).astype(np.uint8)
+    outer = np.array([(150, 60), (176, 105), (124, 105)], np.int32)
+    inner = np.round(outer.mean(axis=0) + 0.62 * (outer - outer.mean(axis=0))).astype(np.int32)
+    cv2.fillPoly(image, [outer], (18, 17, 18), cv2.LINE_AA)
+    triangle = np.zeros(image.shape[:2], np.uint8)
+    cv2.fillPoly(triangle, [inner], 255)
+    disc = np.zeros_like(triangle)
+    cv2.circle(disc, tuple(int(round(v)) for v in inner.mean(axis=0)), 15, 255, -1)
+    image[(triangle > 0) & (disc > 0)] = field
+    return cv2.GaussianBlur(image, (3, 3), 0)
+
+
+def test_a_blunt_triangle_in_a_dark_ring_is_a_field_only_when_the_field_itself_is_dim():
+    # GTSDB dusk scenes: danger triangles with fields of grey 30-45 fit their ideal outline at 0.69-0.78
+    (field,) = red_ring_fields(_blunt_dark_face((42, 40, 40)), None, PipelineConfig())
+    assert box_iou(field.bbox, (136, 74, 29, 27)) > 0.8, field.bbox
+    old_floor = PipelineConfig(bright_fields=BrightFieldConfig(dark_field_min_fit=0.88))
+    assert red_ring_fields(_blunt_dark_face((42, 40, 40)), None, old_floor) == []
+    # the same outline with a brighter field (a daylight scene's dark patch) keeps the strict floor
+    assert red_ring_fields(_blunt_dark_face((60, 58, 58)), None, PipelineConfig()) == []
+    dimmer_only = PipelineConfig(bright_fields=BrightFieldConfig(dark_field_max_brightness=30.0))
+    assert red_ring_fields(_blunt_dark_face((42, 40, 40)), None, dimmer_only) == []
 
 
 def _bitten_triangle():
