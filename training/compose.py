@@ -16,7 +16,7 @@ from signmapper_core.pipeline.classifiers.face_patch import face_patch
 
 from .backgrounds import BackgroundPool
 from .camera_effects import blur, lighting, resolution_loss, sensor_noise_and_jpeg
-from .face_variants import MIRROR_SAFE, mirrored, pictogram_scaled, speed_limit_face, speed_limit_number
+from .face_variants import MIRROR_SAFE, mirrored, pictogram_variant, speed_limit_face, speed_limit_number
 from .face_wear import wear_face
 
 WORK_PX = 192  # faces are worn at this size, then shrunk by pyramid steps to about twice the target size
@@ -149,8 +149,8 @@ class SampleMaker:
             face = speed_limit_face(ring, alpha, number, rng)
         elif tid in MIRROR_SAFE and rng.random() < 0.5:
             face, alpha = mirrored(face, alpha)
-        if rng.random() < 0.3:
-            face = pictogram_scaled(face, alpha, rng)
+        if rng.random() < 0.5:  # the pictogram moved, resized, warped, restroked or simplified
+            face = pictogram_variant(face, alpha, rng)
         return face, alpha
 
     def _place_sign(self, canvas, tid, size_px, centre, rng, worn=True):

@@ -1,11 +1,13 @@
-"""Other designs of the same sign: mirrored pictograms, larger or smaller pictograms, other digit fonts.
+"""Other designs of the same sign: mirrored pictograms, pictograms redrawn (size, place, stroke, detail), fonts.
 
 The official drawing is one design of each sign; other print runs and other
 Vienna-convention countries draw the same meaning differently (children and a
 skidding car running the other way, larger pictograms, wider and bolder speed
-digits). A network that has seen only one design reads such faces by their
-details, so training shows it these variants, generated here from the official
-drawings and system fonts, never from photographs.
+digits, heavier or lighter strokes, simpler outlines). A network that has seen
+only one design reads such faces by their details, so training shows it these
+variants, generated here from the official drawings and system fonts by generic
+image operations (affine and smooth elastic warps, grey morphology, blur), never
+from photographs and never from another program's drawings of the signs.
 """
 
 from __future__ import annotations
@@ -159,3 +161,125 @@ def speed_limit_face(ring: np.ndarray, ring_alpha: np.ndarray, number: str,
     a = text[ya - y0:yb - y0, xa - x0:xb - x0][..., None] * field[ya:yb, xa:xb, None]
     out[ya:yb, xa:xb] = out[ya:yb, xa:xb] * (1 - a) + ink_colour * a
     return out.astype(ring.dtype)
+
+
+def _dominant_colour(face: np.ndarray, mask: np.ndarray) -> np.ndarray:
+    """Median colour of the most frequent colour bin (32 levels a channel) under ``mask``: the field's paint."""
+    values = face[mask].reshape(-1, 3).astype(np.int32)
+    bins = (values[:, 0] // 32) * 64 + (values[:, 1] // 32) * 8 + values[:, 2] // 32
+    common = np.bincount(bins).argmax()
+    return np.median(values[bins == common], axis=0).astype(np.float32)
+
+
+def design_field(face: np.ndarray, alpha: np.ndarray):
+    """(mask, colour) of the part of a face a pictogram is drawn in, or (None, None).
+
+    Inside the red rim where there is one; else (blue, white, yellow faces) the
+    convex hull of the face's most common paint inside a 3 % border, so a white
+    edge or black frame stays out of it. The colour is that paint, what a
+    pictogram is drawn on.
+    """
+    field = inner_field(face, alpha)
+    if field is not None:
+        return field, _dominant_colour(face, field)
+    k = max(1, int(round(0.03 * max(alpha.shape))))
+    disc = cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * k + 1, 2 * k + 1))
+    inside = cv2.erode((alpha > 127).astype(np.uint8), disc) > 0
+    if inside.sum() < 0.1 * alpha.size:
+        return None, None
+    colour = _dominant_colour(face, inside)
+    paint = (inside & (np.abs(face.astype(np.float32) - colour).sum(axis=2) < 60)).astype(np.uint8)
+    n, labels, stats, _ = cv2.connectedComponentsWithStats(paint, connectivity=8)
+    big = [i for i in range(1, n) if stats[i, cv2.CC_STAT_AREA] > 0.02 * alpha.size]
+    if not big:
+        return None, None
+    ys, xs = np.nonzero(np.isin(labels, big))
+    hull = cv2.convexHull(np.column_stack([xs, ys]).astype(np.int32))
+    field = np.zeros(alpha.shape, np.uint8)
+    cv2.fillConvexPoly(field, hull, 1)
+    field = (field > 0) & inside
+    if field.sum() < 0.1 * alpha.size:
+        return None, None
+    return field, colour
+
+
+def _warp_matrix(field: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    """Affine map about the field's centre: scale 0.85-1.2, aspect +-12 %, rotation +-4 deg, shear, shift +-4 %."""
+    ys, xs = np.nonzero(field)
+    cx, cy = float(xs.mean()), float(ys.mean())
+    side = float(max(xs.max() - xs.min(), ys.max() - ys.min()) + 1)
+    s = rng.uniform(0.85, 1.2)
+    aspect = rng.uniform(0.88, 1.12)
+    a = np.radians(rng.uniform(-4, 4))
+    shear = rng.uniform(-0.08, 0.08)
+    lin = np.array([[np.cos(a), -np.sin(a)], [np.sin(a), np.cos(a)]]) @ np.array([[1, shear], [0, 1]]) \
+        @ np.diag([s * aspect, s / aspect])
+    shift = rng.uniform(-0.04, 0.04, 2) * side
+    t = np.array([cx, cy]) + shift - lin @ np.array([cx, cy])
+    return np.hstack([lin, t[:, None]]).astype(np.float64)
+
+
+def _elastic(img: np.ndarray, colour, rng: np.random.Generator) -> np.ndarray:
+    """A smooth random displacement (up to ~2.5 % of the face, features a quarter of it large)."""
+    h, w = img.shape[:2]
+    amp = rng.uniform(0.008, 0.025) * max(h, w)
+    from .face_wear import smooth_field
+
+    dx = smooth_field(rng, h, w, max(4, w / 4)) * amp
+    dy = smooth_field(rng, h, w, max(4, h / 4)) * amp
+    yy, xx = np.mgrid[0:h, 0:w].astype(np.float32)
+    return cv2.remap(img, xx + dx, yy + dy, cv2.INTER_LINEAR, borderMode=cv2.BORDER_CONSTANT,
+                     borderValue=tuple(float(c) for c in colour))
+
+
+def _restroke(img: np.ndarray, field: np.ndarray, colour: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    """Strokes 1-2 px bolder or 1 px lighter (at the 192 px working size) by grey morphology.
+
+    Ink darker than the field (black on white) grows by erosion, lighter ink
+    (white on blue) by dilation.
+    """
+    grey = img.mean(axis=2)
+    ink = np.abs(img - colour).sum(axis=2) > 90
+    ink &= field
+    if ink.sum() < 20:
+        return img
+    dark_ink = grey[ink].mean() < float(colour.mean())
+    bolder = rng.random() < 0.6
+    r = int(rng.integers(1, 3)) if bolder else 1
+    k = cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * r + 1, 2 * r + 1))
+    grow = cv2.erode if dark_ink else cv2.dilate
+    shrink = cv2.dilate if dark_ink else cv2.erode
+    return (grow if bolder else shrink)(img, k)
+
+
+def _simplified(img: np.ndarray, colour: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    """Fine detail lost, corners rounded: the pictogram blurred, then its contrast to the field restored."""
+    sigma = rng.uniform(1.2, 3.0)
+    blurred = cv2.GaussianBlur(img, (0, 0), sigma)
+    gain = rng.uniform(1.1, 1.6)
+    return np.clip(colour + (blurred - colour) * gain, 0, 255)
+
+
+def pictogram_variant(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    """The pictogram redrawn inside its field, the rim and outline unchanged.
+
+    Generic design variation built from the drawing itself: moved, scaled,
+    stretched, sheared and turned a little (always), bent by a smooth elastic
+    warp, stroked bolder or lighter or simplified. Everything outside the field
+    (rim, border, outline) keeps the official drawing's pixels.
+    """
+    field, colour = design_field(face, alpha)
+    if field is None:
+        return face
+    h, w = alpha.shape
+    img = np.where(field[..., None], face, colour).astype(np.float32)
+    img = cv2.warpAffine(img, _warp_matrix(field, rng), (w, h), flags=cv2.INTER_LINEAR,
+                         borderMode=cv2.BORDER_CONSTANT, borderValue=tuple(float(c) for c in colour))
+    if rng.random() < 0.5:
+        img = _elastic(img, colour, rng)
+    detail = rng.random()
+    if detail < 0.4:
+        img = _restroke(img, field, colour, rng)
+    elif detail < 0.65:  # not both: a bolder and blurred pictogram loses what tells it from its neighbours
+        img = _simplified(img, colour, rng)
+    return np.where(field[..., None], img, face).astype(face.dtype)

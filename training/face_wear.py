@@ -114,7 +114,8 @@ def colour_masks(face: np.ndarray, alpha: np.ndarray):
 
 
 def rim_width(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.ndarray:
-    """A thinner red rim, as other countries and older print runs have it: the white field grown into the rim.
+    """A thinner red rim, as other countries and older print runs have it: the white field grown into the rim;
+    sometimes a wider one, the red grown into the white field.
 
     Without this the width of the rim alone tells classes apart that differ in
     their text (a Swiss speed limit's rim is wider than most), which no real
@@ -123,13 +124,18 @@ def rim_width(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> 
     red, white = colour_masks(face, alpha)
     if red.sum() < 0.05 * alpha.size or white.sum() < 0.02 * alpha.size:
         return face
+    out = face.copy()
+    if rng.random() < 0.3:  # a wider rim (other print runs): the red grown into the field by 1-4 % of the face
+        k = max(1, int(round(rng.uniform(0.01, 0.04) * max(face.shape[:2]))))
+        grown = cv2.dilate(red.astype(np.uint8), cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * k + 1, 2 * k + 1)))
+        paint = (grown > 0) & white
+        out[paint] = np.median(face[red], axis=0)
+        return out
     # the Swiss speed-limit rim is ~17 % of the diameter, Germany's ~9 %: thin by up to ~10 % of the face
     k = max(1, int(round(rng.uniform(0.015, 0.1) * max(face.shape[:2]))))
     grown = cv2.dilate(white.astype(np.uint8), cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * k + 1, 2 * k + 1)))
     paint = (grown > 0) & red
-    field = np.median(face[white], axis=0)
-    out = face.copy()
-    out[paint] = field
+    out[paint] = np.median(face[white], axis=0)
     return out
 
 

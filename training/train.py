@@ -251,7 +251,7 @@ def main(argv=None) -> None:
     p.add_argument("--batch", type=int, default=256)
     p.add_argument("--lr", type=float, default=3e-3)
     p.add_argument("--widths", type=int, nargs=4, default=(24, 48, 96, 160))
-    p.add_argument("--input-px", type=int, default=40)
+    p.add_argument("--input-px", type=int, default=32)
     p.add_argument("--margin", type=float, default=0.12)
     p.add_argument("--max-wrong", type=float, default=0.01, help="wrong share allowed among accepted (validation)")
     p.add_argument("--min-score", type=float, default=0.25, help="probability below which nothing is reported")
