@@ -139,7 +139,7 @@ catalogue: venv
 
 $(TRAIN_VENV)/.installed: requirements.txt requirements-train.txt
 	$(SYSTEM_PYTHON) -m venv --system-site-packages $(TRAIN_VENV)
-	$(TRAIN_PY) -m pip install -q -r requirements-train.txt
+	PYTHONPATH= $(TRAIN_PY) -m pip install -q -r requirements-train.txt
 	touch $@
 
 # Reproducible: same catalogue and arguments, same model. Generated patches are cached in /tmp.
