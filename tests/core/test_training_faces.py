@@ -12,9 +12,11 @@ from signmapper_core.catalogue import load_catalogue
 from training.dataset import CLASS_SHARE, class_shares, labels_for
 from training.face_variants import (
     MIRROR_SAFE,
+    design_field,
     inner_field,
     mirrored,
     pictogram_scaled,
+    pictogram_variant,
     speed_limit_face,
     speed_limit_number,
 )
@@ -94,6 +96,30 @@ def test_pictogram_scaled_keeps_the_rim(catalogue):
     assert np.abs(out[field].astype(int) - face[field].astype(int)).sum() > 0  # the bus changed size
     blue, blue_alpha = small_master(catalogue, "2.32")
     assert np.array_equal(pictogram_scaled(blue, blue_alpha, rng), blue)
+
+
+@pytest.mark.parametrize("template_id", ["1.31", "2.15", "4.20", "2.53-60"])
+def test_pictogram_variant_redraws_only_inside_the_field(catalogue, template_id):
+    """Generic design variation: the pictogram moves, bends, is restroked; rim, border and outline stay."""
+    face, alpha = small_master(catalogue, template_id)
+    field, colour = design_field(face, alpha)
+    assert 0.1 * alpha.size < field.sum() < (alpha > 127).sum()
+    assert np.abs(np.median(face[field].astype(np.float32), axis=0) - colour).sum() < 30  # the field's paint
+    changed = 0
+    for seed in range(6):
+        out = pictogram_variant(face, alpha, np.random.default_rng(seed))
+        assert out.shape == face.shape and out.dtype == face.dtype
+        assert np.array_equal(out[~field], face[~field])
+        changed += np.abs(out[field].astype(int) - face[field].astype(int)).sum() > 0
+    assert changed == 6
+
+
+def test_field_of_a_blue_panel_leaves_its_white_edge_out(catalogue):
+    face, alpha = small_master(catalogue, "4.20")
+    field, colour = design_field(face, alpha)
+    assert colour[0] > colour[2] + 60  # blue paint
+    ys, xs = np.nonzero(alpha > 127)
+    assert not field[ys.min():ys.min() + 2].any() and not field[:, xs.min():xs.min() + 2].any()
 
 
 def test_labels_follow_class_shares():
