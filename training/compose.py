@@ -16,7 +16,14 @@ from signmapper_core.pipeline.classifiers.face_patch import face_patch
 
 from .backgrounds import BackgroundPool
 from .camera_effects import blur, lighting, resolution_loss, sensor_noise_and_jpeg
-from .face_variants import MIRROR_SAFE, mirrored, pictogram_variant, speed_limit_face, speed_limit_number
+from .face_variants import (
+    MIRROR_SAFE,
+    mirrored,
+    pictogram_scaled,
+    pictogram_variant,
+    speed_limit_face,
+    speed_limit_number,
+)
 from .face_wear import wear_face
 
 WORK_PX = 192  # faces are worn at this size, then shrunk by pyramid steps to about twice the target size
@@ -119,8 +126,10 @@ class SampleMaker:
     """Makes labelled training patches from a catalogue's master images."""
 
     def __init__(self, catalogue, class_ids, backgrounds: BackgroundPool, input_px: int, margin: float,
-                 min_px: float = 14.0, max_px: float = 170.0):
+                 min_px: float = 14.0, max_px: float = 170.0, design_variants: bool = False):
         self.class_ids = list(class_ids)
+        # False: the shipped model's faces (30 % pictograms scaled); True: 50 % pictograms redrawn and wider rims too
+        self.design_variants = design_variants
         self.backgrounds = backgrounds
         self.input_px = input_px
         self.margin = margin
@@ -149,14 +158,17 @@ class SampleMaker:
             face = speed_limit_face(ring, alpha, number, rng)
         elif tid in MIRROR_SAFE and rng.random() < 0.5:
             face, alpha = mirrored(face, alpha)
-        if rng.random() < 0.5:  # the pictogram moved, resized, warped, restroked or simplified
+        if not self.design_variants:
+            if rng.random() < 0.3:
+                face = pictogram_scaled(face, alpha, rng)
+        elif rng.random() < 0.5:  # the pictogram moved, resized, warped, restroked or simplified
             face = pictogram_variant(face, alpha, rng)
         return face, alpha
 
     def _place_sign(self, canvas, tid, size_px, centre, rng, worn=True):
         face, alpha = _shrink(*self._design(tid, rng), size_px)
         if worn:
-            face = wear_face(face, alpha, rng)
+            face = wear_face(face, alpha, rng, wider_rims=self.design_variants)
         hom = view_homography(face.shape[1], face.shape[0], size_px, centre, rng)
         return paste(canvas, face, alpha, hom)
 

@@ -12,12 +12,13 @@ from .compose import SampleMaker
 _maker: SampleMaker | None = None
 
 
-def _init(catalogue_dir, class_ids, input_px, margin):
+def _init(catalogue_dir, class_ids, input_px, margin, design_variants=False):
     global _maker
     from signmapper_core.catalogue import load_catalogue
 
     pool = BackgroundPool(skimage_photos() + procedural_backgrounds(np.random.default_rng(12345)))
-    _maker = SampleMaker(load_catalogue(catalogue_dir), class_ids, pool, input_px, margin)
+    _maker = SampleMaker(load_catalogue(catalogue_dir), class_ids, pool, input_px, margin,
+                         design_variants=design_variants)
 
 
 def _make(job):
@@ -47,11 +48,11 @@ def labels_for(n_classes: int, per_class: int, background: int, seed: int, share
 
 
 def generate(catalogue_dir, class_ids, labels: np.ndarray, seed: int, input_px: int, margin: float,
-             workers: int = 2, progress=None) -> np.ndarray:
+             workers: int = 2, progress=None, design_variants: bool = False) -> np.ndarray:
     """uint8 patches (n, input_px, input_px, 3) for ``labels`` (index into ``class_ids``, -1 = background)."""
     jobs = [(seed, i, int(label)) for i, label in enumerate(labels)]
     out = np.empty((len(jobs), input_px, input_px, 3), np.uint8)
-    args = (str(catalogue_dir) if catalogue_dir else None, list(class_ids), input_px, margin)
+    args = (str(catalogue_dir) if catalogue_dir else None, list(class_ids), input_px, margin, design_variants)
     with mp.get_context("fork").Pool(workers, initializer=_init, initargs=args) as pool:
         for i, patch in enumerate(pool.imap(_make, jobs, chunksize=256)):
             out[i] = patch

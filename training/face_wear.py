@@ -113,7 +113,7 @@ def colour_masks(face: np.ndarray, alpha: np.ndarray):
     return red, white
 
 
-def rim_width(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+def rim_width(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator, wider: bool = True) -> np.ndarray:
     """A thinner red rim, as other countries and older print runs have it: the white field grown into the rim;
     sometimes a wider one, the red grown into the white field.
 
@@ -125,7 +125,7 @@ def rim_width(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> 
     if red.sum() < 0.05 * alpha.size or white.sum() < 0.02 * alpha.size:
         return face
     out = face.copy()
-    if rng.random() < 0.3:  # a wider rim (other print runs): the red grown into the field by 1-4 % of the face
+    if wider and rng.random() < 0.3:  # a wider rim (other print runs): red grown into the field by 1-4 % of the face
         k = max(1, int(round(rng.uniform(0.01, 0.04) * max(face.shape[:2]))))
         grown = cv2.dilate(red.astype(np.uint8), cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * k + 1, 2 * k + 1)))
         paint = (grown > 0) & white
@@ -150,11 +150,15 @@ def white_edge(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) ->
     return inner * inner_alpha + edge * (1 - inner_alpha)
 
 
-def wear_face(face_bgr: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.ndarray:
-    """A randomly worn copy of a face (uint8 BGR), each effect switched on with its own probability."""
+def wear_face(face_bgr: np.ndarray, alpha: np.ndarray, rng: np.random.Generator,
+              wider_rims: bool = False) -> np.ndarray:
+    """A randomly worn copy of a face (uint8 BGR), each effect switched on with its own probability.
+
+    ``wider_rims`` lets rims grow as well as thin (False: thinner only, as the shipped model was trained).
+    """
     face = face_bgr.astype(np.float32)
     if rng.random() < 0.45:
-        face = rim_width(face, alpha, rng)
+        face = rim_width(face, alpha, rng, wider=wider_rims)
     if rng.random() < 0.25:
         face = white_edge(face, alpha, rng)
     if rng.random() < 0.7:

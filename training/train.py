@@ -150,6 +150,7 @@ def train(args) -> dict:
     synthesis = hashlib.sha256(b"".join(f.read_bytes() for f in sorted(Path(__file__).parent.glob("*.py"))
                                         if f.name not in ("train.py", "model.py"))).hexdigest()
     tag = f"{digest[:12]}-{synthesis[:8]}-{args.input_px}-{args.margin}-{args.seed}"
+    tag += "-dv" if args.design_variants else ""
     cache = Path(args.cache)
 
     def log(msg):
@@ -158,7 +159,7 @@ def train(args) -> dict:
     def gen(labels, seed):
         lab = np.where(labels < 0, -1, labels)
         return generate(args.catalogue, class_ids[:-1], lab, seed, args.input_px, args.margin, args.workers,
-                        lambda i, n: log(f"  generated {i}/{n}"))
+                        lambda i, n: log(f"  generated {i}/{n}"), design_variants=args.design_variants)
 
     train_labels = labels_for(background, args.per_class, args.background, args.seed, class_shares(class_ids[:-1]))
     val_labels = labels_for(background, args.val_per_class, args.val_per_class * 4, args.seed + 1000)
@@ -256,6 +257,9 @@ def main(argv=None) -> None:
     p.add_argument("--max-wrong", type=float, default=0.01, help="wrong share allowed among accepted (validation)")
     p.add_argument("--min-score", type=float, default=0.25, help="probability below which nothing is reported")
     p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--design-variants", action="store_true",
+                   help="half the faces with their pictogram redrawn (moved, warped, restroked, simplified) and rims "
+                        "wider as well as thinner; off: the faces the shipped model was trained on")
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--workers", type=int, default=2, help="processes generating patches")
     p.add_argument("--cache", default="/tmp/signmapper-train", help="folder caching generated patches")

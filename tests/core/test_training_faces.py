@@ -129,3 +129,41 @@ def test_labels_follow_class_shares():
     assert counts == {"2.30-50": 100, "2.30.1": round(100 * CLASS_SHARE["2.30.1"]), "1.23": 100}
     assert int((labels == -1).sum()) == 50
     assert np.array_equal(labels, labels_for(3, 100, 50, seed=4, shares=class_shares(ids)))
+
+
+def test_rims_grow_only_with_design_variants(catalogue):
+    """Without ``--design-variants`` rims only thin, as the shipped model was trained; with it some grow."""
+    from training.face_wear import colour_masks, rim_width
+
+    face, alpha = small_master(catalogue, "2.30-50")
+    face = face.astype(np.float32)
+    red = colour_masks(face, alpha)[0].sum()
+    thin_only = [colour_masks(rim_width(face, alpha, np.random.default_rng(s), wider=False), alpha)[0].sum()
+                 for s in range(20)]
+    both = [colour_masks(rim_width(face, alpha, np.random.default_rng(s), wider=True), alpha)[0].sum()
+            for s in range(20)]
+    assert max(thin_only) <= red
+    assert max(both) > red * 1.05 and min(both) < red
+
+
+def test_design_variants_switch_the_pictogram_redrawing(catalogue, monkeypatch):
+    """The default faces are the shipped model's: pictograms scaled (30 %), never redrawn."""
+    from training import compose
+
+    calls = {"scaled": 0, "variant": 0}
+
+    def counted(name):
+        def redraw(face, alpha, rng):
+            calls[name] += 1
+            return face
+        return redraw
+
+    monkeypatch.setattr(compose, "pictogram_scaled", counted("scaled"))
+    monkeypatch.setattr(compose, "pictogram_variant", counted("variant"))
+    maker = compose.SampleMaker.__new__(compose.SampleMaker)
+    maker.masters = {"1.31": small_master(catalogue, "1.31")}
+    for flag in (False, True):
+        maker.design_variants = flag
+        for s in range(200):
+            maker._design("1.31", np.random.default_rng(s))
+    assert 30 < calls["scaled"] < 90 and 70 < calls["variant"] < 130
