@@ -17,7 +17,7 @@ from pathlib import Path
 import cv2
 import numpy as np
 
-from .face_wear import colour_masks
+from .face_wear import colour_masks, smooth_field
 
 # Pictograms whose mirror image means the same and is no other sign of the catalogue (not the curves
 # 1.01-1.04, narrowing 1.08/1.09, descent and climb 1.10/1.11, oncoming traffic 1.26, overtaking
@@ -223,8 +223,6 @@ def _elastic(img: np.ndarray, colour, rng: np.random.Generator) -> np.ndarray:
     """A smooth random displacement (up to ~2.5 % of the face, features a quarter of it large)."""
     h, w = img.shape[:2]
     amp = rng.uniform(0.008, 0.025) * max(h, w)
-    from .face_wear import smooth_field
-
     dx = smooth_field(rng, h, w, max(4, w / 4)) * amp
     dy = smooth_field(rng, h, w, max(4, h / 4)) * amp
     yy, xx = np.mgrid[0:h, 0:w].astype(np.float32)

@@ -83,10 +83,14 @@ def _ideal_pixels(shape: str, width: int, height: int) -> Tuple[np.ndarray, int]
     return _ideal(shape, width, height)
 
 
-def mask_iou(a: np.ndarray, b: np.ndarray) -> float:
-    """IoU of two bool masks."""
-    union = np.count_nonzero(a | b)
-    return float(np.count_nonzero(a & b)) / union if union else 0.0
+def mask_iou(a: np.ndarray, b: np.ndarray, counts: Optional[Tuple[int, int]] = None) -> float:
+    """IoU of two bool masks; ``counts`` (their pixel counts, when known) spares counting their union."""
+    if counts is None:
+        union = np.count_nonzero(a | b)
+        return float(np.count_nonzero(a & b)) / union if union else 0.0
+    inter = np.count_nonzero(a & b)
+    union = counts[0] + counts[1] - inter
+    return float(inter) / union if union else 0.0
 
 
 def classify_shape(mask: np.ndarray, min_fit: float, fill_window: float) -> ShapeResult:
@@ -114,11 +118,8 @@ def classify_shape(mask: np.ndarray, min_fit: float, fill_window: float) -> Shap
     count = int(area) if mask.dtype in (np.uint8, np.bool_) else int(np.count_nonzero(pixels))
     for shape, ideal_fill in IDEAL_FILL.items():
         if abs(fill - ideal_fill) <= fill_window:
-            # mask_iou with the union counted from both counts and the intersection (the same integers)
             ideal, ideal_count = _ideal_pixels(shape, width, height)
-            inter = np.count_nonzero(pixels & ideal)
-            union = count + ideal_count - inter
-            fits[shape] = float(inter) / union if union else 0.0
+            fits[shape] = mask_iou(pixels, ideal, (count, ideal_count))
     best = max(fits, key=fits.get) if fits else None
     if best is None or fits[best] < min_fit:
         return ShapeResult(None, fits.get(best, 0.0) if best else 0.0, fill, circularity, corners, fits)
