@@ -8,6 +8,10 @@ skipped-pair reporting and the output do not depend on the number of workers.
 Only a few pairs are in flight at a time (``AHEAD`` per worker): memory stays
 flat however long the drive is.
 
+The catalogue's templates are rendered once, here, while the workers start
+(:class:`TemplateHandoff`): each worker's imports and network load overlap the
+rendering instead of waiting for it.
+
 Workers are started with ``spawn`` (not ``fork``): a QGIS process has Qt and
 OpenCV threads that a forked child would inherit half-locked. Inside QGIS,
 ``sys.executable`` is the QGIS binary, so the workers' Python is looked up
@@ -18,7 +22,9 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import pickle
 import sys
+import tempfile
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures import TimeoutError as FutureTimeout
 from concurrent.futures.process import BrokenProcessPool
@@ -69,15 +75,72 @@ def python_executable() -> str:
                        f"(looked for {', '.join(str(c) for c in candidates)}); map with 1 worker process")
 
 
+class TemplateHandoff:
+    """The rendered templates handed from the pool's parent to workers that are already starting.
+
+    The parent writes them to a file and then sets an event; a worker waits for the
+    event only after its own imports and network load. A file, not a queue: a
+    queue's unread megabytes would block the parent at exit if a worker never
+    started. No file when the parent had none to give: the worker renders its own.
+    """
+
+    def __init__(self, context):
+        self.ready = context.Event()
+        handle, self.path = tempfile.mkstemp(prefix="signmapper-templates-", suffix=".pickle")
+        os.close(handle)
+        os.unlink(self.path)  # the name only: the file appears when the templates are written
+
+    def send(self, templates: Optional[dict]) -> None:
+        """Write ``templates`` (None: nothing to give) and let the workers go on."""
+        try:
+            if templates:
+                partial = f"{self.path}.part"
+                with open(partial, "wb") as out:
+                    pickle.dump(templates, out, protocol=pickle.HIGHEST_PROTOCOL)
+                os.replace(partial, self.path)
+        finally:
+            self.ready.set()
+
+    def receive(self) -> Optional[dict]:
+        """In a worker: the templates once the parent has sent them; None when it had none or has gone."""
+        parent = multiprocessing.parent_process()
+        while not self.ready.wait(1.0):
+            if parent is not None and not parent.is_alive():
+                return None
+        try:
+            with open(self.path, "rb") as source:
+                return pickle.load(source)
+        except FileNotFoundError:
+            return None
+
+    def close(self) -> None:
+        """Release waiting workers and remove the file (call after the workers have ended)."""
+        self.ready.set()
+        for path in (self.path, f"{self.path}.part"):
+            try:
+                os.unlink(path)
+            except FileNotFoundError:
+                pass
+
+
 def _start_worker(drive, catalogue, config, detect: Optional[Callable], opencv_threads: int,
-                  templates: Optional[dict] = None) -> None:
+                  templates: Optional[TemplateHandoff] = None) -> None:
     import cv2
 
     cv2.setNumThreads(opencv_threads)
-    if templates:
+    from . import mapping  # noqa: F401  the pipeline's imports, while the parent still renders the templates
+    from .pipeline.classifiers import classifier_for
+    from .pipeline.detect import detect_pair  # noqa: F401  (imported lazily by the package)
+
+    try:
+        classifier_for(catalogue, config)  # the network, loaded once per process, also while the parent renders
+    except Exception:  # noqa: BLE001  the parent loaded it; if it fails here, each pair reports why
+        pass
+    rendered = templates.receive() if templates is not None else None
+    if rendered:
         from .pipeline.classify import seed_canonical_templates
 
-        seed_canonical_templates(catalogue, templates)
+        seed_canonical_templates(catalogue, rendered)
     _worker_state.update(drive=drive, catalogue=catalogue, config=config, detect=detect)
 
 
@@ -89,13 +152,11 @@ def _map_in_worker(index: int):
                     state["detect"])
 
 
-def _rendered_templates(catalogue) -> Optional[dict]:
-    """The catalogue's templates rendered once here for all workers (each would decode the PNGs itself); None
-    for a catalogue that is not one of the project's (a test's stand-in)."""
+def _is_project_catalogue(catalogue) -> bool:
+    """Whether ``catalogue`` is one of the project's (a test's stand-in has no templates to render)."""
     from .catalogue import Catalogue
-    from .pipeline.classify import canonical_templates
 
-    return canonical_templates(catalogue) if isinstance(catalogue, Catalogue) else None
+    return isinstance(catalogue, Catalogue)
 
 
 def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[CancelCheck] = None,
@@ -113,15 +174,27 @@ def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[
     pairs = drive.pairs
     # the workers read pairs: the ground truth and what was wrong with it (an exception) stay here
     pairs_only = replace(drive, truth=None, truth_error=None, warnings=[])
+    handoff = TemplateHandoff(context) if _is_project_catalogue(catalogue) else None
     executor = ProcessPoolExecutor(workers, mp_context=context, initializer=_start_worker,
                                    initargs=(pairs_only, catalogue, config, detect, OPENCV_THREADS_PER_WORKER,
-                                             _rendered_templates(catalogue)))
+                                             handoff))
+    pending, submitted = {}, 0
+
+    def queue_up_to(index: int) -> None:
+        nonlocal submitted
+        while submitted < len(pairs) and submitted < index + workers * (1 + AHEAD):
+            pending[submitted] = executor.submit(_map_in_worker, submitted)
+            submitted += 1
+
     try:
-        pending, submitted = {}, 0
+        queue_up_to(0)  # starts the workers
+        if handoff is not None:
+            from .pipeline.classify import canonical_templates
+
+            # rendered here once for all, on every core while the workers wait for them after their imports
+            handoff.send(canonical_templates(catalogue, threads=available_cores()))
         for index in range(len(pairs)):
-            while submitted < len(pairs) and submitted < index + workers * (1 + AHEAD):
-                pending[submitted] = executor.submit(_map_in_worker, submitted)
-                submitted += 1
+            queue_up_to(index)
             future = pending.pop(index)
             while True:
                 check_cancelled(is_cancelled, what)
@@ -138,4 +211,8 @@ def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[
             result.record = pairs[index]  # the caller's record, not the worker's copy
             yield result
     finally:
+        if handoff is not None:
+            handoff.ready.set()  # workers still waiting for templates (a failed rendering, cancel) go on and stop
         executor.shutdown(wait=True, cancel_futures=True)
+        if handoff is not None:
+            handoff.close()

@@ -14,7 +14,7 @@ from failing_detection import detect_failing_at, exit_at
 
 from signmapper_core.drive import open_drive
 from signmapper_core.mapping import map_drive
-from signmapper_core.pair_pool import available_cores, python_executable, worker_count
+from signmapper_core.pair_pool import TemplateHandoff, available_cores, python_executable, worker_count
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.progress import Cancelled
 from signmapper_core.simulate import SimulationConfig, generate_drive
@@ -115,3 +115,30 @@ def test_a_worker_that_dies_is_a_mapping_error_naming_the_pair(stereo_drive, cat
     assert first <= failing.id <= last
     assert "mapping with 1 worker process shows which pair" in str(caught.value)
     assert multiprocessing.active_children() == []
+
+
+def test_template_handoff_gives_what_was_sent_or_nothing_and_leaves_no_file():
+    context = multiprocessing.get_context("spawn")
+    sent = TemplateHandoff(context)
+    sent.send({"1.01": (np.full((3, 4, 3), 7, np.uint8), np.full((3, 4), 255, np.uint8))})
+    (bgr, alpha), = sent.receive().values()
+    assert bgr.shape == (3, 4, 3) and int(bgr.max()) == 7 and int(alpha.min()) == 255
+    sent.close()
+    assert not Path(sent.path).exists() and sent.receive() is None
+    nothing = TemplateHandoff(context)
+    nothing.send(None)  # a catalogue without templates to give: the worker renders its own
+    assert nothing.ready.is_set() and nothing.receive() is None
+    nothing.close()
+
+
+def test_templates_that_cannot_be_rendered_end_the_run_with_that_error_and_release_the_waiting_workers(
+        stereo_drive, catalogue, monkeypatch):
+    import signmapper_core.pipeline.classify as classify
+
+    def broken(*args, **kwargs):
+        raise OSError("template PNG unreadable")
+
+    monkeypatch.setattr(classify, "canonical_templates", broken)
+    with pytest.raises(OSError, match="template PNG unreadable"):
+        map_drive(open_drive(stereo_drive), catalogue, PipelineConfig(), workers=2)
+    assert multiprocessing.active_children() == []  # the workers waiting for the templates did not hang

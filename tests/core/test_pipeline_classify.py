@@ -204,7 +204,7 @@ def test_templates_rendered_for_worker_processes_are_those_a_worker_renders_and_
     from signmapper_core.pipeline.classify import canonical_template, canonical_templates, seed_canonical_templates
 
     here = load_catalogue()
-    rendered = canonical_templates(here)
+    rendered = canonical_templates(here, threads=2)  # as the pool's parent renders them
     assert set(rendered) == set(here.ids())
     assert not here._masters  # the full-size images are not kept
     worker = pickle.loads(pickle.dumps(load_catalogue()))  # what a worker process receives
@@ -214,3 +214,12 @@ def test_templates_rendered_for_worker_processes_are_those_a_worker_renders_and_
         for got, want in zip(canonical_template(worker, template_id), canonical_template(fresh, template_id)):
             assert got.shape == want.shape and np.array_equal(got, want)
     assert not worker._masters and len(fresh._masters) == len(here)  # the seeded one decoded no PNG
+
+
+def test_templates_rendered_on_several_threads_are_those_rendered_one_after_the_other():
+    from signmapper_core.pipeline.classify import canonical_templates
+
+    serial, threaded = canonical_templates(load_catalogue()), canonical_templates(load_catalogue(), threads=3)
+    assert list(threaded) == list(serial)  # catalogue order
+    for template_id, (bgr, alpha) in serial.items():
+        assert np.array_equal(threaded[template_id][0], bgr) and np.array_equal(threaded[template_id][1], alpha)
