@@ -31,6 +31,7 @@ IDEAL_FILL = {"circle": np.pi / 4, "triangle": 0.5, "triangle-down": 0.5, "octag
               "diamond": 0.5, "rectangle": 1.0}
 SHAPES = tuple(IDEAL_FILL)
 _SHIFT = 4  # fixed-point bits for sub-pixel drawing
+_POLYGON_ARRAYS = {shape: np.array(corners, dtype=np.float64) for shape, corners in IDEAL_POLYGONS.items()}
 
 
 @dataclass(frozen=True)
@@ -48,15 +49,20 @@ def ideal_mask(shape: str, width: int, height: int) -> np.ndarray:
 
     The box spans the pixels' outer edges, -0.5 .. width-0.5 in pixel-centre coordinates.
     """
+    return _drawn_ideal(shape, width, height, 255)
+
+
+def _drawn_ideal(shape: str, width: int, height: int, value: int) -> np.ndarray:
+    """:func:`ideal_mask` drawn with ``value`` (1: a mask that views as bool without a comparison pass)."""
     mask = np.zeros((height, width), dtype=np.uint8)
     scale = 1 << _SHIFT
     if shape == "circle":
         centre = (int(round((width - 1) / 2 * scale)), int(round((height - 1) / 2 * scale)))
         axes = (int(round(width / 2 * scale)), int(round(height / 2 * scale)))
-        cv2.ellipse(mask, centre, axes, 0, 0, 360, 255, thickness=cv2.FILLED, shift=_SHIFT)
+        cv2.ellipse(mask, centre, axes, 0, 0, 360, value, thickness=cv2.FILLED, shift=_SHIFT)
         return mask
-    pts = np.array([[(x * width - 0.5) * scale, (y * height - 0.5) * scale] for x, y in IDEAL_POLYGONS[shape]])
-    cv2.fillPoly(mask, [np.round(pts).astype(np.int32)], 255, shift=_SHIFT)
+    pts = (_POLYGON_ARRAYS[shape] * (width, height) - 0.5) * scale
+    cv2.fillPoly(mask, [np.round(pts).astype(np.int32)], value, shift=_SHIFT)
     return mask
 
 
@@ -64,7 +70,7 @@ _CACHED_IDEAL_PX = 128 * 128  # larger boxes are rare and each would hold much m
 
 
 def _ideal(shape: str, width: int, height: int) -> Tuple[np.ndarray, int]:
-    ideal = ideal_mask(shape, width, height) > 0
+    ideal = _drawn_ideal(shape, width, height, 1).view(np.bool_)
     return ideal, int(np.count_nonzero(ideal))
 
 
