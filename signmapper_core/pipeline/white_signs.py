@@ -5,19 +5,21 @@ space, of a standard white format at its depth, planar and upright (the detectio
 every sign), standing free (its sides at its own depth are not a wall or a van's body: windows, shop
 signs and house numbers sit in a façade), held by a support below it (a pole, seen as straight vertical
 edges or at its depth, or the sign under it on the same pole; without one it must resemble its template
-more clearly), and resembling a white template. Classification is the paper's template matching (NCC)
-among the white entries: the learned network knows only the families it was trained on.
+more clearly), and resembling a white template (the paper's template matching, NCC, among the white
+entries). Its id is then read by the pipeline's classifier where that knows every white candidate (a network
+trained on them), else it is the template matching's.
 """
 
 from __future__ import annotations
 
-from typing import List, Optional, Sequence
+from typing import List, Optional, Sequence, Tuple
 
 import cv2
 import numpy as np
 
 from ..face_normal import world_face_normal
-from .classify import classify_segment
+from .classifiers import accept_threshold
+from .classify import ClassificationResult, classify_segment
 from .colour import Segment, inscribed_disc
 from .detection import Detection
 from .hough import outer_ring, weak_colour
@@ -166,6 +168,23 @@ def _outline_candidate(shape: str, box, image_shape, touches_border: bool) -> Li
     return [WhiteCandidate(seg, shape)]
 
 
+def read_white_face(pair: PairContext, bbox, ids: Sequence[str], matched: ClassificationResult
+                    ) -> Tuple[ClassificationResult, str]:
+    """(classification, status) of a white face that resembles a white template (``matched``: template matching
+    among ``ids``). The pipeline's classifier reads it when it knows every one of ``ids`` (a network trained on
+    the white family tells their pictograms apart better than a correlation of pale faces, and its indicator is
+    calibrated like every other sign's); otherwise, or when it reads no id, the template matching stands."""
+    config = pair.config
+    matched_status = "accepted" if matched.score >= config.white.white_accept_score else "review"
+    reader = pair.classifier_knowing(ids)
+    if reader is pair.template_matcher:
+        return matched, matched_status
+    read = reader.classify(pair.left, bbox, ids)
+    if read.template_id is None:
+        return matched, "review"  # resembles a white template, but the network reads none of them
+    return read, "accepted" if read.score >= accept_threshold(reader, config) else "review"
+
+
 def judge_white(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey: np.ndarray,
                 refit_format: bool = True, panels: Optional[list] = None) -> Optional[Detection]:
     """The white sign ``cand`` is, or None (cut, off the search space, no white format, not planar, not
@@ -220,14 +239,15 @@ def judge_white(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
     floor = config.white.white_min_score if supported else config.white.white_unsupported_min_score
     if cls.template_id is None or cls.score < floor:
         return None
+    cls, status = read_white_face(pair, seg.bbox, ids, cls)
     entry = catalogue[cls.template_id]
     names = getattr(entry, "names", None) or {}
     return Detection(
         template_id=cls.template_id, name=names.get("de") or next(iter(names.values()), entry.id),
         colour="white", shape=entry.shape, width_m=match.width_m, height_m=match.height_m, format=match.format,
         detection_indicator=planarity.indicator, classification_indicator=cls.score,
-        status="accepted" if cls.score >= config.white.white_accept_score else "review",
-        u=u, v=v, bbox=seg.bbox, depth_m=float(z), position=locate(camera, pair.pose, u, v, z), source="white",
+        status=status, u=u, v=v, bbox=seg.bbox, depth_m=float(z), position=locate(camera, pair.pose, u, v, z),
+        source="white",
         scores=cls.scores, normal_world=world_face_normal(camera, pair.pose, planarity.plane),
     )
 

@@ -361,3 +361,41 @@ def test_a_red_ringed_zone_panel_is_coloured_but_a_white_panel_in_warm_light_is_
     limit = CONFIG.white.white_max_coloured_share
     assert coloured_share(panel, box, CONFIG) == 0.0 and coloured_share(warm, box, CONFIG) < limit
     assert coloured_share(ringed, box, CONFIG) > limit
+
+
+class _NetworkReading:
+    """A stand-in for a network trained on the white family: knows every id, reads each face as ``answer``
+    (when that is a candidate) with ``score``."""
+
+    name, accept_threshold, min_score, marginal_min_score = "stand-in", 0.85, 0.25, 0.5
+
+    def __init__(self, answer: str, score: float):
+        self.answer, self.score = answer, score
+
+    def knows(self, template_ids):
+        return True
+
+    def classify(self, image, bbox, candidate_ids):
+        from signmapper_core.pipeline.classify import ClassificationResult
+
+        if self.answer not in candidate_ids:
+            return ClassificationResult(None, 0.0)
+        return ClassificationResult(self.answer, self.score, {self.answer: self.score})
+
+
+@pytest.mark.parametrize("answer, score, want_id, want_indicator, want_status", [
+    ("2.56", 0.95, "2.56", 0.95, "accepted"),  # the network's id and its calibrated indicator
+    ("2.56", 0.60, "2.56", 0.60, "review"),  # below the network's acceptance threshold
+    ("4.17", 0.95, "2.55", None, "review"),  # no white candidate read: the template matching's id, for review
+])
+def test_a_white_face_is_read_by_a_network_that_knows_the_white_family(catalogue, monkeypatch, answer, score,
+                                                                       want_id, want_indicator, want_status):
+    import signmapper_core.pipeline.pair_context as pair_context
+
+    sign, left, depth, _ = _pole_scene(catalogue, "2.55", "normal")
+    (matched,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG)  # the shipped network: NCC
+    monkeypatch.setattr(pair_context, "classifier_for", lambda catalogue, config: _NetworkReading(answer, score))
+    (det,) = [d for d in detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG) if d.source == "white"]
+    assert (det.template_id, det.status) == (want_id, want_status)
+    assert det.classification_indicator == pytest.approx(want_indicator or matched.classification_indicator)
+    assert np.linalg.norm(det.position - sign) < 0.1 and det.bbox == matched.bbox
