@@ -172,8 +172,8 @@ def read_white_face(pair: PairContext, bbox, ids: Sequence[str], matched: Classi
                     ) -> Tuple[ClassificationResult, str]:
     """(classification, status) of a white face that resembles a white template (``matched``: template matching
     among ``ids``). The pipeline's classifier reads it when it knows every one of ``ids`` (a network trained on
-    the white family tells their pictograms apart better than a correlation of pale faces, and its indicator is
-    calibrated like every other sign's); otherwise, or when it reads no id, the template matching stands."""
+    the white family reads pictograms, not the correlation of pale faces, and its indicator is calibrated like
+    every other sign's); otherwise, or when it reads no id, the template matching stands."""
     config = pair.config
     matched_status = "accepted" if matched.score >= config.white.white_accept_score else "review"
     reader = pair.classifier_knowing(ids)
