@@ -124,18 +124,17 @@ def rim_width(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator, wid
     red, white = colour_masks(face, alpha)
     if red.sum() < 0.05 * alpha.size or white.sum() < 0.02 * alpha.size:
         return face
-    out = face.copy()
     if wider and rng.random() < 0.3:  # a wider rim (other print runs): red grown into the field by 1-4 % of the face
-        k = max(1, int(round(rng.uniform(0.01, 0.04) * max(face.shape[:2]))))
-        grown = cv2.dilate(red.astype(np.uint8), cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * k + 1, 2 * k + 1)))
-        paint = (grown > 0) & white
-        out[paint] = np.median(face[red], axis=0)
-        return out
+        return _grown_into(face, red, white, max(1, int(round(rng.uniform(0.01, 0.04) * max(face.shape[:2])))))
     # the Swiss speed-limit rim is ~17 % of the diameter, Germany's ~9 %: thin by up to ~10 % of the face
-    k = max(1, int(round(rng.uniform(0.015, 0.1) * max(face.shape[:2]))))
-    grown = cv2.dilate(white.astype(np.uint8), cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * k + 1, 2 * k + 1)))
-    paint = (grown > 0) & red
-    out[paint] = np.median(face[white], axis=0)
+    return _grown_into(face, white, red, max(1, int(round(rng.uniform(0.015, 0.1) * max(face.shape[:2])))))
+
+
+def _grown_into(face: np.ndarray, source: np.ndarray, target: np.ndarray, k: int) -> np.ndarray:
+    """A copy of ``face`` whose ``target`` pixels within ``k`` px of ``source`` take ``source``'s median colour."""
+    grown = cv2.dilate(source.astype(np.uint8), cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (2 * k + 1, 2 * k + 1)))
+    out = face.copy()
+    out[(grown > 0) & target] = np.median(face[source], axis=0)
     return out
 
 
