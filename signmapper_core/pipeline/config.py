@@ -484,6 +484,9 @@ class WhiteConfig:
     white_format_min_iou: float = 0.5  # the format's outline overlaps the candidate's box at least this much
     white_disc_in_panel: float = 0.8  # a disc found with this share of its box inside a white panel found too is
     # the panel's zone disc, not a sign (tune drives 1700-1705: a 2.59.2 panel's ring read as 2.53.1 in 3 views)
+    white_panel_around: bool = True  # a disc read as a sign is sought once more as the zone disc of a white
+    # panel around it, the panel's four sides on strong edges (white_min_panel_support): a 2.59.2 before a pale
+    # wall was found as its disc alone and read as 2.53.1 (tune drive 1706)
     white_ring_ratios: Tuple[float, float] = (1.25, 1.75)  # a disc is also judged as the outer outline of an
     # achromatic ring around it, this many times its radius (2.53.1's grey ring: 1.5): held-out drives confused
     # 2.53.1 with 2.53-60 three times, the candidate its inner field, the ring's outline lost before pale walls

@@ -341,7 +341,39 @@ def format_outline(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[str, fl
     where it overlaps ``bbox`` by at least ``white_format_min_iou``, in the image scanned at ``scale`` like
     the candidates, and the edges decide between the formats.
     """
-    white = config.white
+    min_iou = config.white.white_format_min_iou
+    return _best_outline(grey, bbox, sizes_px, scale, config, config.white.white_min_edge_support,
+                         lambda placed, face: box_iou(placed, face) >= min_iou)
+
+
+def panel_around(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[float, float]], scale: float,
+                 config: PipelineConfig) -> Optional[Tuple[str, Box, float]]:
+    """("rectangle", box, edge support) of the panel outline of a standard size around the disc ``bbox`` whose
+    four sides lie best on strong edges (at least ``white_min_panel_support`` of them), or None.
+
+    An end-of-zone panel carries its zone's disc; where the panel's field is pale before a pale wall, or
+    its lettering and stripe cut it into cells too small to read, only the disc is found, and it resembles
+    a disc sign (2.53.1, 2.30-30). ``sizes_px``: (width, height) of the white panel formats at the disc's
+    depth; only those larger than the disc both ways are tried, wherever they hold the whole disc. A disc
+    over a plate or before a wall has no straight outline on all four sides at a panel's size.
+    """
+    x, y, w, h = bbox
+    sizes = [("rectangle", fw, fh) for fw, fh in sizes_px if fw > w and fh > h]
+    if not sizes:
+        return None
+    return _best_outline(grey, bbox, sizes, scale, config, config.white.white_min_panel_support,
+                         lambda placed, face: (placed[0] <= face[0] + 1 and placed[1] <= face[1] + 1
+                                               and placed[0] + placed[2] >= face[0] + face[2] - 1
+                                               and placed[1] + placed[3] >= face[1] + face[3] - 1))
+
+
+def _best_outline(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[str, float, float]], scale: float,
+                  config: PipelineConfig, min_support: float, placed_well
+                  ) -> Optional[Tuple[str, Box, float]]:
+    """(shape, box, edge support) of the outline among ``sizes_px`` (shape, width, height in full-image pixels)
+    lying best on strong edges, placed on a one-pixel grid of the image scanned at ``scale`` wherever
+    ``placed_well(placed, face)`` holds (both boxes at that scale; ``face`` is ``bbox``), or None when the
+    best has less support than ``min_support``."""
     x, y, w, h = bbox
     height, width = grey.shape[:2]
     big = max([w, h] + [max(sw, sh) for _, sw, sh in sizes_px])
@@ -352,7 +384,8 @@ def format_outline(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[str, fl
     crop = grey[y0:y1, x0:x1]
     small = cv2.resize(crop, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA) if scale < 1 else crop
     gradients = (cv2.Sobel(small, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(small, cv2.CV_32F, 0, 1, ksize=3))
-    sx, sy, sw0, sh0 = (x - x0) * scale, (y - y0) * scale, w * scale, h * scale
+    face = ((x - x0) * scale, (y - y0) * scale, w * scale, h * scale)
+    sx, sy, sw0, sh0 = face
     best = None
     for shape, fw, fh in sizes_px:
         fw, fh = fw * scale, fh * scale
@@ -361,7 +394,7 @@ def format_outline(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[str, fl
         vs = np.arange(np.floor(min(sy, sy + sh0 - fh)), np.ceil(max(sy, sy + sh0 - fh)) + 1.0)
         for u in us:
             for v in vs:
-                if box_iou((u, v, fw, fh), (sx, sy, sw0, sh0)) < white.white_format_min_iou:
+                if not placed_well((u, v, fw, fh), face):
                     continue
                 if shape == "circle":
                     support = edge_support(gradients, u + fw / 2.0, v + fh / 2.0, fw / 2.0, config)
@@ -370,7 +403,7 @@ def format_outline(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[str, fl
                                                            int(round(fh))), config)
                 if best is None or support > best[0]:
                     best = (support, shape, (u, v, fw, fh))
-    if best is None or best[0] < white.white_min_edge_support:
+    if best is None or best[0] < min_support:
         return None
     support, shape, (u, v, fw, fh) = best
     return shape, (int(round(x0 + u / scale)), int(round(y0 + v / scale)), int(round(fw / scale)),

@@ -14,6 +14,7 @@ from signmapper_core.pipeline.white_outlines import (
     face_side_range_px,
     format_outline,
     group_cells,
+    panel_around,
     read_face,
     ring_around,
     scan_scale,
@@ -236,6 +237,26 @@ def test_zone_end_panel_is_detected(catalogue):
     assert [(d.template_id, d.source) for d in dets] == [("2.59.2", "white")]
 
 
+def test_zone_end_panel_before_a_pale_wall_is_read_as_the_panel_not_as_its_disc(catalogue):
+    # held-out drives: a 2.59.2 before a pale wall was found as its zone disc alone and read as a disc sign;
+    # sought as the disc of a panel around it, the panel is found (without that, the disc is the sign)
+    sign = _world(10.0, 1.2, 0.3)
+    left, depth, bbox = sign_scene(catalogue, "2.59.2", "normal", sign, background_depth=30.0)
+    wall = noisy_background(seed=2, level=190, sigma=6)
+    x, y, w, h = bbox
+    outside = np.ones(left.shape[:2], bool)
+    outside[y : y + h, x : x + w] = False
+    left[outside] = wall[outside]
+    left = cv2.GaussianBlur(left, (0, 0), 1.0)
+    (det,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG)
+    assert (det.template_id, det.status, det.format) == ("2.59.2", "accepted", "normal")
+    assert max(abs(a - b) for a, b in zip(det.bbox, bbox)) <= 2
+    assert np.linalg.norm(det.position - sign) < 0.1
+    disc_only = with_settings(CONFIG, {"white": {"white_panel_around": False}})
+    (det,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, disc_only)
+    assert det.template_id != "2.59.2" and det.bbox[2] < w
+
+
 def test_white_step_can_be_switched_off(catalogue):
     _, left, depth, _ = _pole_scene(catalogue, "2.55", "normal")
     off = with_settings(CONFIG, {"white": {"white_signs": False}})
@@ -307,6 +328,34 @@ def test_a_face_read_too_large_is_read_again_as_the_format_whose_outline_lies_on
     # no outline of a format near: none
     flat = np.full((160, 160), 120, np.uint8)
     assert format_outline(flat, (58, 58, 56, 56), sizes, 1.0, CONFIG) is None
+
+
+def test_a_disc_in_a_panel_before_a_pale_wall_finds_the_panels_outline_around_it():
+    # 2.59.2 before a pale wall: a 50 x 70 px panel with a thin dark border holds its zone's 30 px disc,
+    # and only the disc was a candidate; of the panel formats the one whose sides lie on edges is read (within
+    # the outline's one-pixel tolerance either side of the border line)
+    wall = cv2.cvtColor(noisy_background(200, 160, seed=6, level=205, sigma=6), cv2.COLOR_BGR2GRAY)
+    grey = wall.copy()
+    cv2.rectangle(grey, (50, 40), (99, 109), 235, -1)
+    cv2.rectangle(grey, (50, 40), (99, 109), 60, 1)
+    cv2.circle(grey, (75, 62), 15, 120, -1)
+    cv2.circle(grey, (75, 62), 11, 240, -1)
+    grey = cv2.GaussianBlur(grey, (0, 0), 0.8)
+    disc, sizes = (60, 47, 31, 31), [(50.0, 70.0), (75.0, 105.0), (20.0, 28.0)]
+    shape, (x, y, w, h), support = panel_around(grey, disc, sizes, 1.0, CONFIG)
+    assert shape == "rectangle" and abs(x - 50) <= 2 and abs(y - 40) <= 2 and (w, h) == (50, 70)
+    assert support >= CONFIG.white.white_min_panel_support
+    # the same disc alone before the wall, or above a plate narrower than any panel: no panel around it
+    alone = wall.copy()
+    cv2.circle(alone, (75, 62), 15, 120, -1)
+    cv2.circle(alone, (75, 62), 11, 240, -1)
+    assert panel_around(cv2.GaussianBlur(alone, (0, 0), 0.8), disc, sizes, 1.0, CONFIG) is None
+    plated = alone.copy()
+    cv2.rectangle(plated, (58, 80), (92, 96), 235, -1)
+    cv2.rectangle(plated, (58, 80), (92, 96), 60, 1)
+    assert panel_around(cv2.GaussianBlur(plated, (0, 0), 0.8), disc, sizes, 1.0, CONFIG) is None
+    # no panel format larger than the disc: none sought
+    assert panel_around(grey, disc, [(20.0, 28.0)], 1.0, CONFIG) is None
 
 
 def test_a_grey_ring_around_a_disc_is_its_outer_outline():
