@@ -110,35 +110,39 @@ def breakdowns(records: list, columns: Callable[[list], List[str]], header: Sequ
 
 
 def run_classify(args, catalogue, config: PipelineConfig) -> int:
+    from signmapper_core.pipeline.classifiers import NccClassifier, accept_threshold
+
     clf = make_classifier(args.classifier, catalogue, args.model)
-    signs = load_manifest(args.data / args.manifest, known_ids={e.id for e in catalogue})
-    # a network knows the ids it was trained on: catalogue entries added since (the white signs, read by NCC in
-    # white_signs.py) are neither its candidates nor signs it can be asked about
-    unknown = Counter(s.ssv_id for s in signs if not clf.knows([s.ssv_id]))
-    if unknown:
-        print(f"left out {sum(unknown.values())} signs whose ids the {clf.name} classifier does not know: "
-              f"{', '.join(f'{t} ({n})' for t, n in sorted(unknown.items()))}")
-    signs = select([s for s in signs if s.ssv_id not in unknown], args.split, args.limit, args.seed)
-    chosen = config.classification.classification_threshold
-    threshold = chosen if chosen is not None else clf.accept_threshold
-    records = []
+    matcher = NccClassifier(catalogue, config)
+    signs = select(load_manifest(args.data / args.manifest, known_ids={e.id for e in catalogue}), args.split,
+                   args.limit, args.seed)
+    records, by_matching = [], Counter()
     start = time.perf_counter()
     for sign in signs:
         entry = catalogue[sign.ssv_id]
-        candidates = [e.id for e in catalogue.filter(colours=[entry.colour], shapes=[entry.shape])
-                      if clf.knows([e.id])]
-        result = clf.classify(sign.load_image(), sign.bbox, candidates)
-        predicted, score = result.template_id, result.score
-        records.append({"sign": sign, "id": predicted, "score": score, "n_cand": len(candidates)})
+        candidates = [e.id for e in catalogue.filter(colours=[entry.colour], shapes=[entry.shape])]
+        # as the pipeline does (PairContext.classifier_knowing): a network that does not know every candidate
+        # (one trained before the white family was catalogued) leaves the sign to template matching
+        reader = clf if clf.knows(candidates) else matcher
+        if reader is not clf:
+            by_matching[sign.ssv_id] += 1
+        result = reader.classify(sign.load_image(), sign.bbox, candidates)
+        records.append({"sign": sign, "id": result.template_id, "score": result.score, "n_cand": len(candidates),
+                        "accepted": result.score >= accept_threshold(reader, config)})
     seconds = time.perf_counter() - start
     which = f"{clf.name} {args.model}" if args.model else clf.name
     print(f"classify ({which}) on {args.data / args.manifest}: split={args.split}, {len(records)} signs, "
           f"{seconds:.0f} s ({1000 * seconds / max(1, len(records)):.0f} ms/sign); perfect box, candidates = "
-          f"catalogue entries of the true colour and shape; accepted = score >= {threshold}")
+          f"catalogue entries of the true colour and shape; accepted = score >= "
+          f"{accept_threshold(clf, config)}")
+    if by_matching and clf is not matcher:
+        print(f"read by template matching (accepted >= {accept_threshold(matcher, config)}), the {clf.name} "
+              f"classifier not knowing every candidate: {sum(by_matching.values())} signs, "
+              f"{', '.join(f'{t} ({n})' for t, n in sorted(by_matching.items()))}")
 
     def columns(sel):
         correct = sum(r["id"] == r["sign"].ssv_id for r in sel)
-        accepted = [r for r in sel if r["score"] >= threshold]
+        accepted = [r for r in sel if r["accepted"]]
         wrong_acc = sum(r["id"] != r["sign"].ssv_id for r in accepted)
         return [pct(correct, len(sel)), pct(len(accepted), len(sel)), pct(wrong_acc, len(accepted)),
                 f"{statistics.mean(r['score'] for r in sel):.2f}" if sel else "-"]
@@ -195,9 +199,15 @@ def run_detect(args, catalogue, config: PipelineConfig) -> int:
     scenes = select(load_scene_list(args.data / "scenes_images.csv"), args.split, args.limit, args.seed)
     signs = load_manifest(args.data / "scenes.csv", known_ids={e.id for e in catalogue})
     other = _read_other(args.data / "scenes_other.csv")
+    # the colour step does not look for white signs (the white step needs depth): theirs are labelled boxes
+    # like the unmapped classes', not signs it could have found
+    white = [s for s in signs if catalogue[s.ssv_id].colour == "white"]
+    for s in white:
+        other.setdefault(s.image.relative_to(args.data).as_posix(), []).append(s.bbox)
     by_image = defaultdict(list)
     for s in signs:
-        by_image[s.image].append(s)
+        if catalogue[s.ssv_id].colour != "white":
+            by_image[s.image].append(s)
     records, per_image = [], []
     start = time.perf_counter()
     for scene in scenes:
@@ -211,11 +221,11 @@ def run_detect(args, catalogue, config: PipelineConfig) -> int:
             records.append({"sign": sign, "on": on, "found": found})
         with_cands = [b for b, readings in segments if readings]
         away = [b for b in with_cands if not any(box_iou(b, t) > 0 for t in labelled)]
-        per_image.append((scene, len(segments), len(with_cands), len(away)))
+        per_image.append((bool(truth), len(segments), len(with_cands), len(away)))
     seconds = time.perf_counter() - start
     print(f"detect (colour step, no depth) on {args.data / 'scenes_images.csv'}: split={args.split}, "
           f"{len(per_image)} images, {len(records)} signs, {seconds:.0f} s "
-          f"({seconds / max(1, len(per_image)):.2f} s/image)")
+          f"({seconds / max(1, len(per_image)):.2f} s/image); {len(white)} white signs left out (all splits)")
 
     def columns(sel):
         return [pct(sum(r["found"] for r in sel), len(sel)), pct(sum(r["on"] for r in sel), len(sel))]
@@ -228,8 +238,8 @@ def run_detect(args, catalogue, config: PipelineConfig) -> int:
             + columns(by_id[sid]) for sid in sorted(by_id, key=lambda s: (by_id[s][0]["sign"].group, s))]
     print_table("Detection per SSV id", ["ssv_id", "group", "n", "median px", "face found", "segment on sign"], rows)
     rows = []
-    for label, sel in (("with signs", [p for p in per_image if p[0].signs]),
-                       ("without signs", [p for p in per_image if not p[0].signs]), ("all", per_image)):
+    for label, sel in (("with signs", [p for p in per_image if p[0]]),
+                       ("without signs", [p for p in per_image if not p[0]]), ("all", per_image)):
         if sel:
             rows.append([label, len(sel)] + [f"{statistics.mean(p[i] for p in sel):.1f}" for i in (1, 2, 3)])
     print_table("Segments per image (mean); 'away' = with candidates and touching no labelled sign "
