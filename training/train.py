@@ -259,7 +259,8 @@ def main(argv=None) -> None:
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--design-variants", action="store_true",
                    help="half the faces with their pictogram redrawn (moved, warped, restroked, simplified) and rims "
-                        "wider as well as thinner; off: the faces the shipped model was trained on")
+                        "wider as well as thinner (the shipped model's recipe since 2026-12-02; "
+                        "`make train-classifier` passes it); off: the faces of the model shipped before")
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--workers", type=int, default=2, help="processes generating patches")
     p.add_argument("--cache", default="/tmp/signmapper-train", help="folder caching generated patches")

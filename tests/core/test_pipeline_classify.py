@@ -70,14 +70,14 @@ def test_network_reads_official_faces_under_blur_noise_and_perspective(catalogue
 
 
 def test_network_reads_most_faces_of_another_artwork(catalogue, network):
-    """Our procedural drawings (other strokes, palette, font) were never trained on. Measured 2026-12-01 with the
-    committed model: 155 of 216 faces (72 %) read right (the model before: 129, 60 %); real photographs do better
+    """Our procedural drawings (other strokes, palette, font) were never trained on. Measured 2026-12-02 with the
+    committed model: 163 of 224 faces (73 %) read right (the model before, which lacked four white entries: 155
+    of 216, 72 %; the one before that 129, 60 %); real photographs do better
     (README), these drawings differ from the official ones more than most real print runs do. A regression bar,
     not a goal."""
     right, total = 0, 0
-    # the entries the network was trained on (the white signs added later are classified by NCC: white_signs.py)
     known = [entry for entry in catalogue if network.knows([entry.id])]
-    assert len(known) == len(catalogue) - 4
+    assert len(known) == len(catalogue)  # trained on every entry, the white family's too
     for k, (font, seed) in enumerate([("duplex", 3), ("simplex", 5)]):
         style = FaceStyle(stroke_scale=1.1, rim_scale=0.9, palette_jitter=0.5, font=font, detail_jitter=0.3,
                           seed=seed)

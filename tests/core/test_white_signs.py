@@ -442,7 +442,8 @@ def test_a_white_face_is_read_by_a_network_that_knows_the_white_family(catalogue
     import signmapper_core.pipeline.pair_context as pair_context
 
     sign, left, depth, _ = _pole_scene(catalogue, "2.55", "normal")
-    (matched,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG)  # the shipped network: NCC
+    by_template = with_settings(CONFIG, {"classification": {"classifier": "ncc"}})
+    (matched,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, by_template)  # template matching alone
     monkeypatch.setattr(pair_context, "classifier_for", lambda catalogue, config: _NetworkReading(answer, score))
     (det,) = [d for d in detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG) if d.source == "white"]
     assert (det.template_id, det.status) == (want_id, want_status)
