@@ -470,6 +470,12 @@ class WhiteConfig:
     white_rim_saturation_step: float = 10.0  # a disc's ring is a faded coloured rim when it is this much more
     # saturated than its field (tune drives 1700-1705: tinted white faces -8..+6; without it 12 of 56 views lost)
     white_rim_field_depth: float = 0.25  # its field: the disc without this share of its diameter all round
+    white_ring_band: Tuple[float, float] = (1.06, 1.2)  # a disc whose band this many times its radius out is
+    # mostly (white_min_ring_share) red or blue by the colour step's ranges, while the band beyond
+    # (white_beyond_band) is not, is the white field of a red or blue ring: the colour step's sign (tune drive
+    # 1708: a 2.30-60 cut by the image edge, its field read as 2.53-60 at 1.00)
+    white_beyond_band: Tuple[float, float] = (1.5, 1.75)
+    white_min_ring_share: float = 0.6
     white_hough: bool = True  # round outlines are also sought by the Hough transform (HOUGH_GRADIENT_ALT) on the
     # scanned image: tune drives 1700-1705, 12 of 38 disc views had no candidate from the cells (fields cut by
     # digits and stripes into cells below a part of a face, pale rings before pale walls); Hough found 6 of them

@@ -20,7 +20,7 @@ import numpy as np
 from ..face_normal import world_face_normal
 from .classifiers import accept_threshold
 from .classify import ClassificationResult, classify_segment
-from .colour import Segment, inscribed_disc
+from .colour import Segment, hsv_mask, inscribed_disc
 from .detection import Detection
 from .hough import outer_ring, weak_colour
 from .locate import bbox_centre, locate
@@ -112,6 +112,37 @@ def coloured_rim(bgr: np.ndarray, mask: np.ndarray, config) -> bool:
     saturation = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)[:, :, 1]
     step = float(np.median(saturation[ring])) - float(np.median(saturation[inner]))
     return step >= config.white.white_rim_saturation_step
+
+
+def in_coloured_ring(bgr: np.ndarray, bbox, config) -> bool:
+    """Whether the disc ``bbox`` is the white field of a red or blue ring: the band ``white_ring_band`` times its
+    radius out is at least ``white_min_ring_share`` one of those colours (the colour step's ranges, pixels in the
+    image only), and the band ``white_beyond_band`` out less than half as much (a ring ends; a red wall or a
+    blue sky behind a white disc goes on). The colour step drops a ring the image edge cuts; its field stays a
+    white candidate and must not be read as a white sign."""
+    x, y, w, h = bbox
+    white = config.white
+    radius = max(w, h) / 2.0
+    reach = int(np.ceil(radius * white.white_beyond_band[1])) + 1
+    cx, cy = x + w / 2.0, y + h / 2.0
+    x0, y0 = max(0, int(cx - reach)), max(0, int(cy - reach))
+    x1, y1 = min(bgr.shape[1], int(cx + reach) + 1), min(bgr.shape[0], int(cy + reach) + 1)
+    if x1 <= x0 or y1 <= y0:
+        return False
+    hsv = cv2.cvtColor(bgr[y0:y1, x0:x1], cv2.COLOR_BGR2HSV)
+    ys, xs = np.mgrid[y0:y1, x0:x1]
+    distance = np.hypot(xs + 0.5 - cx, ys + 0.5 - cy) / radius
+    near = (distance >= white.white_ring_band[0]) & (distance <= white.white_ring_band[1])
+    beyond = (distance >= white.white_beyond_band[0]) & (distance <= white.white_beyond_band[1])
+    if not near.any() or not beyond.any():
+        return False
+    for colour in ("red", "blue"):
+        coloured = hsv_mask(hsv, config.colour.hsv_ranges[colour]) > 0
+        share = np.count_nonzero(coloured & near) / np.count_nonzero(near)
+        if share >= white.white_min_ring_share and \
+                np.count_nonzero(coloured & beyond) / np.count_nonzero(beyond) < share / 2.0:
+            return True
+    return False
 
 
 def coloured_share(bgr: np.ndarray, bbox, config) -> float:
@@ -236,6 +267,8 @@ def _judge_face(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
     x, y, w, h = seg.bbox
     if cand.shape == "circle" and coloured_rim(pair.left[y : y + h, x : x + w], seg.mask, config):
         return None  # a faded red or blue ring: the Hough fallback reads it as its colour
+    if cand.shape == "circle" and in_coloured_ring(pair.left, seg.bbox, config):
+        return None  # the field of a red or blue ring (cut by the image edge, so no colour sign)
     ids = white_template_ids(catalogue, cand.shape, seg.bbox, config)
     if not ids:
         return None

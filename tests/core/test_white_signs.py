@@ -24,6 +24,7 @@ from signmapper_core.pipeline.white_outlines import (
 from signmapper_core.pipeline.white_signs import (
     coloured_rim,
     coloured_share,
+    in_coloured_ring,
     pole_share,
     side_share,
     support_share,
@@ -378,6 +379,47 @@ def test_a_grey_ring_around_a_disc_is_its_outer_outline():
     cv2.circle(red, (80, 80), 36, (40, 40, 200), -1)
     cv2.circle(red, (80, 80), 24, (235, 235, 235), -1)
     assert ring_around(cv2.GaussianBlur(red, (0, 0), 0.8), (56, 56, 49, 49), 1.0, CONFIG) is None
+
+
+def test_a_white_field_in_a_red_ring_is_told_from_a_white_disc_before_red_or_blue_ground():
+    # a speed limit's white field (radius 30) in its red ring (to 38) before a grey wall; the image's right edge
+    # cuts the ring: the field is a coloured sign's
+    wall = noisy_background(160, 150, seed=7, level=150, sigma=6)
+    sign = wall.copy()
+    cv2.circle(sign, (110, 80), 38, (40, 40, 210), -1)
+    cv2.circle(sign, (110, 80), 30, (235, 235, 235), -1)
+    field = (80, 50, 61, 61)
+    assert in_coloured_ring(cv2.GaussianBlur(sign, (0, 0), 0.8), field, CONFIG)
+    assert in_coloured_ring(cv2.GaussianBlur(sign[:, :140], (0, 0), 0.8), field, CONFIG)  # ring cut by the edge
+    # a white disc before a red brick wall or a deep blue sky: the colour goes on beyond any ring
+    for ground in ((40, 40, 200), (200, 90, 30)):
+        plain = np.full((160, 150, 3), ground, np.uint8)
+        cv2.circle(plain, (110, 80), 30, (235, 235, 235), -1)
+        assert not in_coloured_ring(cv2.GaussianBlur(plain, (0, 0), 0.8), field, CONFIG)
+    # 2.53.1's grey ring, and a white disc before the grey wall: no coloured ring
+    grey_ring = wall.copy()
+    cv2.circle(grey_ring, (110, 80), 38, (135, 135, 135), -1)
+    cv2.circle(grey_ring, (110, 80), 30, (235, 235, 235), -1)
+    assert not in_coloured_ring(cv2.GaussianBlur(grey_ring, (0, 0), 0.8), field, CONFIG)
+    alone = wall.copy()
+    cv2.circle(alone, (110, 80), 30, (235, 235, 235), -1)
+    assert not in_coloured_ring(cv2.GaussianBlur(alone, (0, 0), 0.8), field, CONFIG)
+
+
+def test_a_speed_limit_cut_by_the_image_edge_is_not_read_as_a_white_sign(catalogue):
+    # the colour step drops a red ring that touches the image's edge; its white field, whole inside the image,
+    # is a white candidate and resembles the end of the same limit (tune drive 1708: read as 2.53-60 at 1.00)
+    _, _, (x, _, w, _) = sign_scene(catalogue, "2.30-60", "normal", _world(7.0, 1.2, 0.3), background_depth=30.0)
+    # moved right until the image ends a tenth of the face before the ring's right edge
+    sign = _world(7.0, 1.2 + (CAMERA.width - (x + w - w // 10)) * 7.0 / CAMERA.fx, 0.3)
+    left, depth, bbox = sign_scene(catalogue, "2.30-60", "normal", sign, background_depth=30.0)
+    assert bbox[0] + bbox[2] > CAMERA.width > bbox[0] + bbox[2] * 0.8
+    left, depth = _with_pole(left, depth, bbox, 7.0, 30.0)
+    left = cv2.GaussianBlur(left, (0, 0), 1.0)
+    assert [d for d in detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG) if d.source == "white"] == []
+    unguarded = with_settings(CONFIG, {"white": {"white_min_ring_share": 1.01}})
+    found = [d for d in detect_pair(left, depth, None, CAMERA, POSE, catalogue, unguarded) if d.source == "white"]
+    assert found and found[0].template_id.startswith("2.53")
 
 
 def _white_detection(template_id, shape, bbox):
