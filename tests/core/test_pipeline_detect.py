@@ -191,3 +191,41 @@ def test_red_ring_with_a_brown_attachment_is_still_accepted(catalogue):
     (det,) = _detect(catalogue, left, depth)
     assert det.template_id == "2.30-50" and det.status == "accepted" and det.format == "normal"
     assert np.linalg.norm(det.position - sign) < 0.05
+
+
+class _ShapeBlindNetwork:
+    """Reads the no-entry disc whenever it is a candidate (0.99), else the stop sign (0.97): as the shipped network
+    read a stop sign's red alone (tune drive 808), each probability over its own reading's candidates."""
+
+    name, accept_threshold, min_score, marginal_min_score = "stand-in", 0.85, 0.25, 0.5
+
+    def __init__(self):
+        self.asked = []
+
+    def knows(self, template_ids):
+        return True
+
+    def classify(self, image, bbox, candidate_ids):
+        from signmapper_core.pipeline.classify import ClassificationResult
+
+        self.asked.append(set(candidate_ids))
+        for answer, score in (("2.02", 0.99), ("3.01", 0.97)):
+            if answer in candidate_ids:
+                return ClassificationResult(answer, score, {answer: score})
+        return ClassificationResult(None, 0.0)
+
+
+def test_accepted_readings_of_other_shapes_are_decided_by_the_outline_not_by_their_indicators(catalogue,
+                                                                                           monkeypatch):
+    import signmapper_core.pipeline.pair_context as pair_context
+
+    network = _ShapeBlindNetwork()
+    monkeypatch.setattr(pair_context, "classifier_for", lambda catalogue, config: network)
+    sign = _world(6.0, 1.2, 0.3)
+    left, depth, bbox = sign_scene(catalogue, "3.01", "normal", sign, background_depth=30.0)
+    (det,) = detect_pair(cv2.GaussianBlur(left, (0, 0), 1.0), depth, None, CAMERA, POSE, catalogue, PipelineConfig())
+    # the red octagon was read both as a disc of the red alone (no entry among the round signs) and with its
+    # white rim as the stop sign: both accepted, the octagon outline decides
+    assert any("2.02" in ids for ids in network.asked) and any(ids == {"3.01"} for ids in network.asked)
+    assert (det.template_id, det.status) == ("3.01", "accepted")
+    assert max(abs(a - b) for a, b in zip(det.bbox, bbox)) <= 2
