@@ -52,8 +52,8 @@ class PairContext:
 
     def classifier_knowing(self, template_ids: Sequence[str]):
         """The configured classifier where it knows every one of ``template_ids``, else template matching: a
-        learned network knows only the ids it was trained on (not the white family's newer entries), and a
-        white circle from the Hough route may be any of them."""
+        learned network knows only the ids it was trained on (one trained before entries were catalogued lacks
+        them), and a white circle from the Hough route may be any of them."""
         classifier = self.classifier
         return classifier if classifier.knows(template_ids) else self.template_matcher
 
