@@ -135,7 +135,7 @@ def run_classify(args, catalogue, config: PipelineConfig) -> int:
           f"{seconds:.0f} s ({1000 * seconds / max(1, len(records)):.0f} ms/sign); perfect box, candidates = "
           f"catalogue entries of the true colour and shape; accepted = score >= "
           f"{accept_threshold(clf, config)}")
-    if by_matching and clf is not matcher:
+    if by_matching:
         print(f"read by template matching (accepted >= {accept_threshold(matcher, config)}), the {clf.name} "
               f"classifier not knowing every candidate: {sum(by_matching.values())} signs, "
               f"{', '.join(f'{t} ({n})' for t, n in sorted(by_matching.items()))}")
@@ -201,12 +201,12 @@ def run_detect(args, catalogue, config: PipelineConfig) -> int:
     other = _read_other(args.data / "scenes_other.csv")
     # the colour step does not look for white signs (the white step needs depth): theirs are labelled boxes
     # like the unmapped classes', not signs it could have found
-    white = [s for s in signs if catalogue[s.ssv_id].colour == "white"]
-    for s in white:
-        other.setdefault(s.image.relative_to(args.data).as_posix(), []).append(s.bbox)
-    by_image = defaultdict(list)
+    white, by_image = [], defaultdict(list)
     for s in signs:
-        if catalogue[s.ssv_id].colour != "white":
+        if catalogue[s.ssv_id].colour == "white":
+            white.append(s)
+            other.setdefault(s.image.relative_to(args.data).as_posix(), []).append(s.bbox)
+        else:
             by_image[s.image].append(s)
     records, per_image = [], []
     start = time.perf_counter()
