@@ -16,7 +16,8 @@ for plates at least 40 px high. The white and grey signs and the coloured ones h
 too (``family_evaluation``): detected, correctly classified, false positives per 100 pairs;
 ``--white-share`` generates drives with white signs and white distractors.
 ``--evidence`` lists, for every fused sign mapped with a wrong id, what each of its observations read
-(``misread_evidence``): whether a vote could have found the true id, or the classifier never saw it.
+(``misread_evidence``): whether a vote could have found the true id, or the classifier never saw it; and
+for every false positive the same per observation, with the pair and pixel box to look at.
 """
 
 from __future__ import annotations
@@ -42,7 +43,7 @@ from signmapper_core.family_evaluation import (  # noqa: E402
     family_figures,
 )
 from signmapper_core.mapping import map_drive  # noqa: E402
-from signmapper_core.misread_evidence import misread_lines  # noqa: E402
+from signmapper_core.misread_evidence import false_positive_lines, misread_lines  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, WhiteConfig  # noqa: E402
 from signmapper_core.plate_evaluation import PlateFigures, evaluate_plates  # noqa: E402
@@ -108,7 +109,8 @@ def main(argv=None) -> int:
     parser.add_argument("--white-signs", action="store_true",
                         help="also look for white and grey signs (the white step, off by default)")
     parser.add_argument("--evidence", action="store_true",
-                        help="per-observation readings of every fused sign mapped with a wrong id")
+                        help="per-observation readings of every fused sign mapped with a wrong id or matching no "
+                             "reference sign")
     args = parser.parse_args(argv)
 
     folders = list(args.drives) + [generated_drive(s, args.pairs, args.depth, args.legacy_faces, args.white_share)
@@ -154,6 +156,9 @@ def main(argv=None) -> int:
             misread = misread_lines(signs, ref_ids, report.match) if kind == "signs" and args.evidence else []
             if misread:
                 print("\n".join(["Fused signs with a wrong id, observation by observation:"] + misread))
+            false = false_positive_lines(signs, report.match) if kind == "signs" and args.evidence else []
+            if false:
+                print("\n".join(["False positives, observation by observation:"] + false))
             print()
         print("\n".join(plates.lines(f"{head}: supplementary plates")))
         print()

@@ -1,29 +1,34 @@
-"""Why a fused sign carries the wrong id: what each of its observations read, beside the true id.
+"""Why a fused sign carries the wrong id, or is no sign at all: what each of its observations read.
 
 Whether a misread can be mended in fusion (a better vote) or only by the classifier
 depends on the observations: a vote can only pick an id some observations saw, and
 only if the true id had weight in them. These lines show that per observation: the
 id read, its indicators, the face's size and depth, the probability the classifier
 gave the true id (or that the colour and shape cut left it out), and its best rivals.
+A false positive (a fused sign near no reference sign) gets the same lines without a
+true id: the pairs and pixel boxes say where to look at what was taken for a sign.
 """
 
 from __future__ import annotations
 
-from typing import Sequence
+from typing import Optional, Sequence
 
 NOT_A_CANDIDATE = "not a candidate"
 
 
-def observation_line(obs, true_id: str, top: int = 3) -> str:
-    """One observation of a misread sign: pair, reading, indicators, face size, depth, the true id's score."""
+def observation_line(obs, true_id: Optional[str], top: int = 3) -> str:
+    """One observation of a fused sign: pair, reading, indicators, face box, depth, and (``true_id`` given) the
+    true id's score."""
     scores = obs.detection.scores or {}
-    truth = f"{scores[true_id]:.2f}" if true_id in scores else NOT_A_CANDIDATE
     best = sorted(scores.items(), key=lambda kv: -kv[1])[:top]
     rivals = ", ".join(f"{t} {s:.2f}" for t, s in best)
     x, y, w, h = obs.bbox
-    return (f"    pair {obs.pair_id}: read {obs.template_id} ({obs.classification_indicator:.2f}, {obs.status}), "
-            f"detection {obs.detection_indicator:.2f}, {w}x{h} px at {obs.depth_m:.1f} m, "
-            f"{obs.colour} {obs.shape} by {obs.source}; true id {true_id}: {truth}; best: {rivals}")
+    line = (f"    pair {obs.pair_id}: read {obs.template_id} ({obs.classification_indicator:.2f}, {obs.status}), "
+            f"detection {obs.detection_indicator:.2f}, {w}x{h} px at ({x}, {y}), {obs.depth_m:.1f} m, "
+            f"{obs.colour} {obs.shape} by {obs.source}")
+    if true_id is not None:
+        line += f"; true id {true_id}: {f'{scores[true_id]:.2f}' if true_id in scores else NOT_A_CANDIDATE}"
+    return f"{line}; best: {rivals}"
 
 
 def misread_lines(signs: Sequence, reference_ids: Sequence[str], match: Sequence[int], top: int = 3) -> list[str]:
@@ -39,4 +44,16 @@ def misread_lines(signs: Sequence, reference_ids: Sequence[str], match: Sequence
         lines.append(f"  sign {sign.sign_id}: true {true_id}, mapped {sign.template_id} ({sign.status}, "
                      f"vote share {sign.vote_share:.2f}, {sign.n_obs} observations)")
         lines += [observation_line(o, true_id, top) for o in sorted(sign.observations, key=lambda o: o.pair_index)]
+    return lines
+
+
+def false_positive_lines(signs: Sequence, match: Sequence[int], top: int = 3) -> list[str]:
+    """For every fused sign matching no reference sign (``match`` -1): a heading and a line per observation."""
+    lines = []
+    for sign, ref in zip(signs, match):
+        if ref >= 0:
+            continue
+        lines.append(f"  sign {sign.sign_id}: no reference sign within reach, mapped {sign.template_id} "
+                     f"({sign.status}, vote share {sign.vote_share:.2f}, {sign.n_obs} observations)")
+        lines += [observation_line(o, None, top) for o in sorted(sign.observations, key=lambda o: o.pair_index)]
     return lines

@@ -6,7 +6,7 @@ from signmapper_core.drive import PairRecord
 from signmapper_core.evaluation import evaluate
 from signmapper_core.fusion import Observation, fuse_observations
 from signmapper_core.geometry import Pose
-from signmapper_core.misread_evidence import NOT_A_CANDIDATE, misread_lines
+from signmapper_core.misread_evidence import NOT_A_CANDIDATE, false_positive_lines, misread_lines
 from signmapper_core.pipeline.detection import Detection
 
 WEST = np.array([-1.0, 0.0, 0.0])
@@ -39,4 +39,21 @@ def test_misread_sign_lists_each_observation_with_the_true_ids_score_and_a_right
     assert "pair p003: read 2.07 (0.73" in lines[1] and "true id 2.11: 0.02" in lines[1]
     assert "best: 2.07 0.73, 2.20-10 0.10" in lines[1]
     assert "read 3.01" in lines[2] and f"true id 2.11: {NOT_A_CANDIDATE}" in lines[2] and "octagon" in lines[2]
-    assert "45x42 px at 10.4 m" in lines[3]  # box 40 + pair index wide; 10 m ahead, 3 m aside
+    assert "45x42 px at (10, 10), 10.4 m" in lines[3]  # box 40 + pair index wide; 10 m ahead, 3 m aside
+    assert false_positive_lines(signs, report.match) == []  # both fused signs lie on a reference sign
+
+
+def test_false_positive_lists_its_observations_without_a_true_id_and_matched_signs_are_not_listed():
+    nowhere, right = [70.0, -3.0, 2.5], [40.0, 3.0, 2.5]
+    obs = [observe(nowhere, k, "2.30-50", {"2.30-50": 0.93, "2.30-60": 0.05}) for k in (30, 31)]
+    obs += [observe(right, k, "2.01", {"2.01": 0.97}) for k in (13, 14)]
+    signs = fuse_observations(obs)
+    report = evaluate([s.position for s in signs], [s.template_id for s in signs], [right], ["2.01"],
+                      np.array([[0.0, 0.0], [80.0, 0.0]]), 0.75)
+    lines = false_positive_lines(signs, report.match, top=1)
+    assert len(lines) == 3  # one heading, two observations
+    assert "no reference sign within reach, mapped 2.30-50 (accepted" in lines[0] and "2 observations" in lines[0]
+    assert lines[1].startswith("    pair p030: read 2.30-50 (0.93") and "70x42 px at (10, 10)" in lines[1]
+    assert "true id" not in lines[1] and lines[1].endswith("best: 2.30-50 0.93")
+    assert "pair p031" in lines[2]
+    assert misread_lines(signs, ["2.01"], report.match) == []
