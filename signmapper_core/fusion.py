@@ -92,6 +92,8 @@ class FusionConfig:
     # supplementary plates' text (plate_fusion.py): read from the crops of a plate's this many largest (nearest)
     # observations; more add OCR time and rarely a better text
     plate_readings: int = 3
+    plate_min_seen_whole: float = 0.95  # views that saw at least this share of a plate (Detection.crop_seen) are
+    # read first: a larger view cut by the image's edge or a branch reads part of the text
     plate_well_formed_weight: float = 2.0  # a reading whose lines all have a form plates print counts this much
     # more in the vote on a plate's text: a misreading rarely has one
     # how a crop is prepared for Tesseract (ocr.prepare_crop): its printed black frame (this share of its height on
@@ -100,6 +102,10 @@ class FusionConfig:
     ocr_crop_height_px: int = 120  # ...it is scaled up to this height (1-3 lines of 30+ px, as Tesseract likes them)
     ocr_max_upscale: float = 8.0  # ...but at most this much (a tiny crop's letters would only grow blur)
     ocr_border_px: int = 12  # ...and given a plain border: Tesseract reads nothing on a line that touches a frame
+    # ...and lines across the whole plate (a pole behind a gap, a wire, the frame's remains) painted over: pixels
+    # darker than ocr_line_contrast x the paper in a straight run of ocr_line_span x its height or width (1: off)
+    ocr_line_span: float = 0.9
+    ocr_line_contrast: float = 0.8
     # what of Tesseract's reading is print (ocr.TextReading.kept): words at least this share of the height of the
     # words read with ocr_confident_word confidence (smaller "words" are dirt or a frame's remains)...
     ocr_min_word_height_share: float = 0.45

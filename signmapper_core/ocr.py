@@ -122,6 +122,31 @@ def find_tesseract(executable: Optional[str] = None) -> tuple:
     return path, languages
 
 
+def without_long_lines(grey: np.ndarray, span: float, contrast: float) -> np.ndarray:
+    """``grey`` (uint8) with its straight lines across the plate painted over from what lies beside them.
+
+    A pole seen through a gap, a wire, or what is left of the printed frame runs across (nearly) the whole
+    plate; no letter does (the plate's margin keeps letters off its edges). Tesseract reads such a line as
+    "1", "l" or "|" beside the text, or reads nothing on the line it cuts. A line: pixels darker than
+    ``contrast`` x the paper's median brightness forming a vertical run of at least ``span`` x the height (or a
+    horizontal one of ``span`` x the width).
+    """
+    import cv2
+
+    height, width = grey.shape[:2]
+    if height < 8 or width < 8:
+        return grey
+    paper = float(np.median(grey))
+    darker = (grey < contrast * paper).astype(np.uint8)
+    vertical = cv2.morphologyEx(darker, cv2.MORPH_OPEN, np.ones((max(2, int(span * height)), 1), np.uint8))
+    horizontal = cv2.morphologyEx(darker, cv2.MORPH_OPEN, np.ones((1, max(2, int(span * width))), np.uint8))
+    lines = cv2.dilate(vertical | horizontal, np.ones((3, 3), np.uint8))
+    if not lines.any():
+        return grey
+    # filled in from both sides: paper where it crossed paper, a letter's stroke where it crossed one
+    return cv2.inpaint(grey, lines, 3, cv2.INPAINT_TELEA)
+
+
 def prepare_crop(crop: np.ndarray, config=None) -> np.ndarray:
     """A plate crop as Tesseract reads it best: its frame cut off, grey, scaled up to ``ocr_crop_height_px``,
     a plain border (Tesseract reads nothing at all on a line that touches a frame). ``config``: the fusion
@@ -139,6 +164,8 @@ def prepare_crop(crop: np.ndarray, config=None) -> np.ndarray:
     cut = int(round(config.ocr_frame_share * crop.shape[0]))
     if crop.shape[0] > 2 * cut + 4 and crop.shape[1] > 2 * cut + 4:
         crop = crop[cut:-cut or None, cut:-cut or None]
+    if config.ocr_line_span < 1.0:
+        crop = without_long_lines(crop, config.ocr_line_span, config.ocr_line_contrast)
     height = max(crop.shape[0], 1)
     scale = np.clip(config.ocr_crop_height_px / height, 1.0, config.ocr_max_upscale)
     grey = cv2.resize(crop, None, fx=scale, fy=scale, interpolation=cv2.INTER_CUBIC)

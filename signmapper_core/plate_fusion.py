@@ -57,10 +57,12 @@ def fuse_plates(observations: Sequence[Observation], signs: Sequence[FusedSign],
     return fused
 
 
-def reading_crops(plate: FusedSign, per_plate: int) -> list:
-    """The crops its text is read from: those of its ``per_plate`` largest (nearest) observations."""
+def reading_crops(plate: FusedSign, per_plate: int, min_seen: float = 1.0) -> list:
+    """The crops its text is read from: those of its ``per_plate`` largest (nearest) observations that saw it
+    whole (``Detection.crop_seen`` at least ``min_seen``), then, if fewer, the largest of the others: a view
+    cut by the image's edge or by a branch reads part of the text, and its larger letters do not make up for it."""
     seen = sorted((o for o in plate.observations if getattr(o.detection, "crop", None) is not None),
-                  key=lambda o: o.bbox[3], reverse=True)
+                  key=lambda o: (getattr(o.detection, "crop_seen", 1.0) >= min_seen, o.bbox[3]), reverse=True)
     return [o.detection.crop for o in seen[:per_plate]]
 
 
@@ -96,7 +98,7 @@ def read_plate_texts(plates: Sequence[FusedSign], warn: Optional[WarnCallback] =
         if plate.template_id != PLATE_ID:  # a pictogram plate: the words of its drawing, no OCR
             plate.text, plate.text_confidence = printed_text(plate)
             continue
-        for crop in reading_crops(plate, config.plate_readings):
+        for crop in reading_crops(plate, config.plate_readings, config.plate_min_seen_whole):
             owners.append(k)
             crops.append(crop)
     if not crops:

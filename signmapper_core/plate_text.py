@@ -116,11 +116,30 @@ def is_plate_line(line: str) -> bool:
     return bool(line) and all(word.lower() in known for word in line.split())
 
 
+_STRAY_MARKS = "'\"`‚‘’“”„\\/|"  # quotes, slashes and bars at a token's ends: a frame's edge or dirt, not print
+
+
 def normalise_line(line: str) -> str:
     """One line of a plate in its one spelling (see the module docstring)."""
+    text = _normalised(line)
+    if is_plate_line(text):
+        return text
+    # a single character at either end that keeps the rest from being a line plates print is a frame's edge or
+    # a pole read as a letter ("1 6–18 h", "J excepté livraisons"): the line without it, if that is one
+    tokens = text.split()
+    for kept in (tokens[1:], tokens[:-1], tokens[1:-1]):
+        if len(kept) < len(tokens) and all(len(t) == 1 for t in set(tokens) - set(kept)) and kept:
+            shorter = _normalised(" ".join(kept))
+            if is_plate_line(shorter):
+                return shorter
+    return text
+
+
+def _normalised(line: str) -> str:
     # a token without a letter, digit or dash ("|", "=") is an edge of the frame or dirt, not print; nor is a
     # lone dash at either end of the line (a dash joins two things)
-    tokens = [_fix_word(_fix_number(t)) for t in line.split() if any(c.isalnum() or c in "-–—" for c in t)]
+    tokens = [t.strip(_STRAY_MARKS) for t in line.split()]
+    tokens = [_fix_word(_fix_number(t)) for t in tokens if any(c.isalnum() or c in "-–—" for c in t)]
     while tokens and not any(c.isalnum() for c in tokens[-1]):
         tokens.pop()
     while tokens and not any(c.isalnum() for c in tokens[0]):

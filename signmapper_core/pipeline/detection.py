@@ -42,6 +42,9 @@ class Detection:
     plate_of: Optional[Detection] = None
     crop: Optional[np.ndarray] = field(default=None, repr=False)
     printed_text: Optional[str] = None  # a pictogram plate: the words its drawing carries ("" for none)
+    # a plate: the share of its crop seen whole: inside the image's edges and not hidden by something in front
+    # (1.0 for a plate seen whole); its text is read from the views that saw most of it
+    crop_seen: float = 1.0
 
     @property
     def is_plate(self) -> bool:

@@ -86,6 +86,18 @@ def _clipped(box, shape):
     return x0, y0, min(shape[1], x + w) - x0, min(shape[0], y + h) - y0
 
 
+def seen_share(box, hidden: Optional[np.ndarray], image_shape, edge_px: int) -> float:
+    """Share of a plate's box seen whole: 0 when it reaches within ``edge_px`` of the image's edge (the plate may
+    go on beyond it, its text with it), else the share of the box not ``hidden`` (uint8 mask of the clipped box,
+    nonzero = covered by something in front; None: nothing hidden)."""
+    x, y, w, h = box
+    if x < edge_px or y < edge_px or x + w > image_shape[1] - edge_px or y + h > image_shape[0] - edge_px:
+        return 0.0
+    if hidden is None or hidden.size == 0:
+        return 1.0
+    return 1.0 - float(np.count_nonzero(hidden)) / hidden.size
+
+
 def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int, touch_px: float,
                    hidden: Optional[np.ndarray] = None):
     """(score 0..1, plate format) of a box read as a plate of ``sign``, or None where it cannot be one.
@@ -297,6 +309,7 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     if best is None:
         return None
     score, box, (name, (pw, ph), _), fill = best
+    seen = seen_share(box, crop_hidden, pair.left.shape, config.plates.plate_edge_px)
     box = _clipped(box, pair.left.shape)
     u, v = bbox_centre(box)
     bx, by, bw, bh = box
@@ -311,7 +324,7 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
         format=name, detection_indicator=float(fill), classification_indicator=float(score),
         status="accepted" if score >= config.plates.plate_accept_score else "review", u=u, v=v, bbox=box, depth_m=z,
         position=locate(camera, pair.pose, u, v, z), source="plate", normal_world=sign.normal_world,
-        plate_of=sign, crop=crop, printed_text=printed,
+        plate_of=sign, crop=crop, printed_text=printed, crop_seen=seen,
     )
 
 

@@ -5,10 +5,19 @@ from __future__ import annotations
 import stat
 
 import cv2
+import numpy as np
 import pytest
 
 from signmapper_core.fusion import FusionConfig
-from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable, find_tesseract, parse_tsv, read_texts
+from signmapper_core.ocr import (
+    INSTALL_HINT,
+    OcrUnavailable,
+    find_tesseract,
+    parse_tsv,
+    prepare_crop,
+    read_texts,
+    without_long_lines,
+)
 from signmapper_core.plate_text import is_plate_line, normalise_line, normalise_text
 from signmapper_core.simulate.plate_faces import draw_plate
 
@@ -24,6 +33,10 @@ from signmapper_core.simulate.plate_faces import draw_plate
     ("7.30-11.30", "7.30–11.30 h"),
     ("Mo-5a", "Mo–Sa"), ("Mo-F", "Mo–Fr"), ("o-Sa", "Mo–Sa"), ("lu-v", "lu–ve"), ("u-sa", "lu–sa"),
     ("8-F", "8-F"), ("7-19 h", "7–19 h"),
+    # a frame's edge or a pole read as a letter or mark at a line's end, where the rest is a line plates print
+    ("1 6-18 h", "6–18 h"), ("J excepté livraisons", "excepté livraisons"), ("‚7-18 h", "7–18 h"),
+    ("'9-19 h", "9–19 h"), ("lu-ve i", "lu–ve"), ("9-19 1", "9–19 h"),
+    ("a b", "a b"), ("Zone 30 x", "Zone 30 x"),  # no plate line without the end: left as read
 ])
 def test_normalised_spelling(read, meant):
     assert normalise_line(read) == meant
@@ -62,6 +75,39 @@ def test_tesseract_reads_plates_of_40_px_in_one_run():
     texts = [normalise_text(r.lines) for r in readings]
     assert texts == [" / ".join(lines) for lines in PLATES]
     assert all(0.6 <= r.confidence <= 1.0 for r in readings)
+
+
+def crossed(crop, column):
+    """``crop`` with a grey pole's edge (2 px, darker than the paper, lighter than the print) down its full height."""
+    out = crop.copy()
+    out[:, column:column + 2] = 140
+    return out
+
+
+def test_a_line_across_the_whole_plate_is_painted_over_and_its_letters_kept():
+    crop = cv2.cvtColor(plate_crop(["Anwohner"], 48), cv2.COLOR_BGR2GRAY)
+    cut = crossed(crop, 40)
+    cleaned = without_long_lines(cut, 0.9, 0.8)
+    paper = np.median(crop)
+    line = np.zeros(crop.shape, bool)
+    line[8:-8, 40:42] = True  # inside the printed frame
+    ink = crop < 0.5 * paper
+    near_ink = cv2.dilate(ink.astype(np.uint8), np.ones((9, 9), np.uint8)) > 0
+    assert np.all(cleaned[line & ~near_ink] > 0.9 * paper)  # where it crossed paper, paper again
+    letters = ink & ~line
+    letters[:8], letters[-8:], letters[:, :8], letters[:, -8:] = False, False, False, False  # the frame goes too
+    assert np.count_nonzero(cleaned[letters] < 0.5 * paper) >= 0.95 * np.count_nonzero(letters)
+    assert np.array_equal(without_long_lines(crop[8:-8, 8:-8], 0.9, 0.8), crop[8:-8, 8:-8])  # no line: as it was
+
+
+def test_tesseract_reads_a_plate_crossed_by_a_pole_edge_once_the_line_is_painted_over():
+    crops = [crossed(plate_crop(lines, 48), column) for lines, column in
+             ((["ausgenommen", "Anwohner"], 44), (["lu–ve", "6–18 h"], 36), (["9–19 h"], 10))]
+    readings = read_texts(crops)
+    assert [normalise_text(r.lines) for r in readings] == ["ausgenommen / Anwohner", "lu–ve / 6–18 h", "9–19 h"]
+    # the setting turns it off: the crop is prepared as before
+    off = FusionConfig(ocr_line_span=1.0)
+    assert not np.array_equal(prepare_crop(crops[0], off), prepare_crop(crops[0]))
 
 
 def test_a_blank_plate_reads_as_no_text():

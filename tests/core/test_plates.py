@@ -94,6 +94,7 @@ def test_a_plate_below_a_sign_is_found_and_linked_to_it(catalogue):
     expected = sign_world(7.0, 1.3, 0.5 - 0.30 - 0.04 - 0.10)
     assert np.linalg.norm(plate.position - expected) < 0.05
     assert plate.crop.shape[:2] == (plate.bbox[3], plate.bbox[2])
+    assert plate.crop_seen >= 0.95  # seen whole
 
 
 def test_a_two_line_plate_above_a_sign_is_found(catalogue):
@@ -262,6 +263,7 @@ def test_a_plate_cut_apart_by_something_in_front_is_found_whole(catalogue, occlu
     found = _detect(catalogue, left, depth, pose)
     (plate,) = [d for d in found if d.is_plate]
     assert plate.format == "normal-2" and box_iou(plate.bbox, box) > 0.8
+    assert 0.5 < plate.crop_seen < 0.95  # its text is read from views that saw it whole first
     whole_only = detect_pair(left, depth, None, CAMERA, pose, catalogue,
                              PipelineConfig(plates=PlateConfig(plate_min_visible=1.0)))
     # seen pieces only: none, or (its end hidden) the seen part taken for a smaller plate
@@ -387,3 +389,33 @@ def test_a_reading_in_a_form_plates_print_outweighs_a_surer_misreading():
     assert text == "100 m" and confidence == pytest.approx(0.6 / 3)
     assert vote_text(readings, FusionConfig(plate_well_formed_weight=1.0))[0] == "100 nil"  # no bonus: surer wins
     assert vote_text([reading("100 nil", 0.9), reading("10O nil", 0.5)]) == ("100 nil", pytest.approx(0.7))
+
+
+def test_a_plate_seen_whole_is_told_from_one_cut_by_the_image_edge_or_hidden_in_part():
+    from signmapper_core.pipeline.plates import seen_share
+
+    shape = (1080, 1920, 3)
+    assert seen_share((100, 200, 80, 30), None, shape, 2) == 1.0
+    assert seen_share((1860, 200, 60, 30), None, shape, 2) == 0.0  # reaches the right edge: may go on beyond it
+    assert seen_share((0, 200, 60, 30), None, shape, 2) == 0.0
+    hidden = np.zeros((30, 80), np.uint8)
+    hidden[:, :20] = 1  # a branch over a quarter of it
+    assert seen_share((100, 200, 80, 30), hidden, shape, 2) == pytest.approx(0.75)
+
+
+def test_a_plates_text_is_read_from_the_views_that_saw_it_whole_before_larger_cut_ones():
+    from signmapper_core.fusion import FusedSign
+    from signmapper_core.plate_fusion import reading_crops
+
+    class Obs:
+        def __init__(self, height, seen):
+            self.bbox = (0, 0, 2 * height, height)
+            self.detection = type("D", (), {"crop": np.full((height, 2 * height, 3), 200, np.uint8),
+                                            "crop_seen": seen})()
+
+    observations = [Obs(30, 1.0), Obs(40, 0.97), Obs(55, 0.6), Obs(60, 0.0), Obs(45, 1.0)]
+    plate = FusedSign(1, PLATE_ID, 0.6, 0.2, "normal-1", np.zeros(3), 5, 1.0, 0.0, None, 1.0, 1.0, "accepted",
+                      None, observations, plate_of=1)
+    assert [c.shape[0] for c in reading_crops(plate, 3, 0.95)] == [45, 40, 30]  # whole ones, the largest first
+    assert [c.shape[0] for c in reading_crops(plate, 4, 0.95)] == [45, 40, 30, 60]  # then the largest cut one
+    assert [c.shape[0] for c in reading_crops(plate, 3, 0.0)] == [60, 55, 45]  # every view counts as whole
