@@ -221,12 +221,14 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
                 config.classification.min_surround_score:
             panels.append((match, face, cls))
     good_panels = [r for r in panels if r[2].score >= accept]
-    # each reading's indicator is a probability over its own candidates, so two accepted readings of other
-    # shapes are not ranked by it: the outline's best-fitting shape decides (a stop sign, its octagon the best
-    # fit, read as 3.01 with its white rim at 0.98 and, as a disc of the red alone, as no entry 2.02 at 0.99)
+    # each reading's indicator is a probability over its own candidates, so readings of other shapes are not
+    # ranked by it: the outline's best-fitting shape decides (a stop sign, its octagon the best fit, read as
+    # 3.01 with its white rim at 0.98 and, as a disc of the red alone, as no entry 2.02 at 0.99; a disc read
+    # doubtfully among the round signs and, with a rim, as the stop sign, its octagon reading's one candidate)
     best_fit_shapes = set(catalogue_shapes(shape, seg.bbox[2], seg.bbox[3]))
-    of_outline = [r for r in readings if r[2].score >= accept and catalogue[r[2].template_id].shape in best_fit_shapes]
-    pool = good_panels or of_outline or readings or panels
+    of_best_fit = [r for r in readings if catalogue[r[2].template_id].shape in best_fit_shapes]
+    of_outline = [r for r in of_best_fit if r[2].score >= accept]
+    pool = good_panels or of_outline or of_best_fit or readings or panels
     best = max(pool, key=lambda r: r[2].score, default=None)
     # an outline that only fits loosely, or a round one sized as seen at an angle (its box alone fits no
     # format), must resemble its template clearly: a cut of something else fits those readings too easily
