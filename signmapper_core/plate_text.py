@@ -6,8 +6,10 @@ distances ("200 m", "2 km"), times ("7–19 h"), weekday ranges ("Mo–Fr",
 "eccetto bus"). Normalising makes one spelling of each: digits OCR mistook for
 letters in numbers, any dash between numbers or weekdays an en dash, a space
 before the unit (a time range always has its "h"), words close to the plates'
-vocabulary spelt as in it, stray symbols (a frame's edge read as "|") dropped. Lines are
-joined by " / " (the drive format's way of writing a plate's text).
+vocabulary spelt as in it, stray symbols (a frame's edge read as "|") dropped, and so is a
+single character at a line's end when without it the line is one plates print ("1 6–18 h": a
+pole's edge read as a "1"). Lines are joined by " / " (the drive format's way of writing a
+plate's text).
 """
 
 from __future__ import annotations
