@@ -88,6 +88,11 @@ class FusionConfig:
     accept_vote_share: float = 0.6
     accept_classification: float = 0.6  # the classifier's threshold for "accepted" (mapping passes it)
     single_margin: float = 0.4  # a sign seen once needs this share of the way from that threshold to 1 on top
+    # ...and to be seen nearer than this share of the far limit: near that limit depth is least sure, and a sign
+    # beyond the range is measured into it now and then (tune drive 808: a 2.30-30 ~20 m away, seen once,
+    # mapped 7 m short at 13.2 m and accepted); a sign really within the range is seen again as the vehicle nears
+    single_max_depth_share: float = 0.85
+    far_m: float = 14.0  # the mapping's far limit of the search space (mapping passes it)
     min_obs_accepted: int = 2
     # supplementary plates' text (plate_fusion.py): read from the crops of a plate's this many largest (nearest)
     # observations; more add OCR time and rarely a better text
@@ -429,8 +434,9 @@ def fuse_track(sign_id: int, observations: Sequence[Observation], config: Fusion
     accepted = (len(voters) >= config.min_obs_accepted and share >= config.accept_vote_share
                 and cls_ind >= config.accept_classification)
     single = config.accept_classification + config.single_margin * (1.0 - config.accept_classification)
-    if len(voters) == 1 and best.status == ACCEPTED and cls_ind >= single:
-        accepted = True  # a single, very clear observation
+    if len(voters) == 1 and best.status == ACCEPTED and cls_ind >= single and \
+            best.depth_m <= config.single_max_depth_share * config.far_m:
+        accepted = True  # a single, very clear observation, not at the far end of the range
     return FusedSign(
         sign_id=sign_id, template_id=template_id, width_m=width, height_m=height, format=fmt, position=position,
         n_obs=len(observations), vote_share=share, sigma_m=sigma, azimuth=azimuth_deg(mean_face(voters)),

@@ -167,7 +167,8 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
 
     Skipped pairs, and pairs without usable depth or colour, are passed to
     ``warn`` as they happen; skipped pairs are listed in the result.
-    ``fusion``'s ``accept_classification`` is replaced by the classifier's threshold (``config`` may set it).
+    ``fusion``'s ``accept_classification`` is replaced by the classifier's threshold (``config`` may set it),
+    its ``far_m`` by ``config.depth.far_m``.
     ``Cancelled`` is raised when ``is_cancelled()`` turns true; ``MappingError``
     as soon as more than ``max_skipped_share`` (0..1) of the pairs are skipped,
     and when no pair could be mapped at all. ``workers``: processes mapping the
@@ -182,7 +183,8 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
 
     classifier = classifier_for(catalogue, config)  # a missing or broken model fails here, before any pair
     accept = accept_threshold(classifier, config)
-    fusion = replace(fusion or FusionConfig(), accept_classification=accept)  # always the classifier's
+    # always the classifier's threshold and the run's depth range
+    fusion = replace(fusion or FusionConfig(), accept_classification=accept, far_m=config.depth.far_m)
     detections, skipped, seconds, load_seconds, total = [], [], 0.0, 0.0, len(drive.pairs)
     workers = worker_count(workers, total)
     with closing(map_pairs(drive, catalogue, config, is_cancelled, workers, detect, scheduler)) as results:

@@ -65,6 +65,7 @@ def test_run_record_names_drive_catalogue_and_settings(mapped, drive_dir):
     settings = run_settings(json.loads(json.dumps(record)), "record")  # the whole configuration, as JSON
     assert settings.config == mapped[0].config and settings.fusion == mapped[0].fusion
     assert settings.fusion.accept_classification == record["classification_threshold"]
+    assert settings.fusion.far_m == record["far_m"]  # the run's range: where a sign seen once stays for review
 
 
 def test_corrupt_pair_is_skipped_with_a_warning_naming_it(drive_dir, catalogue, tmp_path):
