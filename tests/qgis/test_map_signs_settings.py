@@ -61,10 +61,11 @@ def test_the_run_table_holds_the_whole_configuration_and_reads_back(earlier):
     record = read_run_record(earlier)
     assert record["settings_version"] == SETTINGS_VERSION
     assert record["pipeline"] == settings_dict(EXPECTED)  # every field, not only the dialog's
-    assert record["fusion"] == settings_dict(FusionConfig(accept_classification=0.7))
+    # the fusion carries the classifier's threshold and the run's far limit (a sign seen once near it waits)
+    assert record["fusion"] == settings_dict(FusionConfig(accept_classification=0.7, far_m=16.0))
     assert record["classification_threshold"] == 0.7 and record["classifier"] in ("cnn", "ncc")
     settings = load_run_settings(earlier)
-    assert settings.config == EXPECTED and settings.fusion == FusionConfig(accept_classification=0.7)
+    assert settings.config == EXPECTED and settings.fusion == FusionConfig(accept_classification=0.7, far_m=16.0)
     assert settings.catalogue == record["catalogue"]
 
 
