@@ -198,6 +198,7 @@ class _ShapeBlindNetwork:
     read a stop sign's red alone (tune drive 808), each probability over its own reading's candidates."""
 
     name, accept_threshold, min_score, marginal_min_score = "stand-in", 0.85, 0.25, 0.5
+    answers = (("2.02", 0.99), ("3.01", 0.97))  # the first of these among a reading's candidates is its answer
 
     def __init__(self):
         self.asked = []
@@ -209,7 +210,7 @@ class _ShapeBlindNetwork:
         from signmapper_core.pipeline.classify import ClassificationResult
 
         self.asked.append(set(candidate_ids))
-        for answer, score in (("2.02", 0.99), ("3.01", 0.97)):
+        for answer, score in self.answers:
             if answer in candidate_ids:
                 return ClassificationResult(answer, score, {answer: score})
         return ClassificationResult(None, 0.0)
@@ -235,14 +236,7 @@ class _StopSignLikingNetwork(_ShapeBlindNetwork):
     """Reads a round sign's candidates doubtfully (0.8, below acceptance) and the stop sign, its only candidate
     in an octagon reading, surely (0.97): as the shipped network read round signs on tune drives 808 and 809."""
 
-    def classify(self, image, bbox, candidate_ids):
-        from signmapper_core.pipeline.classify import ClassificationResult
-
-        self.asked.append(set(candidate_ids))
-        for answer, score in (("3.01", 0.97), ("2.11", 0.8)):
-            if answer in candidate_ids:
-                return ClassificationResult(answer, score, {answer: score})
-        return ClassificationResult(None, 0.0)
+    answers = (("3.01", 0.97), ("2.11", 0.8))
 
 
 def test_a_disc_is_not_read_as_the_stop_sign_when_its_round_reading_is_only_doubtful(catalogue, monkeypatch):
