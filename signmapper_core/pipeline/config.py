@@ -288,6 +288,11 @@ class SizeConfig:
     # ...its diameter the fitted ellipse's larger axis, at most this x the larger box side (an ellipse fitted to a
     # cut outline overshoots) and never below that side (a disc cut by an occluder keeps its extent on one axis)
     round_face_max_axis_scale: float = 1.15
+    # a danger triangle whose top is hidden (a branch, a hedge) is read from its base (hidden_apex.py) when at least
+    # apex_min_hidden of where its apex should be is coloured (saturation above apex_min_saturation) but not red
+    apex_completion: bool = True
+    apex_min_saturation: int = 60
+    apex_min_hidden: float = 0.5
     # smallest and largest face side assumed where the catalogue (after exclusions) has no format at all: the
     # smallest face worth finding and the stereo bands need one
     fallback_face_sides_m: Tuple[float, float] = (0.4, 1.5)

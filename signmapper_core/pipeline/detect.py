@@ -28,6 +28,7 @@ from .depth_sources import depth_source_for
 from .detection import Detection
 from .face_extent import FULL, candidate_entries, face_bbox, frame_candidates, hole_candidates, rim_face_bboxes
 from .half_discs import with_half_discs
+from .hidden_apex import apex_completed_face
 from .hough import hough_scale, hough_segments, radius_range_px, ring_colour_share
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
@@ -98,7 +99,9 @@ def size_to_format(seg: Segment, candidates, depth_m: float, shape: Optional[str
 
     A round ``shape`` is sized by its diameter (:func:`round_face_diameter_px`), so a disc
     seen at an angle still fits its format. A face whose coloured part sits inside a white
-    rim is also read with the rim measured in the left image (:func:`.face_extent.rim_face_bboxes`).
+    rim is also read with the rim measured in the left image (:func:`.face_extent.rim_face_bboxes`). A
+    triangle too low for its width is also read as the whole triangle on its base where its top is hidden
+    (:func:`.hidden_apex.apex_completed_face`).
 
     ``candidates``: (entry, colour extent) pairs, grouped by extent so that a
     coloured part inside a white rim or panel is sized as the whole face. Each
@@ -113,12 +116,16 @@ def size_to_format(seg: Segment, candidates, depth_m: float, shape: Optional[str
     round_face = shape in ROUND_SHAPES and min(w, h) >= config.size.min_round_axis_ratio * max(w, h)
     diameter = round_face_diameter_px(seg, config.size.round_face_max_axis_scale) if round_face else None
     for ext, group in groups.values():
-        faces = [face_bbox(seg.bbox, ext)]
+        readings = [(face_bbox(seg.bbox, ext), group)]  # (face box, the entries it may be)
         rimmed = [e for e in group if e.shape == shape]
-        if ext != FULL and rimmed and seg.source == "colour":
-            faces += rim_face_bboxes(pair.left, seg.bbox, seg.mask, ext, shape, config)  # rims drawn otherwise
-        for face in faces:
-            entries = group if face is faces[0] else rimmed
+        if ext != FULL and rimmed and seg.source == "colour":  # rims drawn otherwise
+            readings += [(f, rimmed) for f in rim_face_bboxes(pair.left, seg.bbox, seg.mask, ext, shape, config)]
+        triangles = [e for e in group if e.shape == "triangle"]
+        if shape == "triangle" and ext == FULL and triangles and config.size.apex_completion:
+            fw, fh = next(iter(triangles[0].formats.values()))
+            whole = apex_completed_face(pair.left, seg.bbox, fh / fw, config)  # its top hidden by leaves
+            readings += [(whole, triangles)] if whole is not None else []
+        for face, entries in readings:
             if diameter is not None and ext == FULL:  # an oblique disc: both axes are its diameter
                 width_m, height_m = metric_size(camera, (x, y, diameter, diameter), depth_m)
             else:

@@ -4,7 +4,7 @@ import pytest
 from pipeline_scenes import CAMERA, POSE, constant_depth, noisy_background, paste, sign_scene
 
 from signmapper_core.pipeline import Detection, PipelineConfig, detect_in_window, detect_pair
-from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, HoughConfig
+from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, HoughConfig, SizeConfig
 
 NO_HOUGH = HoughConfig(hough_enabled=False)
 FORWARD, RIGHT, DOWN = POSE.rotation[:, 2], POSE.rotation[:, 0], POSE.rotation[:, 1]
@@ -251,3 +251,49 @@ def test_a_disc_is_not_read_as_the_stop_sign_when_its_round_reading_is_only_doub
     # reading's 0.97 is a probability over one candidate: the disc's own reading stands, for review
     assert any(ids == {"3.01"} for ids in network.asked) and any("2.11" in ids for ids in network.asked)
     assert (det.template_id, det.status) == ("2.11", "review")
+
+
+def _leaves(shape, seed):
+    """A patch of foliage: saturated greens, mottled."""
+    rng = np.random.default_rng(seed)
+    mottle = rng.integers(0, 50, shape[:2])
+    return np.stack([25 + mottle // 2, 95 + mottle, 40 + mottle // 3], axis=-1).astype(np.uint8)
+
+
+@pytest.mark.parametrize("cover, found", [("leaves", True), ("grey", False)])
+def test_a_danger_triangle_with_its_top_hidden_by_leaves_is_read_from_its_base(catalogue, cover, found):
+    """Leaves over the top quarter of a 1.23 leave a red trapezoid too low for any triangle format: the triangle on
+    its base is the face. The same trapezoid under a grey patch (a wall, nothing in front) is not completed.
+    (With a third hidden the outline reads as a disc or an octagon, and the trapezoid is not taken for a
+    triangle at all.)"""
+    sign = _world(8.0, 1.2, 0.3)
+    left, depth, (x, y, w, h) = sign_scene(catalogue, "1.23", "normal", sign, background_depth=30.0)
+    band = (slice(y - 10, y + int(0.25 * h)), slice(x - 10, x + w + 10))
+    left[band] = _leaves(left[band].shape, 4) if cover == "leaves" else 128
+    dets = _detect(catalogue, left, depth, hough=NO_HOUGH)
+    if not found:
+        assert [d for d in dets if d.shape == "triangle"] == []
+        return
+    (det,) = dets
+    assert det.template_id == "1.23" and det.format == "normal"
+    assert max(abs(a - b) for a, b in zip(det.bbox, (x, y, w, h))) <= 3  # the whole triangle, apex included
+    assert np.linalg.norm(det.position - sign) < 0.1
+    off = _detect(catalogue, left, depth, hough=NO_HOUGH, size=SizeConfig(apex_completion=False))
+    assert [d for d in off if d.shape == "triangle"] == []  # the setting turns it off: no format fits
+
+
+def test_apex_completion_needs_a_low_segment_an_apex_in_the_image_and_something_coloured_over_it():
+    from signmapper_core.pipeline.hidden_apex import apex_completed_face
+
+    config = PipelineConfig()
+    image = np.full((200, 200, 3), 128, np.uint8)
+    image[:80] = _leaves((80, 200), 1)
+    ratio = 0.744 / 0.849
+    assert apex_completed_face(image, (50, 80, 100, 50), ratio, config) == (50, 42, 100, 88)  # leaves above
+    assert apex_completed_face(image, (50, 80, 100, 80), ratio, config) is None  # tall enough already
+    assert apex_completed_face(image, (50, 30, 100, 40), ratio, config) is None  # the apex beyond the image
+    grey = np.full((200, 200, 3), 128, np.uint8)
+    assert apex_completed_face(grey, (50, 80, 100, 50), ratio, config) is None  # nothing in front
+    red = grey.copy()
+    red[:80] = (30, 30, 200)
+    assert apex_completed_face(red, (50, 80, 100, 50), ratio, config) is None  # red: the ring, not a cover
