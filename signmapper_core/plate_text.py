@@ -129,9 +129,10 @@ def normalise_line(line: str) -> str:
     # a single character at either end that keeps the rest from being a line plates print is a frame's edge or
     # a pole read as a letter ("1 6–18 h", "J excepté livraisons"): the line without it, if that is one
     tokens = text.split()
-    for kept in (tokens[1:], tokens[:-1], tokens[1:-1]):
-        if len(kept) < len(tokens) and all(len(t) == 1 for t in set(tokens) - set(kept)) and kept:
-            shorter = _normalised(" ".join(kept))
+    for start, end in ((1, len(tokens)), (0, len(tokens) - 1), (1, len(tokens) - 1)):
+        dropped = tokens[:start] + tokens[end:]
+        if start < end and all(len(t) == 1 for t in dropped):
+            shorter = _normalised(" ".join(tokens[start:end]))
             if is_plate_line(shorter):
                 return shorter
     return text

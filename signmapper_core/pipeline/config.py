@@ -555,7 +555,7 @@ class PlateConfig:
     plate_ink_darkness: float = 0.6  # a plate pixel darker than this x the plate's median is ink (text, pictogram,
     # frame): printed black on white stays below half of the paper's brightness even in shade
     plate_min_seen: float = 0.3  # at least this share of a plate's box seen (not hidden in front) to judge its ink
-    plate_edge_px: int = 2  # a plate box this close to the image's edge may be cut by it: not seen whole
+    plate_edge_px: int = 1  # a plate box within this of the image's edge may be cut by it: not seen whole
     plate_depth_tolerance_share: float = 0.05  # ...the depth tolerance grows to this share of the depth (SGBM's
     # depth error grows with distance)
     plate_min_ink: float = 0.02  # share of dark pixels (text, pictogram, frame): a blank white region is no plate

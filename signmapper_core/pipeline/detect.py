@@ -122,8 +122,7 @@ def size_to_format(seg: Segment, candidates, depth_m: float, shape: Optional[str
             readings += [(f, rimmed) for f in rim_face_bboxes(pair.left, seg.bbox, seg.mask, ext, shape, config)]
         triangles = [e for e in group if e.shape == "triangle"]
         if shape == "triangle" and ext == FULL and triangles and config.size.apex_completion:
-            fw, fh = next(iter(triangles[0].formats.values()))
-            whole = apex_completed_face(pair.left, seg.bbox, fh / fw, config)  # its top hidden by leaves
+            whole = apex_completed_face(pair.left, seg.bbox, triangles[0].aspect, config)  # its top hidden by leaves
             readings += [(whole, triangles)] if whole is not None else []
         for face, entries in readings:
             if diameter is not None and ext == FULL:  # an oblique disc: both axes are its diameter

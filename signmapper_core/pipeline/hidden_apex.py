@@ -21,12 +21,12 @@ from .shape import ideal_mask
 Box = Tuple[int, int, int, int]
 
 
-def apex_completed_face(image: np.ndarray, bbox: Box, height_ratio: float, config) -> Optional[Box]:
-    """The face box of a triangle of ``height_ratio`` (height / width of its formats) standing on the segment's
-    base, when the segment is too low for one and the part of that triangle above it is hidden by something
-    coloured that is not the red of the ring (``config.size.apex_min_hidden`` of its pixels); else None."""
+def apex_completed_face(image: np.ndarray, bbox: Box, aspect: float, config) -> Optional[Box]:
+    """The face box of a triangle of ``aspect`` (width / height of its formats, ``TemplateEntry.aspect``) standing
+    on the segment's base, when the segment is too low for one and the part of that triangle above it is hidden by
+    something coloured that is not the red of the ring (``config.size.apex_min_hidden`` of its pixels); else None."""
     x, y, w, h = bbox
-    full_h = int(round(w * height_ratio))
+    full_h = int(round(w / aspect))
     if h >= (1.0 - config.size.size_tolerance) * full_h:
         return None  # tall enough: a triangle as it is
     top = y + h - full_h

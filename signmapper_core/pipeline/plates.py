@@ -24,6 +24,7 @@ import numpy as np
 
 from ..plate_catalogue import load_plate_templates, pictogram_formats, template_by_id
 from ..plate_formats import PLATE_FORMATS, PLATE_ID, PLATE_NAMES
+from .boxes import touches_border
 from .detection import Detection
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
@@ -87,11 +88,10 @@ def _clipped(box, shape):
 
 
 def seen_share(box, hidden: Optional[np.ndarray], image_shape, edge_px: int) -> float:
-    """Share of a plate's box seen whole: 0 when it reaches within ``edge_px`` of the image's edge (the plate may
-    go on beyond it, its text with it), else the share of the box not ``hidden`` (uint8 mask of the clipped box,
-    nonzero = covered by something in front; None: nothing hidden)."""
-    x, y, w, h = box
-    if x < edge_px or y < edge_px or x + w > image_shape[1] - edge_px or y + h > image_shape[0] - edge_px:
+    """Share of a plate's box seen whole: 0 when it comes within ``edge_px`` of the image's edge
+    (:func:`.boxes.touches_border`: the plate may go on beyond it, its text with it), else the share of the box not
+    ``hidden`` (uint8 mask of the clipped box, nonzero = covered by something in front; None: nothing hidden)."""
+    if touches_border(box, image_shape[1], image_shape[0], edge_px):
         return 0.0
     if hidden is None or hidden.size == 0:
         return 1.0

@@ -288,7 +288,7 @@ def test_apex_completion_needs_a_low_segment_an_apex_in_the_image_and_something_
     config = PipelineConfig()
     image = np.full((200, 200, 3), 128, np.uint8)
     image[:80] = _leaves((80, 200), 1)
-    ratio = 0.744 / 0.849
+    ratio = 0.849 / 0.744  # the SSV triangles' width / height
     assert apex_completed_face(image, (50, 80, 100, 50), ratio, config) == (50, 42, 100, 88)  # leaves above
     assert apex_completed_face(image, (50, 80, 100, 80), ratio, config) is None  # tall enough already
     assert apex_completed_face(image, (50, 30, 100, 40), ratio, config) is None  # the apex beyond the image
