@@ -17,7 +17,8 @@ too (``family_evaluation``): detected, correctly classified, false positives per
 ``--white-share`` generates drives with white signs and white distractors.
 ``--evidence`` lists, for every fused sign mapped with a wrong id, what each of its observations read
 (``misread_evidence``): whether a vote could have found the true id, or the classifier never saw it; and
-for every false positive the same per observation, with the pair and pixel box to look at.
+for every false positive the same per observation, with the pair and pixel box to look at; and every
+supplementary plate missed, linked to another sign or read wrong, with its true and its mapped text.
 """
 
 from __future__ import annotations
@@ -145,8 +146,9 @@ def main(argv=None) -> int:
             report = evaluate(*positions_ids(items), ref_xyz, ref_ids, traj, args.radius)
             reports[kind].append(report)
             if kind == "signs":
+                plate_evidence = [] if args.evidence else None
                 plates = evaluate_plates(drive, result.signs, reference, report.match, args.near, args.far,
-                                         args.radius)
+                                         args.radius, evidence=plate_evidence)
                 plate_totals = plates + plate_totals
                 all_azimuth_errors += azimuth_errors(signs, reference, report)
                 n, wrong, unmatched = accepted_but_wrong(signs, reference, report)
@@ -161,6 +163,8 @@ def main(argv=None) -> int:
                 print("\n".join(["False positives, observation by observation:"] + false))
             print()
         print("\n".join(plates.lines(f"{head}: supplementary plates")))
+        if plate_evidence:
+            print("\n".join(["Plates missed, linked wrong or read wrong:"] + plate_evidence))
         print()
         for family, colours in FAMILIES.items():
             for kind, items in (("detections", sign_detections), ("signs", signs)):

@@ -111,6 +111,9 @@ class FusionConfig:
     # darker than ocr_line_contrast x the paper in a straight run of ocr_line_span x its height or width (1: off)
     ocr_line_span: float = 0.9
     ocr_line_contrast: float = 0.8
+    # ...horizontal ones only within this share of the height from the top or bottom (the frame's remains): a row
+    # of blurred bold letters is as dark all along (tune drives: 'ausgenommen' painted over at 1.0)
+    ocr_line_edge_band: float = 0.15
     # what of Tesseract's reading is print (ocr.TextReading.kept): words at least this share of the height of the
     # words read with ocr_confident_word confidence (smaller "words" are dirt or a frame's remains)...
     ocr_min_word_height_share: float = 0.45

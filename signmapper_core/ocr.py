@@ -122,14 +122,15 @@ def find_tesseract(executable: Optional[str] = None) -> tuple:
     return path, languages
 
 
-def without_long_lines(grey: np.ndarray, span: float, contrast: float) -> np.ndarray:
+def without_long_lines(grey: np.ndarray, span: float, contrast: float, edge_band: float) -> np.ndarray:
     """``grey`` (uint8) with its straight lines across the plate painted over from what lies beside them.
 
     A pole seen through a gap, a wire, or what is left of the printed frame runs across (nearly) the whole
     plate; no letter does (the plate's margin keeps letters off its edges). Tesseract reads such a line as
     "1", "l" or "|" beside the text, or reads nothing on the line it cuts. A line: pixels darker than
     ``contrast`` x the paper's median brightness forming a vertical run of at least ``span`` x the height (or a
-    horizontal one of ``span`` x the width).
+    horizontal one of ``span`` x the width, within ``edge_band`` x the height of the top or bottom edge: a
+    row of blurred bold letters is dark all along too, and a plate's middle has no frame).
     """
     import cv2
 
@@ -140,6 +141,9 @@ def without_long_lines(grey: np.ndarray, span: float, contrast: float) -> np.nda
     darker = (grey < contrast * paper).astype(np.uint8)
     vertical = cv2.morphologyEx(darker, cv2.MORPH_OPEN, np.ones((max(2, int(span * height)), 1), np.uint8))
     horizontal = cv2.morphologyEx(darker, cv2.MORPH_OPEN, np.ones((1, max(2, int(span * width))), np.uint8))
+    # a line of blurred, bold letters is dark all along too: across the plate, only the frame's remains are lines
+    edge = max(1, int(round(edge_band * height)))
+    horizontal[edge:height - edge] = 0
     lines = cv2.dilate(vertical | horizontal, np.ones((3, 3), np.uint8))
     if not lines.any():
         return grey
@@ -165,7 +169,7 @@ def prepare_crop(crop: np.ndarray, config=None) -> np.ndarray:
     if crop.shape[0] > 2 * cut + 4 and crop.shape[1] > 2 * cut + 4:
         crop = crop[cut:-cut or None, cut:-cut or None]
     if config.ocr_line_span < 1.0:
-        crop = without_long_lines(crop, config.ocr_line_span, config.ocr_line_contrast)
+        crop = without_long_lines(crop, config.ocr_line_span, config.ocr_line_contrast, config.ocr_line_edge_band)
     height = max(crop.shape[0], 1)
     scale = np.clip(config.ocr_crop_height_px / height, 1.0, config.ocr_max_upscale)
     grey = cv2.resize(crop, None, fx=scale, fy=scale, interpolation=cv2.INTER_CUBIC)

@@ -13,6 +13,7 @@ is also classified: a text plate as one, a pictogram plate as its SSV id.
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
+from typing import Optional
 
 import numpy as np
 
@@ -63,7 +64,8 @@ class PlateFigures:
 
 
 def evaluate_plates(drive, signs, sign_reference, sign_match, near_m: float = 4.0, far_m: float = 14.0,
-                    radius_m: float = 0.75, min_text_px: float = MIN_TEXT_PX) -> PlateFigures:
+                    radius_m: float = 0.75, min_text_px: float = MIN_TEXT_PX,
+                    evidence: Optional[list] = None) -> PlateFigures:
     """Plate figures of one run.
 
     ``signs``: every fused feature of the run (signs and plates); ``sign_reference``
@@ -83,14 +85,18 @@ def evaluate_plates(drive, signs, sign_reference, sign_match, near_m: float = 4.
     figures.false_positives = int((match < 0).sum())
     for k, ref in enumerate(reference):
         found = [mapped[i] for i in np.flatnonzero(match == k)]
-        readable = largest_view_px(drive, ref, near_m, far_m) >= min_text_px
+        largest_px = largest_view_px(drive, ref, near_m, far_m)
+        readable = largest_px >= min_text_px
         figures.readable += readable
         if not found:
+            if evidence is not None:
+                evidence.append(plate_line(ref, largest_px, None, "not detected"))
             continue
         figures.detected += 1
         figures.duplicates += len(found) > 1
         best = max(found, key=lambda p: p.n_obs)
-        figures.links_right += sign_truth.get(best.plate_of) == ref.plate_of
+        link_right = sign_truth.get(best.plate_of) == ref.plate_of
+        figures.links_right += link_right
         figures.kinds_right += best.template_id == ref.template_id
         if ref.template_id != PLATE_ID:
             figures.pictograms_detected += 1
@@ -99,4 +105,18 @@ def evaluate_plates(drive, signs, sign_reference, sign_match, near_m: float = 4.
             figures.readable_detected += 1
             figures.texts_read += best.text is not None
             figures.texts_right += (best.text or "") == (ref.text or "")  # a pictogram alone: no text
+        if evidence is not None and not link_right:
+            evidence.append(plate_line(ref, largest_px, best, "linked to another sign"))
+        elif evidence is not None and readable and (best.text or "") != (ref.text or ""):
+            evidence.append(plate_line(ref, largest_px, best, "text wrong"))
     return figures
+
+
+def plate_line(ref, largest_px: float, mapped, what: str) -> str:
+    """One line of evidence on a reference plate: what went wrong, its truth, and what was mapped for it."""
+    line = f"  plate {ref.sign_id} under sign {ref.plate_of} ({largest_px:.0f} px high at most): {what}; " \
+           f"truth {ref.template_id} {ref.text!r}"
+    if mapped is not None:
+        confidence = "-" if mapped.text_confidence is None else f"{mapped.text_confidence:.2f}"
+        line += f"; mapped {mapped.template_id} {mapped.text!r} (confidence {confidence}, {mapped.n_obs} observations)"
+    return line

@@ -80,9 +80,20 @@ def vote_text(readings, config: Optional[FusionConfig] = None) -> tuple[Optional
                                                                              text.split(" / ")) else 1.0)
     if not weights:
         return None, None
-    text = max(weights, key=weights.get)
+    # a view that read only some of a plate's lines (one line cut, faint or hidden) supports the well-formed
+    # reading that holds them too: 'Anwohner' is a part of 'ausgenommen / Anwohner', not a rival of it
+    support = {text: weight + sum(w for other, w in weights.items() if _part_of(other, text))
+               if all(is_plate_line(line) for line in text.split(" / ")) else weight
+               for text, weight in weights.items()}
+    text = max(support, key=support.get)
     confidence = sum(r.confidence for r in readings if normalise_text(r.lines) == text)
     return text, confidence / len(readings)
+
+
+def _part_of(part: str, text: str) -> bool:
+    """Whether the lines of ``part`` are a run of fewer of the lines of ``text``."""
+    a, b = part.split(" / "), text.split(" / ")
+    return len(a) < len(b) and any(b[i:i + len(a)] == a for i in range(len(b) - len(a) + 1))
 
 
 def read_plate_texts(plates: Sequence[FusedSign], warn: Optional[WarnCallback] = None,

@@ -158,6 +158,12 @@ def _normalised(line: str) -> str:
 
 
 def normalise_text(lines: Iterable[str]) -> str:
-    """The lines of a plate, each normalised, empty ones dropped, joined by " / "."""
-    kept = [normalise_line(line) for line in lines]
-    return " / ".join(line for line in kept if line)
+    """The lines of a plate, each normalised, empty ones dropped, joined by " / ".
+
+    A line of one character beside other lines is a pole or the frame's edge read as a letter ("1", "l"): no
+    plate prints a lone character on a line of its own.
+    """
+    kept = [line for line in (normalise_line(line) for line in lines) if line]
+    if len(kept) > 1:
+        kept = [line for line in kept if len(line) > 1]
+    return " / ".join(kept)

@@ -57,6 +57,12 @@ def test_words_that_are_not_days_or_numbers_keep_their_dash():
     assert normalise_text(["Mo-Fr", "", " 7-19h "]) == "Mo–Fr / 7–19 h"
 
 
+def test_a_lone_character_on_a_line_of_its_own_is_a_pole_read_as_a_letter():
+    assert normalise_text(["ausgenommen", "Anwohner", "1"]) == "ausgenommen / Anwohner"
+    assert normalise_text(["l", "200 m"]) == "200 m"
+    assert normalise_text(["7"]) == "7"  # alone it is all there is: kept for the vote to weigh
+
+
 def plate_crop(lines, height_px):
     """A plate set in DejaVu Sans at 3x, then shrunk to ``height_px`` as a camera sees it."""
     width = int(height_px * 2.0)
@@ -87,7 +93,7 @@ def crossed(crop, column):
 def test_a_line_across_the_whole_plate_is_painted_over_and_its_letters_kept():
     crop = cv2.cvtColor(plate_crop(["Anwohner"], 48), cv2.COLOR_BGR2GRAY)
     cut = crossed(crop, 40)
-    cleaned = without_long_lines(cut, 0.9, 0.8)
+    cleaned = without_long_lines(cut, 0.9, 0.8, 0.15)
     paper = np.median(crop)
     line = np.zeros(crop.shape, bool)
     line[8:-8, 40:42] = True  # inside the printed frame
@@ -97,7 +103,17 @@ def test_a_line_across_the_whole_plate_is_painted_over_and_its_letters_kept():
     letters = ink & ~line
     letters[:8], letters[-8:], letters[:, :8], letters[:, -8:] = False, False, False, False  # the frame goes too
     assert np.count_nonzero(cleaned[letters] < 0.5 * paper) >= 0.95 * np.count_nonzero(letters)
-    assert np.array_equal(without_long_lines(crop[8:-8, 8:-8], 0.9, 0.8), crop[8:-8, 8:-8])  # no line: as it was
+    assert np.array_equal(without_long_lines(crop[8:-8, 8:-8], 0.9, 0.8, 0.15), crop[8:-8, 8:-8])  # no line: as it was
+
+
+def test_a_dark_row_across_the_middle_is_a_line_of_letters_and_one_at_the_edge_is_the_frame():
+    crop = np.full((40, 120), 200, np.uint8)
+    crop[18:23, 6:114] = 90  # blurred bold letters, dark all along the row
+    crop[1:3, :] = 90  # what is left of the printed frame
+    cleaned = without_long_lines(crop, 0.9, 0.8, 0.15)
+    assert np.array_equal(cleaned[15:26], crop[15:26])
+    assert cleaned[1:3].min() > 150
+    assert without_long_lines(crop, 0.9, 0.8, 1.0)[18:23, 20:100].min() > 150  # band over all: the row goes too
 
 
 def test_tesseract_reads_a_plate_crossed_by_a_pole_edge_once_the_line_is_painted_over():

@@ -309,9 +309,11 @@ def test_a_plate_seen_in_three_pairs_is_one_feature_linked_to_its_sign_with_its_
     reference = mappable_signs(drive)
     report = evaluate([s.position for s in signs], [s.template_id for s in signs], [r.position for r in reference],
                       [r.template_id for r in reference], [[0, 0], [1, 1]], 0.75)
-    figures = evaluate_plates(drive, result.signs, reference, report.match)
+    evidence = []
+    figures = evaluate_plates(drive, result.signs, reference, report.match, evidence=evidence)
     assert (figures.reference, figures.detected, figures.links_right, figures.false_positives) == (1, 1, 1, 0)
     assert (figures.readable, figures.texts_right) == (1, 1)  # 0.2 m at 8 m: 44 px high
+    assert evidence == []  # nothing missed, linked or read wrong
 
 
 def test_without_tesseract_plates_are_mapped_and_the_run_says_once_how_to_install_it(catalogue, tmp_path,
@@ -324,6 +326,13 @@ def test_without_tesseract_plates_are_mapped_and_the_run_says_once_how_to_instal
     assert len(plates) == 1 and plates[0].text is None and plates[0].text_confidence is None
     about_plates = [m for m in messages if "plate" in m]
     assert len(about_plates) == 1 and INSTALL_HINT in about_plates[0]
+    signs = [s for s in result.signs if s.plate_of is None]
+    reference = mappable_signs(drive)
+    report = evaluate([s.position for s in signs], [s.template_id for s in signs], [r.position for r in reference],
+                      [r.template_id for r in reference], [[0, 0], [1, 1]], 0.75)
+    evidence = []
+    evaluate_plates(drive, result.signs, reference, report.match, evidence=evidence)
+    assert len(evidence) == 1 and "text wrong; truth plate '200 m'; mapped plate None" in evidence[0]
 
 
 def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
@@ -389,6 +398,19 @@ def test_a_reading_in_a_form_plates_print_outweighs_a_surer_misreading():
     assert text == "100 m" and confidence == pytest.approx(0.6 / 3)
     assert vote_text(readings, FusionConfig(plate_well_formed_weight=1.0))[0] == "100 nil"  # no bonus: surer wins
     assert vote_text([reading("100 nil", 0.9), reading("10O nil", 0.5)]) == ("100 nil", pytest.approx(0.7))
+
+
+def test_a_view_that_read_only_some_lines_supports_the_reading_of_all_of_them():
+    from signmapper_core.ocr import TextReading, Word
+    from signmapper_core.plate_fusion import vote_text
+
+    def reading(lines, confidence):
+        return TextReading(tuple(Word(w, confidence, k) for k, line in enumerate(lines) for w in line.split()))
+
+    whole, part = reading(["ausgenommen", "Anwohner"], 0.9), reading(["Anwohner"], 0.95)
+    assert vote_text([part, whole]) == ("ausgenommen / Anwohner", pytest.approx(0.45))
+    # a reading that is no plate's (a pole read as words) gets no support from the lines it holds
+    assert vote_text([part, reading(["mu Lei", "Anwohner"], 0.9)])[0] == "Anwohner"
 
 
 def test_a_plate_seen_whole_is_told_from_one_cut_by_the_image_edge_or_hidden_in_part():
