@@ -24,6 +24,7 @@ from .plate_faces import draw_plate
 from .surfaces import Texture, TextureSource, rect_surface
 
 UP = np.array([0.0, 0.0, 1.0])
+PLATE_MAX_GAP_M = 0.06  # between a sign's lower edge and its plate's upper edge (at least 2 cm)
 PICTOGRAM_SHARE = 0.3  # of the plates: a pictogram plate (SSV 5.xx drawing) instead of a text plate
 LANGUAGE_SHARES = (("de", 0.6), ("fr", 0.25), ("it", 0.15))
 DISTANCES_M = (20, 30, 50, 80, 100, 150, 200, 250, 300, 400, 500, 800)
@@ -141,7 +142,7 @@ def add_plate(pieces, look, host, centre, facing_deg: float, tilt_deg: float, si
     n_h = np.array([np.sin(phi), np.cos(phi), 0.0])
     right = np.array([-np.cos(phi), np.sin(phi), 0.0])
     up = UP * np.cos(tau) - n_h * np.sin(tau)
-    gap = rng.uniform(0.02, 0.06)
+    gap = rng.uniform(0.02, PLATE_MAX_GAP_M)
     plate_centre = centre - up * (sign_fmt[2] / 2 + gap + height_m / 2)
     size_px = int(np.clip(look.fx * width_m / 2.5, 64, 720))
     fh, fw = face_shape(size_px, width_m, height_m)

@@ -10,11 +10,12 @@ import numpy as np
 from ..drive import TruthSign
 from . import textures as tx
 from .faces import FaceOptions, SignKind, draw_sign_face, pick_format
-from .plate_layout import add_plate
+from .plate_layout import PLATE_MAX_GAP_M, add_plate
 from .scene_pieces import CARRIAGEWAY, KERB_H, PARKING_LEFT, SIDEWALK_RIGHT, UP, Pieces
 from .surfaces import Surface, Texture, TextureSource, rect_surface
 
 POLE_FORMS = ("single", "stacked", "back-to-back", "overhead", "away")
+POLE_STANDOFF_M = 0.04  # pole axis behind an upright panel (a 6 cm pole: 1 cm clear of it)
 
 
 @dataclass
@@ -124,21 +125,27 @@ def sign_pole(pieces: Pieces, look: PanelLook, s, kinds, rng, side, form: str = 
         centres.append((second, fmt2, lower + h_m / 2 + gap))
     top = 0.0
     placed = []
+    reach = 0.0  # how far a tilted panel or its plate reaches behind the vertical through the panel centres
     for k, (kind, f, h_c) in enumerate(centres):
         centre = st.point(s, l_c, ground + h_c)
         panel_tilt = tilt + rng.uniform(-1, 1)
+        lean = abs(np.sin(np.radians(panel_tilt)))
         placed.append(sign_panel(pieces, look, kind, centre, facing, panel_tilt, f, s, not away))
+        reach = max(reach, f[2] / 2 * lean)
         if k == 0 and look.plate_share > 0:  # the lowest sign may carry a supplementary plate
-            placed += add_plate(pieces, look, placed[-1], centre, facing, panel_tilt, f, s)
+            plates = add_plate(pieces, look, placed[-1], centre, facing, panel_tilt, f, s)
+            reach = max([reach] + [(f[2] / 2 + PLATE_MAX_GAP_M + p.truth.height_m) * lean for p in plates])
+            placed += plates
         top = max(top, h_c + f[2] / 2)
+    # the pole stands behind every panel and plate on their clamps, never through a tilted one's lower part
+    standoff = POLE_STANDOFF_M + reach
+    n_h = np.array([np.sin(np.radians(facing)), np.cos(np.radians(facing)), 0.0])
     if form == "back-to-back":
         other = kinds[int(rng.integers(len(kinds)))]
         f = pick_format(other, rng)
-        n_h = np.array([np.sin(np.radians(facing)), np.cos(np.radians(facing)), 0.0])
-        centre = st.point(s, l_c, ground + lower + h_m / 2) - n_h * 0.08
+        centre = st.point(s, l_c, ground + lower + h_m / 2) - n_h * 2 * standoff
         placed.append(sign_panel(pieces, look, other, centre, facing + 180.0, tilt, f, s, False))
-    n_h = np.array([np.sin(np.radians(facing)), np.cos(np.radians(facing)), 0.0])
-    pole_base = st.point(s, l_c, ground) - n_h * 0.04
+    pole_base = st.point(s, l_c, ground) - n_h * standoff
     pieces.crossed(pole_base, 0.06, top + 0.1, None, None, s, (140, 145, 145))
     if look.occlusion and rng.random() < 0.2:
         occluder(pieces, s, l_c, max(w_m, h_m), ground + lower + h_m / 2, rng)

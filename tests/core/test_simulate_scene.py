@@ -97,6 +97,26 @@ def test_each_pole_form_places_its_panels_from_explicit_inputs():
         _pole("sideways")
 
 
+def test_the_pole_stands_behind_every_tilted_panel_and_plate():
+    """A panel or plate tilted back must not swallow its pole: the pole stays clear of its lower edge."""
+    for seed in range(12):
+        street = make_street(SimulationConfig(pairs=10, seed=seed))
+        pieces = Pieces(street, TextureKeys(seed))
+        look = PanelLook(1750.0, FaceOptions(), weathering=False, shadows=False, occlusion=False, plate_share=1.0)
+        placed = sign_pole(pieces, look, 30.0, sign_kinds(), np.random.default_rng(seed), 1, "stacked")
+        assert any(p.host is not None for p in placed)  # a plate hangs under the lower sign
+        pole = pieces.surfaces[-2:]  # the two crossed quads, added last
+        axis = np.mean([q.origin for q in pole], axis=0)[:2]
+        radius = np.linalg.norm(pole[0].axis_u) * (pole[0].polygon[1, 0] - pole[0].polygon[0, 0]) / 2
+        facing = np.radians(placed[0].truth.facing)
+        n_h = np.array([np.sin(facing), np.cos(facing)])
+        for item in placed:
+            face = item.surfaces[0]
+            for u, v in face.polygon:
+                corner = face.origin + u * face.axis_u + v * face.axis_v
+                assert np.dot(corner[:2] - axis, n_h) > radius, f"seed {seed}: the pole pierces {item.truth}"
+
+
 def test_shop_signs_hang_only_on_the_facades_they_are_given():
     street = make_street(SimulationConfig(pairs=30, seed=4))
     pieces = Pieces(street, TextureKeys(4))
