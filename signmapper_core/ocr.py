@@ -141,7 +141,7 @@ def without_long_lines(grey: np.ndarray, span: float, contrast: float, edge_band
     darker = (grey < contrast * paper).astype(np.uint8)
     vertical = cv2.morphologyEx(darker, cv2.MORPH_OPEN, np.ones((max(2, int(span * height)), 1), np.uint8))
     horizontal = cv2.morphologyEx(darker, cv2.MORPH_OPEN, np.ones((1, max(2, int(span * width))), np.uint8))
-    # a line of blurred, bold letters is dark all along too: across the plate, only the frame's remains are lines
+    # the rows between the edge bands hold the text
     edge = max(1, int(round(edge_band * height)))
     horizontal[edge:height - edge] = 0
     lines = cv2.dilate(vertical | horizontal, np.ones((3, 3), np.uint8))

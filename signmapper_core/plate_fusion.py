@@ -76,18 +76,22 @@ def vote_text(readings, config: Optional[FusionConfig] = None) -> tuple[Optional
     for reading in readings:
         text = normalise_text(reading.lines)
         if text:  # a reading in the forms plates print counts twice: a misreading rarely is one
-            weights[text] += reading.confidence * (well_formed if all(is_plate_line(line) for line in
-                                                                             text.split(" / ")) else 1.0)
+            weights[text] += reading.confidence * (well_formed if _well_formed(text) else 1.0)
     if not weights:
         return None, None
     # a view that read only some of a plate's lines (one line cut, faint or hidden) supports the well-formed
     # reading that holds them too: 'Anwohner' is a part of 'ausgenommen / Anwohner', not a rival of it
     support = {text: weight + sum(w for other, w in weights.items() if _part_of(other, text))
-               if all(is_plate_line(line) for line in text.split(" / ")) else weight
+               if _well_formed(text) else weight
                for text, weight in weights.items()}
     text = max(support, key=support.get)
     confidence = sum(r.confidence for r in readings if normalise_text(r.lines) == text)
     return text, confidence / len(readings)
+
+
+def _well_formed(text: str) -> bool:
+    """Whether every line of a normalised plate text has a form plates print (``is_plate_line``)."""
+    return all(is_plate_line(line) for line in text.split(" / "))
 
 
 def _part_of(part: str, text: str) -> bool:
