@@ -565,6 +565,12 @@ class PlateConfig:
     # hidden pixels counted as the plate's, is a plate when this share of it is seen ...
     plate_min_visible: float = 0.4
     plate_hidden_weight: float = 0.9  # ... and scores this much less than a plate seen whole
+    # a lamp post or trunk in front crosses the sign and its plate from top to bottom: a dark vertical run over
+    # this share of the window's height within the sign's columns, at most plate_occluder_max_width x the sign's
+    # width wide, hides what lies behind it (the sign's own pole is behind both, so its run stops at them)
+    plate_occluder_span: float = 0.9
+    plate_occluder_max_width: float = 0.3
+    plate_split_min_overlap: float = 0.8  # two pieces of a plate cut by such a post are level: rows this shared
     plate_pictogram_min_score: float = 0.6  # correlation with a pictogram plate's drawing: below, a text plate
     plate_min_size_px: Tuple[int, int] = (6, 4)  # (width, height) of the smallest region read as a plate: smaller
     # ones are specks (the smallest format, 0.40 x 0.15 m, is ~50 x 19 px at 14 m with fy 1750)

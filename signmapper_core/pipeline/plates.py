@@ -194,7 +194,8 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
     # a piece alone is completed only if it can be the seen share of the smallest plate (not a speck)
     smallest = min(w * h for w, h in PLATE_FORMATS.values()) * px_per_m * pair.camera.fy / z
     alone = [k for k in pieces if stats[k, cv2.CC_STAT_AREA] >= config.plates.plate_min_visible * smallest]
-    groups = [[k] for k in alone] + ([pieces] if len(pieces) > 1 else [])
+    groups = [[k] for k in alone] + side_by_side(pieces, stats, plates.plate_split_min_overlap) \
+        + ([pieces] if len(pieces) > 2 else [])
     hidden_here = hidden[y0:y1, x0:x1].astype(bool)
     for group in groups:
         lo = np.min(stats[group, :2], axis=0)
@@ -213,6 +214,23 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
     return best
 
 
+def side_by_side(pieces: Sequence[int], stats: np.ndarray, min_overlap: float) -> List[List[int]]:
+    """Groups of the pieces of a plate cut by a lamp post or trunk in front: each two pieces level with each
+    other (their rows overlap by ``min_overlap`` of the taller one's height), with every piece inside the box of
+    the two (the wheels of a bicycle pictogram)."""
+    groups = []
+    for i, a in enumerate(pieces):
+        for b in pieces[i + 1:]:
+            (ax, ay, aw, ah), (bx, by, bw, bh) = stats[a, :4], stats[b, :4]
+            if min(ay + ah, by + bh) - max(ay, by) < min_overlap * max(ah, bh):
+                continue
+            x0, y0, x1, y1 = min(ax, bx), min(ay, by), max(ax + aw, bx + bw), max(ay + ah, by + bh)
+            groups.append([k for k in pieces if k in (a, b) or (stats[k, 0] >= x0 and stats[k, 1] >= y0 and
+                                                                stats[k, 0] + stats[k, 2] <= x1 and
+                                                                stats[k, 1] + stats[k, 3] <= y1)])
+    return groups
+
+
 def _hidden_reading(pair, sign, box, member, labels, window, z, side, touch_px, hidden, hidden_here, grow, best):
     """``best`` or the reading of ``box`` (window coordinates) as a plate whose pixels not in its pieces
     (``member[label]``) are hidden by something in front (``hidden_here``, window-sized): most of them must be
@@ -223,7 +241,8 @@ def _hidden_reading(pair, sign, box, member, labels, window, z, side, touch_px, 
     if bx < 0 or by < 0 or bx + bw > x1 - x0 or by + bh > y1 - y0:
         return best
     inside = member[labels[by:by + bh, bx:bx + bw]]
-    covered = inside | hidden_here[by:by + bh, bx:bx + bw]
+    # its print enclosed by pieces and what hides them is the plate's too (strokes cut open by a post in front)
+    covered = _filled((inside | hidden_here[by:by + bh, bx:bx + bw]).astype(np.uint8), 1).astype(bool)
     seen_share, fill = float(inside.mean()), float(covered.mean())
     if fill < config.plates.plate_min_fill or seen_share < config.plates.plate_min_visible:
         return best
@@ -244,6 +263,25 @@ def hidden_mask(bgr: np.ndarray, depth: np.ndarray, z: float, config) -> np.ndar
     coloured = hsv[:, :, 1] > config.plates.plate_max_saturation
     nearer = np.isfinite(depth) & (depth < z - depth_tolerance_m(z, config))
     return (coloured | nearer).astype(np.uint8)
+
+
+def crossing_occluders(not_white: np.ndarray, sign_columns: tuple, sign_width: int, config) -> np.ndarray:
+    """uint8 mask of the window's narrow vertical runs of ``not_white`` (uint8) pixels that cross it from top to
+    bottom within the sign's columns (``sign_columns``: first, last + 1 in the window): a lamp post or trunk in
+    front of sign and plate, whose depth is unknown where stereo matched only around the sign's colour."""
+    height = not_white.shape[0]
+    c0, c1 = max(0, sign_columns[0]), min(not_white.shape[1], sign_columns[1])
+    out = np.zeros_like(not_white)
+    span = int(config.plates.plate_occluder_span * height)
+    if c1 - c0 < 2 or span < 2:
+        return out
+    runs = cv2.morphologyEx(np.ascontiguousarray(not_white[:, c0:c1]), cv2.MORPH_OPEN, np.ones((span, 1), np.uint8),
+                            borderType=cv2.BORDER_CONSTANT, borderValue=0)  # a run stopping at the edge is no longer
+    count, labels, stats, _ = cv2.connectedComponentsWithStats(runs, connectivity=4)
+    narrow = np.zeros(count, bool)
+    narrow[1:] = stats[1:, cv2.CC_STAT_WIDTH] <= config.plates.plate_occluder_max_width * sign_width
+    out[:, c0:c1] = narrow[labels].astype(np.uint8)
+    return out
 
 
 class _HiddenCanvas:
@@ -271,8 +309,10 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
         return None
     x, y, w, h = sign.bbox
     px_per_m = camera.fy / z
-    largest_h = max(ph for _, ph in PLATE_FORMATS.values()) * (1.0 + config.size.size_tolerance)
-    largest_w = max(pw for pw, _ in PLATE_FORMATS.values()) * (1.0 + config.size.size_tolerance)
+    # the window reaches as far as the largest plate, text or pictogram (a 5.31 under a 0.9 m sign is 0.62 m high)
+    formats = {**PLATE_FORMATS, **pictogram_formats(plate_templates(pair))}.values()
+    largest_h = max(ph for _, ph in formats) * (1.0 + config.size.size_tolerance)
+    largest_w = max(pw for pw, _ in formats) * (1.0 + config.size.size_tolerance)
     reach = int(round((config.plates.plate_max_gap_m + largest_h) * px_per_m))
     half_w = int(round(max(largest_w * camera.fx / z, w) / 2 + 2))
     cu = x + w / 2.0
@@ -294,11 +334,14 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
         if ox1 > ox0 and oy1 > oy0:
             in_window[oy0:oy1, ox0:ox1] = 0
             elsewhere[oy0:oy1, ox0:ox1] = True
+    masks = white_masks(window, config)
+    if masks:
+        in_window |= crossing_occluders(1 - masks[0], (x - x0, x + w - x0), w, config)
     hidden = _HiddenCanvas.of(pair.left.shape[:2])  # image-sized: the readings index it in image coordinates
     hidden[y0:y1, x0:x1] = in_window
     best = None
     try:
-        for mask in white_masks(window, config):
+        for mask in masks:
             mask[elsewhere] = 0
             best = _best_region(pair, sign, mask, (x0, y0, x1, y1), z, side, touch_px, best, hidden)
         if best is not None:

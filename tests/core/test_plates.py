@@ -274,6 +274,58 @@ def test_a_plate_cut_apart_by_something_in_front_is_found_whole(catalogue, occlu
         assert all(box_iou(d.bbox, box) < 0.8 for d in unwidened if d.is_plate)
 
 
+def test_a_pictogram_plate_taller_than_any_text_plate_is_within_reach(catalogue):
+    """5.31 under a 0.9 m sign is 0.62 m high, more than the largest text plate (0.45 m): the window below the
+    sign reaches that far, or the plate is taken for something cut by it."""
+    templates = load_plate_templates(catalogue.folder)
+    template = next(t for t in templates if (t.id, t.variant) == ("5.31", "de"))
+    face = pictogram_face(template, 480, int(round(480 / template.aspect)), np.random.default_rng(5))
+    pose = pose_at(0.0)
+    left, depth, box = scene(catalogue, pose, plate_size=template.size_m(0.90), plate_face=face)
+    (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
+    assert plate.template_id == "5.31" and box_iou(plate.bbox, box) > 0.8
+
+
+def test_a_post_of_unknown_depth_in_front_of_sign_and_plate_hides_the_part_of_the_plate_behind_it(catalogue):
+    """A grey lamp post crossing sign and plate, where stereo matched nothing (depth unknown), cuts the plate
+    into two level pieces: read together, the post counted as hiding the plate, they are the plate."""
+    pose = pose_at(0.0)
+    left, depth, box = scene(catalogue, pose, plate_lines=("ausgenommen", "Anwohner"), plate_size=(0.60, 0.30))
+    x, y, w, h = box
+    post = slice(x + w // 3, x + w // 3 + w // 8)
+    left[:, post] = 70  # darker than any paper
+    depth[:, post] = np.nan
+    (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
+    assert plate.format == "normal-2" and box_iou(plate.bbox, box) > 0.8
+    assert 0.5 < plate.crop_seen < 0.95  # its text is read from views that saw it whole first
+    no_posts = PipelineConfig(plates=PlateConfig(plate_occluder_span=2.0))  # no run is that long
+    (unaware,) = [d for d in detect_pair(left, depth, None, CAMERA, pose, catalogue, no_posts) if d.is_plate]
+    assert unaware.crop_seen == 1.0  # the post taken for print on a plate seen whole
+
+
+def test_crossing_posts_are_narrow_and_run_the_whole_window_within_the_signs_columns():
+    from signmapper_core.pipeline.plates import crossing_occluders
+
+    not_white = np.zeros((100, 80), np.uint8)
+    not_white[:, 30:36] = 1  # a post from top to bottom
+    not_white[40:, 50:54] = 1  # the sign's own pole, from the sign's lower edge down
+    not_white[:, 60:79] = 1  # a wall beside the sign: too wide
+    found = crossing_occluders(not_white, (20, 80), 60, PipelineConfig())
+    assert np.flatnonzero(found.any(axis=0)).tolist() == list(range(30, 36))
+    assert not crossing_occluders(not_white, (40, 80), 60, PipelineConfig()).any()  # outside the sign's columns
+
+
+def test_level_pieces_are_grouped_with_what_lies_between_them():
+    from signmapper_core.pipeline.plates import side_by_side
+
+    stats = np.array([[0, 0, 100, 100, 0],  # background label 0 (not a piece)
+                      [10, 50, 20, 40, 800],  # left piece
+                      [40, 48, 50, 44, 2000],  # right piece, level with it
+                      [55, 60, 10, 10, 100],  # a wheel's inside, within the right piece
+                      [12, 95, 60, 5, 300]])  # a strip below: not level with either
+    assert side_by_side([1, 2, 3, 4], stats, 0.8) == [[1, 2, 3]]
+
+
 def _write_drive(root, catalogue, lines=("200 m",), n=3):
     write_drive_json(root, "EPSG:2056", CAMERA, software="tests")
     poses = [(f"{i:06d}", 0.2 * i, pose_at(0.5 * i)) for i in range(n)]
