@@ -87,6 +87,21 @@ def accepted_but_wrong(signs, reference, report) -> tuple:
     return len(accepted), wrong, sum(1 for _, ref in accepted if ref < 0)
 
 
+def by_artwork(signs, reference, report) -> dict:
+    """{artwork: [reference signs, detected, correctly classified]} of the fused signs, for synthetic drives whose
+    truth names the artwork each face was printed from (the catalogue's drawing or a procedural design)."""
+    counts = {}
+    for k, ref in enumerate(reference):
+        if not ref.artwork:
+            continue
+        ids = [sign.template_id for sign, match in zip(signs, report.match) if match == k]
+        row = counts.setdefault(ref.artwork, [0, 0, 0])
+        row[0] += 1
+        row[1] += bool(ids)
+        row[2] += bool(ids) and ids.count(ref.template_id) > len(ids) / 2
+    return counts
+
+
 def positions_ids(items):
     return np.array([o.position for o in items]).reshape(-1, 3), [o.template_id for o in items]
 
@@ -127,6 +142,7 @@ def main(argv=None) -> int:
     accepted_total, accepted_wrong, accepted_unmatched = 0, 0, 0
     total_pairs, total_seconds = 0, 0.0
     plate_totals = PlateFigures()
+    artwork_totals = {}  # artwork -> [reference signs, detected, correct]
     colour_of = catalogue_colour(catalogue)
     family_totals = {(family, kind): FamilyFigures() for family in FAMILIES for kind in ("detections", "signs")}
     for folder in folders:
@@ -151,6 +167,8 @@ def main(argv=None) -> int:
                                          args.radius, evidence=plate_evidence)
                 plate_totals = plates + plate_totals
                 all_azimuth_errors += azimuth_errors(signs, reference, report)
+                for artwork, row in by_artwork(signs, reference, report).items():
+                    artwork_totals[artwork] = [a + b for a, b in zip(artwork_totals.get(artwork, [0, 0, 0]), row)]
                 n, wrong, unmatched = accepted_but_wrong(signs, reference, report)
                 accepted_total, accepted_wrong, accepted_unmatched = (accepted_total + n, accepted_wrong + wrong,
                                                                       accepted_unmatched + unmatched)
@@ -177,6 +195,10 @@ def main(argv=None) -> int:
     print(f"Fused signs with status accepted ({result.classifier_name}, threshold "
           f"{result.classification_threshold:.3f}): {accepted_total}; with a wrong id {accepted_wrong} "
           f"({100 * accepted_wrong / max(accepted_total, 1):.1f} %), matching no reference sign {accepted_unmatched}")
+    for artwork, (n, found, right) in sorted(artwork_totals.items()):
+        print(f"Fused signs whose face was printed from the {artwork} artwork: {n}; detected {found} "
+              f"({100 * found / max(n, 1):.1f} %), correctly classified {right} ({100 * right / max(found, 1):.1f} % "
+              f"of the detected)")
     if all_azimuth_errors:
         err = np.abs(all_azimuth_errors)
         print(f"Face azimuth of fused signs vs truth facing: n={len(err)}, median |d| {np.median(err):.1f} deg, "

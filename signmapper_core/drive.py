@@ -35,6 +35,9 @@ FORMAT_ID = "stereo-drive/1"
 POSE_COLUMNS = ("id", "time", "easting", "northing", "height", "heading", "pitch", "roll")
 TRUTH_COLUMNS = ("sign_id", "template_id", "easting", "northing", "height", "width_m", "height_m", "facing")
 TRUTH_OPTIONAL = ("plate_of", "text")  # a supplementary plate's sign, and the text on a plate or panel
+# a column of our own (the format lets readers ignore columns they do not know): which artwork a synthetic
+# face was printed from, so evaluations can tell the official drawings from other designs of a sign
+TRUTH_ARTWORK = "face_artwork"
 CAMERA_KEYS = ("width", "height", "fx", "fy", "cx", "cy", "baseline_m")
 MAX_ANGLE_DEG = 1e9  # beyond this a double no longer resolves a microdegree: the value is not an angle
 
@@ -66,6 +69,7 @@ class TruthSign:
     facing: float
     plate_of: str = ""  # a supplementary plate: the sign_id of its sign; "" for a sign
     text: str = ""  # the text printed on a plate or panel, lines joined by " / "
+    artwork: str = ""  # synthetic drives: "master" (the catalogue's drawing) or "procedural"; "" where unknown
 
     @property
     def position(self) -> np.ndarray:
@@ -376,7 +380,7 @@ def read_truth(path) -> list[TruthSign]:
     signs = []
     seen: dict[str, int] = {}
     plates = []
-    for line, row in _read_csv_rows(path, TRUTH_COLUMNS, TRUTH_OPTIONAL):
+    for line, row in _read_csv_rows(path, TRUTH_COLUMNS, TRUTH_OPTIONAL + (TRUTH_ARTWORK,)):
         if row["sign_id"] in seen:
             raise DriveFormatError(
                 path, f"sign_id {row['sign_id']!r} repeats line {seen[row['sign_id']]}", line=line, field="sign_id"
@@ -386,7 +390,8 @@ def read_truth(path) -> list[TruthSign]:
         for k in ("width_m", "height_m"):
             if nums[k] <= 0:
                 raise DriveFormatError(path, f"must be positive, found {row[k]}", line=line, field=k)
-        signs.append(TruthSign(row["sign_id"], row["template_id"], **nums, plate_of=row["plate_of"], text=row["text"]))
+        signs.append(TruthSign(row["sign_id"], row["template_id"], **nums, plate_of=row["plate_of"], text=row["text"],
+                               artwork=row[TRUTH_ARTWORK]))
         if row["plate_of"]:
             plates.append((line, row["plate_of"]))
     for line, sign_id in plates:

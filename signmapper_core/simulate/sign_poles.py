@@ -82,7 +82,7 @@ def sign_panel(pieces: Pieces, look: PanelLook, kind: SignKind, centre, facing_d
     truth = None
     if towards_vehicle:
         truth = TruthSign("", kind.template_id, float(centre[0]), float(centre[1]), float(centre[2]),
-                          float(w_m), float(h_m), float(facing_deg % 360.0))
+                          float(w_m), float(h_m), float(facing_deg % 360.0), artwork=sign_face.artwork)
     return PlacedSign(truth, kind.colour, centre, [face, back])
 
 

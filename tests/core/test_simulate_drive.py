@@ -54,6 +54,15 @@ def test_written_drive_opens_with_truth_right_images_and_depth(drive):
     assert 5.0 < np.nanmin(depth[-1]) < 12.0        # 2.4 m high camera: road from ~8 m
 
 
+def test_truth_names_the_artwork_each_face_was_printed_from(drive):
+    _summary, d = drive
+    signs = [t for t in d.truth if not t.is_plate]
+    assert signs and all(t.artwork in ("master", "procedural") for t in signs)
+    assert all(t.artwork == "" for t in d.truth if t.is_plate)  # a plate is drawn by plate_faces, no artwork mix
+    header = (d.root / "truth.csv").read_text(encoding="utf-8").splitlines()[0]
+    assert header.endswith(",face_artwork")
+
+
 def test_truth_uses_catalogue_sizes_and_sign_colours(drive):
     summary, d = drive
     catalogue = load_catalogue()

@@ -97,6 +97,9 @@ def test_truth_csv_round_trips_plates_and_rejects_a_plate_of_no_sign(tmp_path):
     write_truth_csv(tmp_path, [sign])  # no plate: the columns of version 1 only
     assert path.read_text().splitlines()[0] == "sign_id,template_id,easting,northing,height,width_m,height_m,facing"
     assert read_truth(path)[0].text == ""
+    write_truth_csv(tmp_path, [replace(sign, artwork="procedural"), plate])
+    assert path.read_text().splitlines()[0].endswith(",plate_of,text,face_artwork")
+    assert [t.artwork for t in read_truth(path)] == ["procedural", ""]
     write_truth_csv(tmp_path, [sign, replace(plate, plate_of="s009")])
     with pytest.raises(DriveFormatError) as info:
         read_truth(path)
