@@ -194,8 +194,8 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
     # a piece alone is completed only if it can be the seen share of the smallest plate (not a speck)
     smallest = min(w * h for w, h in PLATE_FORMATS.values()) * px_per_m * pair.camera.fy / z
     alone = [k for k in pieces if stats[k, cv2.CC_STAT_AREA] >= config.plates.plate_min_visible * smallest]
-    groups = [[k] for k in alone] + side_by_side(pieces, stats, plates.plate_split_min_overlap) \
-        + ([pieces] if len(pieces) > 2 else [])
+    level = side_by_side(pieces, stats, plates.plate_split_min_overlap)
+    groups = [[k] for k in alone] + level + ([pieces] if len(pieces) > 1 and pieces not in level else [])
     hidden_here = hidden[y0:y1, x0:x1].astype(bool)
     for group in groups:
         lo = np.min(stats[group, :2], axis=0)
@@ -276,7 +276,7 @@ def crossing_occluders(not_white: np.ndarray, sign_columns: tuple, sign_width: i
     if c1 - c0 < 2 or span < 2:
         return out
     runs = cv2.morphologyEx(np.ascontiguousarray(not_white[:, c0:c1]), cv2.MORPH_OPEN, np.ones((span, 1), np.uint8),
-                            borderType=cv2.BORDER_CONSTANT, borderValue=0)  # a run stopping at the edge is no longer
+                            borderType=cv2.BORDER_CONSTANT, borderValue=0)  # beyond the window: no run
     count, labels, stats, _ = cv2.connectedComponentsWithStats(runs, connectivity=4)
     narrow = np.zeros(count, bool)
     narrow[1:] = stats[1:, cv2.CC_STAT_WIDTH] <= config.plates.plate_occluder_max_width * sign_width
