@@ -545,6 +545,10 @@ class PlateConfig:
     plate_max_saturation: int = 60  # white and grey: a plate in shade is grey, never coloured
     plate_min_value: int = 100  # floor of its brightness (Otsu's split of the window raises it in the sun)
     plate_value_steps: Tuple[int, ...] = (0, 25, 50)  # further floors above that: a plate before a pale wall
+    # ...and the lowest floor cut along brightness edges (Canny of the value, these thresholds): a plate before a
+    # pale façade that no floor parts from it
+    plate_edge_cut: bool = True
+    plate_edge_thresholds: Tuple[int, int] = (20, 60)
     plate_depth_tolerance_m: float = 0.3  # where depth is known, the plate lies in the sign's depth (or 5 %)
     plate_close_m: float = 0.0  # closing before the holes are filled (0: none; a plate's thin frame must stay)
     plate_frame_share: float = 0.075  # of a plate's height: its white margin and black frame line (inset)

@@ -67,8 +67,26 @@ def white_masks(bgr: np.ndarray, config) -> List[np.ndarray]:
     otsu, _ = cv2.threshold(value, 0, 255, cv2.THRESH_BINARY + cv2.THRESH_OTSU)
     floor = max(plates.plate_min_value, int(otsu))
     grey = hsv[:, :, 1] <= plates.plate_max_saturation
-    return [(grey & (value >= floor + step)).astype(np.uint8) for step in plates.plate_value_steps
-            if floor + step < plates.plate_max_value_floor]
+    masks = [(grey & (value >= floor + step)).astype(np.uint8) for step in plates.plate_value_steps
+             if floor + step < plates.plate_max_value_floor]
+    if masks and plates.plate_edge_cut:
+        # a plate before a wall only a little darker than its paper (a pale façade) is brighter than the wall
+        # at every floor: the step in brightness along its outline still parts them
+        lo, hi = plates.plate_edge_thresholds
+        edges = cv2.dilate(cv2.Canny(value, lo, hi), np.ones((3, 3), np.uint8))
+        masks.append(_inner_regions(masks[0] & (edges == 0).astype(np.uint8)))
+    return masks
+
+
+def _inner_regions(mask: np.ndarray) -> np.ndarray:
+    """``mask`` without its regions that touch the window's edge: the wall around a plate, which would otherwise
+    swallow the plate as a hole when its outline is filled."""
+    count, labels = cv2.connectedComponents(mask, connectivity=4)
+    edge = np.unique(np.concatenate([labels[0], labels[-1], labels[:, 0], labels[:, -1]]))
+    keep = np.ones(count, np.uint8)
+    keep[edge] = 0
+    keep[0] = 0
+    return keep[labels]
 
 
 def _filled(mask: np.ndarray, close_px: int) -> np.ndarray:

@@ -274,6 +274,23 @@ def test_a_plate_cut_apart_by_something_in_front_is_found_whole(catalogue, occlu
         assert all(box_iou(d.bbox, box) < 0.8 for d in unwidened if d.is_plate)
 
 
+def test_a_plate_before_a_facade_nearly_as_bright_as_its_paper_is_parted_from_it_along_its_outline(catalogue):
+    """A façade at 220 around paper at 238, depth unknown: every brightness floor keeps both or neither, but the
+    step in brightness along the plate's outline parts them."""
+    pose = pose_at(0.0)
+    left, depth, box = scene(catalogue, pose)
+    x, y, w, h = box
+    wall = (slice(y - 6, y + 3 * h), slice(x - w // 2, x + w + w // 2))
+    plate = left[y:y + h, x:x + w].copy()
+    left[wall] = 220 + np.random.default_rng(1).integers(0, 6, left[wall].shape, dtype=np.uint8)
+    left[y:y + h, x:x + w] = plate
+    depth[wall] = np.nan
+    (found,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
+    assert box_iou(found.bbox, box) > 0.8 and found.format == "normal-1"
+    floors_only = PipelineConfig(plates=PlateConfig(plate_edge_cut=False))
+    assert [d for d in detect_pair(left, depth, None, CAMERA, pose, catalogue, floors_only) if d.is_plate] == []
+
+
 def test_a_pictogram_plate_taller_than_any_text_plate_is_within_reach(catalogue):
     """5.31 under a 0.9 m sign is 0.62 m high, more than the largest text plate (0.45 m): the window below the
     sign reaches that far, or the plate is taken for something cut by it."""
