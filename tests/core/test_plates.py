@@ -156,7 +156,7 @@ def test_a_plate_before_a_pale_wall_without_depth_is_found_at_a_higher_brightnes
     found = detect_pair(left, depth, None, CAMERA, pose, catalogue, PipelineConfig())
     (plate_det,) = [d for d in found if d.is_plate]
     assert box_iou(plate_det.bbox, box) > 0.8 and plate_det.format == "normal-1"
-    otsu_floor = PipelineConfig(plates=PlateConfig(plate_value_steps=(0,)))
+    otsu_floor = PipelineConfig(plates=PlateConfig(plate_value_steps=(0,), plate_edge_cut=False))
     only_otsu = detect_pair(left, depth, None, CAMERA, pose, catalogue, otsu_floor)
     assert [d for d in only_otsu if d.is_plate] == []
 
