@@ -106,9 +106,17 @@ def test_single_weak_observation_goes_to_review_not_dropped():
 @pytest.mark.parametrize("cls, status", [(0.93, "review"), (0.95, "accepted")])
 def test_a_sign_seen_once_needs_more_than_the_classifiers_threshold(cls, status):
     """With a calibrated threshold of 0.9, one observation must close 40 % of the rest of the way to 1 (0.94)."""
-    config = FusionConfig(accept_classification=0.9)
+    config = FusionConfig(accept_classification=0.9, accept_single_observation=True)
     signs = fuse_observations([observe([20.0, 3.0, 2.5], 6, cls=cls)], config)  # 8.5 m away
     assert [s.status for s in signs] == [status]
+
+
+def test_by_default_a_sign_seen_once_waits_for_review_however_clear():
+    (sign,) = fuse_observations([observe([20.0, 3.0, 2.5], 6, cls=0.99)], FusionConfig(accept_classification=0.9))
+    assert sign.status == "review" and sign.n_obs == 1
+    seen_twice = fuse_observations([observe([20.0, 3.0, 2.5], k, cls=0.99) for k in (5, 6)],
+                                   FusionConfig(accept_classification=0.9))
+    assert [s.status for s in seen_twice] == ["accepted"]
 
 
 @pytest.mark.parametrize("pair, far_m, status", [(6, 14.0, "accepted"), (4, 14.0, "review"), (4, 20.0, "accepted")])
@@ -116,7 +124,7 @@ def test_a_sign_seen_once_near_the_far_limit_stays_for_review(pair, far_m, statu
     """Seen once 12.4 m away (pair 4), with the range ending at 14 m: beyond 0.85 of it, where a sign further away
     can be measured into the range, even a very clear reading waits for review; 8.5 m away (pair 6) it does not,
     nor at 12.4 m when the range reaches 20 m."""
-    config = FusionConfig(accept_classification=0.9, far_m=far_m)
+    config = FusionConfig(accept_classification=0.9, far_m=far_m, accept_single_observation=True)
     (sign,) = fuse_observations([observe([20.0, 3.0, 2.5], pair, cls=0.99)], config)
     assert sign.status == status
     seen_twice = fuse_observations([observe([20.0, 3.0, 2.5], k, cls=0.99) for k in (3, 4)], config)
