@@ -35,7 +35,7 @@ sys.path.insert(0, str(REPO))
 
 from signmapper_core.catalogue import load_catalogue  # noqa: E402
 from signmapper_core.drive import open_drive  # noqa: E402
-from signmapper_core.evaluation import combine_reports, evaluate, format_report  # noqa: E402
+from signmapper_core.evaluation import combine_reports, evaluate, format_report, majority_id  # noqa: E402
 from signmapper_core.family_evaluation import (  # noqa: E402
     COLOURED,
     WHITE,
@@ -98,7 +98,7 @@ def by_artwork(signs, reference, report) -> dict:
         row = counts.setdefault(ref.artwork, [0, 0, 0])
         row[0] += 1
         row[1] += bool(ids)
-        row[2] += bool(ids) and ids.count(ref.template_id) > len(ids) / 2
+        row[2] += bool(ids) and majority_id(ids) == ref.template_id  # as evaluate() counts it
     return counts
 
 

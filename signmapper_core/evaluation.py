@@ -54,6 +54,11 @@ class EvaluationReport:
     confusions: list = field(default_factory=list)  # (reference id, assigned id) of misclassified signs
 
 
+def majority_id(ids) -> str:
+    """The id most of the features matched to one reference sign carry (the first of equals)."""
+    return Counter(ids).most_common(1)[0][0]
+
+
 def match_to_reference(mapped_xyz: np.ndarray, reference_xyz: np.ndarray, radius_m: float) -> np.ndarray:
     """Index of the nearest reference sign within ``radius_m`` (3D) of each mapped feature, else -1."""
     mapped_xyz = np.asarray(mapped_xyz, float).reshape(-1, 3)
@@ -133,7 +138,7 @@ def evaluate(mapped_xyz, mapped_ids, reference_xyz, reference_ids, trajectory_xy
             continue
         detected += 1
         duplicates += len(ids) > 1
-        majority, _count = Counter(ids).most_common(1)[0]
+        majority = majority_id(ids)
         if majority == reference_ids[ref]:
             correct += 1
         else:

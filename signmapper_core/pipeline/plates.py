@@ -45,6 +45,11 @@ def plate_templates(pair: PairContext) -> tuple:
     return load_plate_templates(folder) if folder is not None else ()
 
 
+def all_plate_formats(templates) -> dict:
+    """Every plate size: the text plates' formats and those the pictogram plates ``templates`` add."""
+    return {**PLATE_FORMATS, **pictogram_formats(templates)}
+
+
 def nearest_plate_format(width_m: float, height_m: float, tolerance: float, formats=None):
     """(format name, (width_m, height_m), relative error) of the nearest plate format (``formats``, default the
     text plates'), or None beyond ``tolerance``."""
@@ -137,7 +142,7 @@ def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int,
     size = (bw * z / camera.fx, bh * z / camera.fy)
     templates = plate_templates(pair)
     plates = config.plates
-    fmt = nearest_plate_format(*size, plates.plate_size_tolerance, {**PLATE_FORMATS, **pictogram_formats(templates)})
+    fmt = nearest_plate_format(*size, plates.plate_size_tolerance, all_plate_formats(templates))
     if fmt is not None and "@" in fmt[0]:  # a pictogram plate's size: if it shows that plate's drawing
         shown = template_by_id(templates, fmt[0].split("@")[0])
         seen_crop = pair.left[cy:cy + ch, cx:cx + cw]
@@ -328,7 +333,7 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     x, y, w, h = sign.bbox
     px_per_m = camera.fy / z
     # the window reaches as far as the largest plate, text or pictogram (a 5.31 under a 0.9 m sign is 0.62 m high)
-    formats = {**PLATE_FORMATS, **pictogram_formats(plate_templates(pair))}.values()
+    formats = all_plate_formats(plate_templates(pair)).values()
     largest_h = max(ph for _, ph in formats) * (1.0 + config.size.size_tolerance)
     largest_w = max(pw for pw, _ in formats) * (1.0 + config.size.size_tolerance)
     reach = int(round((config.plates.plate_max_gap_m + largest_h) * px_per_m))
