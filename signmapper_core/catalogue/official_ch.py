@@ -55,6 +55,9 @@ _DIRECT = {
                                                37, 38, 39, 40, 41, 42, 43, 44, 45, 46, 48, 49, 50, 60, 61, 62, 63,
                                                64)},
     "2.10.1": "210-1.svg",
+    "4.29": "429-1.svg",  # the text panels: one example wording of each kind (catalogue/text_panels.py)
+    "4.30": "430.svg",
+    "4.33": "433-1-r.svg",
     "2.20-10": "220.svg",
     "2.30-60": "230.svg",
     "2.30.1": "230-1-a.svg",

@@ -424,3 +424,35 @@ _add("4.18", "Parkieren mit Parkscheibe", "Parcage avec disque de stationnement"
      "blue", "rectangle", F.TALL_INFO, False, _tall_parking(pg.parking_disc))
 _add("4.20", "Parkieren gegen Gebühr", "Parcage payant", "Parcheggio contro pagamento", "blue", "rectangle",
      F.TALL_INFO, False, _tall_parking(pg.parking_meter))
+
+
+# --------------------------------------------------------------------------- 4 white text panels (generic)
+# Place-name and direction panels of secondary roads: their wording varies from panel to panel, so each entry
+# stands for its kind (catalogue/text_panels.py); the own drawing shows an example wording.
+def _text_panel(lines, aspect: float, bar: bool = False):
+    # pen units: 0.45 x the panel's height, so the content spans 0.9 of it
+    def content(p: Pen):
+        n = len(lines)
+        size = 0.55 if n == 1 else 0.4
+        for k, line in enumerate(lines):
+            p.text(line, 0, (k - (n - 1) / 2) * 0.95, size, "black", max_width=1.9 * aspect)
+        if bar:
+            p.rect(-2.1 * aspect, -0.09, 2.1 * aspect, 0.09, "black")
+
+    return lambda st: frames.panel(st, content, aspect=aspect, fill="white", edge="black",
+                                   content_box=(0.5, 0.5 / aspect, 0.45 / aspect))
+
+
+def _text_panel_entry(id_, de, fr, it, lines, bar=False):
+    from .text_panels import TEXT_PANELS
+
+    w, h = TEXT_PANELS[id_].nominal
+    _add(id_, de, fr, it, "white", "rectangle", {"normal": (w, h)}, False, _text_panel(lines, w / h, bar))
+
+
+_text_panel_entry("4.29", "Ortsbeginn auf Nebenstrassen", "Début de localité sur route secondaire",
+                  "Inizio della località su strada secondaria", ["Maur"])
+_text_panel_entry("4.30", "Ortsende auf Nebenstrassen", "Fin de localité sur route secondaire",
+                  "Fine della località su strada secondaria", ["Maur", "Egg 4 km"], bar=True)
+_text_panel_entry("4.33", "Wegweiser für Nebenstrassen", "Indicateur de direction pour routes secondaires",
+                  "Indicatore di direzione per strade secondarie", ["Uster"])

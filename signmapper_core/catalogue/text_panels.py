@@ -28,7 +28,7 @@ class TextPanelKind:
 
     id: str
     layout: str  # PLACE_NAME, PLACE_END or DIRECTION
-    nominal: Size  # a typical face (the catalogue's format, the template's aspect)
+    nominal: Size  # a typical face: the catalogue's format, of the official drawing's aspect
     smallest: Size  # width and height of the smallest face of this kind
     largest: Size  # ... and of the largest
     lines: Tuple[int, int]  # fewest and most lines of text
@@ -42,9 +42,9 @@ class TextPanelKind:
 
 TEXT_PANELS = {
     k.id: k for k in (
-        TextPanelKind("4.29", PLACE_NAME, (0.90, 0.45), (0.50, 0.35), (1.80, 0.80), (1, 2)),
-        TextPanelKind("4.30", PLACE_END, (0.90, 0.60), (0.55, 0.45), (1.80, 0.90), (2, 3)),
-        TextPanelKind("4.33", DIRECTION, (1.00, 0.25), (0.60, 0.15), (1.80, 0.60), (1, 3)),
+        TextPanelKind("4.29", PLACE_NAME, (0.70, 0.50), (0.50, 0.35), (1.80, 0.80), (1, 2)),
+        TextPanelKind("4.30", PLACE_END, (0.70, 0.50), (0.55, 0.45), (1.80, 0.90), (2, 3)),
+        TextPanelKind("4.33", DIRECTION, (1.00, 0.24), (0.60, 0.15), (1.80, 0.60), (1, 3)),
     )
 }
 

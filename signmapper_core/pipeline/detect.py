@@ -36,6 +36,8 @@ from .plates import find_plates
 from .search_space import search_space_mask
 from .shape import IDEAL_FILL, catalogue_shapes, plausible_outlines
 from .sizing import measure_segment, metric_size, round_to_format
+from .text_panels import context_boxes as panel_context_boxes
+from .text_panels import text_panel_detections, text_panel_fields
 from .white_outlines import WhiteCandidate, context_boxes, face_side_range_px, white_candidates, white_formats
 from .white_signs import white_detections
 
@@ -339,8 +341,9 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
         boxes = stereo_candidate_boxes(pair, frame) if source.wants_candidate_boxes(config) else None
     with timer("white"):  # white and grey outlines over the whole window; depth is matched around them too
         whites = white_outline_candidates(pair)
+        panel_fields = text_panel_fields(pair)
         if boxes is not None:
-            boxes = boxes + context_boxes(whites, config)
+            boxes = boxes + context_boxes(whites, config) + panel_context_boxes(panel_fields, config)
     with timer("depth"):
         depth = source.depth_map(left, pair.camera, config, pair.roi, boxes)
     search = search_space_mask(depth, config.depth.near_m, config.depth.far_m)
@@ -380,6 +383,7 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
     with timer("white"):  # before Hough: a white disc's ring would be read as a faded coloured one
         panels: List[Tuple[int, int, int, int]] = []  # white panel outlines: their zone discs are no signs
         detections += white_detections(pair, depth, whites, detections, panels)
+        detections += text_panel_detections(pair, depth, panel_fields, detections)
     with timer("hough"):
         detections += _hough_detections(pair, depth, search, detections, panels)
     signs = suppress_overlaps(detections, config.classification.same_sign_max_iou,

@@ -76,7 +76,7 @@ def test_artwork_of_every_entry_is_recorded_and_matches_the_mapping(committed):
     for tid, spec in ARTWORK.items():
         framed = f", its field in the frame of {FRAMED[tid]}" if tid in FRAMED else ""
         assert entries[tid]["artwork"] == f"ASTRA {spec.describe()}{framed}", tid
-    assert len(ARTWORK) == 105 and len(own) == 7
+    assert len(ARTWORK) == 108 and len(own) == 7
     assert committed["artwork_source"] == ARTWORK_SOURCE
     assert re.fullmatch(r"[0-9a-f]{40}", ARTWORK_SOURCE["commit"])
 

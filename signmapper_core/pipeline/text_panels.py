@@ -1,0 +1,302 @@
+"""White text panels (SSV 4.29, 4.30, 4.33): place-name and direction panels, found by their framed field.
+
+A text panel is white sheeting with a thin black frame inset from its edge and black lettering. Its wording,
+and with it its width, changes from panel to panel, so no template matches it. It is found as the bright,
+achromatic field the frame encloses (a cell between strong edges, its letters holes in it) of a panel's
+height at some depth of the search space, with the dark frame line seen around it; depth then decides as for
+every white sign (size, planarity, standing free, a support below). Its layout names the kind: a field that
+ends in a point is a direction panel (4.33), two fields of one width stacked on a black bar are the end of a
+place (4.30), any other a place-name panel (4.29). The share of the field's outline on which the frame is
+seen is the classification indicator. Its text is read after fusion from the field's crops (``crop``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import List, Optional, Sequence, Tuple
+
+import cv2
+import numpy as np
+
+from ..catalogue.text_panels import DIRECTION, PLACE_END, PLACE_NAME, TEXT_PANELS
+from ..face_normal import world_face_normal
+from ..geometry import Camera
+from .detection import Detection
+from .locate import bbox_centre, locate
+from .pair_context import PairContext
+from .sizing import measure_segment, metric_size
+from .white_signs import coloured_share, pole_share, side_share, support_share
+
+Box = Tuple[int, int, int, int]  # x, y, w, h
+PAPER = 255  # what the crop shows outside the field and on a 4.30's bar: OCR reads the lettering alone
+
+
+@dataclass(frozen=True)
+class PanelField:
+    """A framed white field that may be a text panel's: its box and filled mask (in that box), full-image
+    pixels, its layout and the share of its outline with a dark frame beside it."""
+
+    box: Box
+    mask: np.ndarray  # uint8 0/1, the field with its lettering (holes filled)
+    layout: str
+    frame_share: float
+    bar_rows: Tuple[int, int] = (0, 0)  # a 4.30's bar, rows within the box (end exclusive); (0, 0) for none
+
+
+def catalogued_kinds(catalogue, config) -> dict:
+    """layout -> text panel kind, for the kinds the catalogue holds and the run does not exclude."""
+    exclude = set(config.classification.exclude)
+    return {k.layout: k for k in TEXT_PANELS.values() if k.id in catalogue and k.id not in exclude}
+
+
+def field_height_range_px(camera: Camera, kinds: Sequence, config) -> Tuple[float, float]:
+    """(lowest, highest) height in pixels of a field (the face less its frame margin) of ``kinds`` anywhere in
+    near..far, widened by the size tolerance. A 4.30's fields are each about half its height."""
+    if not kinds:
+        return 0.0, 0.0
+    tol, share = config.size.size_tolerance, 1.0 - 2.0 * config.white.panel_frame_margin
+    halves = [0.5 if k.layout == PLACE_END else 1.0 for k in kinds]
+    lo = min(k.smallest[1] * h for k, h in zip(kinds, halves)) * share * camera.fy / config.depth.far_m
+    hi = max(k.largest[1] for k in kinds) * share * camera.fy / config.depth.near_m
+    return lo * (1.0 - tol), hi * (1.0 + tol)
+
+
+def frame_share(grey: np.ndarray, box: Box, mask: np.ndarray, config) -> float:
+    """Share of the points on the field's outline with a dark line within ``panel_frame_reach`` of its height
+    outside it: the frame. Darker than ``panel_frame_contrast`` x the field's median brightness."""
+    x, y, w, h = box
+    reach = max(2, int(round(config.white.panel_frame_reach * h)))
+    height, width = grey.shape[:2]
+    x0, y0, x1, y1 = max(0, x - reach), max(0, y - reach), min(width, x + w + reach), min(height, y + h + reach)
+    patch = grey[y0:y1, x0:x1]
+    field = np.zeros(patch.shape, np.uint8)
+    field[y - y0 : y - y0 + h, x - x0 : x - x0 + w] = mask
+    if not field.any():
+        return 0.0
+    paper = float(np.median(patch[field > 0]))
+    # what lies within reach outside the field only (its own letters are inside): the field masked bright
+    outside = np.where(field > 0, 255, patch).astype(np.uint8)
+    darkest = cv2.erode(outside, np.ones((2 * reach + 1, 2 * reach + 1), np.uint8))
+    contours, _ = cv2.findContours(field, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
+    points = np.concatenate([c.reshape(-1, 2) for c in contours]) if contours else np.zeros((0, 2), int)
+    if len(points) == 0:
+        return 0.0
+    values = darkest[points[:, 1], points[:, 0]]
+    return float(np.count_nonzero(values < config.white.panel_frame_contrast * paper)) / len(points)
+
+
+def pointed_end(mask: np.ndarray, config) -> Optional[str]:
+    """'left' or 'right' when the field narrows to a point at that end (the column heights of its last
+    ``panel_end_share`` at most ``panel_point_ratio`` of its middle's), else None."""
+    heights = mask.sum(axis=0).astype(np.float64)
+    n = len(heights)
+    k = max(1, int(round(config.white.panel_end_share * n)))
+    middle = float(np.median(heights[n // 4 : max(n // 4 + 1, 3 * n // 4)]))
+    if middle <= 0:
+        return None
+    left, right = heights[:k].mean() / middle, heights[-k:].mean() / middle
+    ratio = config.white.panel_point_ratio
+    if left <= ratio < right:
+        return "left"
+    if right <= ratio < left:
+        return "right"
+    return None
+
+
+def _filled(cell: np.ndarray) -> np.ndarray:
+    contours, _ = cv2.findContours(cell, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_SIMPLE)
+    out = np.zeros_like(cell)
+    cv2.drawContours(out, contours, -1, 1, -1)
+    return out
+
+
+def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) -> List[PanelField]:
+    """Framed white fields of a text panel's size in ``bgr`` (its own pixels), largest first.
+
+    Cells enclosed by strong edges (Canny on the grey image), of a field's height and aspect, bright and
+    achromatic, that fill their box once their lettering's holes are filled, hold some lettering, and have
+    the dark frame around most of their outline. Two such fields of one width stacked on a dark bar are read
+    as one (a 4.30), a field ending in a point as a direction panel."""
+    white = config.white
+    lo, hi = height_range_px
+    if hi <= 0:
+        return []
+    grey = cv2.cvtColor(bgr, cv2.COLOR_BGR2GRAY)
+    hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
+    edges = cv2.dilate(cv2.Canny(cv2.GaussianBlur(grey, (3, 3), 0), white.white_canny_low, white.white_canny_high),
+                       np.ones((2, 2), np.uint8))
+    n, labels, stats, _ = cv2.connectedComponentsWithStats((edges == 0).astype(np.uint8), connectivity=4)
+    w, h, area = stats[:, cv2.CC_STAT_WIDTH], stats[:, cv2.CC_STAT_HEIGHT], stats[:, cv2.CC_STAT_AREA]
+    keep = ((h >= lo) & (h <= hi) & (w >= white.panel_min_aspect * h) & (w <= white.panel_max_aspect * h)
+            & (area >= white.panel_min_cell_fill * w * h))
+    keep[0] = False
+    ids = np.flatnonzero(keep)
+    if len(ids):  # brightness and colour only for the few of a field's size
+        flat = labels.ravel()
+        safe = np.maximum(area.astype(np.float64), 1.0)
+        value = np.bincount(flat, weights=hsv[:, :, 2].ravel(), minlength=n) / safe
+        grey_px = np.bincount(flat, weights=(hsv[:, :, 1] <= white.white_max_saturation).ravel(), minlength=n) / safe
+        floor = white.white_min_brightness * float(np.median(hsv[:, :, 2]))
+        ids = [i for i in ids if value[i] >= floor and grey_px[i] >= white.white_min_achromatic]
+    ids = sorted(ids, key=lambda i: -int(area[i]))[: white.panel_max_candidates]
+    fields = []
+    for i in ids:
+        x, y, bw, bh = (int(v) for v in stats[i, :4])
+        cell = (labels[y : y + bh, x : x + bw] == i).astype(np.uint8)
+        mask = _filled(cell)
+        filled = int(mask.sum())
+        ink = 1.0 - float(cell.sum()) / max(filled, 1)
+        if filled < white.panel_min_fill * bw * bh or not white.panel_min_ink <= ink <= white.panel_max_ink:
+            continue
+        share = frame_share(grey, (x, y, bw, bh), mask, config)
+        if share < white.panel_min_frame:
+            continue
+        layout = DIRECTION if pointed_end(mask, config) else PLACE_NAME
+        fields.append(PanelField((x, y, bw, bh), mask, layout, share))
+    return stacked_on_bars(fields, grey, config)
+
+
+def stacked_on_bars(fields: Sequence[PanelField], grey: np.ndarray, config) -> List[PanelField]:
+    """``fields`` with every two of one width stacked on a dark bar (a 4.30: the place left, the bar, the
+    next place) joined into one; the pieces of a pair are dropped."""
+    white = config.white
+    out, used = [], set()
+    for i, a in enumerate(fields):
+        for j, b in enumerate(fields):
+            if i == j or i in used or j in used or a.layout != PLACE_NAME or b.layout != PLACE_NAME:
+                continue
+            (ax, ay, aw, ah), (bx, by, bw, bh) = a.box, b.box
+            width = max(aw, bw)
+            gap = by - (ay + ah)
+            if not (abs(ax - bx) <= white.panel_stack_align * width
+                    and abs(ax + aw - bx - bw) <= white.panel_stack_align * width):
+                continue
+            total = by + bh - ay
+            if not (0 < gap <= white.panel_bar_max_share * total):
+                continue
+            x0, x1 = max(ax, bx), min(ax + aw, bx + bw)
+            bar = grey[ay + ah : by, x0:x1]
+            paper = float(np.median(grey[ay : ay + ah, x0:x1]))
+            if bar.size == 0 or float(np.median(bar)) >= white.panel_frame_contrast * paper:
+                continue
+            x, y = min(ax, bx), ay
+            w = max(ax + aw, bx + bw) - x
+            mask = np.zeros((total, w), np.uint8)
+            mask[ay - y : ay - y + ah, ax - x : ax - x + aw] |= a.mask
+            mask[by - y : by - y + bh, bx - x : bx - x + bw] |= b.mask
+            mask[ah : by - y, x0 - x : x1 - x] = 1
+            out.append(PanelField((x, y, w, total), mask, PLACE_END, min(a.frame_share, b.frame_share),
+                                  (ah, by - y)))
+            used.update((i, j))
+    return out + [f for k, f in enumerate(fields) if k not in used]
+
+
+def face_box(field: PanelField, config) -> Box:
+    """The panel's face around its field: the frame and the white margin outside it (``panel_frame_margin`` of
+    the face's height on every side)."""
+    x, y, w, h = field.box
+    m = config.white.panel_frame_margin
+    grow = int(round(m * h / (1.0 - 2.0 * m)))
+    return x - grow, y - grow, w + 2 * grow, h + 2 * grow
+
+
+def reading_crop(bgr: np.ndarray, field: PanelField) -> np.ndarray:
+    """The field as OCR reads it: its pixels, paper outside its outline and on a 4.30's bar."""
+    x, y, w, h = field.box
+    crop = bgr[y : y + h, x : x + w].copy()
+    crop[field.mask == 0] = PAPER
+    if field.bar_rows[1] > field.bar_rows[0]:
+        crop[field.bar_rows[0] : field.bar_rows[1]] = PAPER
+    return crop
+
+
+def text_panel_fields(pair: PairContext) -> List[PanelField]:
+    """Text panel fields in the pair's roi (full-image pixels); none when the white step is off or the
+    catalogue holds no text panel."""
+    config = pair.config
+    kinds = catalogued_kinds(pair.catalogue, config)
+    if not config.white.white_signs or not config.white.text_panels or not kinds:
+        return []
+    x0, y0, x1, y1 = pair.roi
+    found = panel_fields(pair.left[y0:y1, x0:x1], field_height_range_px(pair.camera, list(kinds.values()), config),
+                         config)
+    return [PanelField((f.box[0] + x0, f.box[1] + y0, f.box[2], f.box[3]), f.mask, f.layout, f.frame_share,
+                       f.bar_rows) for f in found]
+
+
+def context_boxes(fields: Sequence[PanelField], config) -> List[Box]:
+    """Boxes depth is needed in around each field: its face, the bands beside it and the strip below it."""
+    white = config.white
+    out = []
+    for f in fields:
+        x, y, w, h = face_box(f, config)
+        side = int(round((white.white_side_gap + white.white_side_band) * w))
+        below = int(round((white.white_support_gap + white.white_support_length) * h))
+        out.append((max(0, x - side), max(0, y), w + 2 * side, h + below))
+    return out
+
+
+def judge_panel(field: PanelField, pair: PairContext, depth: np.ndarray, grey: np.ndarray) -> Optional[Detection]:
+    """The text panel ``field`` belongs to, or None (cut by the image's edge, no depth, not of a panel's size at
+    its depth, not planar, not standing free, coloured, or without a support and a clear frame)."""
+    camera, config = pair.camera, pair.config
+    white = config.white
+    kind = catalogued_kinds(pair.catalogue, config).get(field.layout)
+    if kind is None:
+        return None
+    x, y, w, h = box = face_box(field, config)
+    height, width = grey.shape[:2]
+    if x < 0 or y < 0 or x + w > width or y + h > height:
+        return None
+    size = measure_segment(camera, depth, field.box, field.mask, config.depth.near_m, config.depth.far_m)
+    if size is None or size.coverage < config.planarity.min_depth_coverage:
+        return None
+    planarity = pair.planarity(depth, field.box, field.mask)
+    if planarity.indicator < config.planarity.detection_threshold:
+        return None
+    u, v = bbox_centre(box)
+    z = planarity.depth_at(camera, u, v)
+    if not np.isfinite(z) or not config.depth.near_m <= z <= config.depth.far_m:
+        z = size.depth_m
+    width_m, height_m = metric_size(camera, box, z)
+    if not kind.fits(width_m, height_m, config.size.size_tolerance):
+        return None
+    beside = side_share(depth, box, z, config)
+    if beside is not None and beside > white.white_max_side_share:
+        return None  # a shop sign or a window in a façade
+    if coloured_share(pair.left, box, config) > white.white_max_coloured_share:
+        return None
+    supported = support_share(depth, box, z, config) >= white.white_min_support or \
+        pole_share(grey, box, config) >= white.white_min_pole_rows
+    if not supported and field.frame_share < white.panel_unsupported_frame:
+        return None
+    accepted = supported and field.frame_share >= white.panel_accept_frame
+    step = white.panel_size_step_m
+    return Detection(
+        template_id=kind.id, name=pair.catalogue[kind.id].name("de"), colour="white", shape="rectangle",
+        width_m=round(width_m / step) * step, height_m=round(height_m / step) * step, format="measured",
+        detection_indicator=planarity.indicator, classification_indicator=field.frame_share,
+        status="accepted" if accepted else "review", u=u, v=v, bbox=box, depth_m=float(z),
+        position=locate(camera, pair.pose, u, v, z), source="text-panel",
+        normal_world=world_face_normal(camera, pair.pose, planarity.plane),
+        crop=reading_crop(pair.left, field),
+    )
+
+
+def text_panel_detections(pair: PairContext, depth: np.ndarray, fields: Sequence[PanelField],
+                          found: Sequence[Detection]) -> List[Detection]:
+    """Text panels among ``fields`` whose centre lies in no sign ``found`` already."""
+    if not fields:
+        return []
+    taken = [d.bbox for d in found]
+    grey = cv2.cvtColor(pair.left, cv2.COLOR_BGR2GRAY)
+    out = []
+    for f in fields:
+        cu, cv = bbox_centre(f.box)
+        if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken):
+            continue
+        det = judge_panel(f, pair, depth, grey)
+        if det is not None:
+            out.append(det)
+            taken.append(det.bbox)
+    return out
