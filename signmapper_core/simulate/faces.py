@@ -55,8 +55,14 @@ def sign_kinds(colours: tuple[str, ...] = SIGN_COLOURS) -> list[SignKind]:
 
 
 def white_sign_kinds() -> list[SignKind]:
-    """The white and grey family (end-of-restriction discs, end-of-zone panels) in id order."""
-    return sign_kinds(("white",))
+    """The white and grey family (end-of-restriction discs, end-of-zone panels) in id order.
+
+    Without the generic text panels (4.29, 4.30, 4.33): their wording and size change from panel to panel,
+    so they are set from text (``text_panel_poles``), never printed from a master image.
+    """
+    from ..catalogue.text_panels import is_text_panel
+
+    return [k for k in sign_kinds(("white",)) if not is_text_panel(k.template_id)]
 
 
 def pick_format(kind: SignKind, rng: np.random.Generator) -> tuple[str, float, float]:

@@ -7,8 +7,8 @@ from the vehicle are distractors (grey backs) and are not in the truth.
 
 The parts, each building one kind of thing onto the scene's :class:`~.scene_pieces.Pieces`:
 ``street_body`` (road, buildings, trees, lamp posts), ``sign_poles`` (panels, poles,
-occluders), ``plate_layout`` (supplementary plates, white text plates on façades),
-``distractors`` (cars, cones, shop signs, sign backs).
+occluders), ``text_panel_poles`` (white place-name and direction panels), ``plate_layout``
+(supplementary plates, white text plates on façades), ``distractors`` (cars, cones, shop signs, sign backs).
 """
 
 from __future__ import annotations
@@ -26,6 +26,7 @@ from .sign_poles import PanelLook, PlacedSign, sign_pole
 from .street import Street
 from .street_body import buildings, lamp_post, road
 from .surfaces import Surface
+from .text_panel_poles import TEXT_PANEL_SHARE, text_panel_pole
 
 BIN_M = 10.0
 
@@ -66,8 +67,8 @@ def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float
 
     ``plate_share``: share of the poles whose lowest sign carries a supplementary plate (``plate_layout``).
     ``white_share``: share of the poles carrying signs of ``white_kinds`` (the white and grey family) instead
-    of ``kinds``; white signs stand on single or stacked poles (none hangs overhead) and white distractors
-    join the others.
+    of ``kinds``; white signs stand on single or stacked poles (none hangs overhead), about a third of the
+    white poles carry a text panel instead (``text_panel_poles``), and white distractors join the others.
     """
     keys = TextureKeys(seed)
     pieces = Pieces(street, keys)
@@ -94,6 +95,7 @@ def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float
         if all(abs(s - x) > 2 for x in spots):
             lamp_post(pieces, float(s), SIDEWALK_RIGHT[0] + 0.5)
     sign_rng = keys.rng(1, 2)
+    text_panel_rng = keys.rng(1, 33)  # drawn from only on white poles
     signs: list[PlacedSign] = []
     for s in spots:
         u = sign_rng.random()
@@ -101,7 +103,9 @@ def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float
         # drawn only when white signs are asked for, so drives without them stay as they were
         white = bool(white_kinds) and white_share > 0 and sign_rng.random() < white_share
         pole_kinds = white_kinds if white else kinds
-        if u < 0.08 and not white:
+        if white and text_panel_rng.random() < TEXT_PANEL_SHARE:
+            signs += text_panel_pole(pieces, look, s, text_panel_rng, side)
+        elif u < 0.08 and not white:
             signs += sign_pole(pieces, look, s, pole_kinds, sign_rng, 1, "overhead")
         elif u < 0.30:
             signs += sign_pole(pieces, look, s, pole_kinds, sign_rng, side, "stacked")

@@ -36,7 +36,8 @@ def font_path() -> Path:
 
 
 @lru_cache(maxsize=64)
-def _font(size: int):
+def text_font(size: int):
+    """The plate font (:func:`font_path`) at ``size`` pixels per em, for plates and the other text faces."""
     from PIL import ImageFont
 
     return ImageFont.truetype(str(font_path()), size)
@@ -56,12 +57,12 @@ def draw_plate(lines: Sequence[str], width_px: int, height_px: int, border: bool
     room_w, room_h = width_px - 4 * inset - 2, (height_px - 4 * inset) / len(lines)
     size = max(6, int(room_h * 0.78))
     while size > 6:
-        font = _font(size)
+        font = text_font(size)
         widest = max(draw.textlength(t, font=font) for t in lines)
         if widest <= room_w:
             break
         size -= 1
-    font = _font(size)
+    font = text_font(size)
     top = (height_px - room_h * len(lines)) / 2
     for k, text in enumerate(lines):
         cy = top + room_h * (k + 0.5)

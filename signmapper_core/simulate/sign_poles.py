@@ -9,7 +9,7 @@ import numpy as np
 
 from ..drive import TruthSign
 from . import textures as tx
-from .faces import FaceOptions, SignKind, draw_sign_face, pick_format
+from .faces import FaceOptions, SignFace, SignKind, draw_sign_face, pick_format
 from .plate_layout import PLATE_MAX_GAP_M, add_plate
 from .scene_pieces import CARRIAGEWAY, KERB_H, PARKING_LEFT, SIDEWALK_RIGHT, UP, Pieces
 from .surfaces import Surface, Texture, TextureSource, rect_surface
@@ -53,16 +53,26 @@ def sign_panel(pieces: Pieces, look: PanelLook, kind: SignKind, centre, facing_d
                towards_vehicle: bool) -> PlacedSign:
     """Face and grey back of one panel (truth if it faces the vehicle)."""
     _name, w_m, h_m = fmt
-    phi, tau = np.radians(facing_deg), np.radians(tilt_deg)
-    n_h = np.array([np.sin(phi), np.cos(phi), 0.0])
-    normal = n_h * np.cos(tau) + UP * np.sin(tau)
-    right = np.array([-np.cos(phi), np.sin(phi), 0.0])
-    up = UP * np.cos(tau) - n_h * np.sin(tau)
     size_px = int(np.clip(look.fx * max(w_m, h_m) / 3.0, 48, 640))
     fh, fw = face_shape(size_px, w_m, h_m)
     key, rng = pieces.keys.key("face")
     sign_face = draw_sign_face(kind.template_id, (fw, fh), float(w_m), rng, look.face_options, look.weathering,
                                look.shadows)
+    return mount_face(pieces, sign_face, key, kind.colour, centre, facing_deg, tilt_deg, (w_m, h_m), s,
+                      towards_vehicle)
+
+
+def mount_face(pieces: Pieces, sign_face: SignFace, key: str, colour: str, centre, facing_deg, tilt_deg,
+               size_m: tuple[float, float], s, towards_vehicle: bool, text: str = "") -> PlacedSign:
+    """A drawn face (texture ``key``) and its grey back as a panel of ``size_m`` at ``centre``; the truth row
+    (with ``text``, the printed lines) if it faces the vehicle."""
+    w_m, h_m = size_m
+    fw, fh = sign_face.size_wh
+    phi, tau = np.radians(facing_deg), np.radians(tilt_deg)
+    n_h = np.array([np.sin(phi), np.cos(phi), 0.0])
+    normal = n_h * np.cos(tau) + UP * np.sin(tau)
+    right = np.array([-np.cos(phi), np.sin(phi), 0.0])
+    up = UP * np.cos(tau) - n_h * np.sin(tau)
 
     def make_face():
         return Texture(*sign_face.pixels())
@@ -81,9 +91,14 @@ def sign_panel(pieces: Pieces, look: PanelLook, kind: SignKind, centre, facing_d
     pieces.surfaces += [face, back]
     truth = None
     if towards_vehicle:
-        truth = TruthSign("", kind.template_id, float(centre[0]), float(centre[1]), float(centre[2]),
-                          float(w_m), float(h_m), float(facing_deg % 360.0), artwork=sign_face.artwork)
-    return PlacedSign(truth, kind.colour, centre, [face, back])
+        truth = TruthSign("", sign_face.template_id, float(centre[0]), float(centre[1]), float(centre[2]),
+                          float(w_m), float(h_m), float(facing_deg % 360.0), text=text, artwork=sign_face.artwork)
+    return PlacedSign(truth, colour, centre, [face, back])
+
+
+def standing_pole(pieces: Pieces, base, height: float, s) -> None:
+    """The galvanised pole a panel stands on, from ``base`` up ``height`` metres."""
+    pieces.crossed(base, 0.06, height, None, None, s, (140, 145, 145))
 
 
 def sign_pole(pieces: Pieces, look: PanelLook, s, kinds, rng, side, form: str = "single") -> list[PlacedSign]:
@@ -146,7 +161,7 @@ def sign_pole(pieces: Pieces, look: PanelLook, s, kinds, rng, side, form: str = 
         centre = st.point(s, l_c, ground + lower + h_m / 2) - n_h * 2 * standoff
         placed.append(sign_panel(pieces, look, other, centre, facing + 180.0, tilt, f, s, False))
     pole_base = st.point(s, l_c, ground) - n_h * standoff
-    pieces.crossed(pole_base, 0.06, top + 0.1, None, None, s, (140, 145, 145))
+    standing_pole(pieces, pole_base, top + 0.1, s)
     if look.occlusion and rng.random() < 0.2:
         occluder(pieces, s, l_c, max(w_m, h_m), ground + lower + h_m / 2, rng)
     return placed

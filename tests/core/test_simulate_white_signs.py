@@ -7,6 +7,7 @@ import numpy as np
 from test_simulate_scene import street_coords
 
 from signmapper_core.catalogue import load_catalogue
+from signmapper_core.catalogue.text_panels import is_text_panel
 from signmapper_core.simulate import SimulationConfig
 from signmapper_core.simulate.faces import white_sign_kinds
 from signmapper_core.simulate.generator import make_scene
@@ -20,7 +21,8 @@ def texture_kinds(scene) -> set[str]:
 def test_white_kinds_are_the_white_catalogue_entries():
     kinds = white_sign_kinds()
     catalogue = load_catalogue()
-    assert [k.template_id for k in kinds] == sorted(e.id for e in catalogue.filter(colours=["white"]))
+    assert [k.template_id for k in kinds] == sorted(e.id for e in catalogue.filter(colours=["white"])
+                                                    if not is_text_panel(e.id))
     assert {"2.53.1", "2.55", "2.56", "2.58", "2.59.2"} <= {k.template_id for k in kinds}
     assert all(k.colour == "white" for k in kinds)
 
@@ -28,14 +30,15 @@ def test_white_kinds_are_the_white_catalogue_entries():
 def test_white_share_puts_white_signs_on_the_poles_with_their_truth_rows():
     colour = {e.id: e.colour for e in load_catalogue().entries.values()}
     every = make_scene(SimulationConfig(pairs=150, seed=9, white_sign_share=1.0))
-    signs = [t for t in every.truth if not t.is_plate]
+    # text panels (sized by their wording) have their own tests: test_simulate_text_panels.py
+    signs = [t for t in every.truth if not t.is_plate and not is_text_panel(t.template_id)]
     assert signs and all(colour[t.template_id] == "white" for t in signs)
     for t in signs:  # sizes are the catalogue's formats; white signs never hang overhead
         assert (t.width_m, t.height_m) in {tuple(f) for f in load_catalogue()[t.template_id].formats.values()}
         _, lateral, _ = street_coords(every.street, t.position)
         assert not CARRIAGEWAY[0] < lateral < CARRIAGEWAY[1]
     half = make_scene(SimulationConfig(pairs=150, seed=9, white_sign_share=0.5))
-    half_signs = [t for t in half.truth if not t.is_plate]
+    half_signs = [t for t in half.truth if not t.is_plate and not is_text_panel(t.template_id)]
     white = sum(colour[t.template_id] == "white" for t in half_signs)
     assert 0 < white < len(half_signs)
 
