@@ -45,6 +45,7 @@ from signmapper_core.family_evaluation import (  # noqa: E402
 )
 from signmapper_core.mapping import map_drive  # noqa: E402
 from signmapper_core.misread_evidence import false_positive_lines, misread_lines  # noqa: E402
+from signmapper_core.panel_evaluation import PanelFigures, evaluate_panels  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, WhiteConfig  # noqa: E402
 from signmapper_core.plate_evaluation import PlateFigures, evaluate_plates  # noqa: E402
@@ -142,6 +143,7 @@ def main(argv=None) -> int:
     accepted_total, accepted_wrong, accepted_unmatched = 0, 0, 0
     total_pairs, total_seconds = 0, 0.0
     plate_totals = PlateFigures()
+    panel_totals = PanelFigures()
     artwork_totals = {}  # artwork -> [reference signs, detected, correct]
     colour_of = catalogue_colour(catalogue)
     family_totals = {(family, kind): FamilyFigures() for family in FAMILIES for kind in ("detections", "signs")}
@@ -166,6 +168,10 @@ def main(argv=None) -> int:
                 plates = evaluate_plates(drive, result.signs, reference, report.match, args.near, args.far,
                                          args.radius, evidence=plate_evidence)
                 plate_totals = plates + plate_totals
+                panel_evidence = [] if args.evidence else None
+                panels = evaluate_panels(drive, signs, reference, report.match, args.near, args.far,
+                                         evidence=panel_evidence)
+                panel_totals = panels + panel_totals
                 all_azimuth_errors += azimuth_errors(signs, reference, report)
                 for artwork, row in by_artwork(signs, reference, report).items():
                     artwork_totals[artwork] = [a + b for a, b in zip(artwork_totals.get(artwork, [0, 0, 0]), row)]
@@ -184,6 +190,11 @@ def main(argv=None) -> int:
         if plate_evidence:
             print("\n".join(["Plates missed, linked wrong or read wrong:"] + plate_evidence))
         print()
+        if panels.reference:
+            print("\n".join(panels.lines(f"{head}: white text panels")))
+            if panel_evidence:
+                print("\n".join(["Text panels missed or read wrong:"] + panel_evidence))
+            print()
         for family, colours in FAMILIES.items():
             for kind, items in (("detections", sign_detections), ("signs", signs)):
                 figures = family_figures(items, reference, colour_of, colours, traj, len(drive.pairs), args.radius)
@@ -212,6 +223,9 @@ def main(argv=None) -> int:
             print()
         print("\n".join(plate_totals.lines(f"== all {len(folders)} drives: supplementary plates")))
         print()
+        if panel_totals.reference:
+            print("\n".join(panel_totals.lines(f"== all {len(folders)} drives: white text panels")))
+            print()
         for (family, kind), figures in family_totals.items():
             print("\n".join(figures.lines(f"== all {len(folders)} drives: {family} signs, {FAMILY_KINDS[kind]}")))
         print()

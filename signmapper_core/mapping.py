@@ -22,6 +22,7 @@ from typing import Iterator, Optional
 
 import numpy as np
 
+from .catalogue.text_panels import is_text_panel
 from .drive import Drive, PairRecord
 from .errors import DriveFormatError, MappingError
 from .fusion import FusedSign, FusionConfig, Observation, azimuth_deg, fuse_observations
@@ -212,9 +213,11 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     report(progress, PAIRS_SHARE, f"Fusing {len(detections)} detections into signs")
     signs = fuse_observations([o for o in detections if not is_plate(o)], fusion)
     plates = fuse_plates(detections, signs, fusion)
-    if plates:
-        report(progress, PAIRS_SHARE, f"Reading the text of {len(plates)} supplementary plates")
-        read_plate_texts(plates, warn, config=fusion)
+    panels = [s for s in signs if is_text_panel(s.template_id)]
+    if plates or panels:
+        report(progress, PAIRS_SHARE, f"Reading the text of {len(plates)} supplementary plates and {len(panels)} "
+               "text panels")
+        read_plate_texts(plates + panels, warn, config=fusion)
     signs += plates
     set_mounting_heights(drive, signs)
     report(progress, 1.0, f"{len(detections)} detections fused into {len(signs)} signs")

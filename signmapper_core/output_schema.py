@@ -192,8 +192,9 @@ FIELDS = (
     Field("plate_of", INTEGER, "A supplementary plate: the number of the sign it belongs to (signs.sign_id); empty "
           "for a sign.", sign=lambda s: s.plate_of,
           **_names("Plate of sign no.", "Zusatztafel zu Signal-Nr.", "Plaque du signal n°", "Tavola del segnale n.")),
-    Field("text", TEXT, "Text of a plate as read by OCR, normalised (\"200 m\", \"7–19 h\", \"Mo–Fr\"), lines "
-          "joined by ' / '; empty when not read (no Tesseract) or not a plate.", sign=lambda s: s.text,
+    Field("text", TEXT, "Text of a plate or of a white text panel (place name, destinations) as read by OCR, "
+          "normalised (\"200 m\", \"7–19 h\", \"Mo–Fr\"), lines joined by ' / '; empty when not read (no "
+          "Tesseract) or neither.", sign=lambda s: s.text,
           **_names("Text", "Text", "Texte", "Testo")),
     Field("text_confidence", REAL, "Confidence of the text, 0-1: OCR confidence of the readings that agree on it, "
           "over all readings of the plate.", decimals=3, sign=lambda s: s.text_confidence,

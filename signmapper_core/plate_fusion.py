@@ -17,6 +17,7 @@ from __future__ import annotations
 from collections import defaultdict
 from typing import Callable, Optional, Sequence
 
+from .catalogue.text_panels import is_text_panel
 from .fusion import FusedSign, FusionConfig, Observation, _merge_tracks, build_tracks, fuse_track
 from .ocr import OcrError, OcrUnavailable, read_texts
 from .plate_formats import PLATE_ID
@@ -100,17 +101,22 @@ def _part_of(part: str, text: str) -> bool:
     return len(a) < len(b) and any(b[i:i + len(a)] == a for i in range(len(b) - len(a) + 1))
 
 
+def read_by_ocr(feature: FusedSign) -> bool:
+    """Whether a feature's text is read by OCR: a text plate, or a white text panel (a place's name, destinations)."""
+    return feature.template_id == PLATE_ID or is_text_panel(feature.template_id)
+
+
 def read_plate_texts(plates: Sequence[FusedSign], warn: Optional[WarnCallback] = None,
                      read: Callable = read_texts, config: Optional[FusionConfig] = None) -> int:
-    """Set each plate's ``text`` and ``text_confidence``; returns the number of plates with a text.
+    """Set each plate's (and text panel's) ``text`` and ``text_confidence``; returns the number with a text.
 
-    One OCR run for all plates (``config``: the run's fusion settings; default ``FusionConfig()``). Without
-    Tesseract (or when it fails) the plates keep no text and ``warn`` hears once why and how to install it.
+    One OCR run for all of them (``config``: the run's fusion settings; default ``FusionConfig()``). Without
+    Tesseract (or when it fails) they keep no text and ``warn`` hears once why and how to install it.
     """
     config = config or FusionConfig()
     owners, crops = [], []
     for k, plate in enumerate(plates):
-        if plate.template_id != PLATE_ID:  # a pictogram plate: the words of its drawing, no OCR
+        if not read_by_ocr(plate):  # a pictogram plate: the words of its drawing, no OCR
             plate.text, plate.text_confidence = printed_text(plate)
             continue
         for crop in reading_crops(plate, config.plate_readings, config.plate_min_seen_whole):
@@ -121,14 +127,14 @@ def read_plate_texts(plates: Sequence[FusedSign], warn: Optional[WarnCallback] =
     try:
         readings = read(crops, config)
     except (OcrUnavailable, OcrError) as exc:
-        send_warning(warn, f"{len(set(owners))} supplementary plates mapped without their text: {exc}")
+        send_warning(warn, f"{len(set(owners))} supplementary plates or text panels mapped without their text: {exc}")
         return sum(p.text is not None for p in plates)
     by_plate = defaultdict(list)
     for k, reading in zip(owners, readings):
         by_plate[k].append(reading)
     done = 0
     for k, plate in enumerate(plates):
-        if plate.template_id == PLATE_ID:
+        if read_by_ocr(plate):
             plate.text, plate.text_confidence = vote_text(by_plate.get(k, []), config)
         done += plate.text is not None
     return done
