@@ -535,11 +535,17 @@ class WhiteConfig:
     # its edges are measured: a pole's edges stay, pixel noise averages out (white_pole_edge is measured after it)
     # white text panels (text_panels.py: 4.29, 4.30, 4.33), sought with the white step: the field inside the frame
     text_panels: bool = True
+    panel_canny: Tuple[int, int] = (40, 110)  # Canny thresholds of the fields' edges (grey levels, full image)
     panel_frame_margin: float = 0.045  # the frame and the white margin outside it, share of the face's height
     panel_frame_reach: float = 0.1  # the frame's dark line lies within this x the field's height outside it...
-    panel_frame_contrast: float = 0.6  # ...darker than this x the field's median brightness
-    panel_min_frame: float = 0.6  # share of the field's outline with the frame beside it: a candidate...
-    panel_accept_frame: float = 0.85  # ...accepted from this on (with a support below)...
+    panel_frame_contrast: float = 0.8  # ...darker than this x the field's median brightness (a blurred 2 px line:
+    # ~0.65)
+    panel_min_frame: float = 0.6  # share of the field's outline with dark beside it: a candidate...
+    panel_margin_brightness: float = 0.75  # ...and where that dark is a line, bright again (the panel's margin)...
+    panel_line_reach_px: int = 6  # (the line and the margin are sought at least this far: ~2 px each far away)
+    panel_min_line: float = 0.35  # ...on this share of its top and bottom edges (a white board: < 0.25)...
+    panel_full_line: float = 0.6  # ...the indicator (frame_indicator) falls below this share of the better edge
+    panel_accept_frame: float = 0.85  # ...accepted from this indicator on (with a support below)...
     panel_unsupported_frame: float = 0.8  # ...and without a support seen below only from this on
     panel_min_aspect: float = 0.9  # field width / height (a two-line place name: ~1.2; one destination: ~6)
     panel_max_aspect: float = 10.0
@@ -548,10 +554,12 @@ class WhiteConfig:
     panel_min_ink: float = 0.03  # lettering: share of the filled field that is holes (a blank board has none)
     panel_max_ink: float = 0.6
     panel_max_candidates: int = 12  # per pair, largest first
-    panel_end_share: float = 0.06  # a field's end columns (this share of its width)...
+    panel_end_share: float = 0.25  # a field's end columns (as many as this x its height: a rounded corner is
+    # less, a pointer's point, 0.5-0.7 x the panel's height, more)...
     panel_point_ratio: float = 0.6  # ...at most this x its middle's height: it ends in a point (4.33)
     panel_stack_align: float = 0.04  # two fields stacked on a bar (4.30) share their sides within this x width
     panel_bar_max_share: float = 0.3  # and the bar between them is at most this share of their height
+    panel_plate_gap: float = 0.3  # a field this x a sign's height or less below or above it is its plate
     panel_size_step_m: float = 0.05  # a panel's measured size is given to this step (it has no standard format)
 
 

@@ -34,12 +34,13 @@ PAPER = 255  # what the crop shows outside the field and on a 4.30's bar: OCR re
 @dataclass(frozen=True)
 class PanelField:
     """A framed white field that may be a text panel's: its box and filled mask (in that box), full-image
-    pixels, its layout and the share of its outline with a dark frame beside it."""
+    pixels, its layout and how much of a frame is seen around it."""
 
     box: Box
     mask: np.ndarray  # uint8 0/1, the field with its lettering (holes filled)
     layout: str
-    frame_share: float
+    frame_share: float  # share of its outline with dark beside it
+    line_share: float  # share of its top and bottom edges where that dark is a thin line (the frame)
     bar_rows: Tuple[int, int] = (0, 0)  # a 4.30's bar, rows within the box (end exclusive); (0, 0) for none
 
 
@@ -63,7 +64,8 @@ def field_height_range_px(camera: Camera, kinds: Sequence, config) -> Tuple[floa
 
 def frame_share(grey: np.ndarray, box: Box, mask: np.ndarray, config) -> float:
     """Share of the points on the field's outline with a dark line within ``panel_frame_reach`` of its height
-    outside it: the frame. Darker than ``panel_frame_contrast`` x the field's median brightness."""
+    outside it: the frame, or the dark surroundings of a white board. Darker than ``panel_frame_contrast`` x the
+    field's median brightness."""
     x, y, w, h = box
     reach = max(2, int(round(config.white.panel_frame_reach * h)))
     height, width = grey.shape[:2]
@@ -85,12 +87,47 @@ def frame_share(grey: np.ndarray, box: Box, mask: np.ndarray, config) -> float:
     return float(np.count_nonzero(values < config.white.panel_frame_contrast * paper)) / len(points)
 
 
+def line_share(grey: np.ndarray, box: Box, mask: np.ndarray, config) -> float:
+    """Share of the field's columns where, above its top or below its bottom edge (the better of the two: a
+    4.30's fields meet its bar on one), the dark seen there is a line: darker than ``panel_frame_contrast`` x
+    the paper within ``panel_frame_reach`` of its height (``panel_line_reach_px`` at least), then bright again
+    (``panel_margin_brightness`` x the paper) before that reach ends, as the white margin outside a panel's
+    frame is. A white board or a plain white field has dark surroundings all the way out."""
+    white = config.white
+    x, y, w, h = box
+    reach = max(white.panel_line_reach_px, int(round(white.panel_frame_reach * h)))
+    rows = np.arange(mask.shape[0])[:, None]
+    has = mask.any(axis=0)
+    if not has.any():
+        return 0.0
+    paper = float(np.median(grey[y : y + h, x : x + w][mask > 0]))
+    first = np.where(mask > 0, rows, mask.shape[0]).min(axis=0)
+    last = np.where(mask > 0, rows, -1).max(axis=0)
+    cols = np.flatnonzero(has)
+    seen = []
+    for start, step in ((y + first[cols] - 1, -1), (y + last[cols] + 1, 1)):
+        lines = start[None, :] + step * np.arange(reach)[:, None]  # reach x columns, outward
+        inside = (lines >= 0) & (lines < grey.shape[0])
+        profile = np.where(inside, grey[np.clip(lines, 0, grey.shape[0] - 1), x + cols[None, :]], 0) / paper
+        darkest = profile.argmin(axis=0)
+        dark = profile.min(axis=0) < white.panel_frame_contrast
+        after = np.where(np.arange(reach)[:, None] >= darkest[None, :], profile, 0.0).max(axis=0)
+        seen.append(float(np.mean(dark & (after >= white.panel_margin_brightness) & inside.all(axis=0))))
+    return max(seen)
+
+
 def pointed_end(mask: np.ndarray, config) -> Optional[str]:
-    """'left' or 'right' when the field narrows to a point at that end (the column heights of its last
-    ``panel_end_share`` at most ``panel_point_ratio`` of its middle's), else None."""
-    heights = mask.sum(axis=0).astype(np.float64)
+    """'left' or 'right' when the field's convex hull narrows to a point at that end (its last columns,
+    ``panel_end_share`` x its height, at most ``panel_point_ratio`` x its middle's height on average), else None.
+    The hull, as letters running into the frame notch a small field's edge."""
+    points = cv2.findNonZero(mask)
+    if points is None:
+        return None
+    hull = np.zeros_like(mask)
+    cv2.fillConvexPoly(hull, cv2.convexHull(points), 1)
+    heights = hull.sum(axis=0).astype(np.float64)
     n = len(heights)
-    k = max(1, int(round(config.white.panel_end_share * n)))
+    k = min(max(1, int(round(config.white.panel_end_share * mask.shape[0]))), max(1, n // 4))
     middle = float(np.median(heights[n // 4 : max(n // 4 + 1, 3 * n // 4)]))
     if middle <= 0:
         return None
@@ -123,8 +160,7 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
         return []
     grey = cv2.cvtColor(bgr, cv2.COLOR_BGR2GRAY)
     hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
-    edges = cv2.dilate(cv2.Canny(cv2.GaussianBlur(grey, (3, 3), 0), white.white_canny_low, white.white_canny_high),
-                       np.ones((2, 2), np.uint8))
+    edges = cv2.dilate(cv2.Canny(cv2.GaussianBlur(grey, (3, 3), 0), *white.panel_canny), np.ones((2, 2), np.uint8))
     n, labels, stats, _ = cv2.connectedComponentsWithStats((edges == 0).astype(np.uint8), connectivity=4)
     w, h, area = stats[:, cv2.CC_STAT_WIDTH], stats[:, cv2.CC_STAT_HEIGHT], stats[:, cv2.CC_STAT_AREA]
     keep = ((h >= lo) & (h <= hi) & (w >= white.panel_min_aspect * h) & (w <= white.panel_max_aspect * h)
@@ -151,8 +187,11 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
         share = frame_share(grey, (x, y, bw, bh), mask, config)
         if share < white.panel_min_frame:
             continue
+        line = line_share(grey, (x, y, bw, bh), mask, config)
+        if line < white.panel_min_line:
+            continue
         layout = DIRECTION if pointed_end(mask, config) else PLACE_NAME
-        fields.append(PanelField((x, y, bw, bh), mask, layout, share))
+        fields.append(PanelField((x, y, bw, bh), mask, layout, share, line))
     return stacked_on_bars(fields, grey, config)
 
 
@@ -186,7 +225,7 @@ def stacked_on_bars(fields: Sequence[PanelField], grey: np.ndarray, config) -> L
             mask[by - y : by - y + bh, bx - x : bx - x + bw] |= b.mask
             mask[ah : by - y, x0 - x : x1 - x] = 1
             out.append(PanelField((x, y, w, total), mask, PLACE_END, min(a.frame_share, b.frame_share),
-                                  (ah, by - y)))
+                                  line_share(grey, (x, y, w, total), mask, config), (ah, by - y)))
             used.update((i, j))
     return out + [f for k, f in enumerate(fields) if k not in used]
 
@@ -221,7 +260,7 @@ def text_panel_fields(pair: PairContext) -> List[PanelField]:
     found = panel_fields(pair.left[y0:y1, x0:x1], field_height_range_px(pair.camera, list(kinds.values()), config),
                          config)
     return [PanelField((f.box[0] + x0, f.box[1] + y0, f.box[2], f.box[3]), f.mask, f.layout, f.frame_share,
-                       f.bar_rows) for f in found]
+                       f.line_share, f.bar_rows) for f in found]
 
 
 def context_boxes(fields: Sequence[PanelField], config) -> List[Box]:
@@ -234,6 +273,13 @@ def context_boxes(fields: Sequence[PanelField], config) -> List[Box]:
         below = int(round((white.white_support_gap + white.white_support_length) * h))
         out.append((max(0, x - side), max(0, y), w + 2 * side, h + below))
     return out
+
+
+def frame_indicator(field: PanelField, config) -> float:
+    """The classification indicator of a text panel: how clearly its frame is seen, the share of its outline
+    with dark beside it, scaled down where less than ``panel_full_line`` of its top and bottom show that dark
+    as a thin line (a white board before a dark wall has dark beside it, but no line)."""
+    return field.frame_share * min(1.0, field.line_share / config.white.panel_full_line)
 
 
 def judge_panel(field: PanelField, pair: PairContext, depth: np.ndarray, grey: np.ndarray) -> Optional[Detection]:
@@ -268,14 +314,15 @@ def judge_panel(field: PanelField, pair: PairContext, depth: np.ndarray, grey: n
         return None
     supported = support_share(depth, box, z, config) >= white.white_min_support or \
         pole_share(grey, box, config) >= white.white_min_pole_rows
-    if not supported and field.frame_share < white.panel_unsupported_frame:
+    indicator = frame_indicator(field, config)
+    if not supported and indicator < white.panel_unsupported_frame:
         return None
-    accepted = supported and field.frame_share >= white.panel_accept_frame
+    accepted = supported and indicator >= white.panel_accept_frame
     step = white.panel_size_step_m
     return Detection(
         template_id=kind.id, name=pair.catalogue[kind.id].name("de"), colour="white", shape="rectangle",
         width_m=round(width_m / step) * step, height_m=round(height_m / step) * step, format="measured",
-        detection_indicator=planarity.indicator, classification_indicator=field.frame_share,
+        detection_indicator=planarity.indicator, classification_indicator=indicator,
         status="accepted" if accepted else "review", u=u, v=v, bbox=box, depth_m=float(z),
         position=locate(camera, pair.pose, u, v, z), source="text-panel",
         normal_world=world_face_normal(camera, pair.pose, planarity.plane),
@@ -283,9 +330,24 @@ def judge_panel(field: PanelField, pair: PairContext, depth: np.ndarray, grey: n
     )
 
 
+def plate_of(box: Box, signs: Sequence[Detection], config) -> bool:
+    """Whether ``box`` hangs right below or above one of ``signs`` on its support (half its width at least under
+    the sign, at most ``panel_plate_gap`` x the sign's height from it): a supplementary plate, framed and
+    lettered like a text panel, which the plate step reads."""
+    x, y, w, h = box
+    for d in signs:
+        sx, sy, sw, sh = d.bbox
+        overlap = min(x + w, sx + sw) - max(x, sx)
+        gap = max(y - (sy + sh), sy - (y + h))
+        if overlap >= 0.5 * min(w, sw) and gap <= config.white.panel_plate_gap * sh:
+            return True
+    return False
+
+
 def text_panel_detections(pair: PairContext, depth: np.ndarray, fields: Sequence[PanelField],
                           found: Sequence[Detection]) -> List[Detection]:
-    """Text panels among ``fields`` whose centre lies in no sign ``found`` already."""
+    """Text panels among ``fields`` whose centre lies in no sign ``found`` already, and that are not a plate of
+    one."""
     if not fields:
         return []
     taken = [d.bbox for d in found]
@@ -293,7 +355,8 @@ def text_panel_detections(pair: PairContext, depth: np.ndarray, fields: Sequence
     out = []
     for f in fields:
         cu, cv = bbox_centre(f.box)
-        if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken):
+        if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken) or \
+                plate_of(face_box(f, pair.config), found, pair.config):
             continue
         det = judge_panel(f, pair, depth, grey)
         if det is not None:
