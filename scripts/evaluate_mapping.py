@@ -44,7 +44,7 @@ from signmapper_core.family_evaluation import (  # noqa: E402
     family_figures,
 )
 from signmapper_core.mapping import map_drive  # noqa: E402
-from signmapper_core.misread_evidence import false_positive_lines, misread_lines  # noqa: E402
+from signmapper_core.misread_evidence import false_positive_lines, misread_lines, missed_lines  # noqa: E402
 from signmapper_core.panel_evaluation import PanelFigures, evaluate_panels  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, WhiteConfig  # noqa: E402
@@ -182,6 +182,9 @@ def main(argv=None) -> int:
             misread = misread_lines(signs, ref_ids, report.match) if kind == "signs" and args.evidence else []
             if misread:
                 print("\n".join(["Fused signs with a wrong id, observation by observation:"] + misread))
+            missed = missed_lines(reference, report.match) if kind == "signs" and args.evidence else []
+            if missed:
+                print("\n".join(["Reference signs not detected:"] + missed))
             false = false_positive_lines(signs, report.match) if kind == "signs" and args.evidence else []
             if false:
                 print("\n".join(["False positives, observation by observation:"] + false))

@@ -57,3 +57,11 @@ def false_positive_lines(signs: Sequence, match: Sequence[int], top: int = 3) ->
                      f"({sign.status}, vote share {sign.vote_share:.2f}, {sign.n_obs} observations)")
         lines += [observation_line(o, None, top) for o in sorted(sign.observations, key=lambda o: o.pair_index)]
     return lines
+
+
+def missed_lines(reference: Sequence, match: Sequence[int]) -> list[str]:
+    """A line for every reference sign in view that no fused sign was matched to (``match``: per fused sign,
+    the index of its reference sign or -1)."""
+    found = set(int(m) for m in match if m >= 0)
+    return [f"  sign {ref.sign_id}: {ref.template_id} ({ref.width_m:.2f} x {ref.height_m:.2f} m) not detected"
+            for k, ref in enumerate(reference) if k not in found]

@@ -25,7 +25,7 @@ from .detection import Detection
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
 from .sizing import measure_segment, metric_size
-from .white_signs import coloured_share, pole_share, side_share, support_share
+from .white_signs import coloured_share, pole_share, side_shares, support_share
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
 PAPER = 230  # the paper of a 4.30's two fields, evened out before they are set one over the other
@@ -42,6 +42,7 @@ class PanelField:
     frame_share: float  # share of its outline with dark beside it
     line_share: float  # share of its top and bottom edges where that dark is a thin line (the frame)
     bar_rows: Tuple[int, int] = (0, 0)  # a 4.30's bar, rows within the box (end exclusive); (0, 0) for none
+    lettered: bool = True  # holds lettering (holes in the field)
 
 
 def catalogued_kinds(catalogue, config) -> dict:
@@ -182,7 +183,7 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
         mask = _filled(cell)
         filled = int(mask.sum())
         ink = 1.0 - float(cell.sum()) / max(filled, 1)
-        if filled < white.panel_min_fill * bw * bh or not white.panel_min_ink <= ink <= white.panel_max_ink:
+        if filled < white.panel_min_fill * bw * bh or ink > white.panel_max_ink:
             continue
         share = frame_share(grey, (x, y, bw, bh), mask, config)
         if share < white.panel_min_frame:
@@ -191,8 +192,9 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
         if line < white.panel_min_line:
             continue
         layout = DIRECTION if pointed_end(mask, config) else PLACE_NAME
-        fields.append(PanelField((x, y, bw, bh), mask, layout, share, line))
-    return stacked_on_bars(fields, grey, config)
+        fields.append(PanelField((x, y, bw, bh), mask, layout, share, line, lettered=ink >= white.panel_min_ink))
+    # a blank field is no panel alone (a white board), but may be the part of a 4.30 a dirt mark cut off
+    return [f for f in stacked_on_bars(fields, grey, config) if f.lettered]
 
 
 def stacked_on_bars(fields: Sequence[PanelField], grey: np.ndarray, config) -> List[PanelField]:
@@ -224,6 +226,8 @@ def stacked_on_bars(fields: Sequence[PanelField], grey: np.ndarray, config) -> L
             mask[ay - y : ay - y + ah, ax - x : ax - x + aw] |= a.mask
             mask[by - y : by - y + bh, bx - x : bx - x + bw] |= b.mask
             mask[ah : by - y, x0 - x : x1 - x] = 1
+            if not (a.lettered or b.lettered):
+                continue
             out.append(PanelField((x, y, w, total), mask, PLACE_END, min(a.frame_share, b.frame_share),
                                   line_share(grey, (x, y, w, total), mask, config), (ah, by - y)))
             used.update((i, j))
@@ -299,6 +303,18 @@ def context_boxes(fields: Sequence[PanelField], config) -> List[Box]:
     return out
 
 
+def held(box: Box, depth: np.ndarray, grey: np.ndarray, z: float, config) -> bool:
+    """Whether a pole holds the panel: seen below its middle, or below a quarter of its width from either
+    side (a wide panel stands on two posts), by depth or by its edges (white_signs' support tests)."""
+    x, y, w, h = box
+    for shift in (0, -w // 4, w // 4):  # the support tests look below the middle of the box they are given
+        moved = (x + shift, y, w, h)
+        if support_share(depth, moved, z, config) >= config.white.white_min_support or \
+                pole_share(grey, moved, config) >= config.white.white_min_pole_rows:
+            return True
+    return False
+
+
 def frame_indicator(field: PanelField, config) -> float:
     """The classification indicator of a text panel: how clearly its frame is seen, the share of its outline
     with dark beside it, scaled down where less than ``panel_full_line`` of its top and bottom show that dark
@@ -331,13 +347,12 @@ def judge_panel(field: PanelField, pair: PairContext, depth: np.ndarray, grey: n
     width_m, height_m = metric_size(camera, box, z)
     if not kind.fits(width_m, height_m, config.size.size_tolerance):
         return None
-    beside = side_share(depth, box, z, config)
-    if beside is not None and beside > white.white_max_side_share:
-        return None  # a shop sign or a window in a façade
     if coloured_share(pair.left, box, config) > white.white_max_coloured_share:
         return None
-    supported = support_share(depth, box, z, config) >= white.white_min_support or \
-        pole_share(grey, box, config) >= white.white_min_pole_rows
+    supported = held(box, depth, grey, z, config)
+    beside = [share for share in side_shares(depth, box, z, config) if share is not None]
+    if not supported and beside and min(beside) > white.white_max_side_share:
+        return None  # a shop sign or a window in a façade (a panel on its pole may stand just before a wall)
     indicator = frame_indicator(field, config)
     if not supported and indicator < white.panel_unsupported_frame:
         return None

@@ -62,6 +62,24 @@ def side_share(depth: np.ndarray, bbox, z: float, config) -> Optional[float]:
     return float(np.count_nonzero(_same_depth(values, z, config))) / np.count_nonzero(valid)
 
 
+def side_shares(depth: np.ndarray, bbox, z: float, config) -> Tuple[Optional[float], Optional[float]]:
+    """:func:`side_share` of the band left and of the band right of the face, each alone (None where too few of
+    its pixels have a depth to tell)."""
+    x, y, w, h = bbox
+    width = depth.shape[1]
+    gap, band = int(round(config.white.white_side_gap * w)), max(1, int(round(config.white.white_side_band * w)))
+    out = []
+    bands = ((max(0, x - gap - band), max(0, x - gap)), (min(width, x + w + gap), min(width, x + w + gap + band)))
+    for x0, x1 in bands:
+        values = depth[y : y + h, x0:x1].ravel()
+        valid = valid_depth(values)
+        if values.size == 0 or np.count_nonzero(valid) < config.white.white_min_side_valid * values.size:
+            out.append(None)
+        else:
+            out.append(float(np.count_nonzero(_same_depth(values, z, config))) / np.count_nonzero(valid))
+    return out[0], out[1]
+
+
 def support_share(depth: np.ndarray, bbox, z: float, config) -> float:
     """Share of the rows of a strip below the face (its middle, ``white_support_width`` of its width) that hold
     a pixel at the face's depth: a pole, or the next sign on the same pole."""
