@@ -19,6 +19,7 @@ import numpy as np
 
 from ..errors import InputFileError
 from .faces import pixel_size
+from .text_panels import is_text_panel
 
 DEFAULT_CATALOGUE_DIR = Path(__file__).resolve().parents[2] / "templates" / "ch"
 FORMAT_ID = "signmapper-catalogue/1"
@@ -117,14 +118,16 @@ class Catalogue:
         return list(self.entries)
 
     def filter(self, colours: Iterable[str] | None = None, shapes: Iterable[str] | None = None,
-               exclude: Iterable[str] = ()) -> list[TemplateEntry]:
-        """Entries with one of ``colours`` and ``shapes`` (None = any), minus excluded ids."""
+               exclude: Iterable[str] = (), text_panels: bool = False) -> list[TemplateEntry]:
+        """Entries with one of ``colours`` and ``shapes`` (None = any), minus excluded ids, and without the
+        generic text panels unless ``text_panels`` (their wording varies: no template matches them and they
+        have no standard format; ``text_panels.py``)."""
         colours = None if colours is None else set(colours)
         shapes = None if shapes is None else set(shapes)
         exclude = set(exclude)
         return [e for e in self.entries.values()
                 if (colours is None or e.colour in colours) and (shapes is None or e.shape in shapes)
-                and e.id not in exclude]
+                and e.id not in exclude and (text_panels or not is_text_panel(e.id))]
 
     def master(self, template_id: str) -> tuple[np.ndarray, np.ndarray]:
         """The full-resolution (bgr, alpha) of an entry, read once and cached."""

@@ -17,6 +17,7 @@ from typing import Dict, Iterable, List, Optional, Tuple
 import cv2
 import numpy as np
 
+from ..catalogue.text_panels import is_text_panel
 from .boxes import box_iou
 from .classify import canonical_template
 from .colour import hsv_mask
@@ -130,7 +131,7 @@ def hole_candidates(catalogue, colour: str, shapes: Iterable[str], hsv_ranges, a
     shapes, allowed, excluded = set(shapes), set(allowed_colours), set(exclude)
     out = []
     for entry in catalogue:
-        if entry.id in excluded or entry.colour not in allowed:
+        if entry.id in excluded or is_text_panel(entry.id) or entry.colour not in allowed:
             continue
         extent, shape = hole_part(catalogue, entry.id, colour, hsv_ranges)
         if extent is not None and shape in shapes:
@@ -157,7 +158,7 @@ def frame_candidates(catalogue, colour: str, shapes: Iterable[str],
     shapes, excluded = set(shapes), set(exclude)
     out = []
     for entry in catalogue:
-        if entry.id in excluded or entry.colour != colour or entry.shape not in shapes:
+        if entry.id in excluded or is_text_panel(entry.id) or entry.colour != colour or entry.shape not in shapes:
             continue
         extent, shape = bright_part(catalogue, entry.id)
         if extent is not None and shape in shapes:
@@ -204,7 +205,7 @@ def candidate_entries(catalogue, colour: str, shapes: Iterable[str], hsv_ranges,
 def _candidate_entries(catalogue, colour: str, shapes, hsv_ranges, allowed, excluded) -> List[Tuple[object, Extent]]:
     out = []
     for entry in catalogue:
-        if entry.id in excluded or entry.colour not in allowed:
+        if entry.id in excluded or is_text_panel(entry.id) or entry.colour not in allowed:
             continue
         extent, part_shape = colour_part(catalogue, entry.id, colour, hsv_ranges)
         if entry.colour == colour and entry.shape in shapes and (extent in (None, FULL) or part_shape in shapes):

@@ -110,9 +110,10 @@ def line_share(grey: np.ndarray, box: Box, mask: np.ndarray, config) -> float:
         lines = start[None, :] + step * np.arange(reach)[:, None]  # reach x columns, outward
         inside = (lines >= 0) & (lines < grey.shape[0])
         profile = np.where(inside, grey[np.clip(lines, 0, grey.shape[0] - 1), x + cols[None, :]], 0) / paper
-        darkest = profile.argmin(axis=0)
-        dark = profile.min(axis=0) < white.panel_frame_contrast
-        after = np.where(np.arange(reach)[:, None] >= darkest[None, :], profile, 0.0).max(axis=0)
+        below = profile < white.panel_frame_contrast
+        dark = below.any(axis=0)
+        first = below.argmax(axis=0)  # the first dark pixel out from the field: the frame, if it has one
+        after = np.where(np.arange(reach)[:, None] >= first[None, :], profile, 0.0).max(axis=0)
         seen.append(float(np.mean(dark & (after >= white.panel_margin_brightness) & inside.all(axis=0))))
     return max(seen)
 
@@ -303,16 +304,17 @@ def context_boxes(fields: Sequence[PanelField], config) -> List[Box]:
     return out
 
 
-def held(box: Box, depth: np.ndarray, grey: np.ndarray, z: float, config) -> bool:
-    """Whether a pole holds the panel: seen below its middle, or below a quarter of its width from either
-    side (a wide panel stands on two posts), by depth or by its edges (white_signs' support tests)."""
+def held(box: Box, depth: np.ndarray, grey: np.ndarray, z: float, config) -> Tuple[bool, bool]:
+    """(by depth, in the image): whether something at the panel's depth stands below it, and whether a pole's
+    straight edges run down below it; each looked for below its middle and below a quarter of its width from
+    either side (a wide panel stands on two posts), by white_signs' support tests."""
     x, y, w, h = box
+    by_depth = in_image = False
     for shift in (0, -w // 4, w // 4):  # the support tests look below the middle of the box they are given
         moved = (x + shift, y, w, h)
-        if support_share(depth, moved, z, config) >= config.white.white_min_support or \
-                pole_share(grey, moved, config) >= config.white.white_min_pole_rows:
-            return True
-    return False
+        by_depth = by_depth or support_share(depth, moved, z, config) >= config.white.white_min_support
+        in_image = in_image or pole_share(grey, moved, config) >= config.white.white_min_pole_rows
+    return by_depth, in_image
 
 
 def frame_indicator(field: PanelField, config) -> float:
@@ -349,9 +351,10 @@ def judge_panel(field: PanelField, pair: PairContext, depth: np.ndarray, grey: n
         return None
     if coloured_share(pair.left, box, config) > white.white_max_coloured_share:
         return None
-    supported = held(box, depth, grey, z, config)
+    by_depth, pole_seen = held(box, depth, grey, z, config)
+    supported = by_depth or pole_seen
     beside = [share for share in side_shares(depth, box, z, config) if share is not None]
-    if not supported and beside and min(beside) > white.white_max_side_share:
+    if not pole_seen and beside and min(beside) > white.white_max_side_share:
         return None  # a shop sign or a window in a façade (a panel on its pole may stand just before a wall)
     indicator = frame_indicator(field, config)
     if not supported and indicator < white.panel_unsupported_frame:
