@@ -45,6 +45,8 @@ NAMES_EN = {
     "3.09": "Give way to oncoming traffic", "3.10": "Priority over oncoming traffic",
     "4.08": "One-way street", "4.09": "No through road", "4.11": "Pedestrian crossing here",
     "4.14": "Hospital", "4.17": "Parking", "4.18": "Parking with parking disc", "4.20": "Paid parking",
+    "4.29": "Place name (secondary road)", "4.30": "End of place (secondary road)",
+    "4.33": "Direction sign (secondary road)",
 }
 
 
