@@ -559,6 +559,7 @@ class WhiteConfig:
     panel_point_ratio: float = 0.6  # ...at most this x its middle's height: it ends in a point (4.33)
     panel_stack_align: float = 0.04  # two fields stacked on a bar (4.30) share their sides within this x width
     panel_bar_max_share: float = 0.3  # and the bar between them is at most this share of their height
+    panel_bar_rows: Tuple[float, float] = (0.1, 0.45)  # a 4.30's bar over its lower field, x that field's height
     panel_plate_gap: float = 0.3  # a field this x a sign's height or less below or above it is its plate
     panel_size_step_m: float = 0.05  # a panel's measured size is given to this step (it has no standard format)
 

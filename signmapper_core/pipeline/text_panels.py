@@ -232,7 +232,36 @@ def stacked_on_bars(fields: Sequence[PanelField], grey: np.ndarray, config) -> L
             out.append(PanelField((x, y, w, total), mask, PLACE_END, min(a.frame_share, b.frame_share),
                                   line_share(grey, (x, y, w, total), mask, config), (ah, by - y)))
             used.update((i, j))
-    return out + [f for k, f in enumerate(fields) if k not in used]
+    rest = [f for k, f in enumerate(fields) if k not in used]
+    return out + [under_a_bar(f, grey, config) or f for f in rest]
+
+
+def under_a_bar(field: PanelField, grey: np.ndarray, config) -> Optional[PanelField]:
+    """The 4.30 whose lower field ``field`` is, when right above it lies a dark bar across its width (a run of
+    dark rows ``panel_bar_rows`` x its height, darker than ``panel_frame_contrast`` x its paper) and above the
+    bar a bright field up to a dark line (the frame): its upper field, blank or too faint to be a field of its
+    own. None otherwise (a 4.29's frame is a thin line, not a bar)."""
+    if field.layout != PLACE_NAME:
+        return None
+    white = config.white
+    x, y, w, h = field.box
+    lo, hi = white.panel_bar_rows
+    cols = slice(x + w // 10, x + w - w // 10)  # the middle of its width: clear of rounded corners and posts
+    paper = float(np.median(grey[y : y + h, x : x + w][field.mask > 0]))
+    top = max(0, y - int(round((hi + 1.0) * h)))
+    rows = np.median(grey[top:y, cols], axis=1)[::-1] / max(paper, 1.0)  # upward from the field's top
+    dark = rows < white.panel_frame_contrast
+    bar = int(np.argmin(dark)) if not dark.all() else len(dark)  # dark rows right above the field
+    if not lo * h <= bar <= hi * h:
+        return None
+    above = rows[bar:]
+    end = int(np.argmax(above < white.panel_frame_contrast)) if (above < white.panel_frame_contrast).any() else 0
+    if end < lo * h or above[:end].min() < white.panel_margin_brightness:
+        return None  # no bright upper field closed by a frame line above the bar
+    total = h + bar + end
+    mask = np.ones((total, w), np.uint8)
+    return PanelField((x, y - bar - end, w, total), mask, PLACE_END, field.frame_share, field.line_share,
+                      (end, end + bar), field.lettered)
 
 
 def face_box(field: PanelField, config) -> Box:
