@@ -18,6 +18,7 @@ from signmapper_core.pipeline.text_panels import (
     plate_of,
     pointed_end,
     reading_crop,
+    under_a_bar,
 )
 from signmapper_core.simulate.text_panel_faces import text_panel_face
 
@@ -150,3 +151,18 @@ def _catalogue():
     from signmapper_core.catalogue import load_catalogue
 
     return load_catalogue()
+
+
+def test_a_lower_field_under_a_bar_is_read_as_a_place_end_with_its_upper_field():
+    grey = np.full((120, 200), 90, np.uint8)
+    grey[10:110, 20:180] = 230  # the panel
+    grey[13:15, 23:177] = 30  # its frame line at the top...
+    grey[40:50, 23:177] = 25  # ...the 4.30's bar...
+    lower = PanelField((25, 50, 150, 55), np.ones((55, 150), np.uint8), "place-name", 1.0, 1.0)
+    found = under_a_bar(lower, grey, CONFIG)
+    assert found is not None and found.layout == "place-end"
+    x, y, w, h = found.box
+    assert (x, w) == (25, 150) and 14 <= y <= 16 and y + h == 105
+    assert found.bar_rows == (40 - y, 50 - y)
+    grey[40:50, 23:177] = 230  # no bar: a 4.29's field stays one
+    assert under_a_bar(lower, grey, CONFIG) is None
