@@ -526,6 +526,8 @@ class WhiteConfig:
     white_min_score: float = 0.5  # NCC among the white entries: below it no template resembles the face...
     white_unsupported_min_score: float = 0.65  # ...or below this without a support seen below it
     white_accept_score: float = 0.65  # and from this on it is "accepted"
+    white_network_gate: bool = True  # below white_min_score a supported face is still a sign where the network
+    # (knowing every white candidate) reads it at its acceptance threshold: a 2.59.2 in greenish light, 0.46
     white_radial_cos: float = 0.8  # an outline point's gradient points across the outline (along the radius, or
     # across a panel's side) within this cosine (37 deg): a pixel step of a slanted outline stays within,
     # texture's gradients point anywhere

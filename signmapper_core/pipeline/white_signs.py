@@ -256,6 +256,18 @@ def read_white_face(pair: PairContext, bbox, ids: Sequence[str], matched: Classi
     return read, "accepted" if read.score >= accept_threshold(reader, config) else "review"
 
 
+def network_reading(pair: PairContext, bbox, ids: Sequence[str]) -> Optional[ClassificationResult]:
+    """The pipeline's classifier's reading of a white face among ``ids`` where it knows them all (not template
+    matching) and reads one of them at or above its acceptance threshold; else None."""
+    reader = pair.classifier_knowing(ids)
+    if reader is pair.template_matcher:
+        return None
+    read = reader.classify(pair.left, bbox, ids)
+    if read.template_id is None or read.score < accept_threshold(reader, pair.config):
+        return None
+    return read
+
+
 def judge_white(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey: np.ndarray,
                 refit_format: bool = True, panels: Optional[list] = None) -> Optional[Detection]:
     """The white sign ``cand`` is, or None (cut, off the search space, no white format, not planar, not
@@ -325,8 +337,14 @@ def _judge_face(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
     # a face without a support in view (a pole too pale to see or to match) must resemble its template clearly
     floor = config.white.white_min_score if supported else config.white.white_unsupported_min_score
     if cls.template_id is None or cls.score < floor:
-        return None
-    cls, status = read_white_face(pair, seg.bbox, ids, cls)
+        # a face in tinted light or worn correlates weakly with its drawing; where the network knows every
+        # white candidate, its own clear reading of a supported face stands for the resemblance
+        read = network_reading(pair, seg.bbox, ids) if supported and config.white.white_network_gate else None
+        if read is None:
+            return None
+        cls, status = read, "accepted"
+    else:
+        cls, status = read_white_face(pair, seg.bbox, ids, cls)
     entry = catalogue[cls.template_id]
     names = getattr(entry, "names", None) or {}
     return Detection(
