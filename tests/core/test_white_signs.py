@@ -258,6 +258,17 @@ def test_zone_end_panel_before_a_pale_wall_is_read_as_the_panel_not_as_its_disc(
     assert det.template_id != "2.59.2" and det.bbox[2] < w
 
 
+def test_a_face_matching_its_drawing_weakly_is_read_by_the_network_when_it_is_held(catalogue):
+    # template matching below its floor (here: a floor no face reaches) leaves the face to the network where
+    # it knows every white candidate and reads it clearly; without that gate, or without a pole, no sign
+    _, left, depth, _ = _pole_scene(catalogue, "2.55", "normal")
+    strict = with_settings(CONFIG, {"white": {"white_min_score": 0.999, "white_unsupported_min_score": 0.999}})
+    (det,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, strict)
+    assert (det.template_id, det.source, det.status) == ("2.55", "white", "accepted")
+    no_gate = with_settings(strict, {"white": {"white_network_gate": False}})
+    assert detect_pair(left, depth, None, CAMERA, POSE, catalogue, no_gate) == []
+
+
 def test_white_step_can_be_switched_off(catalogue):
     _, left, depth, _ = _pole_scene(catalogue, "2.55", "normal")
     off = with_settings(CONFIG, {"white": {"white_signs": False}})
