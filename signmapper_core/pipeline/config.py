@@ -371,7 +371,10 @@ class ClassificationConfig:
     # the catalogue has a network)
     classification_threshold: Optional[float] = None  # indicator needed for "accepted"; None = the classifier's own
     exclude: Tuple[str, ...] = ()  # template ids never assigned
-    min_surround_score: float = 0.5  # a panel reading needs its part outside the colour segment to match
+    min_surround_score: float = 0.3  # a panel reading needs its part outside the colour segment to match
+    # (and the classifier's reading at its acceptance threshold to win): dirty 2.59.1 zone panels matched 0.43-0.50
+    # and were read as their 30 disc at 0.5; at 0.3 none of 3 on drives 809, 1050-1061 was, and drives 801-810,
+    # 1040-1049 mapped exactly as at 0.5
     min_classification_score: Optional[float] = None  # below this the segment is not reported; None = classifier's
     scales: Tuple[float, ...] = (0.92, 1.0, 1.08)
     shift_fraction: float = 0.08  # shift search, as a fraction of the segment size
