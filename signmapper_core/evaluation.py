@@ -54,6 +54,11 @@ class EvaluationReport:
     confusions: list = field(default_factory=list)  # (reference id, assigned id) of misclassified signs
 
 
+def share_text(n: int, of: int) -> str:
+    """'3 of 4 (75.0 %)', or '3 (none to count)' when there is nothing to count: the rows' one way of saying it."""
+    return f"{n} of {of} ({100.0 * n / of:.1f} %)" if of else f"{n} (none to count)"
+
+
 def majority_id(ids) -> str:
     """The id most of the features matched to one reference sign carry (the first of equals)."""
     return Counter(ids).most_common(1)[0][0]

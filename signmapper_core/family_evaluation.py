@@ -14,7 +14,7 @@ from typing import Callable, Iterable, Sequence
 
 import numpy as np
 
-from .evaluation import evaluate, match_to_reference
+from .evaluation import evaluate, match_to_reference, share_text
 
 WHITE = ("white",)
 COLOURED = ("red", "blue", "yellow")
@@ -37,13 +37,10 @@ class FamilyFigures:
         return 100.0 * self.false_positives / self.pairs if self.pairs else float("nan")
 
     def lines(self, title: str) -> list[str]:
-        def share(n, of):
-            return f"{n} of {of} ({100.0 * n / of:.1f} %)" if of else f"{n} (none to count)"
-
         return [title,
                 f"  reference signs in view         {self.reference}",
-                f"  detected                        {share(self.detected, self.reference)}",
-                f"  correctly classified            {share(self.correct, self.detected)} detected",
+                f"  detected                        {share_text(self.detected, self.reference)}",
+                f"  correctly classified            {share_text(self.correct, self.detected)} detected",
                 f"  mapped features of the family   {self.features}",
                 f"  false positive features         {self.false_positives} "
                 f"({self.false_positives_per_100_pairs:.2f} per 100 pairs)"]

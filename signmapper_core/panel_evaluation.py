@@ -13,6 +13,7 @@ from dataclasses import dataclass, fields
 from typing import Optional, Sequence
 
 from .catalogue.text_panels import is_text_panel
+from .evaluation import share_text
 from .visibility import largest_view_px
 
 MIN_LINE_PX = 20.0  # a line of a panel's lettering fills about half its line's height: ~10 px letters
@@ -31,14 +32,12 @@ class PanelFigures:
         return PanelFigures(*(getattr(self, f.name) + getattr(other, f.name) for f in fields(self)))
 
     def lines(self, title: str = "") -> list[str]:
-        def share(n, of):
-            return f"{n} of {of} ({100.0 * n / of:.1f} %)" if of else f"{n} of 0"
         return [title,
                 f"  text panels in view             {self.reference}",
-                f"  detected                        {share(self.detected, self.reference)}",
-                f"  kind right (4.29/4.30/4.33)     {share(self.kinds_right, self.detected)} detected",
-                f"  text exactly right              {share(self.texts_right, self.readable)} of those with lines "
-                f">= {MIN_LINE_PX:.0f} px ({share(self.texts_right, self.readable_detected)} of the detected)"]
+                f"  detected                        {share_text(self.detected, self.reference)}",
+                f"  kind right (4.29/4.30/4.33)     {share_text(self.kinds_right, self.detected)} detected",
+                f"  text exactly right              {share_text(self.texts_right, self.readable)} of those with lines "
+                f">= {MIN_LINE_PX:.0f} px ({share_text(self.texts_right, self.readable_detected)} of the detected)"]
 
 
 def evaluate_panels(drive, signs: Sequence, reference: Sequence, match: Sequence[int], near_m: float = 4.0,

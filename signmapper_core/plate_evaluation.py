@@ -17,7 +17,7 @@ from typing import Optional
 
 import numpy as np
 
-from .evaluation import match_to_reference
+from .evaluation import match_to_reference, share_text
 from .plate_formats import PLATE_ID
 from .visibility import largest_view_px, mappable_signs
 
@@ -45,22 +45,19 @@ class PlateFigures:
         return PlateFigures(*(getattr(self, f.name) + getattr(other, f.name) for f in fields(self)))
 
     def lines(self, title: str = "") -> list[str]:
-        def share(n, of):
-            return f"{n} of {of} ({100.0 * n / of:.1f} %)" if of else f"{n} (none to count)"
-
         return [title or "Supplementary plates",
                 f"  reference plates in view        {self.reference}",
-                f"  detected                        {share(self.detected, self.reference)}",
-                f"  linked to the right sign        {share(self.links_right, self.detected)} detected",
-                f"  classified right (text/5.xx id) {share(self.kinds_right, self.detected)} detected",
+                f"  detected                        {share_text(self.detected, self.reference)}",
+                f"  linked to the right sign        {share_text(self.links_right, self.detected)} detected",
+                f"  classified right (text/5.xx id) {share_text(self.kinds_right, self.detected)} detected",
                 f"  pictogram plates (5.xx)         {self.pictograms} ({self.pictograms_detected} detected, "
                 f"{self.pictograms_right} with their id)",
                 f"  mapped plate features           {self.mapped}",
                 f"  false positive plates           {self.false_positives}",
                 f"  reference plates with >1 plate  {self.duplicates}",
                 f"  plates >= {MIN_TEXT_PX:.0f} px high           {self.readable} ({self.readable_detected} detected)",
-                f"  text exactly right              {share(self.texts_right, self.readable)} of those >= "
-                f"{MIN_TEXT_PX:.0f} px ({share(self.texts_right, self.readable_detected)} of the detected)"]
+                f"  text exactly right              {share_text(self.texts_right, self.readable)} of those >= "
+                f"{MIN_TEXT_PX:.0f} px ({share_text(self.texts_right, self.readable_detected)} of the detected)"]
 
 
 def evaluate_plates(drive, signs, sign_reference, sign_match, near_m: float = 4.0, far_m: float = 14.0,

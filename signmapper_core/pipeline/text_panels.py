@@ -25,6 +25,7 @@ from .detection import Detection
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
 from .sizing import measure_segment, metric_size
+from .white_outlines import filled
 from .white_signs import coloured_share, pole_share, side_shares, support_share
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
@@ -142,13 +143,6 @@ def pointed_end(mask: np.ndarray, config) -> Optional[str]:
     return None
 
 
-def _filled(cell: np.ndarray) -> np.ndarray:
-    contours, _ = cv2.findContours(cell, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_SIMPLE)
-    out = np.zeros_like(cell)
-    cv2.drawContours(out, contours, -1, 1, -1)
-    return out
-
-
 def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) -> List[PanelField]:
     """Framed white fields of a text panel's size in ``bgr`` (its own pixels), largest first.
 
@@ -181,10 +175,10 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
     for i in ids:
         x, y, bw, bh = (int(v) for v in stats[i, :4])
         cell = (labels[y : y + bh, x : x + bw] == i).astype(np.uint8)
-        mask = _filled(cell)
-        filled = int(mask.sum())
-        ink = 1.0 - float(cell.sum()) / max(filled, 1)
-        if filled < white.panel_min_fill * bw * bh or ink > white.panel_max_ink:
+        mask = (filled(cell) > 0).astype(np.uint8)
+        area_filled = int(mask.sum())
+        ink = 1.0 - float(cell.sum()) / max(area_filled, 1)
+        if area_filled < white.panel_min_fill * bw * bh or ink > white.panel_max_ink:
             continue
         share = frame_share(grey, (x, y, bw, bh), mask, config)
         if share < white.panel_min_frame:

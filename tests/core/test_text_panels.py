@@ -5,7 +5,13 @@ import numpy as np
 import pytest
 from pipeline_scenes import POSE, constant_depth, noisy_background, paste
 
-from signmapper_core.geometry import Camera, world_to_pixel
+from signmapper_core.drive import TruthSign, open_drive
+from signmapper_core.drive_writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
+from signmapper_core.evaluation import evaluate
+from signmapper_core.geometry import Camera, Pose, world_to_pixel
+from signmapper_core.mapping import map_drive
+from signmapper_core.panel_evaluation import evaluate_panels
+from signmapper_core.visibility import mappable_signs
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.config import with_settings
 from signmapper_core.pipeline.detection import Detection
@@ -39,10 +45,12 @@ def _range():
     return field_height_range_px(CAMERA, list(catalogued_kinds(load_catalogue(), CONFIG).values()), CONFIG)
 
 
-def _panel_scene(kind, lines, ahead=7.0, background_depth=30.0, point="right", pole=True, seed=0):
-    """A text panel drawn by the simulator's drawer on a pole, before a textured background, through a lens."""
-    centre = _world(ahead, 1.5, 0.6)
-    u, v, z = world_to_pixel(CAMERA, POSE, centre)
+def _panel_scene(kind, lines, ahead=7.0, background_depth=30.0, point="right", pole=True, seed=0, pose=POSE,
+                 centre=None):
+    """A text panel drawn by the simulator's drawer on a pole, before a textured background, through a lens:
+    ``ahead`` of ``POSE`` or at ``centre`` (world) seen from ``pose``."""
+    centre = _world(ahead, 1.5, 0.6) if centre is None else centre
+    u, v, z = world_to_pixel(CAMERA, pose, centre)
     bgr, alpha = text_panel_face(kind, lines, CAMERA.fx / float(z), point=point)
     h, w = alpha.shape
     x, y = int(round(float(u) - w / 2)), int(round(float(v) - h / 2))
@@ -166,3 +174,33 @@ def test_a_lower_field_under_a_bar_is_read_as_a_place_end_with_its_upper_field()
     assert found.bar_rows == (40 - y, 50 - y)
     grey[40:50, 23:177] = 230  # no bar: a 4.29's field stays one
     assert under_a_bar(lower, grey, CONFIG) is None
+
+
+def test_a_text_panel_seen_in_three_pairs_is_one_feature_with_its_text(tmp_path):
+    # driving east towards a 4.30 at 9-10 m; its text read after fusion, the evaluation's rows agreeing
+    root = tmp_path / "drive"
+    centre = _world(10.0, 1.5, 0.6)
+    write_drive_json(root, "EPSG:2056", CAMERA, software="tests")
+    poses = [(f"{i:06d}", 0.2 * i, Pose(POSE.easting + 0.5 * i, POSE.northing, POSE.height, POSE.heading, 0.0, 0.0))
+             for i in range(3)]
+    write_poses_csv(root, poses)
+    for i, (pair_id, _t, pose) in enumerate(poses):
+        _, left, depth, box = _panel_scene("4.30", ["Uster", "Egg 4 km"], pose=pose, centre=centre, seed=i)
+        write_pair(root, pair_id, left, None, depth, image_suffix=".png", depth_suffix=".npy")
+    width_m = box[2] * (10.0 - 1.0) / CAMERA.fx
+    write_truth_csv(root, [TruthSign("s1", "4.30", *centre, width_m, 0.6, (POSE.heading + 180.0) % 360.0,
+                                     text="Uster / Egg 4 km")])
+    drive = open_drive(root)
+    catalogue = _catalogue()
+    result = map_drive(drive, catalogue, CONFIG, workers=1)
+    (panel,) = result.signs
+    assert (panel.template_id, panel.n_obs, panel.status) == ("4.30", 3, "accepted")
+    assert panel.text == "Uster / Egg 4 km" and panel.text_confidence > 0.5
+    assert np.linalg.norm(panel.position - centre) < 0.1
+    reference = mappable_signs(drive)
+    report = evaluate([panel.position], [panel.template_id], [r.position for r in reference],
+                      [r.template_id for r in reference], [[0, 0], [1, 1]], 0.75)
+    evidence = []
+    figures = evaluate_panels(drive, result.signs, reference, report.match, evidence=evidence)
+    assert (figures.reference, figures.detected, figures.kinds_right, figures.texts_right) == (1, 1, 1, 1)
+    assert evidence == []
