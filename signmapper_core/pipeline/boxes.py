@@ -5,12 +5,21 @@ from __future__ import annotations
 import cv2
 import numpy as np
 
+from .locate import bbox_centre
+
 
 def touches_border(box, width: int, height: int, margin: int) -> bool:
     """Whether a box comes within ``margin`` pixels of the border of a ``width`` x ``height`` image (a face cut
     by the border cannot be sized or matched)."""
     x, y, w, h = box
     return x <= margin or y <= margin or x + w >= width - margin or y + h >= height - margin
+
+
+def centre_inside(a, b) -> bool:
+    """Whether the centre of box ``a`` (:func:`.locate.bbox_centre`) lies inside box ``b``."""
+    x, y, w, h = b
+    cu, cv = bbox_centre(a)
+    return x <= cu < x + w and y <= cv < y + h
 
 
 def box_iou(a, b) -> float:

@@ -19,7 +19,7 @@ import numpy as np
 
 from ..face_normal import world_face_normal
 from ..geometry import Camera, Pose
-from .boxes import box_iou
+from .boxes import box_iou, centre_inside
 from .classifiers import accept_threshold, marginal_min_score, min_score
 from .classify import surround_score
 from .colour import ColourFrame, Segment, find_colour_segments, merge_candidates, split_face_merges
@@ -271,12 +271,6 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     )
 
 
-def _centre_inside(a, b) -> bool:
-    x, y, w, h = b
-    cu, cv = bbox_centre(a)
-    return x <= cu < x + w and y <= cv < y + h
-
-
 def _part_of(inner, outer, max_area_share: float) -> bool:
     """Whether box ``inner`` lies inside box ``outer`` (give or take 5 % of its size) and covers at most
     ``max_area_share`` of it."""
@@ -301,8 +295,8 @@ def suppress_overlaps(detections: Sequence[Detection], max_iou: float,
                     key=lambda d: d.detection_indicator * d.classification_indicator, reverse=True)
     kept: List[Detection] = []
     for det in ranked:
-        if all(box_iou(det.bbox, k.bbox) <= max_iou and not _centre_inside(det.bbox, k.bbox)
-               and not _centre_inside(k.bbox, det.bbox) for k in kept):
+        if all(box_iou(det.bbox, k.bbox) <= max_iou and not centre_inside(det.bbox, k.bbox)
+               and not centre_inside(k.bbox, det.bbox) for k in kept):
             kept.append(det)
     return kept
 
@@ -421,8 +415,7 @@ def _hough_detections(pair: PairContext, depth: np.ndarray, search: np.ndarray,
             if seg.colour == "white" and config.white.white_signs:  # the white step's discs
                 continue
             seg = _shift_segment(seg, x0, y0)
-            cu, cv = bbox_centre(seg.bbox)
-            if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken):
+            if any(centre_inside(seg.bbox, box) for box in taken):
                 continue
             det = evaluate_segment(seg, pair, depth)
             if det is not None:

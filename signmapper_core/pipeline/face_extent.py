@@ -17,7 +17,6 @@ from typing import Dict, Iterable, List, Optional, Tuple
 import cv2
 import numpy as np
 
-from ..catalogue.text_panels import is_text_panel
 from .boxes import box_iou
 from .classify import canonical_template
 from .colour import hsv_mask
@@ -130,8 +129,8 @@ def hole_candidates(catalogue, colour: str, shapes: Iterable[str], hsv_ranges, a
     """(entry, field extent) of the templates whose ``colour`` encloses a field of one of ``shapes``."""
     shapes, allowed, excluded = set(shapes), set(allowed_colours), set(exclude)
     out = []
-    for entry in catalogue:
-        if entry.id in excluded or is_text_panel(entry.id) or entry.colour not in allowed:
+    for entry in catalogue.filter(exclude=excluded):  # the generic text panels left out too
+        if entry.colour not in allowed:
             continue
         extent, shape = hole_part(catalogue, entry.id, colour, hsv_ranges)
         if extent is not None and shape in shapes:
@@ -157,8 +156,8 @@ def frame_candidates(catalogue, colour: str, shapes: Iterable[str],
     shape too: what a white-framed ``colour`` face found by brightness may be."""
     shapes, excluded = set(shapes), set(exclude)
     out = []
-    for entry in catalogue:
-        if entry.id in excluded or is_text_panel(entry.id) or entry.colour != colour or entry.shape not in shapes:
+    for entry in catalogue.filter(exclude=excluded):  # the generic text panels left out too
+        if entry.colour != colour or entry.shape not in shapes:
             continue
         extent, shape = bright_part(catalogue, entry.id)
         if extent is not None and shape in shapes:
@@ -204,8 +203,8 @@ def candidate_entries(catalogue, colour: str, shapes: Iterable[str], hsv_ranges,
 
 def _candidate_entries(catalogue, colour: str, shapes, hsv_ranges, allowed, excluded) -> List[Tuple[object, Extent]]:
     out = []
-    for entry in catalogue:
-        if entry.id in excluded or is_text_panel(entry.id) or entry.colour not in allowed:
+    for entry in catalogue.filter(exclude=excluded):  # the generic text panels left out too
+        if entry.colour not in allowed:
             continue
         extent, part_shape = colour_part(catalogue, entry.id, colour, hsv_ranges)
         if entry.colour == colour and entry.shape in shapes and (extent in (None, FULL) or part_shape in shapes):
