@@ -12,7 +12,7 @@ seen is the classification indicator. Its text is read after fusion from the fie
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import List, Optional, Sequence, Tuple
 
 import cv2
@@ -21,6 +21,7 @@ import numpy as np
 from ..catalogue.text_panels import DIRECTION, PLACE_END, PLACE_NAME, TEXT_PANELS
 from ..face_normal import world_face_normal
 from ..geometry import Camera
+from .boxes import centre_inside
 from .detection import Detection
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
@@ -215,14 +216,14 @@ def stacked_on_bars(fields: Sequence[PanelField], grey: np.ndarray, config) -> L
             paper = float(np.median(grey[ay : ay + ah, x0:x1]))
             if bar.size == 0 or float(np.median(bar)) >= white.panel_frame_contrast * paper:
                 continue
+            if not (a.lettered or b.lettered):
+                continue
             x, y = min(ax, bx), ay
             w = max(ax + aw, bx + bw) - x
             mask = np.zeros((total, w), np.uint8)
             mask[ay - y : ay - y + ah, ax - x : ax - x + aw] |= a.mask
             mask[by - y : by - y + bh, bx - x : bx - x + bw] |= b.mask
             mask[ah : by - y, x0 - x : x1 - x] = 1
-            if not (a.lettered or b.lettered):
-                continue
             out.append(PanelField((x, y, w, total), mask, PLACE_END, min(a.frame_share, b.frame_share),
                                   line_share(grey, (x, y, w, total), mask, config), (ah, by - y)))
             used.update((i, j))
@@ -311,8 +312,7 @@ def text_panel_fields(pair: PairContext) -> List[PanelField]:
     x0, y0, x1, y1 = pair.roi
     found = panel_fields(pair.left[y0:y1, x0:x1], field_height_range_px(pair.camera, list(kinds.values()), config),
                          config)
-    return [PanelField((f.box[0] + x0, f.box[1] + y0, f.box[2], f.box[3]), f.mask, f.layout, f.frame_share,
-                       f.line_share, f.bar_rows) for f in found]
+    return [replace(f, box=(f.box[0] + x0, f.box[1] + y0, f.box[2], f.box[3])) for f in found]
 
 
 def context_boxes(fields: Sequence[PanelField], config) -> List[Box]:
@@ -419,9 +419,7 @@ def text_panel_detections(pair: PairContext, depth: np.ndarray, fields: Sequence
     grey = cv2.cvtColor(pair.left, cv2.COLOR_BGR2GRAY)
     out = []
     for f in fields:
-        cu, cv = bbox_centre(f.box)
-        if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken) or \
-                plate_of(face_box(f, pair.config), found, pair.config):
+        if any(centre_inside(f.box, box) for box in taken) or plate_of(face_box(f, pair.config), found, pair.config):
             continue
         det = judge_panel(f, pair, depth, grey)
         if det is not None:

@@ -18,6 +18,7 @@ import cv2
 import numpy as np
 
 from ..face_normal import world_face_normal
+from .boxes import centre_inside
 from .classifiers import accept_threshold
 from .classify import ClassificationResult, classify_segment
 from .colour import Segment, hsv_mask, inscribed_disc
@@ -46,38 +47,34 @@ def _same_depth(values: np.ndarray, z: float, config) -> np.ndarray:
         return valid_depth(values) & (np.abs(values - z) <= tol)
 
 
-def side_share(depth: np.ndarray, bbox, z: float, config) -> Optional[float]:
-    """Share of the pixels with depth beside the face (left and right bands at its rows, a gap left out) that
-    lie at the face's depth; None where too few have a depth to tell."""
+def _side_bands(depth: np.ndarray, bbox, config) -> Tuple[np.ndarray, np.ndarray]:
+    """The depths of the band left and of the band right of the face at its rows (a gap left out)."""
     x, y, w, h = bbox
-    height, width = depth.shape[:2]
+    width = depth.shape[1]
     gap, band = int(round(config.white.white_side_gap * w)), max(1, int(round(config.white.white_side_band * w)))
     rows = depth[y : y + h]
-    parts = [rows[:, max(0, x - gap - band) : max(0, x - gap)], rows[:, min(width, x + w + gap) :
-                                                                     min(width, x + w + gap + band)]]
-    values = np.concatenate([p.ravel() for p in parts]) if parts else np.zeros(0)
+    return (rows[:, max(0, x - gap - band) : max(0, x - gap)].ravel(),
+            rows[:, min(width, x + w + gap) : min(width, x + w + gap + band)].ravel())
+
+
+def _share_at_depth(values: np.ndarray, z: float, config) -> Optional[float]:
+    """Share of ``values`` with a depth that lie at depth ``z``; None where too few have a depth to tell."""
     valid = valid_depth(values)
     if values.size == 0 or np.count_nonzero(valid) < config.white.white_min_side_valid * values.size:
         return None
     return float(np.count_nonzero(_same_depth(values, z, config))) / np.count_nonzero(valid)
 
 
+def side_share(depth: np.ndarray, bbox, z: float, config) -> Optional[float]:
+    """Share of the pixels with depth beside the face (left and right bands at its rows, a gap left out) that
+    lie at the face's depth; None where too few have a depth to tell."""
+    return _share_at_depth(np.concatenate(_side_bands(depth, bbox, config)), z, config)
+
+
 def side_shares(depth: np.ndarray, bbox, z: float, config) -> Tuple[Optional[float], Optional[float]]:
-    """:func:`side_share` of the band left and of the band right of the face, each alone (None where too few of
-    its pixels have a depth to tell)."""
-    x, y, w, h = bbox
-    width = depth.shape[1]
-    gap, band = int(round(config.white.white_side_gap * w)), max(1, int(round(config.white.white_side_band * w)))
-    out = []
-    bands = ((max(0, x - gap - band), max(0, x - gap)), (min(width, x + w + gap), min(width, x + w + gap + band)))
-    for x0, x1 in bands:
-        values = depth[y : y + h, x0:x1].ravel()
-        valid = valid_depth(values)
-        if values.size == 0 or np.count_nonzero(valid) < config.white.white_min_side_valid * values.size:
-            out.append(None)
-        else:
-            out.append(float(np.count_nonzero(_same_depth(values, z, config))) / np.count_nonzero(valid))
-    return out[0], out[1]
+    """:func:`side_share` of the band left and of the band right of the face, each alone."""
+    left, right = _side_bands(depth, bbox, config)
+    return _share_at_depth(left, z, config), _share_at_depth(right, z, config)
 
 
 def support_share(depth: np.ndarray, bbox, z: float, config) -> float:
@@ -239,33 +236,37 @@ def _outline_candidate(shape: str, box, image_shape, touches_border: bool) -> Li
     return [WhiteCandidate(seg, shape)]
 
 
+def _network_read(pair: PairContext, bbox, ids: Sequence[str]) -> Optional[Tuple[ClassificationResult, float]]:
+    """(reading, acceptance threshold) of the pipeline's classifier among ``ids`` where it knows every one of
+    them; None where only template matching does (a network trained before entries were catalogued)."""
+    reader = pair.classifier_knowing(ids)
+    if reader is pair.template_matcher:
+        return None
+    return reader.classify(pair.left, bbox, ids), accept_threshold(reader, pair.config)
+
+
 def read_white_face(pair: PairContext, bbox, ids: Sequence[str], matched: ClassificationResult
                     ) -> Tuple[ClassificationResult, str]:
     """(classification, status) of a white face that resembles a white template (``matched``: template matching
     among ``ids``). The pipeline's classifier reads it when it knows every one of ``ids`` (a network trained on
     the white family reads pictograms, not the correlation of pale faces, and its indicator is calibrated like
     every other sign's); otherwise, or when it reads no id, the template matching stands."""
-    config = pair.config
-    matched_status = "accepted" if matched.score >= config.white.white_accept_score else "review"
-    reader = pair.classifier_knowing(ids)
-    if reader is pair.template_matcher:
-        return matched, matched_status
-    read = reader.classify(pair.left, bbox, ids)
+    known = _network_read(pair, bbox, ids)
+    if known is None:
+        return matched, "accepted" if matched.score >= pair.config.white.white_accept_score else "review"
+    read, accept = known
     if read.template_id is None:
         return matched, "review"  # resembles a white template, but the network reads none of them
-    return read, "accepted" if read.score >= accept_threshold(reader, config) else "review"
+    return read, "accepted" if read.score >= accept else "review"
 
 
 def network_reading(pair: PairContext, bbox, ids: Sequence[str]) -> Optional[ClassificationResult]:
     """The pipeline's classifier's reading of a white face among ``ids`` where it knows them all (not template
     matching) and reads one of them at or above its acceptance threshold; else None."""
-    reader = pair.classifier_knowing(ids)
-    if reader is pair.template_matcher:
+    known = _network_read(pair, bbox, ids)
+    if known is None or known[0].template_id is None or known[0].score < known[1]:
         return None
-    read = reader.classify(pair.left, bbox, ids)
-    if read.template_id is None or read.score < accept_threshold(reader, pair.config):
-        return None
-    return read
+    return known[0]
 
 
 def judge_white(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey: np.ndarray,
@@ -366,8 +367,7 @@ def white_detections(pair: PairContext, depth: np.ndarray, candidates: Sequence[
     grey = cv2.cvtColor(pair.left, cv2.COLOR_BGR2GRAY) if candidates else None
     out, panels = [], []
     for cand in candidates:
-        cu, cv = bbox_centre(cand.segment.bbox)
-        if any(x <= cu < x + w and y <= cv < y + h for x, y, w, h in taken):
+        if any(centre_inside(cand.segment.bbox, box) for box in taken):
             continue
         det = judge_white(cand, pair, depth, grey, panels=panels)
         ring = ring_candidate(cand, pair)
