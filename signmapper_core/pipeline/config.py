@@ -576,6 +576,9 @@ class PlateConfig:
     find_plates: bool = True
     plate_max_gap_m: float = 0.12  # between the sign's edge and the plate (both clamped to one pole)
     plate_min_gap_m: float = 0.03  # a white region reaching further into the sign's box is part of its panel
+    plate_box_overshoot: float = 0.1  # ...or further than this share of the sign's box height: a face box grown
+    # from its coloured part (a zone panel from its ring) may reach past the face's edge over its plate's top
+    # (tune drive 1807: a 2.59.1's box 12 px of 190 over its 5.22 plate, which was lost in 2 of 4 pairs)
     plate_max_saturation: int = 60  # white and grey: a plate in shade is grey, never coloured
     plate_min_value: int = 100  # floor of its brightness (Otsu's split of the window raises it in the sun)
     plate_value_steps: Tuple[int, ...] = (0, 25, 50)  # further floors above that: a plate before a pale wall
@@ -588,6 +591,11 @@ class PlateConfig:
     plate_frame_share: float = 0.075  # of a plate's height: its white margin and black frame line (inset)
     plate_min_fill: float = 0.85  # of its box: a rectangle
     plate_notch_m: float = 0.02  # thin dark lines across a plate (a wire, a pole's edge) do not count against it
+    plate_neck_m: float = 0.12  # a pale pole joins a plate to its sign above or runs on below it, one region
+    # with it: runs of a region narrower than this (a pole, 6-8 cm) are cut off before it is read (tune drives
+    # 1800-1809: 5 of the 12 views of a plate missed under a sign found)
+    plate_neck_end_share: float = 0.15  # a region left by the cut whose source goes on past its far edge within
+    # this share of its width at both ends is the top of a larger white frame (a zone panel under a sign), no plate
     plate_max_offset: float = 0.35  # centre off the sign's axis, share of the wider of the two
     plate_size_tolerance: float = 0.2  # relative deviation from a plate format (PLATE_FORMATS)
     plate_ink_darkness: float = 0.6  # a plate pixel darker than this x the plate's median is ink (text, pictogram,

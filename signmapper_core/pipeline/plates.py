@@ -104,6 +104,47 @@ def _filled(mask: np.ndarray, close_px: int) -> np.ndarray:
     return filled
 
 
+def without_necks(filled: np.ndarray, neck_px: int, merged: Optional[np.ndarray] = None) -> np.ndarray:
+    """``filled`` (uint8 regions) with the necks of its regions cut: a pale pole that joins a plate to the sign
+    above it or runs on below it is one region with the plate at every brightness floor that keeps the pole.
+
+    Of every region, the rows whose whole extent is narrower than ``neck_px`` go (the pole; a panel's two narrow
+    sides beside its ring, together as wide as the panel, stay). Of the regions ``merged`` (bool mask: those cut by
+    the window, a plate run together with a wall or the ground beside it), every run narrower than ``neck_px``
+    goes (the strip of wall that joins it)."""
+    if neck_px <= 1:
+        return filled
+    count, labels = cv2.connectedComponents(filled, connectivity=4)
+    ys, xs = np.nonzero(labels)
+    if xs.size == 0:
+        return filled
+    region = labels[ys, xs]
+    first = np.full((count, filled.shape[0]), filled.shape[1], np.int32)
+    last = np.full((count, filled.shape[0]), -1, np.int32)
+    np.minimum.at(first, (region, ys), xs)
+    np.maximum.at(last, (region, ys), xs)
+    narrow = (last - first + 1 < neck_px)[region, ys]
+    out = filled.copy()
+    out[ys[narrow], xs[narrow]] = 0
+    if merged is not None and merged.any():
+        runs = cv2.morphologyEx(filled, cv2.MORPH_OPEN, np.ones((1, neck_px), np.uint8))
+        out[merged] = runs[merged]
+    return out
+
+
+def goes_on_at_both_ends(filled: np.ndarray, row, side: int, end_share: float) -> bool:
+    """Whether the regions of ``filled`` go on past the far edge (away from the sign) of the box ``row`` (x, y, w,
+    h, window pixels) at both of its ends (its first and last ``end_share`` of columns): the sides of a larger
+    white frame, a panel's, whose top a cut neck left as a plate-like band; a plate's pole goes on in its middle."""
+    bx, by, bw, bh = (int(v) for v in row[:4])
+    beyond = by + bh if side == BELOW else by - 1
+    if not 0 <= beyond < filled.shape[0]:
+        return False
+    end = max(1, int(round(end_share * bw)))
+    line = filled[beyond, bx:bx + bw]
+    return bool(line[:end].any() and line[-end:].any())
+
+
 def _clipped(box, shape):
     x, y, w, h = box
     x0, y0 = max(0, x), max(0, y)
@@ -184,31 +225,51 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
     count, labels, stats, _ = cv2.connectedComponentsWithStats(filled, connectivity=4)
     # a region's fill is measured with notches as thin as a wire or a pole's edge across the plate closed (they
     # are not its outline); the regions themselves stay as found, so a closed gap never joins plate and wall
-    solid = None
+    solid = []
     # the region is the whole plate, or the inside of its black frame (its white margin lost in a white
     # wall behind it, or in the sky): then the plate is that much larger
     grow = config.plates.plate_frame_share / (1.0 - 2.0 * config.plates.plate_frame_share)
-    pieces = []
-    sign_edge = sign.bbox[1] + sign.bbox[3] - y0 if side == BELOW else sign.bbox[1] - y0
-    for k in range(1, count):
-        bx, by, bw, bh, area = (int(v) for v in stats[k])
-        far_edge_cut = by + bh >= y1 - y0 if side == BELOW else by == 0
-        if bw < 3 or bh < 3 or bx == 0 or bx + bw >= x1 - x0 or far_edge_cut:
-            continue  # cut by the window: part of something larger (a wall, the sky)
-        if (by >= sign_edge - touch_px) if side == BELOW else (by + bh <= sign_edge + touch_px):
-            pieces.append(k)  # off the sign's side: may be a piece of a plate
+
+    def read_whole(row, best):
+        bx, by, bw, bh, area = (int(v) for v in row)
         fill = area / float(bw * bh)
         if plates.plate_notched_min_fill <= fill < plates.plate_min_fill and bw >= min_w and bh >= min_h:
-            if solid is None:
-                solid = _filled(mask, int(round(config.plates.plate_notch_m * pair.camera.fy / z)) | 1)
-            fill = max(fill, float(solid[by:by + bh, bx:bx + bw].mean()))
+            if not solid:
+                solid.append(_filled(mask, int(round(config.plates.plate_notch_m * pair.camera.fy / z)) | 1))
+            fill = max(fill, float(solid[0][by:by + bh, bx:bx + bw].mean()))
         if bw < min_w or bh < min_h or fill < plates.plate_min_fill:
-            continue
+            return best
         for margin in (0.0, grow * bh):
-            box = _box_of(stats[k], x0, y0, margin)
+            box = _box_of(row, x0, y0, margin)
             reading = _plate_reading(pair, sign, box, z, side, touch_px)
             if reading is not None and (best is None or fill * reading[0] > best[0]):
                 best = (fill * reading[0], box, reading[1], fill)
+        return best
+
+    def cut_by_window(row) -> bool:  # part of something larger (a wall, the sky)
+        bx, by, bw, bh = (int(v) for v in row[:4])
+        far_edge_cut = by + bh >= y1 - y0 if side == BELOW else by == 0
+        return bw < 3 or bh < 3 or bx == 0 or bx + bw >= x1 - x0 or far_edge_cut
+
+    pieces = []
+    sign_edge = sign.bbox[1] + sign.bbox[3] - y0 if side == BELOW else sign.bbox[1] - y0
+    for k in range(1, count):
+        if cut_by_window(stats[k]):
+            continue
+        by, bh = int(stats[k, cv2.CC_STAT_TOP]), int(stats[k, cv2.CC_STAT_HEIGHT])
+        if (by >= sign_edge - touch_px) if side == BELOW else (by + bh <= sign_edge + touch_px):
+            pieces.append(k)  # off the sign's side: may be a piece of a plate
+        best = read_whole(stats[k], best)
+    # a plate joined to its sign, or running on down the pole, by a pale pole is read again with the pole cut off
+    merged = np.zeros(count, bool)
+    merged[1:] = [cut_by_window(row) for row in stats[1:]]
+    necked = without_necks(filled, int(round(plates.plate_neck_m * pair.camera.fx / z)), merged[labels])
+    if not np.array_equal(necked, filled):
+        found = {tuple(row) for row in stats[1:]}
+        ends = plates.plate_neck_end_share
+        for row in cv2.connectedComponentsWithStats(necked, connectivity=4)[2][1:]:
+            if tuple(row) not in found and not cut_by_window(row) and not goes_on_at_both_ends(filled, row, side, ends):
+                best = read_whole(row, best)
     if not pieces or not hidden[y0:y1, x0:x1].any():
         return best
     # a plate partly hidden by something in front: its pieces together (a branch across it), and a piece or
@@ -344,7 +405,7 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     # the window holds the sign too: a white region that goes on into the sign's box is part of its panel
     y0, y1 = (y, y + h + reach) if side == BELOW else (y - reach, y + h)
     y0, y1 = max(0, y0), min(height, y1)
-    touch_px = max(2.0, config.plates.plate_min_gap_m * px_per_m)
+    touch_px = max(2.0, config.plates.plate_min_gap_m * px_per_m, config.plates.plate_box_overshoot * h)
     if x1 - x0 < 8 or y1 - y0 < 8:
         return None
     window = pair.left[y0:y1, x0:x1]

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import cv2
 import numpy as np
 import pytest
@@ -18,12 +20,15 @@ from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.boxes import box_iou
 from signmapper_core.pipeline.config import PlateConfig
+from signmapper_core.pipeline.depth_sources import depth_source_for
+from signmapper_core.pipeline.pair_context import PairContext
 from signmapper_core.pipeline.plate_classify import classify_plate, pictogram_scores
+from signmapper_core.pipeline.plates import BELOW
 from signmapper_core.plate_catalogue import load_plate_templates
 from signmapper_core.plate_evaluation import evaluate_plates
 from signmapper_core.plate_formats import PLATE_ID
 from signmapper_core.plate_fusion import read_plate_texts
-from signmapper_core.simulate.plate_faces import draw_plate
+from signmapper_core.simulate.plate_faces import PAPER, draw_plate
 from signmapper_core.simulate.plate_layout import pictogram_face
 from signmapper_core.visibility import mappable_signs
 
@@ -289,6 +294,71 @@ def test_a_plate_before_a_facade_nearly_as_bright_as_its_paper_is_parted_from_it
     assert box_iou(found.bbox, box) > 0.8 and found.format == "normal-1"
     floors_only = PipelineConfig(plates=PlateConfig(plate_edge_cut=False))
     assert [d for d in detect_pair(left, depth, None, CAMERA, pose, catalogue, floors_only) if d.is_plate] == []
+
+
+def test_a_plate_joined_to_a_pale_pole_running_on_below_it_is_read_with_the_pole_cut_off(catalogue):
+    """A plate whose frame is lost (far away, blurred) on a pole as pale as its paper, the pole's depth unknown:
+    at every brightness floor plate and pole are one region that runs on out of the window below; cut at the
+    pole's narrow rows, the plate stands alone."""
+    pose = pose_at(0.0)
+    x, y, w, h, _ = _quad(sign_world(7.0, 1.3, 0.5 - 0.30 - 0.04 - 0.10), 0.60, 0.20, pose)
+    face = draw_plate(["200 m"], w * 4, h * 4, border=False)
+    left, depth, box = scene(catalogue, pose, plate_face=face)
+    pole_width = int(round(0.07 * CAMERA.fx / 7.0))
+    pole = (slice(y + h, CAMERA.height), slice(x + w // 2 - pole_width // 2, x + w // 2 + pole_width // 2))
+    left[pole] = 236
+    depth[pole] = np.nan
+    (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
+    assert plate.format == "normal-1" and box_iou(plate.bbox, box) > 0.8
+    uncut = PipelineConfig(plates=PlateConfig(plate_neck_m=0.0))
+    assert [d for d in detect_pair(left, depth, None, CAMERA, pose, catalogue, uncut) if d.is_plate] == []
+
+
+def test_the_top_of_a_white_panel_under_the_sign_is_no_plate_when_its_sides_are_cut_as_necks(catalogue):
+    """A tall white panel under the sign (a zone panel on the same pole), running on out of the window below,
+    its field dark but for a lettered band at the top and narrow white sides: cut at its sides' narrow rows, the
+    band alone would read as a plate; the panel's sides going on below it at both ends say it is a panel's top."""
+    from signmapper_core.pipeline.plates import goes_on_at_both_ends
+
+    pose = pose_at(0.0)
+    left, depth, _ = scene(catalogue, pose, plate_lines=None)
+    x, y, w, h, _ = _quad(sign_world(7.0, 1.3, 0.5 - 0.30 - 0.04 - 0.60), 0.50, 1.20, pose)
+    left[y:y + h, x:x + w] = PAPER[0]
+    side = int(round(0.04 * CAMERA.fx / 7.0))
+    band = int(round(0.2 * CAMERA.fy / 7.0))
+    left[y + band:y + h, x + side:x + w - side] = 90  # the panel's dark field
+    lettering = cv2.resize(draw_plate(["ZONE"], (w - 2 * side) * 4, band * 4, border=False), (w - 2 * side, band),
+                           interpolation=cv2.INTER_AREA)
+    left[y:y + band, x + side:x + w - side] = lettering
+    depth[y:y + h, x:x + w] = np.nan
+    assert [d for d in _detect(catalogue, left, depth, pose) if d.is_plate] == []
+
+    mask = np.zeros((40, 60), np.uint8)
+    mask[5:15, 10:50] = 1  # a band ...
+    mask[15:, 10:14] = mask[15:, 46:50] = 1  # ... going on at both ends: a panel's sides
+    assert goes_on_at_both_ends(mask, (10, 5, 40, 10), BELOW, 0.15)
+    mask[15:, 46:50] = 0
+    mask[15:, 28:32] = 1  # ... or on a pole in its middle
+    mask[15:, 10:14] = 0
+    assert not goes_on_at_both_ends(mask, (10, 5, 40, 10), BELOW, 0.15)
+
+
+def test_a_plate_under_a_sign_box_that_overshoots_the_face_is_still_its_plate(catalogue):
+    """A face box grown from its coloured part (a zone panel from its ring) may reach a little past the face,
+    over the plate's top: the plate is still found below it, unless the box may not overshoot at all."""
+    from signmapper_core.pipeline.plates import plates_of_sign
+
+    pose = pose_at(0.0)
+    left, depth, box = scene(catalogue, pose, gap_m=0.01)
+    (sign,) = [d for d in _detect(catalogue, left, depth, pose) if not d.is_plate]
+    x, y, w, h = sign.bbox
+    overshooting = replace(sign, bbox=(x, y, w, box[1] + int(0.09 * h) - y))  # 9 % of its height over the plate
+    pair = PairContext.whole(left, CAMERA, pose, catalogue, PipelineConfig(), depth_source_for(depth, None))
+    plate = plates_of_sign(pair, depth, overshooting, BELOW)
+    assert plate is not None and plate.format == "normal-1" and box_iou(plate.bbox, box) > 0.8
+    exact_boxes = PipelineConfig(plates=PlateConfig(plate_box_overshoot=0.0))
+    exact = PairContext.whole(left, CAMERA, pose, catalogue, exact_boxes, depth_source_for(depth, None))
+    assert plates_of_sign(exact, depth, overshooting, BELOW) is None
 
 
 def test_a_pictogram_plate_taller_than_any_text_plate_is_within_reach(catalogue):
