@@ -104,31 +104,27 @@ def _filled(mask: np.ndarray, close_px: int) -> np.ndarray:
     return filled
 
 
-def without_necks(filled: np.ndarray, neck_px: int, merged: Optional[np.ndarray] = None) -> np.ndarray:
-    """``filled`` (uint8 regions) with the necks of its regions cut: a pale pole that joins a plate to the sign
-    above it or runs on below it is one region with the plate at every brightness floor that keeps the pole.
+def without_necks(labels: np.ndarray, stats: np.ndarray, regions: Sequence[int], neck_px: int,
+                  merged: np.ndarray) -> np.ndarray:
+    """uint8 mask of the ``regions`` (labels in ``labels``, their ``stats``) with their necks cut: a pale pole that
+    joins a plate to the sign above it or runs on below it is one region with the plate at every brightness floor
+    that keeps the pole.
 
     Of every region, the rows whose whole extent is narrower than ``neck_px`` go (the pole; a panel's two narrow
-    sides beside its ring, together as wide as the panel, stay). Of the regions ``merged`` (bool mask: those cut by
-    the window, a plate run together with a wall or the ground beside it), every run narrower than ``neck_px``
-    goes (the strip of wall that joins it)."""
-    if neck_px <= 1:
-        return filled
-    count, labels = cv2.connectedComponents(filled, connectivity=4)
-    ys, xs = np.nonzero(labels)
-    if xs.size == 0:
-        return filled
-    region = labels[ys, xs]
-    first = np.full((count, filled.shape[0]), filled.shape[1], np.int32)
-    last = np.full((count, filled.shape[0]), -1, np.int32)
-    np.minimum.at(first, (region, ys), xs)
-    np.maximum.at(last, (region, ys), xs)
-    narrow = (last - first + 1 < neck_px)[region, ys]
-    out = filled.copy()
-    out[ys[narrow], xs[narrow]] = 0
-    if merged is not None and merged.any():
-        runs = cv2.morphologyEx(filled, cv2.MORPH_OPEN, np.ones((1, neck_px), np.uint8))
-        out[merged] = runs[merged]
+    sides beside its ring, together as wide as the panel, stay). Of the regions ``merged`` (bool per label: those
+    cut by the window, a plate run together with a wall or the ground beside it), every run narrower than
+    ``neck_px`` goes (the strip of wall that joins it)."""
+    out = np.zeros(labels.shape, np.uint8)
+    for k in regions:
+        bx, by, bw, bh = (int(v) for v in stats[k, :4])
+        region = (labels[by:by + bh, bx:bx + bw] == k).astype(np.uint8)
+        if merged[k]:
+            region = cv2.morphologyEx(region, cv2.MORPH_OPEN, np.ones((1, neck_px), np.uint8))
+        else:
+            first = region.argmax(axis=1)
+            last = bw - 1 - region[:, ::-1].argmax(axis=1)
+            region[last - first + 1 < neck_px] = 0
+        out[by:by + bh, bx:bx + bw] |= region
     return out
 
 
@@ -261,12 +257,16 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
             pieces.append(k)  # off the sign's side: may be a piece of a plate
         best = read_whole(stats[k], best)
     # a plate joined to its sign, or running on down the pole, by a pale pole is read again with the pole cut off
-    merged = np.zeros(count, bool)
-    merged[1:] = [cut_by_window(row) for row in stats[1:]]
-    necked = without_necks(filled, int(round(plates.plate_neck_m * pair.camera.fx / z)), merged[labels])
-    if not np.array_equal(necked, filled):
+    # (of the regions wide enough to hold the narrowest plate)
+    neck_px = int(round(plates.plate_neck_m * pair.camera.fx / z))
+    narrowest = min(w for w, _ in PLATE_FORMATS.values()) * pair.camera.fx / z * (1.0 - plates.plate_size_tolerance)
+    wide = [k for k in range(1, count) if stats[k, cv2.CC_STAT_WIDTH] >= narrowest]
+    if neck_px > 1 and wide:
+        merged = np.zeros(count, bool)
+        merged[wide] = [cut_by_window(stats[k]) for k in wide]
         found = {tuple(row) for row in stats[1:]}
         ends = plates.plate_neck_end_share
+        necked = without_necks(labels, stats, wide, neck_px, merged)
         for row in cv2.connectedComponentsWithStats(necked, connectivity=4)[2][1:]:
             if tuple(row) not in found and not cut_by_window(row) and not goes_on_at_both_ends(filled, row, side, ends):
                 best = read_whole(row, best)
