@@ -221,18 +221,19 @@ def _best_region(pair: PairContext, sign: Detection, mask: np.ndarray, window, z
     count, labels, stats, _ = cv2.connectedComponentsWithStats(filled, connectivity=4)
     # a region's fill is measured with notches as thin as a wire or a pole's edge across the plate closed (they
     # are not its outline); the regions themselves stay as found, so a closed gap never joins plate and wall
-    solid = []
+    solid = None
     # the region is the whole plate, or the inside of its black frame (its white margin lost in a white
     # wall behind it, or in the sky): then the plate is that much larger
     grow = config.plates.plate_frame_share / (1.0 - 2.0 * config.plates.plate_frame_share)
 
     def read_whole(row, best):
+        nonlocal solid
         bx, by, bw, bh, area = (int(v) for v in row)
         fill = area / float(bw * bh)
         if plates.plate_notched_min_fill <= fill < plates.plate_min_fill and bw >= min_w and bh >= min_h:
-            if not solid:
-                solid.append(_filled(mask, int(round(config.plates.plate_notch_m * pair.camera.fy / z)) | 1))
-            fill = max(fill, float(solid[0][by:by + bh, bx:bx + bw].mean()))
+            if solid is None:
+                solid = _filled(mask, int(round(config.plates.plate_notch_m * pair.camera.fy / z)) | 1)
+            fill = max(fill, float(solid[by:by + bh, bx:bx + bw].mean()))
         if bw < min_w or bh < min_h or fill < plates.plate_min_fill:
             return best
         for margin in (0.0, grow * bh):
