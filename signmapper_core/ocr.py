@@ -3,8 +3,11 @@
 Optional: without the ``tesseract`` command (or without its German, French and
 Italian data) plates are still mapped, only their text stays empty, and
 :class:`OcrUnavailable` says how to install it. All crops of a run are read in
-one call (Tesseract takes a list of images; its TSV output numbers them by
-``page_num``), so the language models are loaded once per run, not per plate.
+a few calls (Tesseract takes a list of images; its TSV output numbers them by
+``page_num``), so the language models are loaded once per call, not per plate: one call
+per core when there are enough crops to share, since reading them is the single-threaded
+end of a mapping run. Tesseract reads each image of a list on its own, so the text is the
+same however the crops are shared out.
 Normalising what was read is :mod:`signmapper_core.plate_text`'s job.
 """
 
@@ -12,8 +15,10 @@ from __future__ import annotations
 
 import os
 import shutil
+import signal
 import subprocess
 import tempfile
+import time
 from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
@@ -26,6 +31,7 @@ DEBIAN_PACKAGES = ("tesseract-ocr", "tesseract-ocr-deu", "tesseract-ocr-fra", "t
 INSTALL_HINT = "sudo apt-get install " + " ".join(DEBIAN_PACKAGES)
 BASE_TIMEOUT_S = 60.0  # loading three language models on a busy machine takes several seconds
 TIMEOUT_PER_IMAGE_S = 2.0
+MIN_CROPS_PER_CALL = 8  # fewer crops than this are read in one call: loading the models costs ~30 crops
 
 
 class OcrUnavailable(RuntimeError):
@@ -206,10 +212,23 @@ def parse_tsv(tsv: str, pages: int, config=None) -> List[TextReading]:
     return [TextReading(tuple(w), config) for w in words]
 
 
+def call_count(crops: int, cores: int) -> int:
+    """Tesseract calls to share ``crops`` crops between: one per core, each with at least ``MIN_CROPS_PER_CALL``."""
+    return max(1, min(cores, crops // MIN_CROPS_PER_CALL))
+
+
+def _cores() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not on Linux
+        return os.cpu_count() or 1
+
+
 def read_texts(crops: Sequence[np.ndarray], config=None, executable: Optional[str] = None,
-               timeout_s: Optional[float] = None) -> List[TextReading]:
-    """The text of each plate crop (BGR or grey uint8, the plate's box), read in one Tesseract run with the
-    ``ocr_*`` settings of ``config`` (the run's ``fusion.FusionConfig``; None: the defaults).
+               timeout_s: Optional[float] = None, cores: Optional[int] = None) -> List[TextReading]:
+    """The text of each plate crop (BGR or grey uint8, the plate's box), read with the ``ocr_*`` settings of
+    ``config`` (the run's ``fusion.FusionConfig``; None: the defaults), in :func:`call_count` Tesseract calls side
+    by side (``cores``: None = the cores this process may use).
 
     :class:`OcrUnavailable`
     when Tesseract or its language data are missing, :class:`OcrError` when it fails.
@@ -220,6 +239,7 @@ def read_texts(crops: Sequence[np.ndarray], config=None, executable: Optional[st
 
     path, languages = find_tesseract(executable)
     timeout = timeout_s if timeout_s is not None else BASE_TIMEOUT_S + TIMEOUT_PER_IMAGE_S * len(crops)
+    calls = call_count(len(crops), cores or _cores())
     with tempfile.TemporaryDirectory(prefix="signmapper-ocr-") as folder:
         names = []
         for i, crop in enumerate(crops):
@@ -227,15 +247,51 @@ def read_texts(crops: Sequence[np.ndarray], config=None, executable: Optional[st
             if not cv2.imwrite(str(name), prepare_crop(crop, config)):
                 raise OcrError(f"could not write the crop {name} for Tesseract")
             names.append(str(name))
-        listing = Path(folder) / "crops.txt"
-        listing.write_text("\n".join(names) + "\n", encoding="utf-8")
-        command = [path, str(listing), "-", "-l", "+".join(languages), "--psm", "6", "tsv"]
-        env = dict(os.environ, OMP_THREAD_LIMIT="1")  # one core: mapping shares the machine
-        try:
-            out = subprocess.run(command, capture_output=True, text=True, timeout=timeout, env=env)
-        except subprocess.TimeoutExpired as exc:
-            raise OcrError(f"Tesseract did not finish reading {len(crops)} plate crops within {timeout:.0f} s") \
-                from exc
-        if out.returncode != 0:
-            raise OcrError(f"Tesseract failed (exit {out.returncode}): {out.stderr.strip()[:300]}")
-    return parse_tsv(out.stdout, len(crops), config)
+        shares = [names[len(names) * k // calls : len(names) * (k + 1) // calls] for k in range(calls)]
+        outputs = _run_side_by_side(path, languages, shares, Path(folder), timeout)
+    readings: List[TextReading] = []
+    for share, output in zip(shares, outputs):
+        readings += parse_tsv(output, len(share), config)
+    return readings
+
+
+def _run_side_by_side(path: str, languages: tuple, shares: List[List[str]], folder: Path,
+                      timeout: float) -> List[str]:
+    """Tesseract's TSV output for each list of image files, its calls running at the same time."""
+    env = dict(os.environ, OMP_THREAD_LIMIT="1")  # one core per call: mapping shares the machine
+    processes = []
+    try:
+        for k, share in enumerate(shares):
+            listing = folder / f"crops{k}.txt"
+            listing.write_text("\n".join(share) + "\n", encoding="utf-8")
+            command = [path, str(listing), "-", "-l", "+".join(languages), "--psm", "6", "tsv"]
+            processes.append(subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                                              env=env, start_new_session=True))  # a group of its own to stop
+        deadline = time.monotonic() + timeout
+        outputs = []
+        for process in processes:
+            try:
+                out, err = process.communicate(timeout=max(0.0, deadline - time.monotonic()))
+            except subprocess.TimeoutExpired as exc:
+                raise OcrError(f"Tesseract did not finish reading {sum(map(len, shares))} plate crops within "
+                               f"{timeout:.0f} s") from exc
+            if process.returncode != 0:
+                raise OcrError(f"Tesseract failed (exit {process.returncode}): {err.strip()[:300]}")
+            outputs.append(out)
+        return outputs
+    finally:
+        for process in processes:  # a failed or timed-out call ends the others (and whatever they started)
+            if process.poll() is None:
+                _stop(process)
+                process.communicate()
+
+
+def _stop(process: subprocess.Popen) -> None:
+    """Kill a Tesseract call with its process group (a wrapper script's children keep its output open)."""
+    if not hasattr(os, "killpg"):  # Windows: no process groups to kill
+        process.kill()
+        return
+    try:
+        os.killpg(process.pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass

@@ -110,7 +110,8 @@ def read_plate_texts(plates: Sequence[FusedSign], warn: Optional[WarnCallback] =
                      read: Callable = read_texts, config: Optional[FusionConfig] = None) -> int:
     """Set each plate's (and text panel's) ``text`` and ``text_confidence``; returns the number with a text.
 
-    One OCR run for all of them (``config``: the run's fusion settings; default ``FusionConfig()``). Without
+    One OCR run for all of them, shared over the cores (``config``: the run's fusion settings; default
+    ``FusionConfig()``). Without
     Tesseract (or when it fails) they keep no text and ``warn`` hears once why and how to install it.
     """
     config = config or FusionConfig()

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import stat
+import time
 
 import cv2
 import numpy as np
@@ -81,6 +82,17 @@ def test_tesseract_reads_plates_of_40_px_in_one_run():
     texts = [normalise_text(r.lines) for r in readings]
     assert texts == [" / ".join(lines) for lines in PLATES]
     assert all(0.6 <= r.confidence <= 1.0 for r in readings)
+
+
+def test_crops_shared_over_several_tesseract_calls_read_as_in_one():
+    from signmapper_core.ocr import MIN_CROPS_PER_CALL, call_count
+
+    crops = [plate_crop(lines, 40 if len(lines) == 1 else 48) for lines in PLATES] * 3  # 18 crops
+    assert call_count(len(crops), 1) == 1 and call_count(len(crops), 2) == 2 and call_count(len(crops), 8) == 2
+    assert call_count(MIN_CROPS_PER_CALL - 1, 8) == 1 and call_count(0, 2) == 1
+    alone, shared = read_texts(crops, cores=1), read_texts(crops, cores=2)
+    assert [(r.lines, r.confidence) for r in shared] == [(r.lines, r.confidence) for r in alone]
+    assert [normalise_text(r.lines) for r in shared] == [" / ".join(lines) for lines in PLATES] * 3
 
 
 def crossed(crop, column):
@@ -175,3 +187,7 @@ def test_a_hanging_tesseract_is_stopped_by_the_timeout(tmp_path):
     fake.chmod(fake.stat().st_mode | stat.S_IXUSR)
     with pytest.raises(OcrError, match="did not finish"):
         read_texts([plate_crop(["200 m"], 40)], executable=str(fake), timeout_s=0.5)
+    started = time.monotonic()
+    with pytest.raises(OcrError, match="did not finish reading 16 plate crops"):  # two calls side by side
+        read_texts([plate_crop(["200 m"], 40)] * 16, executable=str(fake), timeout_s=0.5, cores=2)
+    assert time.monotonic() - started < 10  # the second call was stopped too, not waited for
