@@ -345,7 +345,8 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
             # the same field from the colour passes' holes, or the field of a ring they outlined whole (a part of
             # a ring overlapping the field is no outline of it)
             if not any(o.colour == "red" and (o.source == "hole" and box_iou(o.bbox, seg.bbox)
-                                              >= config.scene.pass_duplicate_iou or _field_of(seg.bbox, o.bbox, config))
+                                              >= config.scene.pass_duplicate_iou
+                                              or _field_of(seg.bbox, o.bbox, config) and _outlined_whole(seg, o, config))
                        for o in out):
                 out.append(seg)
     if config.bright_fields.diamond_pass and "yellow" in config.colour.colours:
@@ -364,6 +365,17 @@ def _field_of(field, outline, config: PipelineConfig) -> bool:
     slack = config.bright_fields.field_in_outline_slack_px
     inside = fx >= x - slack and fy >= y - slack and fx + fw <= x + w + slack and fy + fh <= y + h + slack
     return inside and fw * fh >= config.bright_fields.field_in_outline_min_share * w * h
+
+
+def _outlined_whole(field: Segment, outline: Segment, config: PipelineConfig) -> bool:
+    """Whether a colour outline around a field may be its ring outlined whole: it may have a shape the field may
+    have. A ring half lost in dim light reads as another shape (a triangle's two sides as a diamond), and then
+    its field stands for the face."""
+    _, field_shapes = plausible_outlines(field.mask, config)
+    if not field_shapes:
+        return True
+    _, outline_shapes = plausible_outlines(outline.mask, config)
+    return bool(set(field_shapes) & set(outline_shapes))
 
 
 def inside_share(seg: Segment, search: np.ndarray) -> float:

@@ -278,3 +278,26 @@ def test_a_triangle_field_bitten_by_its_pictogram_is_read_by_its_hull():
     # a hull stands for a field only in the shapes listed: a disc's hull is all too common around bright blots
     no_hull_shapes = PipelineConfig(bright_fields=BrightFieldConfig(field_hull_shapes=("circle",)))
     assert red_ring_fields(_bitten_triangle(), None, no_hull_shapes) == []
+
+
+def test_a_field_inside_a_colour_outline_of_another_shape_stands_for_the_face():
+    # dim light: the ring's lower right corner lost, red stuff (a roof, leaves) touching its left side; the colour
+    # outline encloses the field's box but reads as a disc, so it is no outline of this triangle: the field found by
+    # brightness is (GTSDB tune split: a 1.01 and a 1.06 in dark scenes)
+    from signmapper_core.pipeline.colour import _field_of
+    from signmapper_core.pipeline.shape import plausible_outlines
+
+    config = PipelineConfig()
+    image = np.clip(np.random.default_rng(0).normal(40, 4, (200, 300, 3)), 0, 255).astype(np.uint8)
+    cv2.fillPoly(image, [np.array([[150, 50], [185, 112], [115, 112]], np.int32)], (40, 40, 200), cv2.LINE_AA)
+    cv2.fillPoly(image, [np.array([[150, 64], [173, 105], [127, 105]], np.int32)], (210, 210, 210), cv2.LINE_AA)
+    cv2.rectangle(image, (92, 60), (128, 112), (40, 40, 200), -1)
+    cv2.circle(image, (178, 104), 6, (42, 40, 44), -1)
+    image = cv2.GaussianBlur(image, (3, 3), 0)
+    segments = find_colour_segments(image, None, config, None)
+    (outline,) = [s for s in segments if s.source == "colour"]
+    (field,) = [s for s in segments if s.source == "hole"]
+    assert _field_of(field.bbox, outline.bbox, config)  # what alone once made the field a duplicate
+    assert "triangle" not in plausible_outlines(outline.mask, config)[1]
+    assert plausible_outlines(field.mask, config)[1] == ("triangle",)
+    assert box_iou(field.bbox, (128, 64, 45, 42)) > 0.8
