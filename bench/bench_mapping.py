@@ -1,6 +1,6 @@
 """Pairs per second and memory of mapping a drive end to end, from the JPEG files, against the naive baseline.
 
-    python bench/bench_mapping.py [--pairs 20] [--seed 2001] [--long 1000] [--dask] [--scheduler tcp://HOST:PORT]
+    python bench/bench_mapping.py [--pairs 20] [--seed 2001] [--rounds 3] [--long 1000] [--dask] [--scheduler tcp://HOST:PORT]
 
 A synthetic Full-HD drive of JPEG stereo pairs without depth maps (generated once,
 cached under build/drives/) is mapped three ways, each in its own process so its
@@ -14,8 +14,10 @@ fused signs (worker start-up, decoding, SGBM, detection and fusion included):
 2 worker processes of one thread each (``dask-1``, ``dask-2``: cluster start-up not
 timed, the connection, the workers' first pair with its classifier load and fusion
 in the client are), ``--scheduler ADDRESS`` on a running cluster (``dask-scheduler``).
-``--long N`` then maps a drive of N pairs (the drive's pairs repeated under new ids)
-with all workers and prints the resident memory of the main process plus its
+``--rounds K`` then maps with all workers and the baseline K - 1 more times, one after the
+other, and prints each round's ratio: on a shared host the speed drifts over minutes, so a
+ratio is fair only between runs close in time. ``--long N`` then maps a drive of N pairs
+(the drive's pairs repeated under new ids) with all workers and prints the resident memory of the main process plus its
 workers as it goes: memory must stay flat with drive length.
 Each row also gives the CPU time per pair (user + system of the mode's process and its
 worker processes, start-up included) and the load average at its start and end: on a
@@ -30,6 +32,7 @@ import json
 import multiprocessing
 import os
 import resource
+import statistics
 import subprocess
 import sys
 import time
@@ -181,6 +184,10 @@ def main() -> int:
     parser.add_argument("--seed", type=int, default=2001)
     parser.add_argument("--long", type=int, default=0, metavar="N",
                         help="then map N pairs (the drive repeated) with all workers and print memory as it goes")
+    parser.add_argument("--rounds", type=int, default=1, metavar="K",
+                        help="then map with all workers and the baseline again, one after the other, K - 1 more "
+                             "times: the host's speed drifts over minutes, and each round's ratio compares runs "
+                             "minutes apart only")
     parser.add_argument("--dask", action="store_true",
                         help="also map on a Dask LocalCluster (127.0.0.1) of 1 and of 2 worker processes")
     parser.add_argument("--scheduler", default="", metavar="tcp://HOST:PORT",
@@ -212,6 +219,21 @@ def main() -> int:
         load = "{:.1f}-{:.1f}".format(*r["load"]) if "load" in r else "-"
         print(f"{mode:<13} {r['workers']:7d} {rate:8.2f} {rate / base:10.2f} {cpu:>11} {r['detections']:10d} "
               f"{r['signs']:6d} {peak:>36} {load:>11}", flush=True)
+    ratios = [(results["pipeline-all"]["pairs"] / results["pipeline-all"]["seconds"], base)]
+    for k in range(2, args.rounds + 1):
+        pool, baseline = (child(mode, folder) for mode in ("pipeline-all", "baseline"))
+        ratios.append((pool["pairs"] / pool["seconds"], baseline["pairs"] / baseline["seconds"]))
+        rate, base_rate = ratios[-1]
+        pool_cpu, base_cpu = (1000 * r["cpu_seconds"] / r["pairs"] for r in (pool, baseline))
+        print(f"round {k}: pipeline-all {rate:.2f} pairs/s ({pool_cpu:.0f} ms CPU/pair), baseline {base_rate:.2f} "
+              f"pairs/s ({base_cpu:.0f} ms CPU/pair), x {rate / base_rate:.2f}", flush=True)
+    if args.rounds > 1:
+        rates = sorted(p for p, _ in ratios)
+        factors = sorted(p / b for p, b in ratios)
+        print(f"{args.rounds} rounds: pipeline-all {rates[0]:.2f}-{rates[-1]:.2f} pairs/s (median "
+              f"{statistics.median(rates):.2f}), x baseline {factors[0]:.2f}-{factors[-1]:.2f} (median "
+              f"{statistics.median(factors):.2f}); both targets (>= 10 pairs/s, >= 4x) in the same round: "
+              f"{sum(p >= 10 and p / b >= 4 for p, b in ratios)} of {args.rounds}")
     if args.long:
         r = child("pipeline-all", folder, args.long)
         memory = ", ".join(f"{k} pairs {v:.0f} MB" for k, v in r["rss_mb"].items())
