@@ -31,7 +31,7 @@ DEBIAN_PACKAGES = ("tesseract-ocr", "tesseract-ocr-deu", "tesseract-ocr-fra", "t
 INSTALL_HINT = "sudo apt-get install " + " ".join(DEBIAN_PACKAGES)
 BASE_TIMEOUT_S = 60.0  # loading three language models on a busy machine takes several seconds
 TIMEOUT_PER_IMAGE_S = 2.0
-MIN_CROPS_PER_CALL = 8  # fewer crops than this are read in one call: loading the models costs ~30 crops
+MIN_CROPS_PER_CALL = 8  # a call per this many crops at most: loading the languages costs about as much as ~10 crops
 
 
 class OcrUnavailable(RuntimeError):
