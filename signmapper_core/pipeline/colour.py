@@ -346,7 +346,8 @@ def find_colour_segments(image: np.ndarray, search: Optional[np.ndarray], config
             # a ring overlapping the field is no outline of it)
             if not any(o.colour == "red" and (o.source == "hole" and box_iou(o.bbox, seg.bbox)
                                               >= config.scene.pass_duplicate_iou
-                                              or _field_of(seg.bbox, o.bbox, config) and _outlined_whole(seg, o, config))
+                                              or _field_of(seg.bbox, o.bbox, config)
+                                              and _outlined_whole(seg, o, config))
                        for o in out):
                 out.append(seg)
     if config.bright_fields.diamond_pass and "yellow" in config.colour.colours:
