@@ -217,13 +217,6 @@ def call_count(crops: int, cores: int) -> int:
     return max(1, min(cores, crops // MIN_CROPS_PER_CALL))
 
 
-def _cores() -> int:
-    try:
-        return len(os.sched_getaffinity(0))
-    except AttributeError:  # not on Linux
-        return os.cpu_count() or 1
-
-
 def read_texts(crops: Sequence[np.ndarray], config=None, executable: Optional[str] = None,
                timeout_s: Optional[float] = None, cores: Optional[int] = None) -> List[TextReading]:
     """The text of each plate crop (BGR or grey uint8, the plate's box), read with the ``ocr_*`` settings of
@@ -239,7 +232,11 @@ def read_texts(crops: Sequence[np.ndarray], config=None, executable: Optional[st
 
     path, languages = find_tesseract(executable)
     timeout = timeout_s if timeout_s is not None else BASE_TIMEOUT_S + TIMEOUT_PER_IMAGE_S * len(crops)
-    calls = call_count(len(crops), cores or _cores())
+    if cores is None:
+        from .pair_pool import available_cores
+
+        cores = available_cores()
+    calls = call_count(len(crops), cores)
     with tempfile.TemporaryDirectory(prefix="signmapper-ocr-") as folder:
         names = []
         for i, crop in enumerate(crops):
