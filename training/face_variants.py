@@ -204,11 +204,11 @@ def design_field(face: np.ndarray, alpha: np.ndarray):
 
 
 def _warp_matrix(field: np.ndarray, rng: np.random.Generator) -> np.ndarray:
-    """Affine map about the field's centre: scale 0.85-1.2, aspect +-12 %, rotation +-4 deg, shear, shift +-4 %."""
+    """Affine map about the field's centre: scale 0.7-1.2, aspect +-12 %, rotation +-4 deg, shear, shift +-4 %."""
     ys, xs = np.nonzero(field)
     cx, cy = float(xs.mean()), float(ys.mean())
     side = float(max(xs.max() - xs.min(), ys.max() - ys.min()) + 1)
-    s = rng.uniform(0.85, 1.2)
+    s = rng.uniform(0.7, 1.2)  # other designs draw the pictogram down to about 70 % of the official size
     aspect = rng.uniform(0.88, 1.12)
     a = np.radians(rng.uniform(-4, 4))
     shear = rng.uniform(-0.08, 0.08)
@@ -258,12 +258,57 @@ def _simplified(img: np.ndarray, colour: np.ndarray, rng: np.random.Generator) -
     return np.clip(colour + (blurred - colour) * gain, 0, 255)
 
 
+def _ink(img: np.ndarray, field: np.ndarray, colour: np.ndarray) -> np.ndarray:
+    """Mask of the pictogram's paint: what differs clearly from the field's colour inside the field."""
+    return (np.abs(img - colour).sum(axis=2) > 90) & field
+
+
+def _line_drawn(img: np.ndarray, field: np.ndarray, colour: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    """The pictogram drawn with a thin pen: strokes 30-70 % of their width, broad parts kept, smaller.
+
+    Other print runs and countries draw many pictograms as lines of one pen
+    (thin curves and lanes, a slim arrow with a small head) where the official
+    drawing has broad shapes. Everything is eroded to the new pen's width;
+    strokes thinner than the erosion (whose whole neighbourhood is thin)
+    survive as their distance ridge drawn with the new pen, so no part of the
+    pictogram disappears and broad corners grow no spurs. Only pictograms of
+    one paint (black, or white on blue) are redrawn; a many-coloured one is
+    returned as it is.
+    """
+    inside = cv2.erode(field.astype(np.uint8), np.ones((9, 9), np.uint8)) > 0  # not the rim's soft edge
+    ink = _ink(img, inside, colour)
+    if ink.sum() < 40 or ink.sum() > 0.4 * inside.sum():  # too little, or the "field" paint is the pictogram
+        return img
+    paint = np.median(img[ink], axis=0)
+    if np.percentile(np.abs(img[ink] - paint).sum(axis=1), 80) > 90:
+        return img
+    dist = cv2.distanceTransform(ink.astype(np.uint8), cv2.DIST_L2, 5)
+    ridge = ink & (dist >= cv2.dilate(dist, np.ones((3, 3), np.uint8)) - 0.5) & (dist >= 1.0)
+    if not ridge.any():
+        return img
+    half = float(np.median(dist[ridge]))
+    if half < 2.5:  # already a line drawing at the working size
+        return img
+    new_half = max(1.5, half * rng.uniform(0.3, 0.7))
+    erosion = half - new_half
+    k = 2 * int(np.ceil(2 * erosion)) + 1
+    thin = ridge & (cv2.dilate(dist, cv2.getStructuringElement(cv2.MORPH_ELLIPSE, (k, k))) <= erosion + 1)
+    n, labels, stats, _ = cv2.connectedComponentsWithStats(thin.astype(np.uint8), connectivity=8)
+    short = [i for i in range(1, n) if stats[i, cv2.CC_STAT_AREA] < 2 * half]  # the tips of a cut end's spurs
+    thin &= ~np.isin(labels, short)
+    to_thin = cv2.distanceTransform((~thin).astype(np.uint8), cv2.DIST_L2, 5)
+    cover = np.maximum(np.clip(new_half + 0.5 - to_thin, 0, 1), np.clip(dist - erosion + 0.5, 0, 1))
+    cover = np.where(inside, cover, 0.0)[..., None].astype(np.float32)
+    out = np.where(ink[..., None], colour, img).astype(np.float32)
+    return out * (1 - cover) + paint.astype(np.float32) * cover
+
+
 def pictogram_variant(face: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.ndarray:
     """The pictogram redrawn inside its field, the rim and outline unchanged.
 
     Generic design variation built from the drawing itself: moved, scaled,
     stretched, sheared and turned a little (always), bent by a smooth elastic
-    warp, stroked bolder or lighter or simplified. Everything outside the field
+    warp, stroked bolder or lighter, simplified or drawn with a thin pen. Everything outside the field
     (rim, border, outline) keeps the official drawing's pixels.
     """
     field, colour = design_field(face, alpha)
@@ -276,8 +321,10 @@ def pictogram_variant(face: np.ndarray, alpha: np.ndarray, rng: np.random.Genera
     if rng.random() < 0.5:
         img = _elastic(img, colour, rng)
     detail = rng.random()
-    if detail < 0.4:
+    if detail < 0.3:
         img = _restroke(img, field, colour, rng)
-    elif detail < 0.65:  # not both: a bolder and blurred pictogram loses what tells it from its neighbours
+    elif detail < 0.5:  # not both: a bolder and blurred pictogram loses what tells it from its neighbours
         img = _simplified(img, colour, rng)
+    elif detail < 0.8:
+        img = _line_drawn(img, field, colour, rng)
     return np.where(field[..., None], img, face).astype(face.dtype)

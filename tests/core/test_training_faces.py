@@ -167,3 +167,37 @@ def test_design_variants_switch_the_pictogram_redrawing(catalogue, monkeypatch):
         for s in range(200):
             maker._design("1.31", np.random.default_rng(s))
     assert 30 < calls["scaled"] < 90 and 70 < calls["variant"] < 130
+
+
+def _ink_components(face, field, colour):
+    ink = (np.abs(face.astype(np.float32) - colour).sum(axis=2) > 90) & field
+    return ink, cv2.connectedComponents(ink.astype(np.uint8))[0] - 1
+
+
+@pytest.mark.parametrize("template_id", ["1.09", "2.37"])
+def test_line_drawn_thins_every_stroke_and_keeps_it(template_id):
+    """A thin-pen design: less paint, the same separate strokes, nothing outside the field touched."""
+    from training.compose import WORK_PX
+    from training.face_variants import _line_drawn
+
+    bgr, alpha = load_catalogue().master(template_id)
+    face = cv2.resize(bgr, (WORK_PX, WORK_PX), interpolation=cv2.INTER_AREA).astype(np.float32)
+    alpha = cv2.resize(alpha, (WORK_PX, WORK_PX), interpolation=cv2.INTER_AREA)
+    field, colour = design_field(face, alpha)
+    ink, strokes = _ink_components(face, field, colour)
+    for seed in range(4):
+        out = _line_drawn(face, field, colour, np.random.default_rng(seed))
+        assert np.array_equal(out[~field], face[~field])
+        new_ink, new_strokes = _ink_components(out, field, colour)
+        assert 0.2 * ink.sum() < new_ink.sum() < 0.8 * ink.sum()
+        assert new_strokes == strokes
+        assert not (new_ink & ~cv2.dilate(ink.astype(np.uint8), np.ones((3, 3), np.uint8)).astype(bool)).any()
+
+
+def test_line_drawn_leaves_many_coloured_pictograms_alone(catalogue):
+    face, alpha = small_master(catalogue, "1.31")  # traffic lights: red, yellow and green in black
+    field, colour = design_field(face, alpha)
+    img = face.astype(np.float32)
+    from training.face_variants import _line_drawn
+
+    assert np.array_equal(_line_drawn(img, field, colour, np.random.default_rng(0)), img)
