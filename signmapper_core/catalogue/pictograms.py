@@ -116,8 +116,13 @@ def cyclist(p: Pen, c: str = "black"):
 
 
 def moped(p: Pen, c: str = "black"):
-    bicycle(p, c)
-    p.rect(-0.28, 0.15, 0.12, 0.45, c, 0.05)
+    """Small thick wheels and a solid body from the rear wheel to the fork: a moped, not a bicycle with a box."""
+    for x in (-0.58, 0.58):
+        p.ring(x, 0.42, 0.3, 0.12, c)
+    p.poly([(-0.62, 0.12), (-0.5, -0.2), (-0.05, -0.2), (0.1, 0.0), (0.32, -0.1), (0.2, 0.32), (-0.3, 0.32)],
+           c, 0.05)
+    p.line([(0.58, 0.42), (0.38, -0.38), (0.2, -0.45)], 0.1, c)
+    p.line([(-0.45, -0.28), (-0.1, -0.28)], 0.12, c)
 
 
 def motorcycle(p: Pen, c: str = "black"):
