@@ -37,12 +37,17 @@ def catalogue_digest(catalogue) -> str:
 
 
 def candidate_groups(catalogue, class_ids) -> list[list[int]]:
-    """Per class, the class indices sharing its colour and shape: what colour and shape leave to the classifier."""
+    """Per class, the class indices sharing its colour and shape: what colour and shape leave to the classifier.
+
+    A class is always in its own group: the generic text panels, which the filter leaves out of every other
+    group (their layout tells them, not the network), are still trained and validated among their neighbours.
+    """
     index = {t: i for i, t in enumerate(class_ids)}
     groups = []
     for tid in class_ids:
         e = catalogue[tid]
-        groups.append([index[o.id] for o in catalogue.filter(colours=[e.colour], shapes=[e.shape])])
+        group = [index[o.id] for o in catalogue.filter(colours=[e.colour], shapes=[e.shape]) if o.id in index]
+        groups.append(group if index[tid] in group else group + [index[tid]])
     return groups
 
 
@@ -179,7 +184,12 @@ def train(args) -> dict:
     rng = np.random.default_rng(args.seed)
     groups = candidate_groups(catalogue, class_ids[:-1]) + [[background]]
     start = time.time()
-    for epoch in range(args.epochs):
+    weights = cache / f"model-{tag}-{args.per_class}-{args.background}-{args.epochs}-{args.batch}-{args.lr}-" \
+                      f"{'x'.join(map(str, args.widths))}.pt"
+    if weights.is_file():  # trained before (the same patches and settings): only the export is redone
+        model.load_state_dict(torch.load(weights))
+        log(f"loaded the trained weights {weights}")
+    for epoch in range(0 if weights.is_file() else args.epochs):
         model.train()
         order = rng.permutation(len(x_train))
         total = 0.0
@@ -200,6 +210,8 @@ def train(args) -> dict:
             f"(among same colour and shape {correct[y_val != background].mean():.4f}), "
             f"{(time.time() - start) / 60:.1f} min")
 
+    if not weights.is_file():
+        torch.save(model.state_dict(), weights)  # a failure in the export below does not cost the training
     logits = predict(model, x_val)
     temperature = fit_temperature(logits, y_val, groups, background)
     best_p, correct = restricted_probabilities(logits, y_val, groups, background, temperature,
