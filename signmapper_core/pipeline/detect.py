@@ -96,6 +96,9 @@ def round_face_diameter_px(seg: Segment, max_axis_scale: float) -> float:
 ROUND_SHAPES = ("circle", "octagon")
 
 
+READING_TIE = 0.005  # classification scores this close are a tie between readings of one face
+
+
 def size_to_format(seg: Segment, candidates, depth_m: float, shape: Optional[str], pair: PairContext):
     """[(SizeMatch, face bbox, candidate ids, extent)] of every face reading whose size fits a format.
 
@@ -237,7 +240,10 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     of_best_fit = [r for r in readings if catalogue[r[2].template_id].shape in best_fit_shapes]
     of_outline = [r for r in of_best_fit if r[2].score >= accept]
     pool = good_panels or of_outline or of_best_fit or readings or panels
-    best = max(pool, key=lambda r: r[2].score, default=None)
+    # near-ties (a confident network reads the face and its rimless part alike) go to the earliest reading: the
+    # face as the colour extent implies it comes before the rims measured in the image
+    top = max((r[2].score for r in pool), default=None)
+    best = next((r for r in pool if r[2].score >= top - READING_TIE), None) if top is not None else None
     # an outline that only fits loosely, or a round one sized as seen at an angle (its box alone fits no
     # format), must resemble its template clearly: a cut of something else fits those readings too easily
     w, h = seg.bbox[2], seg.bbox[3]

@@ -77,9 +77,10 @@ def test_network_reads_most_faces_of_another_artwork(catalogue, network):
     (README), these drawings differ from the official ones more than most real print runs do. A regression bar,
     not a goal."""
     right, total = 0, 0
-    known = [entry for entry in catalogue if network.knows([entry.id])]
-    # trained on every entry, the white family's too; not the text panels, told apart by their layout
-    assert [e.id for e in catalogue if e not in known] == sorted(TEXT_PANELS)
+    # trained on every entry, the white family's and (since 2026-12-03) the text panels' too; the text panels are
+    # told apart by their layout and never asked of the network, so they are not read here
+    assert network.knows([entry.id for entry in catalogue])
+    known = [entry for entry in catalogue if entry.id not in TEXT_PANELS]
     for k, (font, seed) in enumerate([("duplex", 3), ("simplex", 5)]):
         style = FaceStyle(stroke_scale=1.1, rim_scale=0.9, palette_jitter=0.5, font=font, detail_jitter=0.3,
                           seed=seed)
