@@ -237,8 +237,7 @@ def _restroke(img: np.ndarray, field: np.ndarray, colour: np.ndarray, rng: np.ra
     (white on blue) by dilation.
     """
     grey = img.mean(axis=2)
-    ink = np.abs(img - colour).sum(axis=2) > 90
-    ink &= field
+    ink = _ink(img, field, colour)
     if ink.sum() < 20:
         return img
     dark_ink = grey[ink].mean() < float(colour.mean())

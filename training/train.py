@@ -46,7 +46,7 @@ def candidate_groups(catalogue, class_ids) -> list[list[int]]:
     groups = []
     for tid in class_ids:
         e = catalogue[tid]
-        group = [index[o.id] for o in catalogue.filter(colours=[e.colour], shapes=[e.shape]) if o.id in index]
+        group = [index[o.id] for o in catalogue.filter(colours=[e.colour], shapes=[e.shape])]
         groups.append(group if index[tid] in group else group + [index[tid]])
     return groups
 
@@ -186,10 +186,11 @@ def train(args) -> dict:
     start = time.time()
     weights = cache / f"model-{tag}-{args.per_class}-{args.background}-{args.epochs}-{args.batch}-{args.lr}-" \
                       f"{'x'.join(map(str, args.widths))}.pt"
-    if weights.is_file():  # trained before (the same patches and settings): only the export is redone
+    trained_before = weights.is_file()  # the same patches and settings: only the export is redone
+    if trained_before:
         model.load_state_dict(torch.load(weights))
         log(f"loaded the trained weights {weights}")
-    for epoch in range(0 if weights.is_file() else args.epochs):
+    for epoch in range(0 if trained_before else args.epochs):
         model.train()
         order = rng.permutation(len(x_train))
         total = 0.0
@@ -210,7 +211,7 @@ def train(args) -> dict:
             f"(among same colour and shape {correct[y_val != background].mean():.4f}), "
             f"{(time.time() - start) / 60:.1f} min")
 
-    if not weights.is_file():
+    if not trained_before:
         torch.save(model.state_dict(), weights)  # a failure in the export below does not cost the training
     logits = predict(model, x_val)
     temperature = fit_temperature(logits, y_val, groups, background)

@@ -242,8 +242,8 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     pool = good_panels or of_outline or of_best_fit or readings or panels
     # near-ties (a confident network reads the face and its rimless part alike) go to the earliest reading: the
     # face as the colour extent implies it comes before the rims measured in the image
-    top = max((r[2].score for r in pool), default=None)
-    best = next((r for r in pool if r[2].score >= top - READING_TIE), None) if top is not None else None
+    top = max((r[2].score for r in pool), default=0.0)
+    best = next((r for r in pool if r[2].score >= top - READING_TIE), None)
     # an outline that only fits loosely, or a round one sized as seen at an angle (its box alone fits no
     # format), must resemble its template clearly: a cut of something else fits those readings too easily
     w, h = seg.bbox[2], seg.bbox[3]

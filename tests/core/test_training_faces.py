@@ -170,7 +170,9 @@ def test_design_variants_switch_the_pictogram_redrawing(catalogue, monkeypatch):
 
 
 def _ink_components(face, field, colour):
-    ink = (np.abs(face.astype(np.float32) - colour).sum(axis=2) > 90) & field
+    from training.face_variants import _ink
+
+    ink = _ink(face.astype(np.float32), field, colour)
     return ink, cv2.connectedComponents(ink.astype(np.uint8))[0] - 1
 
 
