@@ -1,6 +1,6 @@
 """Recognition figures on real photographs (GTSRB crops, GTSDB scenes) mapped to SSV ids.
 
-    python scripts/evaluate_real_photos.py classify --data DIR [--split report] [--limit N] [--seed 0]
+    python scripts/evaluate_real_photos.py classify --data DIR [--split report] [--limit N] [--seed 0] [--read-digits]
     python scripts/evaluate_real_photos.py detect --data DIR [--split report] [--limit N] [--seed 0]
 
 ``DIR`` holds crops.csv, scenes.csv, scenes_images.csv and the photographs (see
@@ -109,6 +109,32 @@ def breakdowns(records: list, columns: Callable[[list], List[str]], header: Sequ
     print_table(f"{what} by split", ["split", "group", "n", "median px"] + list(header), rows)
 
 
+def check_digits(records: list, catalogue) -> None:
+    """The mapping's digits check (``number_check``) on each accepted speed-limit reading, from its one view:
+    a reading whose digits say another speed limit's number is no longer accepted. Prints what it changed."""
+    from signmapper_core.number_check import judge_numbers
+    from signmapper_core.ocr import read_numbers
+    from signmapper_core.printed_numbers import number_band, prepared_band, printed_number, printed_numbers
+
+    known = printed_numbers(catalogue.ids())
+    checked, bands = [], []
+    for r in records:
+        band = number_band(r["sign"].load_image(), r["sign"].bbox) if r["accepted"] and printed_number(r["id"]) \
+            else None
+        if band is not None:
+            checked.append(r)
+            bands.append(prepared_band(band))
+    demoted = Counter()
+    for r, digits in zip(checked, read_numbers(bands)):
+        if judge_numbers(printed_number(r["id"]), [digits], known).contradicts:
+            r["accepted"] = False
+            demoted["right" if r["id"] == r["sign"].ssv_id else "wrong"] += 1
+    wrong = sum(r["id"] != r["sign"].ssv_id for r in checked)
+    print(f"digits read on {len(checked)} accepted speed-limit readings ({wrong} of them wrong): "
+          f"{demoted['wrong']} wrong and {demoted['right']} right ones no longer accepted (their digits read "
+          f"another speed limit's number)")
+
+
 def run_classify(args, catalogue, config: PipelineConfig) -> int:
     from signmapper_core.pipeline.classifiers import NccClassifier, accept_threshold
 
@@ -130,6 +156,8 @@ def run_classify(args, catalogue, config: PipelineConfig) -> int:
         records.append({"sign": sign, "id": result.template_id, "score": result.score, "n_cand": len(candidates),
                         "accepted": result.score >= accept_threshold(reader, config)})
     seconds = time.perf_counter() - start
+    if args.read_digits:
+        check_digits(records, catalogue)
     which = f"{clf.name} {args.model}" if args.model else clf.name
     print(f"classify ({which}) on {args.data / args.manifest}: split={args.split}, {len(records)} signs, "
           f"{seconds:.0f} s ({1000 * seconds / max(1, len(records)):.0f} ms/sign); perfect box, candidates = "
@@ -261,6 +289,9 @@ def main(argv=None) -> int:
                         help="classify: the signs to classify (crops.csv: GTSRB crops; scenes.csv: the signs of the "
                              "GTSDB photographs, split by photograph)")
     parser.add_argument("--model", type=Path, default=None, help="evaluate the network in this model folder instead")
+    parser.add_argument("--read-digits", action="store_true",
+                        help="classify: the mapping's digits check on accepted speed-limit readings (Tesseract): a "
+                             "reading whose digits say another speed limit's number no longer counts as accepted")
     args = parser.parse_args(argv)
     args.data = (args.data or default_data()).resolve()
     if not (args.data / "crops.csv").is_file():

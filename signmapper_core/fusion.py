@@ -125,6 +125,9 @@ class FusionConfig:
     ocr_confident_word: float = 0.6
     ocr_min_line_confidence: float = 0.35  # ...on lines read with at least this mean confidence (less: a frame's
     # edge, a shadow)
+    # the digits of a sign mapped as a speed limit (number_check.py): read in this many of its largest voters' views;
+    # an accepted sign goes to review when more of them read another speed limit's number than its own
+    number_readings: int = 3
 
 
 @dataclass

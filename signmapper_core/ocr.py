@@ -115,15 +115,15 @@ def find_tesseract(executable: Optional[str] = None) -> tuple:
     """
     path = shutil.which(executable or "tesseract")
     if path is None:
-        raise OcrUnavailable(f"plate texts are not read: the OCR engine Tesseract ('{executable or 'tesseract'}') "
+        raise OcrUnavailable(f"the OCR engine Tesseract ('{executable or 'tesseract'}') "
                              f"is not installed; on Debian or Ubuntu: {INSTALL_HINT}")
     try:
         languages = _languages_of(path)
     except (OSError, subprocess.SubprocessError) as exc:
-        raise OcrUnavailable(f"plate texts are not read: {path} --list-langs failed ({exc}); reinstall it: "
+        raise OcrUnavailable(f"{path} --list-langs failed ({exc}); reinstall it: "
                              f"{INSTALL_HINT}") from exc
     if not languages:
-        raise OcrUnavailable(f"plate texts are not read: Tesseract ({path}) has none of the German, French or "
+        raise OcrUnavailable(f"Tesseract ({path}) has none of the German, French or "
                              f"Italian language data; on Debian or Ubuntu: {INSTALL_HINT}")
     return path, languages
 
@@ -217,6 +217,11 @@ def call_count(crops: int, cores: int) -> int:
     return max(1, min(cores, crops // MIN_CROPS_PER_CALL))
 
 
+PLATE_OPTIONS = ("--psm", "6")  # a block of text: one to three lines of a plate
+# one line of digits: the number on a speed-limit face (a whitelist keeps Tesseract from reading "3O" or "B0")
+NUMBER_OPTIONS = ("--psm", "7", "-c", "tessedit_char_whitelist=0123456789")
+
+
 def read_texts(crops: Sequence[np.ndarray], config=None, executable: Optional[str] = None,
                timeout_s: Optional[float] = None, cores: Optional[int] = None) -> List[TextReading]:
     """The text of each plate crop (BGR or grey uint8, the plate's box), read with the ``ocr_*`` settings of
@@ -226,26 +231,43 @@ def read_texts(crops: Sequence[np.ndarray], config=None, executable: Optional[st
     :class:`OcrUnavailable`
     when Tesseract or its language data are missing, :class:`OcrError` when it fails.
     """
-    if not crops:
+    images = [prepare_crop(crop, config) for crop in crops]
+    return _read(images, PLATE_OPTIONS, None, config, executable, timeout_s, cores)
+
+
+def read_numbers(images: Sequence[np.ndarray], executable: Optional[str] = None, timeout_s: Optional[float] = None,
+                 cores: Optional[int] = None) -> List[str]:
+    """The digits Tesseract reads on each image (grey uint8, prepared: one line of dark digits on white with a
+    plain border), "" where it reads none; in one language of the plates (digits are alike in all), otherwise as
+    :func:`read_texts`."""
+    readings = _read(list(images), NUMBER_OPTIONS, 1, None, executable, timeout_s, cores)
+    return ["".join(word.text for word in reading.words) for reading in readings]
+
+
+def _read(images: List[np.ndarray], options: tuple, language_count: Optional[int], config,
+          executable: Optional[str], timeout_s: Optional[float], cores: Optional[int]) -> List[TextReading]:
+    """Tesseract's reading of each prepared image, with ``options`` and the first ``language_count`` plate
+    languages (None: all), shared over :func:`call_count` calls side by side."""
+    if not images:
         return []
     import cv2
 
     path, languages = find_tesseract(executable)
-    timeout = timeout_s if timeout_s is not None else BASE_TIMEOUT_S + TIMEOUT_PER_IMAGE_S * len(crops)
+    timeout = timeout_s if timeout_s is not None else BASE_TIMEOUT_S + TIMEOUT_PER_IMAGE_S * len(images)
     if cores is None:
         from .pair_pool import available_cores
 
         cores = available_cores()
-    calls = call_count(len(crops), cores)
+    calls = call_count(len(images), cores)
     with tempfile.TemporaryDirectory(prefix="signmapper-ocr-") as folder:
         names = []
-        for i, crop in enumerate(crops):
+        for i, image in enumerate(images):
             name = Path(folder) / f"{i:05d}.png"
-            if not cv2.imwrite(str(name), prepare_crop(crop, config)):
+            if not cv2.imwrite(str(name), image):
                 raise OcrError(f"could not write the crop {name} for Tesseract")
             names.append(str(name))
         shares = [names[len(names) * k // calls : len(names) * (k + 1) // calls] for k in range(calls)]
-        outputs = _run_side_by_side(path, languages, shares, Path(folder), timeout)
+        outputs = _run_side_by_side(path, languages[:language_count], shares, Path(folder), timeout, options)
     readings: List[TextReading] = []
     for share, output in zip(shares, outputs):
         readings += parse_tsv(output, len(share), config)
@@ -253,7 +275,7 @@ def read_texts(crops: Sequence[np.ndarray], config=None, executable: Optional[st
 
 
 def _run_side_by_side(path: str, languages: tuple, shares: List[List[str]], folder: Path,
-                      timeout: float) -> List[str]:
+                      timeout: float, options: tuple = PLATE_OPTIONS) -> List[str]:
     """Tesseract's TSV output for each list of image files, its calls running at the same time."""
     env = dict(os.environ, OMP_THREAD_LIMIT="1")  # one core per call: mapping shares the machine
     processes = []
@@ -261,7 +283,7 @@ def _run_side_by_side(path: str, languages: tuple, shares: List[List[str]], fold
         for k, share in enumerate(shares):
             listing = folder / f"crops{k}.txt"
             listing.write_text("\n".join(share) + "\n", encoding="utf-8")
-            command = [path, str(listing), "-", "-l", "+".join(languages), "--psm", "6", "tsv"]
+            command = [path, str(listing), "-", "-l", "+".join(languages), *options, "tsv"]
             processes.append(subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                                               env=env, start_new_session=True))  # a group of its own to stop
         deadline = time.monotonic() + timeout
@@ -270,7 +292,7 @@ def _run_side_by_side(path: str, languages: tuple, shares: List[List[str]], fold
             try:
                 out, err = process.communicate(timeout=max(0.0, deadline - time.monotonic()))
             except subprocess.TimeoutExpired as exc:
-                raise OcrError(f"Tesseract did not finish reading {sum(map(len, shares))} plate crops within "
+                raise OcrError(f"Tesseract did not finish reading {sum(map(len, shares))} crops within "
                                f"{timeout:.0f} s") from exc
             if process.returncode != 0:
                 raise OcrError(f"Tesseract failed (exit {process.returncode}): {err.strip()[:300]}")

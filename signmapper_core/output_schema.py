@@ -193,11 +193,12 @@ FIELDS = (
           "for a sign.", sign=lambda s: s.plate_of,
           **_names("Plate of sign no.", "Zusatztafel zu Signal-Nr.", "Plaque du signal n°", "Tavola del segnale n.")),
     Field("text", TEXT, "Text of a plate or of a white text panel (place name, destinations) as read by OCR, "
-          "normalised (\"200 m\", \"7–19 h\", \"Mo–Fr\"), lines joined by ' / '; empty when not read (no "
-          "Tesseract) or neither.", sign=lambda s: s.text,
+          "normalised (\"200 m\", \"7–19 h\", \"Mo–Fr\"), lines joined by ' / '; for a speed limit the number "
+          "its digits read (a sign whose digits read another speed limit's number goes to review); empty when "
+          "not read (no Tesseract) or none of these.", sign=lambda s: s.text,
           **_names("Text", "Text", "Texte", "Testo")),
     Field("text_confidence", REAL, "Confidence of the text, 0-1: OCR confidence of the readings that agree on it, "
-          "over all readings of the plate.", decimals=3, sign=lambda s: s.text_confidence,
+          "over all readings of the plate (a speed limit: the share of its views that read that number).", decimals=3, sign=lambda s: s.text_confidence,
           **_names("Text confidence", "Textsicherheit", "Fiabilité du texte", "Affidabilità del testo")),
     Field("timestamp", TEXT, "Date and time (ISO 8601) of the pair the sign was seen best in (a detection: its "
           "pair); empty when drive.json does not state the drive's start_time.", contextual=True,

@@ -19,6 +19,7 @@ import numpy as np
 
 from ..face_normal import world_face_normal
 from ..geometry import Camera, Pose
+from ..printed_numbers import number_band, printed_number
 from .boxes import box_iou, centre_inside
 from .classifiers import accept_threshold, marginal_min_score, min_score
 from .classify import surround_score
@@ -277,6 +278,15 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     )
 
 
+def with_number_band(detection: Detection, left: np.ndarray) -> Detection:
+    """``detection`` carrying the digits' band of its face as ``crop`` when it reads a speed limit (fusion reads
+    the digits of a sign's best views, ``number_check``); as it was otherwise."""
+    if printed_number(detection.template_id) is None or detection.crop is not None:
+        return detection
+    band = number_band(left, detection.bbox)
+    return detection if band is None else replace(detection, crop=band)
+
+
 def _part_of(inner, outer, max_area_share: float) -> bool:
     """Whether box ``inner`` lies inside box ``outer`` (give or take 5 % of its size) and covers at most
     ``max_area_share`` of it."""
@@ -386,8 +396,8 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
         detections += text_panel_detections(pair, depth, panel_fields, detections)
     with timer("hough"):
         detections += _hough_detections(pair, depth, search, detections, panels)
-    signs = suppress_overlaps(detections, config.classification.same_sign_max_iou,
-                              config.classification.part_max_area_share)
+    signs = [with_number_band(d, pair.left) for d in suppress_overlaps(
+        detections, config.classification.same_sign_max_iou, config.classification.part_max_area_share)]
     with timer("plates"):  # a window around a click looks for the sign alone
         return signs + (find_plates(pair, depth, signs) if pair.is_whole_image else [])
 

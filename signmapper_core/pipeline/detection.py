@@ -40,6 +40,7 @@ class Detection:
     normal_world: Optional[np.ndarray] = None  # unit face normal (E, N, H) from the fitted plane, towards the camera
     # a supplementary plate (pipeline/plates.py): the sign's detection it belongs to, and its image for OCR
     plate_of: Optional[Detection] = None
+    # the image OCR reads: a plate's or text panel's box, a speed limit's digits' band (grey, printed_numbers)
     crop: Optional[np.ndarray] = field(default=None, repr=False)
     printed_text: Optional[str] = None  # a pictogram plate: the words its drawing carries ("" for none)
     # a plate: the share of its crop seen whole: inside the image's edges and not hidden by something in front

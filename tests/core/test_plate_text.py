@@ -188,6 +188,6 @@ def test_a_hanging_tesseract_is_stopped_by_the_timeout(tmp_path):
     with pytest.raises(OcrError, match="did not finish"):
         read_texts([plate_crop(["200 m"], 40)], executable=str(fake), timeout_s=0.5)
     started = time.monotonic()
-    with pytest.raises(OcrError, match="did not finish reading 16 plate crops"):  # two calls side by side
+    with pytest.raises(OcrError, match="did not finish reading 16 crops"):  # two calls side by side
         read_texts([plate_crop(["200 m"], 40)] * 16, executable=str(fake), timeout_s=0.5, cores=2)
     assert time.monotonic() - started < 10  # the second call was stopped too, not waited for

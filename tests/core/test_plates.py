@@ -442,6 +442,7 @@ def test_a_plate_seen_in_three_pairs_is_one_feature_linked_to_its_sign_with_its_
     assert plate.plate_of == sign.sign_id and plate.sign_id == sign.sign_id + 1
     assert plate.n_obs == 3 and plate.template_id == PLATE_ID
     assert plate.text == "200 m" and plate.text_confidence > 0.7
+    assert sign.text == "50" and sign.status == "accepted"  # its digits read by OCR agree with its id
     plate_detections = [o for o in result.detections if o.sign_id == plate.sign_id]
     assert len(plate_detections) == 3
     assert not [m for m in messages if "plate" in m]
