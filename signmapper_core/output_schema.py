@@ -198,7 +198,8 @@ FIELDS = (
           "not read (no Tesseract) or none of these.", sign=lambda s: s.text,
           **_names("Text", "Text", "Texte", "Testo")),
     Field("text_confidence", REAL, "Confidence of the text, 0-1: OCR confidence of the readings that agree on it, "
-          "over all readings of the plate (a speed limit: the share of its views that read that number).", decimals=3, sign=lambda s: s.text_confidence,
+          "over all readings of the plate (a speed limit: the share of its views that read that number).",
+          decimals=3, sign=lambda s: s.text_confidence,
           **_names("Text confidence", "Textsicherheit", "Fiabilité du texte", "Affidabilità del testo")),
     Field("timestamp", TEXT, "Date and time (ISO 8601) of the pair the sign was seen best in (a detection: its "
           "pair); empty when drive.json does not state the drive's start_time.", contextual=True,
