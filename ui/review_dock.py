@@ -163,7 +163,7 @@ class ReviewDock(QDockWidget):
         self.info = {}
         for key, label in (("template", "Template"), ("status", "Status"), ("format", "Format"),
                            ("indicators", "Indicators"), ("pair", "Pair"), ("extra", "Fusion"),
-                           ("plate", "Plate")):
+                           ("plate", "Text")):
             value = QLabel("–")
             value.setTextInteractionFlags(Qt.TextSelectableByMouse)
             value.setWordWrap(True)
@@ -365,10 +365,12 @@ class ReviewDock(QDockWidget):
         self.set_observations(item.observations)
 
     def show_plate(self, item: ReviewItem) -> None:
-        """A plate's sign and text (with its OCR confidence); its text in the editor. Nothing for a sign."""
+        """A plate's sign and text (with its OCR confidence); its text in the editor. For a speed limit the number
+        its digits read (which sent it to review if it is another one's); nothing for other signs."""
         self.plate_box.setVisible(item.is_plate)
         if not item.is_plate:
-            self.info["plate"].setText("–")
+            share = f" · in {_fmt(item.text_confidence)} of its views" if item.text_confidence is not None else ""
+            self.info["plate"].setText(f"digits read “{item.text}”{share}" if item.text else "–")
             return
         read = f"“{item.text}”" if item.text else "no text read"
         confidence = f" · text confidence {_fmt(item.text_confidence)}" if item.text_confidence is not None else ""

@@ -556,6 +556,19 @@ def test_a_plate_shows_its_sign_and_text_and_a_person_corrects_the_text(review, 
     assert on_disk(gpkg, "signs")[plate.id()]["status"] == "rejected"
 
 
+def test_a_speed_limit_shows_the_number_its_digits_read(review, tmp_path, drive_dir, detections):
+    gpkg = build_gpkg(tmp_path / "digits.gpkg", drive_dir, detections)
+    layer = QgsVectorLayer(f"{gpkg}|layername=signs", "signs", "ogr")
+    host = min(layer.getFeatures(), key=lambda f: f["sign_id"])
+    layer.startEditing()
+    layer.changeAttributeValue(host.id(), layer.fields().indexOf("text"), "30")
+    layer.changeAttributeValue(host.id(), layer.fields().indexOf("text_confidence"), 0.667)
+    assert layer.commitChanges(), layer.commitErrors()
+    controller, dock, signs = review(gpkg, "signs")
+    select(controller, signs, host.id())
+    assert dock.plate_box.isHidden() and dock.info["plate"].text() == "digits read “30” · in 0.67 of its views"
+
+
 def test_a_pictogram_plate_shows_its_drawing_and_a_sign_no_plate_text(review, tmp_path, drive_dir, detections):
     gpkg, host = gpkg_with_plates(tmp_path / "plates.gpkg", drive_dir, detections)
     controller, dock, layer = review(gpkg, "signs")
