@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from collections import defaultdict
 from dataclasses import dataclass, field
-from typing import Optional, Sequence
+from typing import Mapping, Optional, Sequence
 
 import numpy as np
 
@@ -288,10 +288,22 @@ def build_tracks(observations: Sequence[Observation], config: FusionConfig) -> l
     return [t.observations for t in tracks]
 
 
-def _vote(observations: Sequence[Observation]) -> tuple[str, float]:
+def _vote(observations: Sequence[Observation], carried_discs: Optional[Mapping[str, str]] = None
+          ) -> tuple[str, float]:
+    """(class, its share of the weight): each observation weighs classification x detection indicator.
+
+    ``carried_discs``: zone panels (template id -> colour of the disc they carry, 2.59.1's red "30"). A view
+    that missed the panel's white around its disc reads the disc alone, as a disc sign of that colour; in a
+    track with a confident (accepted) reading of the panel such readings are the panel's own disc and count
+    for it.
+    """
     weights = defaultdict(float)
+    panels = {o.template_id: carried_discs[o.template_id] for o in observations
+              if carried_discs and o.template_id in carried_discs and o.status == ACCEPTED}
     for o in observations:
-        weights[o.template_id] += max(o.classification_indicator, 1e-3) * max(o.detection_indicator, 1e-3)
+        weight = max(o.classification_indicator, 1e-3) * max(o.detection_indicator, 1e-3)
+        panel = next((p for p, colour in panels.items() if o.shape == "circle" and o.colour == colour), None)
+        weights[panel or o.template_id] += weight
     winner = max(weights, key=weights.get)
     return winner, weights[winner] / sum(weights.values())
 
@@ -430,8 +442,11 @@ def azimuth_deg(direction: np.ndarray) -> Optional[float]:
     return float(np.degrees(np.arctan2(direction[0], direction[1])) % 360.0)
 
 
-def fuse_track(sign_id: int, observations: Sequence[Observation], config: FusionConfig) -> FusedSign:
-    template_id, share = _vote(observations)
+def fuse_track(sign_id: int, observations: Sequence[Observation], config: FusionConfig,
+               carried_discs: Optional[Mapping[str, str]] = None) -> FusedSign:
+    """One sign of a track: class by weighted vote (:func:`_vote`); position, size and indicators from the
+    observations that read that class (the voters), accepted when enough of them agree clearly."""
+    template_id, share = _vote(observations, carried_discs)
     voters = [o for o in observations if o.template_id == template_id]
     position, inliers = robust_position(voters, config.outlier_min_m)
     sigma = float(np.sqrt(np.mean([np.sum((o.position - position) ** 2) for o in inliers])))
@@ -456,15 +471,18 @@ def fuse_track(sign_id: int, observations: Sequence[Observation], config: Fusion
     )
 
 
-def fuse_observations(observations: Sequence[Observation], config: Optional[FusionConfig] = None) -> list[FusedSign]:
+def fuse_observations(observations: Sequence[Observation], config: Optional[FusionConfig] = None,
+                      carried_discs: Optional[Mapping[str, str]] = None) -> list[FusedSign]:
     """One :class:`FusedSign` per physical sign, numbered from 1 in order of first sight.
 
-    Each observation's ``sign_id`` is set to the sign it was fused into.
+    Each observation's ``sign_id`` is set to the sign it was fused into. ``carried_discs``: the catalogue's
+    zone panels and the colour of the disc each carries (``pipeline.face_extent.carried_discs``; see
+    :func:`_vote`).
     """
     config = config or FusionConfig()
     tracks = _merge_tracks(build_tracks(observations, config), config)
     tracks.sort(key=lambda t: (t[0].pair_index, t[0].position[0], t[0].position[1]))
-    signs = [fuse_track(i, t, config) for i, t in enumerate(tracks, start=1)]
+    signs = [fuse_track(i, t, config, carried_discs) for i, t in enumerate(tracks, start=1)]
     for sign in signs:
         for obs in sign.observations:
             obs.sign_id = sign.sign_id

@@ -183,6 +183,7 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     ``detect``: see :func:`map_pairs`.
     """
     from .pipeline.classifiers import accept_threshold, classifier_for
+    from .pipeline.face_extent import carried_discs
 
     classifier = classifier_for(catalogue, config)  # a missing or broken model fails here, before any pair
     accept = accept_threshold(classifier, config)
@@ -213,7 +214,8 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
         raise MappingError(f"no pair could be mapped: {total} of {total} pairs skipped (first: pair "
                            f"{skipped[0].record.id}: {skipped[0].error})")
     report(progress, PAIRS_SHARE, f"Fusing {len(detections)} detections into signs")
-    signs = fuse_observations([o for o in detections if not is_plate(o)], fusion)
+    signs = fuse_observations([o for o in detections if not is_plate(o)], fusion,
+                              carried_discs(catalogue, config.colour.hsv_ranges))
     plates = fuse_plates(detections, signs, fusion)
     panels = [s for s in signs if is_text_panel(s.template_id)]
     if plates or panels:

@@ -218,6 +218,20 @@ def _candidate_entries(catalogue, colour: str, shapes, hsv_ranges, allowed, excl
     return out
 
 
+def carried_discs(catalogue, hsv_ranges) -> Dict[str, str]:
+    """{template id: colour} of the rectangular panels that carry a disc of one colour inside (the zone panels
+    2.59.1 and 2.59.3): a view that misses the panel reads that disc as a disc sign (``fusion``)."""
+    out = {}
+    for entry in catalogue:
+        if entry.shape not in ("rectangle", "square"):
+            continue
+        for colour in hsv_ranges:
+            extent, part_shape = colour_part(catalogue, entry.id, colour, hsv_ranges)
+            if extent is not None and part_shape == "circle" and _panel_part(extent):
+                out[entry.id] = colour
+    return out
+
+
 def _panel_part(extent: Extent) -> bool:
     smallest, largest = TEMPLATE_GEOMETRY.template_panel_part_area
     return smallest < _area(extent) < largest

@@ -237,3 +237,32 @@ def test_track_merging_compares_neighbours_only_and_joins_in_the_order_of_its_ru
     got = _merge_tracks(tracks, config)
     assert len(expected) < len(tracks)  # the scene does merge
     assert [[id(o) for o in t] for t in got] == [[id(o) for o in t] for t in expected]
+
+
+def test_disc_readings_of_a_zone_panel_count_for_the_panel_but_do_not_accept_it():
+    truth = np.array([20.0, 3.0, 2.5])
+    zone = {"2.59.1": "red", "2.59.3": "blue"}
+    discs = seen_from(truth, [3, 4, 6], template_id="2.30-80", cls=0.98)  # the panel's white missed: its "30" disc
+    panel = seen_from(truth, [5], template_id="2.59.1", shape="rectangle", cls=0.93, fmt=("normal", 0.5, 0.7))
+    (alone,) = fuse_observations(discs + panel)
+    assert alone.template_id == "2.30-80" and alone.status == "accepted"  # without the catalogue's zone panels
+    (sign,) = fuse_observations(discs + panel, carried_discs=zone)
+    assert sign.template_id == "2.59.1" and sign.vote_share == pytest.approx(1.0) and sign.n_obs == 4
+    assert (sign.format, sign.width_m, sign.height_m) == ("normal", 0.5, 0.7)  # from the panel's own reading
+    assert sign.status == "review"  # one view read the panel: a person confirms it
+    more = seen_from(truth, [7], template_id="2.59.1", shape="rectangle", cls=0.95, fmt=("normal", 0.5, 0.7))
+    (seen_twice,) = fuse_observations(discs + panel + more, carried_discs=zone)
+    assert seen_twice.template_id == "2.59.1" and seen_twice.status == "accepted"
+
+
+def test_only_a_confident_panel_reading_claims_discs_and_only_those_of_its_colour():
+    truth = np.array([20.0, 3.0, 2.5])
+    zone = {"2.59.1": "red", "2.59.3": "blue"}
+    discs = seen_from(truth, [3, 4, 6], template_id="2.30-80", cls=0.98)
+    doubtful = seen_from(truth, [5], template_id="2.59.1", shape="rectangle", cls=0.7)
+    doubtful[0].detection.status = "review"
+    (sign,) = fuse_observations(discs + doubtful, carried_discs=zone)
+    assert sign.template_id == "2.30-80"  # a doubtful panel reading does not outvote three clear discs
+    blue = seen_from(truth, [5], template_id="2.59.3", shape="rectangle", colour="blue", cls=0.95)
+    signs = fuse_observations(discs + blue, carried_discs=zone)
+    assert "2.30-80" in {s.template_id for s in signs}  # a blue panel does not claim red discs

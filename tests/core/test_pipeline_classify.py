@@ -7,7 +7,7 @@ from signmapper_core.catalogue import FaceStyle, load_catalogue, render_face
 from signmapper_core.catalogue.text_panels import TEXT_PANELS
 from signmapper_core.pipeline.classify import classify_segment
 from signmapper_core.pipeline.config import DEFAULT_HSV_RANGES, ClassificationConfig, PipelineConfig
-from signmapper_core.pipeline.face_extent import candidate_entries, colour_extent, hole_part
+from signmapper_core.pipeline.face_extent import candidate_entries, carried_discs, colour_extent, hole_part
 
 CONFIG = PipelineConfig()
 GROW = CONFIG.classification.surround_grow
@@ -153,6 +153,11 @@ def test_colour_extent_of_rimmed_and_panel_faces(catalogue):
     assert y0 > 0.2 and y1 < 0.8
     assert colour_extent(catalogue, "2.30-50", "red", DEFAULT_HSV_RANGES) == (0.0, 0.0, 1.0, 1.0)
     assert colour_extent(catalogue, "2.30-50", "blue", DEFAULT_HSV_RANGES) is None
+
+
+def test_the_zone_panels_are_the_panels_that_carry_a_disc(catalogue):
+    # what fusion lets a zone panel's disc, read alone, vote for (fusion._vote)
+    assert carried_discs(catalogue, DEFAULT_HSV_RANGES) == {"2.59.1": "red", "2.59.3": "blue"}
 
 
 def test_colour_extents_follow_the_runs_colour_table(catalogue):
