@@ -21,6 +21,7 @@ from typing import Mapping, Optional, Sequence
 import numpy as np
 
 from .output_schema import ACCEPTED, REVIEW
+from .printed_numbers import printed_number
 
 
 def _of_detection(name: str, doc: str) -> property:
@@ -288,21 +289,27 @@ def build_tracks(observations: Sequence[Observation], config: FusionConfig) -> l
     return [t.observations for t in tracks]
 
 
+def _disc_of(panel_disc: str, reading: str) -> bool:
+    """Whether ``reading`` may be a zone panel's disc (``panel_disc``, the disc sign it carries) read alone: that
+    sign, or, for a speed ring, any speed limit (its digits are what a view of the disc alone misreads)."""
+    return reading == panel_disc or (printed_number(panel_disc) is not None and printed_number(reading) is not None)
+
+
 def _vote(observations: Sequence[Observation], carried_discs: Optional[Mapping[str, str]] = None
           ) -> tuple[str, float]:
     """(class, its share of the weight): each observation weighs classification x detection indicator.
 
-    ``carried_discs``: zone panels (template id -> colour of the disc they carry, 2.59.1's red "30"). A view
-    that missed the panel's white around its disc reads the disc alone, as a disc sign of that colour; in a
-    track with a confident (accepted) reading of the panel such readings are the panel's own disc and count
-    for it.
+    ``carried_discs``: zone panels (template id -> the disc sign they carry: 2.59.1's "30" ring, 2.59.3's
+    pedestrian disc). A view that missed the panel's white around its disc reads the disc alone; in a track
+    with a confident (accepted) reading of the panel such readings (:func:`_disc_of`) are the panel's own disc
+    and count for it. Other discs do not: a disc sign above a plate, read as a panel from afar, stays itself.
     """
     weights = defaultdict(float)
     panels = {o.template_id: carried_discs[o.template_id] for o in observations
               if carried_discs and o.template_id in carried_discs and o.status == ACCEPTED}
     for o in observations:
         weight = max(o.classification_indicator, 1e-3) * max(o.detection_indicator, 1e-3)
-        panel = next((p for p, colour in panels.items() if o.shape == "circle" and o.colour == colour), None)
+        panel = next((p for p, disc in panels.items() if _disc_of(disc, o.template_id)), None)
         weights[panel or o.template_id] += weight
     winner = max(weights, key=weights.get)
     return winner, weights[winner] / sum(weights.values())
@@ -476,8 +483,7 @@ def fuse_observations(observations: Sequence[Observation], config: Optional[Fusi
     """One :class:`FusedSign` per physical sign, numbered from 1 in order of first sight.
 
     Each observation's ``sign_id`` is set to the sign it was fused into. ``carried_discs``: the catalogue's
-    zone panels and the colour of the disc each carries (``pipeline.face_extent.carried_discs``; see
-    :func:`_vote`).
+    zone panels and the disc sign each carries (``pipeline.face_extent.carried_discs``; see :func:`_vote`).
     """
     config = config or FusionConfig()
     tracks = _merge_tracks(build_tracks(observations, config), config)

@@ -219,8 +219,9 @@ def _candidate_entries(catalogue, colour: str, shapes, hsv_ranges, allowed, excl
 
 
 def carried_discs(catalogue, hsv_ranges) -> Dict[str, str]:
-    """{template id: colour} of the rectangular panels that carry a disc of one colour inside (the zone panels
-    2.59.1 and 2.59.3): a view that misses the panel reads that disc as a disc sign (``fusion``)."""
+    """{panel id: disc id} of the rectangular panels that carry a disc of one colour inside (the zone panels:
+    2.59.1's "30" ring, 2.59.3's pedestrian disc), each with the round sign of that colour its disc looks most
+    like (normalized cross-correlation at 48 px): a view that misses the panel reads that disc (``fusion``)."""
     out = {}
     for entry in catalogue:
         if entry.shape not in ("rectangle", "square"):
@@ -228,8 +229,28 @@ def carried_discs(catalogue, hsv_ranges) -> Dict[str, str]:
         for colour in hsv_ranges:
             extent, part_shape = colour_part(catalogue, entry.id, colour, hsv_ranges)
             if extent is not None and part_shape == "circle" and _panel_part(extent):
-                out[entry.id] = colour
+                disc = _most_like(catalogue, _part_image(catalogue, entry.id, extent),
+                                  [e.id for e in catalogue.filter(colours=[colour], shapes=["circle"])])
+                if disc is not None:
+                    out[entry.id] = disc
     return out
+
+
+def _part_image(catalogue, template_id: str, extent: Extent, side: int = 48) -> np.ndarray:
+    """The template's drawing inside ``extent``, ``side`` px square, float32 BGR."""
+    bgr, alpha = canonical_template(catalogue, template_id)
+    h, w = alpha.shape
+    x0, y0, x1, y1 = extent
+    part = bgr[int(y0 * h) : max(int(y1 * h), int(y0 * h) + 1), int(x0 * w) : max(int(x1 * w), int(x0 * w) + 1)]
+    return cv2.resize(part, (side, side), interpolation=cv2.INTER_AREA).astype(np.float32)
+
+
+def _most_like(catalogue, image: np.ndarray, template_ids: List[str]) -> Optional[str]:
+    """The template among ``template_ids`` whose drawing correlates best with ``image`` (same size)."""
+    side = image.shape[0]
+    scores = {t: float(cv2.matchTemplate(image, _part_image(catalogue, t, FULL, side), cv2.TM_CCOEFF_NORMED)[0, 0])
+              for t in template_ids}
+    return max(scores, key=scores.get) if scores else None
 
 
 def _panel_part(extent: Extent) -> bool:

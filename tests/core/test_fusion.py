@@ -241,7 +241,7 @@ def test_track_merging_compares_neighbours_only_and_joins_in_the_order_of_its_ru
 
 def test_disc_readings_of_a_zone_panel_count_for_the_panel_but_do_not_accept_it():
     truth = np.array([20.0, 3.0, 2.5])
-    zone = {"2.59.1": "red", "2.59.3": "blue"}
+    zone = {"2.59.1": "2.30-30", "2.59.3": "2.61"}
     discs = seen_from(truth, [3, 4, 6], template_id="2.30-80", cls=0.98)  # the panel's white missed: its "30" disc
     panel = seen_from(truth, [5], template_id="2.59.1", shape="rectangle", cls=0.93, fmt=("normal", 0.5, 0.7))
     (alone,) = fuse_observations(discs + panel)
@@ -257,7 +257,7 @@ def test_disc_readings_of_a_zone_panel_count_for_the_panel_but_do_not_accept_it(
 
 def test_only_a_confident_panel_reading_claims_discs_and_only_those_of_its_colour():
     truth = np.array([20.0, 3.0, 2.5])
-    zone = {"2.59.1": "red", "2.59.3": "blue"}
+    zone = {"2.59.1": "2.30-30", "2.59.3": "2.61"}
     discs = seen_from(truth, [3, 4, 6], template_id="2.30-80", cls=0.98)
     doubtful = seen_from(truth, [5], template_id="2.59.1", shape="rectangle", cls=0.7)
     doubtful[0].detection.status = "review"
@@ -265,4 +265,13 @@ def test_only_a_confident_panel_reading_claims_discs_and_only_those_of_its_colou
     assert sign.template_id == "2.30-80"  # a doubtful panel reading does not outvote three clear discs
     blue = seen_from(truth, [5], template_id="2.59.3", shape="rectangle", colour="blue", cls=0.95)
     signs = fuse_observations(discs + blue, carried_discs=zone)
-    assert "2.30-80" in {s.template_id for s in signs}  # a blue panel does not claim red discs
+    assert "2.30-80" in {s.template_id for s in signs}  # a pedestrian-zone panel does not claim speed limits
+
+
+def test_a_disc_sign_over_a_plate_read_as_a_zone_panel_from_afar_stays_itself():
+    # held-out drive 1088: a 2.14 with a plate below read as 2.59.1 at 13 and 11 m, as 2.14 at 9 and 7 m
+    truth = np.array([20.0, 3.0, 2.5])
+    afar = seen_from(truth, [3, 4], template_id="2.59.1", shape="rectangle", cls=0.99, det=0.97)
+    near = seen_from(truth, [5, 6], template_id="2.14", cls=1.0, det=0.99)
+    (sign,) = fuse_observations(afar + near, carried_discs={"2.59.1": "2.30-30", "2.59.3": "2.61"})
+    assert sign.template_id == "2.14"  # no speed limit, so not the panel's disc

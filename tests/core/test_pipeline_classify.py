@@ -157,7 +157,7 @@ def test_colour_extent_of_rimmed_and_panel_faces(catalogue):
 
 def test_the_zone_panels_are_the_panels_that_carry_a_disc(catalogue):
     # what fusion lets a zone panel's disc, read alone, vote for (fusion._vote)
-    assert carried_discs(catalogue, DEFAULT_HSV_RANGES) == {"2.59.1": "red", "2.59.3": "blue"}
+    assert carried_discs(catalogue, DEFAULT_HSV_RANGES) == {"2.59.1": "2.30-30", "2.59.3": "2.61"}
 
 
 def test_colour_extents_follow_the_runs_colour_table(catalogue):
