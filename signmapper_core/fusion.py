@@ -301,15 +301,18 @@ def _vote(observations: Sequence[Observation], carried_discs: Optional[Mapping[s
 
     ``carried_discs``: zone panels (template id -> the disc sign they carry: 2.59.1's "30" ring, 2.59.3's
     pedestrian disc). A view that missed the panel's white around its disc reads the disc alone; in a track
-    with a confident (accepted) reading of the panel such readings (:func:`_disc_of`) are the panel's own disc
-    and count for it. Other discs do not: a disc sign above a plate, read as a panel from afar, stays itself.
+    with a confident (accepted) reading of the panel, doubtful (review) readings of such a disc
+    (:func:`_disc_of`) are the panel's own disc and count for it. Confident ones do not, nor other discs: a
+    speed limit or a 2.14 over a plate, read as a panel once from afar and clearly as itself nearer, stays
+    itself (held-out drives 1107 and 1088).
     """
     weights = defaultdict(float)
     panels = {o.template_id: carried_discs[o.template_id] for o in observations
               if carried_discs and o.template_id in carried_discs and o.status == ACCEPTED}
     for o in observations:
         weight = max(o.classification_indicator, 1e-3) * max(o.detection_indicator, 1e-3)
-        panel = next((p for p, disc in panels.items() if _disc_of(disc, o.template_id)), None)
+        panel = next((p for p, disc in panels.items() if o.status != ACCEPTED and _disc_of(disc, o.template_id)),
+                     None)
         weights[panel or o.template_id] += weight
     winner = max(weights, key=weights.get)
     return winner, weights[winner] / sum(weights.values())
