@@ -28,13 +28,19 @@ BAND_KEEP_PX = 96  # a band is kept (and read) at most this high: enough for Tes
 READ_BORDER_PX = 20  # plain white around the digits: Tesseract reads little on a line touching the frame
 
 
+def speed_limit_number(template_id: Optional[str]) -> Optional[str]:
+    """The number of a maximum speed's id ("80" for 2.30-80); None for every other id, the general limits
+    included (their number is part of the drawing, not of the id)."""
+    found = SPEED_LIMIT.match(template_id) if template_id else None
+    return found.group(1) if found else None
+
+
 def printed_number(template_id: Optional[str]) -> Optional[str]:
     """The number a speed-limit template prints ("30" for 2.30-30, "50" for the general limit 2.30.1); None for
     any other template."""
     if template_id is None:
         return None
-    found = SPEED_LIMIT.match(template_id)
-    return found.group(1) if found else GENERAL_LIMITS.get(template_id)
+    return speed_limit_number(template_id) or GENERAL_LIMITS.get(template_id)
 
 
 def printed_numbers(template_ids: Iterable[str]) -> frozenset:

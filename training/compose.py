@@ -13,6 +13,7 @@ import cv2
 import numpy as np
 
 from signmapper_core.pipeline.classifiers.face_patch import face_patch
+from signmapper_core.printed_numbers import speed_limit_number
 
 from .backgrounds import BackgroundPool
 from .camera_effects import blur, lighting, resolution_loss, sensor_noise_and_jpeg
@@ -22,7 +23,6 @@ from .face_variants import (
     pictogram_scaled,
     pictogram_variant,
     speed_limit_face,
-    speed_limit_number,
 )
 from .face_wear import wear_face
 

@@ -29,8 +29,6 @@ MIRROR_SAFE = frozenset({
     "2.48", "2.60", "2.61", "2.62",
 })
 
-SPEED_LIMIT_PREFIX = "2.30-"  # 2.30-20 ... 2.30-120: a number in the 2.01 ring
-
 FONT_FILES = (  # Debian's fonts-dejavu-core; missing files are skipped, OpenCV's Hershey fonts always remain
     "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf",
     "/usr/share/fonts/truetype/dejavu/DejaVuSansCondensed-Bold.ttf",
@@ -38,14 +36,6 @@ FONT_FILES = (  # Debian's fonts-dejavu-core; missing files are skipped, OpenCV'
     "/usr/share/fonts/truetype/dejavu/DejaVuSansCondensed.ttf",
 )
 HERSHEY_FONTS = (cv2.FONT_HERSHEY_SIMPLEX, cv2.FONT_HERSHEY_DUPLEX)
-
-
-def speed_limit_number(template_id: str) -> str | None:
-    """'80' for 2.30-80; None for every other id (2.30.1's lettered ring is not a plain number)."""
-    if not template_id.startswith(SPEED_LIMIT_PREFIX):
-        return None
-    number = template_id[len(SPEED_LIMIT_PREFIX):]
-    return number if number.isdigit() else None
 
 
 def mirrored(face: np.ndarray, alpha: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from signmapper_core.catalogue import load_catalogue
+from signmapper_core.printed_numbers import speed_limit_number
 from training.dataset import CLASS_SHARE, class_shares, labels_for
 from training.face_variants import (
     MIRROR_SAFE,
@@ -18,7 +19,6 @@ from training.face_variants import (
     pictogram_scaled,
     pictogram_variant,
     speed_limit_face,
-    speed_limit_number,
 )
 
 SIDE = 96
