@@ -27,12 +27,12 @@ from .drive import Drive, PairRecord
 from .errors import DriveFormatError, MappingError
 from .fusion import FusedSign, FusionConfig, Observation, azimuth_deg, fuse_observations
 from .mounting import camera_height_above_road, mounting_height
-from .number_check import check_speed_numbers
+from .number_check import check_speed_numbers, speed_limit_signs
 from .output_schema import MANUAL, run_record
 from .pair_pool import worker_count
 from .plate_fusion import fuse_plates, is_plate, read_plate_texts
 from .plausibility import pair_warnings
-from .printed_numbers import printed_number, printed_numbers
+from .printed_numbers import printed_numbers
 from .progress import CancelCheck, ProgressCallback, WarnCallback, check_cancelled, report, send_warning
 
 PAIRS_SHARE = 0.95  # of the progress: the pairs; fusion and mounting heights take the rest
@@ -222,10 +222,10 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
         report(progress, PAIRS_SHARE, f"Reading the text of {len(plates)} supplementary plates and {len(panels)} "
                "text panels")
         read_plate_texts(plates + panels, warn, config=fusion)
-    speed_limits = [s for s in signs if printed_number(s.template_id) is not None]
+    speed_limits = len(speed_limit_signs(signs))
     if speed_limits:
-        report(progress, PAIRS_SHARE, f"Reading the digits of {len(speed_limits)} speed-limit signs")
-        demoted = check_speed_numbers(speed_limits, printed_numbers(catalogue.ids()), warn, config=fusion)
+        report(progress, PAIRS_SHARE, f"Reading the digits of {speed_limits} speed-limit signs")
+        demoted = check_speed_numbers(signs, printed_numbers(catalogue.ids()), warn, config=fusion)
         if demoted:
             send_warning(warn, f"{demoted} speed-limit sign{'s' if demoted > 1 else ''} sent to review: the digits "
                                "read another number")

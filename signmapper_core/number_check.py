@@ -53,6 +53,11 @@ def number_views(sign: FusedSign, views: int) -> list:
     return [o.detection.crop for o in voters[:views]]
 
 
+def speed_limit_signs(signs: Sequence[FusedSign]) -> list:
+    """The signs mapped as a speed limit: those whose digits :func:`check_speed_numbers` reads."""
+    return [sign for sign in signs if printed_number(sign.template_id) is not None]
+
+
 def check_speed_numbers(signs: Sequence[FusedSign], known: frozenset, warn: Optional[WarnCallback] = None,
                         read: Callable = read_numbers, config: Optional[FusionConfig] = None) -> int:
     """Read the digits of every sign mapped as a speed limit; set its ``text`` (the number read) and
@@ -60,10 +65,9 @@ def check_speed_numbers(signs: Sequence[FusedSign], known: frozenset, warn: Opti
     contradict it (:func:`judge_numbers`). ``known``: the numbers the catalogue's speed limits print
     (``printed_numbers.printed_numbers``). One OCR run for all. Returns the number of signs sent to review."""
     config = config or FusionConfig()
+    signs = speed_limit_signs(signs)
     owners, images = [], []
     for k, sign in enumerate(signs):
-        if printed_number(sign.template_id) is None:
-            continue
         for band in number_views(sign, config.number_readings):
             owners.append(k)
             images.append(prepared_band(band))
