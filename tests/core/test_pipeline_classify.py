@@ -158,6 +158,12 @@ def test_colour_extent_of_rimmed_and_panel_faces(catalogue):
 def test_the_zone_panels_are_the_panels_that_carry_a_disc(catalogue):
     # what fusion lets a zone panel's disc, read alone, vote for (fusion._vote)
     assert carried_discs(catalogue, DEFAULT_HSV_RANGES) == {"2.59.1": "2.30-30", "2.59.3": "2.61"}
+    # measured once and kept; a caller changing its copy does not change the next run's
+    carried_discs(catalogue, DEFAULT_HSV_RANGES).clear()
+    assert carried_discs(catalogue, DEFAULT_HSV_RANGES) == {"2.59.1": "2.30-30", "2.59.3": "2.61"}
+    # no red taken from the panels: no red disc is found in them
+    without_red = {colour: ranges for colour, ranges in DEFAULT_HSV_RANGES.items() if colour != "red"}
+    assert carried_discs(catalogue, without_red) == {"2.59.3": "2.61"}
 
 
 def test_colour_extents_follow_the_runs_colour_table(catalogue):
