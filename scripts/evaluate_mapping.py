@@ -43,6 +43,7 @@ from signmapper_core.family_evaluation import (  # noqa: E402
     catalogue_colour,
     family_figures,
 )
+from signmapper_core.fusion import sign_accept_threshold  # noqa: E402
 from signmapper_core.mapping import map_drive  # noqa: E402
 from signmapper_core.misread_evidence import false_positive_lines, misread_lines, missed_lines  # noqa: E402
 from signmapper_core.panel_evaluation import PanelFigures, evaluate_panels  # noqa: E402
@@ -207,7 +208,8 @@ def main(argv=None) -> int:
         total_pairs += len(drive.pairs)
         total_seconds += seconds
     print(f"Fused signs with status accepted ({result.classifier_name}, threshold "
-          f"{result.classification_threshold:.3f}): {accepted_total}; with a wrong id {accepted_wrong} "
+          f"{result.classification_threshold:.3f} a view, {sign_accept_threshold(result.fusion):.3f} a sign's "
+          f"voters): {accepted_total}; with a wrong id {accepted_wrong} "
           f"({100 * accepted_wrong / max(accepted_total, 1):.1f} %), matching no reference sign {accepted_unmatched}")
     for artwork, (n, found, right) in sorted(artwork_totals.items()):
         print(f"Fused signs whose face was printed from the {artwork} artwork: {n}; detected {found} "

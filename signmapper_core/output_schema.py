@@ -317,8 +317,9 @@ RUN_KEYS = (
     RunKey("detection_threshold", "Minimum detection indicator.", lambda r: r.config.planarity.detection_threshold),
     RunKey("classifier", "Classifier that ran: cnn (learned network) or ncc (template matching).",
            lambda r: r.classifier_name, True),
-    RunKey("classification_threshold", "Classification indicator for status accepted (the classifier's own "
-           "calibrated one unless set).", lambda r: r.classification_threshold),
+    RunKey("classification_threshold", "Classification indicator for a detection's status accepted (the "
+           "classifier's own calibrated one unless set); a sign's voters need a mean the fusion setting "
+           "accept_margin of the way from it to 1.", lambda r: r.classification_threshold),
     RunKey("run_id", "Identifier of this run (a UUID): exports record it, so the same run is never written twice.",
            lambda r: r.run_id, True),
     RunKey("settings_version", "Version of the recorded settings' meaning (run_settings.SETTINGS_VERSION).",
