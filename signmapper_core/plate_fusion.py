@@ -15,6 +15,7 @@ the words its drawing carries.
 from __future__ import annotations
 
 from collections import defaultdict
+from dataclasses import replace
 from typing import Callable, Optional, Sequence
 
 from .catalogue.text_panels import is_text_panel
@@ -43,9 +44,12 @@ def fuse_plates(observations: Sequence[Observation], signs: Sequence[FusedSign],
     tracks = _merge_tracks(build_tracks(plates, config), config)
     tracks.sort(key=lambda t: (t[0].pair_index, t[0].position[0], t[0].position[1]))
     first = max((s.sign_id for s in signs), default=0) + 1
+    # a plate's indicator is the plate step's own score, not the network's probability: the signs' margin
+    # (accept_margin, set on the network's misreadings) does not apply to it
+    plate_config = replace(config, accept_margin=0.0)
     fused = []
     for number, track in enumerate(tracks, start=first):
-        plate = fuse_track(number, track, config)
+        plate = fuse_track(number, track, plate_config)
         votes = defaultdict(float)
         for obs in track:
             host = sign_of.get(id(obs.detection.plate_of))

@@ -299,3 +299,19 @@ def test_a_disc_sign_read_clearly_stays_itself_though_read_as_a_zone_panel_from_
     near = doubtful(seen_from(truth, [5, 6], template_id="2.14", cls=1.0, det=0.99))
     (sign,) = fuse_observations(afar + near, carried_discs=ZONES)
     assert sign.template_id == "2.14"
+
+
+def test_a_plate_is_accepted_on_the_classifiers_threshold_without_the_signs_margin():
+    """The plate step's score is no probability of the network: the margin set on the network's misreadings of
+    signs (accept_margin) must not send clear plates to review."""
+    from signmapper_core.plate_fusion import fuse_plates
+
+    config = FusionConfig(accept_classification=0.9)
+    signs_seen = [observe([20.0, 3.0, 2.5], k, cls=0.99) for k in (5, 6)]
+    plates_seen = [observe([20.0, 3.0, 2.0], k, template_id="5.xx", cls=0.93) for k in (5, 6)]
+    for plate, sign in zip(plates_seen, signs_seen):
+        plate.detection.plate_of = sign.detection
+    (sign,) = fuse_observations(signs_seen, config)
+    (plate,) = fuse_plates(signs_seen + plates_seen, [sign], config)
+    assert sign.status == "accepted" and plate.plate_of == sign.sign_id
+    assert plate.status == "accepted" and plate.classification_indicator == pytest.approx(0.93)
