@@ -38,8 +38,6 @@ def speed_limit_number(template_id: Optional[str]) -> Optional[str]:
 def printed_number(template_id: Optional[str]) -> Optional[str]:
     """The number a speed-limit template prints ("30" for 2.30-30, "50" for the general limit 2.30.1); None for
     any other template."""
-    if template_id is None:
-        return None
     return speed_limit_number(template_id) or GENERAL_LIMITS.get(template_id)
 
 
