@@ -223,7 +223,8 @@ def carried_discs(catalogue, hsv_ranges) -> Dict[str, str]:
     2.59.1's "30" ring, 2.59.3's pedestrian disc), each with the round sign of that colour its disc looks most
     like (normalized cross-correlation at 48 px): a view that misses the panel reads that disc (``fusion``).
     Measured once per catalogue and thresholds: every run of a session asks again."""
-    key = (id(catalogue), "carried discs") + tuple(_ranges_key(hsv_ranges, colour) for colour in sorted(hsv_ranges))
+    key = (id(catalogue), "carried discs") + tuple((colour, _ranges_key(hsv_ranges, colour))
+                                                   for colour in sorted(hsv_ranges))
     return dict(_measured_once(catalogue, key, lambda: _carried_discs(catalogue, hsv_ranges)))
 
 
