@@ -51,6 +51,7 @@ from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, WhiteConfig  # noqa: E402
 from signmapper_core.plate_evaluation import PlateFigures, evaluate_plates  # noqa: E402
 from signmapper_core.plate_fusion import is_plate  # noqa: E402
+from signmapper_core.simulate.face_artwork import OFFICIAL_PICTOGRAM, pictogram_group  # noqa: E402
 from signmapper_core.visibility import mappable_signs  # noqa: E402
 
 
@@ -90,18 +91,35 @@ def accepted_but_wrong(signs, reference, report) -> tuple:
 
 
 def by_artwork(signs, reference, report) -> dict:
-    """{artwork: [reference signs, detected, correctly classified]} of the fused signs, for synthetic drives whose
-    truth names the artwork each face was printed from (the catalogue's drawing or a procedural design)."""
+    """{(artwork, pictogram group): [reference signs, detected, correctly classified]} of the fused signs, for
+    synthetic drives whose truth names the artwork each face was printed from (the catalogue's drawing or a
+    procedural design); procedural designs of another pictogram (``face_artwork.OTHER_PICTOGRAM``) apart."""
     counts = {}
     for k, ref in enumerate(reference):
         if not ref.artwork:
             continue
         ids = [sign.template_id for sign, match in zip(signs, report.match) if match == k]
-        row = counts.setdefault(ref.artwork, [0, 0, 0])
+        row = counts.setdefault((ref.artwork, pictogram_group(ref.template_id, ref.artwork)), [0, 0, 0])
         row[0] += 1
         row[1] += bool(ids)
         row[2] += bool(ids) and majority_id(ids) == ref.template_id  # as evaluate() counts it
     return counts
+
+
+def artwork_lines(totals: dict) -> list:
+    """Report lines of :func:`by_artwork`'s sums: each artwork and group, then all faces of the official
+    pictogram (the figure comparable to the real photographs' "same" group)."""
+
+    def line(label, n, found, right):
+        return (f"Fused signs whose face was printed from {label}: {n}; detected {found} "
+                f"({100 * found / max(n, 1):.1f} %), correctly classified {right} "
+                f"({100 * right / max(found, 1):.1f} % of the detected)")
+
+    lines = [line(f"the {artwork} artwork ({group})", *row) for (artwork, group), row in sorted(totals.items())]
+    official = [row for (_, group), row in totals.items() if group == OFFICIAL_PICTOGRAM]
+    if official and len(totals) > 1:
+        lines.append(line(f"any artwork showing the {OFFICIAL_PICTOGRAM}", *(sum(c) for c in zip(*official))))
+    return lines
 
 
 def positions_ids(items):
@@ -145,7 +163,7 @@ def main(argv=None) -> int:
     total_pairs, total_seconds = 0, 0.0
     plate_totals = PlateFigures()
     panel_totals = PanelFigures()
-    artwork_totals = {}  # artwork -> [reference signs, detected, correct]
+    artwork_totals = {}  # (artwork, pictogram group) -> [reference signs, detected, correct]
     colour_of = catalogue_colour(catalogue)
     family_totals = {(family, kind): FamilyFigures() for family in FAMILIES for kind in ("detections", "signs")}
     for folder in folders:
@@ -211,10 +229,8 @@ def main(argv=None) -> int:
           f"{result.classification_threshold:.3f} a view, {sign_accept_threshold(result.fusion):.3f} a sign's "
           f"voters): {accepted_total}; with a wrong id {accepted_wrong} "
           f"({100 * accepted_wrong / max(accepted_total, 1):.1f} %), matching no reference sign {accepted_unmatched}")
-    for artwork, (n, found, right) in sorted(artwork_totals.items()):
-        print(f"Fused signs whose face was printed from the {artwork} artwork: {n}; detected {found} "
-              f"({100 * found / max(n, 1):.1f} %), correctly classified {right} ({100 * right / max(found, 1):.1f} % "
-              f"of the detected)")
+    for line in artwork_lines(artwork_totals):
+        print(line)
     if all_azimuth_errors:
         err = np.abs(all_azimuth_errors)
         print(f"Face azimuth of fused signs vs truth facing: n={len(err)}, median |d| {np.median(err):.1f} deg, "

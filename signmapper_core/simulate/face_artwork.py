@@ -21,6 +21,42 @@ MASTER, PROCEDURAL = "master", "procedural"
 MASTER_CACHE_PX = 800  # masters are kept at most this large: faces are at most 640 px
 
 
+# Signs whose procedural drawing shows another pictogram than the official drawing: another object, another
+# view of it, or elements added or missing; judged by looking at both side by side for every sign the drawer
+# knows (``python -m signmapper_core.simulate.artwork_sheet``), not from recognition results. Pens, proportions,
+# fonts, a simpler or bolder outline of the same object do not count. Faces of these signs ask a reader to know
+# a design the official drawing does not show, like the real photographs' "differs" group; the evaluation
+# reports them apart.
+OTHER_PICTOGRAM = {
+    "1.05": "a car from behind over two wavy tracks; official: a skidding car from the side",
+    "1.06": "one hump; official: two",
+    "1.12": "a car from the front over dots; official: a car from the side throwing gravel",
+    "1.18": "a tram from the front; official: from the side",
+    "1.31": "two cars from the front, one above the other; official: a queue of three",
+    "1.32": "a cyclist; official: a bicycle alone",
+    "2.03": "a car from the side; official: from the front",
+    "2.10.1": "a lorry carrying the orange plate; official: the plate alone",
+    "2.11": "a lorry over drops; official: a tanker over waves",
+    "2.12": "a rider on a horse; official: a horse alone",
+    "2.13": "car and motorcycle without the bar between them",
+    "2.14": "three vehicles stacked; official: three in a Y parted by red bars",
+    "2.20-10": "a lorry over a line and the length, no arrows",
+    "2.48": "a wheel with spikes from the front; official: a chained tyre",
+    "4.18": "a clock; official: a parking disc",
+}
+
+OFFICIAL_PICTOGRAM, OTHER = "official pictogram", "other pictogram"
+
+
+def pictogram_group(template_id: str, artwork: str) -> str:
+    """The face's pictogram group: ``official pictogram`` for master faces and procedural drawings of the same
+    object, ``other pictogram`` for the procedural drawings of :data:`OTHER_PICTOGRAM`; "" where the artwork is
+    unknown."""
+    if not artwork:
+        return ""
+    return OTHER if artwork == PROCEDURAL and template_id in OTHER_PICTOGRAM else OFFICIAL_PICTOGRAM
+
+
 def choose_artwork(rng: np.random.Generator, master_share: float) -> str:
     """``master`` with probability ``master_share``, else ``procedural``."""
     return MASTER if rng.random() < master_share else PROCEDURAL
