@@ -27,7 +27,15 @@ from .colour import ColourFrame, Segment, find_colour_segments, merge_candidates
 from .config import PipelineConfig, with_settings
 from .depth_sources import depth_source_for
 from .detection import Detection
-from .face_extent import FULL, candidate_entries, face_bbox, frame_candidates, hole_candidates, rim_face_bboxes
+from .face_extent import (
+    FULL,
+    candidate_entries,
+    face_bbox,
+    frame_candidates,
+    hole_candidates,
+    rim_face_bboxes,
+    ring_edge_bbox,
+)
 from .half_discs import with_half_discs
 from .hidden_apex import apex_completed_face
 from .hough import hough_scale, hough_segments, radius_range_px, ring_colour_share
@@ -105,7 +113,9 @@ def size_to_format(seg: Segment, candidates, depth_m: float, shape: Optional[str
 
     A round ``shape`` is sized by its diameter (:func:`round_face_diameter_px`), so a disc
     seen at an angle still fits its format. A face whose coloured part sits inside a white
-    rim is also read with the rim measured in the left image (:func:`.face_extent.rim_face_bboxes`). A
+    rim is also read with the rim measured in the left image (:func:`.face_extent.rim_face_bboxes`), a field
+    inside a ring with the ring's outer edge (:func:`.face_extent.ring_edge_bbox`, as the colour step
+    without depth does: other print runs and designs draw the ring wider or narrower). A
     triangle too low for its width is also read as the whole triangle on its base where its top is hidden
     (:func:`.hidden_apex.apex_completed_face`).
 
@@ -120,12 +130,16 @@ def size_to_format(seg: Segment, candidates, depth_m: float, shape: Optional[str
     fits = []
     x, y, w, h = seg.bbox
     round_face = shape in ROUND_SHAPES and min(w, h) >= config.size.min_round_axis_ratio * max(w, h)
+    # a field inside a ring drawn wider or narrower than the template's: the ring's outer edge in the image
+    ring = ring_edge_bbox(pair.left, seg.bbox, shape, config) if seg.source == "hole" and shape else None
     diameter = round_face_diameter_px(seg, config.size.round_face_max_axis_scale) if round_face else None
     for ext, group in groups.values():
         readings = [(face_bbox(seg.bbox, ext), group)]  # (face box, the entries it may be)
         rimmed = [e for e in group if e.shape == shape]
         if ext != FULL and rimmed and seg.source == "colour":  # rims drawn otherwise
             readings += [(f, rimmed) for f in rim_face_bboxes(pair.left, seg.bbox, seg.mask, ext, shape, config)]
+        if rimmed and ring is not None and box_iou(ring, readings[0][0]) < config.rims.rim_same_iou:
+            readings += [(ring, rimmed)]
         triangles = [e for e in group if e.shape == "triangle"]
         if shape == "triangle" and ext == FULL and triangles and config.size.apex_completion:
             whole = apex_completed_face(pair.left, seg.bbox, triangles[0].aspect, config)  # its top hidden by leaves

@@ -336,13 +336,33 @@ def outline_samples(shape: str, count: int) -> Tuple[np.ndarray, np.ndarray]:
     return np.vstack(points), np.vstack(normals)
 
 
+def scale_pivot(shape: str, w: float, h: float) -> Tuple[float, float]:
+    """Where in its box (shares of width and height) an outline of ``shape`` stays when a band of even width is
+    laid around it: the centre of its inscribed circle. The box centre for every shape but the triangles, whose
+    incentre lies about a sixth of their height off it, towards the base."""
+    if shape not in ("triangle", "triangle-down"):
+        return 0.5, 0.5
+    leg = float(np.hypot(w / 2.0, h))
+    v = 2.0 * leg / (w + 2.0 * leg)  # apex at 0, base at 1
+    return 0.5, (v if shape == "triangle" else 1.0 - v)
+
+
+def scaled_box(box, shape: str, scale: float) -> Tuple[float, float, float, float]:
+    """``box`` (x, y, w, h) of an outline of ``shape`` grown by ``scale`` about its :func:`scale_pivot`."""
+    x, y, w, h = box
+    u, v = scale_pivot(shape, w, h)
+    return x + u * w * (1.0 - scale), y + v * h * (1.0 - scale), scale * w, scale * h
+
+
 def outline_edge_profile(image: np.ndarray, segment_bbox, shape: str, scales: np.ndarray,
                          min_inside: float, samples: int) -> np.ndarray:
     """Median edge strength across the ideal ``shape`` outline (``samples`` points) of the segment's box scaled
-    by each of ``scales`` about its centre (0 where less than ``min_inside`` of the outline lies in the image)."""
+    by each of ``scales`` about its :func:`scale_pivot` (0 where less than ``min_inside`` of the outline lies in
+    the image)."""
     x, y, w, h = segment_bbox
-    cx, cy = x + w / 2.0, y + h / 2.0
-    reach = float(scales.max()) * max(w, h) / 2.0 + 3
+    u, v = scale_pivot(shape, w, h)
+    cx, cy = x + u * w, y + v * h  # the pivot
+    reach = float(scales.max()) * max(w, h) * max(u, 1.0 - u, v, 1.0 - v) + 3
     height, width = image.shape[:2]
     x0, y0 = int(max(0, cx - reach)), int(max(0, cy - reach))
     x1, y1 = int(min(width, cx + reach + 1)), int(min(height, cy + reach + 1))
@@ -351,8 +371,8 @@ def outline_edge_profile(image: np.ndarray, segment_bbox, shape: str, scales: np
     points, normals = outline_samples(shape, samples)
     # all scales at once (one row per scale): a median per scale was most of the time of this step
     fw, fh = (scales * w)[:, None], (scales * h)[:, None]
-    px = np.round(cx - fw / 2.0 + points[None, :, 0] * fw - 0.5 - x0).astype(int)
-    py = np.round(cy - fh / 2.0 + points[None, :, 1] * fh - 0.5 - y0).astype(int)
+    px = np.round(cx - u * fw + points[None, :, 0] * fw - 0.5 - x0).astype(int)
+    py = np.round(cy - v * fh + points[None, :, 1] * fh - 0.5 - y0).astype(int)
     inside = (px >= 0) & (py >= 0) & (px < gx.shape[1]) & (py < gx.shape[0])
     n = normals[None] / np.stack([fw, fh], axis=2)  # the normal of the outline stretched to the box
     n /= np.linalg.norm(n, axis=2, keepdims=True)
@@ -405,9 +425,8 @@ def edge_rim_bbox(image: np.ndarray, segment_bbox, shape: str, max_scale: float,
     outer = [k for k in range(best_k + 1, len(scales) - 1) if scales[k] <= border_scale * scales[best_k]
              and profile[k] >= profile[k - 1] and profile[k] >= profile[k + 1]
              and profile[k] >= rims.rim_border_min_strength * profile[best_k]]
-    s = scales[outer[-1] if outer else best_k]
-    fw, fh = s * w, s * h
-    return (int(round(x + w / 2.0 - fw / 2.0)), int(round(y + h / 2.0 - fh / 2.0)), int(round(fw)), int(round(fh)))
+    fx, fy, fw, fh = scaled_box(segment_bbox, shape, scales[outer[-1] if outer else best_k])
+    return int(round(fx)), int(round(fy)), int(round(fw)), int(round(fh))
 
 
 def rim_face_bboxes(image: np.ndarray, segment_bbox, segment_mask: np.ndarray, extent: Extent, shape: str,
