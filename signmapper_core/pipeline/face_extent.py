@@ -391,7 +391,7 @@ def edge_rim_bbox(image: np.ndarray, segment_bbox, shape: str, max_scale: float,
                   config) -> Optional[Tuple[int, int, int, int]]:
     """The face box of a coloured part inside a rim, from the face's outer edge; None if no clear edge.
 
-    The part's box is scaled about its centre from 1 to ``max_scale`` (geometric steps of
+    The part's box is scaled about its pivot (:func:`scale_pivot`) from 1 to ``max_scale`` (geometric steps of
     ``config.rims.rim_scale_step``), the ideal outline of ``shape`` laid at each scale: the part's own
     edge is the strongest within ``rim_inner_scale``, then the rim (a plain band, weak edges), then
     the face's outer edge. The outer edge is the local maximum beyond the part whose strength is at
