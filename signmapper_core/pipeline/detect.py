@@ -130,8 +130,10 @@ def size_to_format(seg: Segment, candidates, depth_m: float, shape: Optional[str
     fits = []
     x, y, w, h = seg.bbox
     round_face = shape in ROUND_SHAPES and min(w, h) >= config.size.min_round_axis_ratio * max(w, h)
-    # a field inside a ring drawn wider or narrower than the template's: the ring's outer edge in the image
-    ring = ring_edge_bbox(pair.left, seg.bbox, shape, config) if seg.source == "hole" and shape else None
+    # a field inside a ring drawn wider or narrower than the template's: the ring's outer edge in the image,
+    # sought only where some candidate has the field's shape (the readings it could join)
+    hole_of_shape = seg.source == "hole" and any(entry.shape == shape for entry, _ in candidates)
+    ring = ring_edge_bbox(pair.left, seg.bbox, shape, config) if hole_of_shape else None
     diameter = round_face_diameter_px(seg, config.size.round_face_max_axis_scale) if round_face else None
     for ext, group in groups.values():
         readings = [(face_bbox(seg.bbox, ext), group)]  # (face box, the entries it may be)
