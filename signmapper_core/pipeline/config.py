@@ -434,6 +434,11 @@ class HoughConfig:
     hough_tint_min_share: float = 0.25  # share of the ring's pixels a tint needs to name it; else white
     hough_strong_ring_share: float = 0.5  # a Hough find whose ring is this much in full colour is a colour find
     # the colour step lost (an attachment spoiled its outline) and may be accepted; others stay at hough_max_status
+    # a white circle with a red annulus just outside it (hough_field_ring_band x its radius, of which at least half in
+    # the image) this much in full colour is the field of a red ring the colour step lost (a pole in front, the
+    # image border through it): it is read as that ring's field (a "hole" segment), not as a white sign
+    hough_field_ring_share: float = 0.5
+    hough_field_ring_band: Tuple[float, float] = (1.08, 1.25)
 
 
 @dataclass(frozen=True)

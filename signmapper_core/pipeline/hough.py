@@ -10,7 +10,8 @@ through the same size, planarity and classification steps as colour segments.
 
 from __future__ import annotations
 
-from typing import List, Optional, Sequence
+from dataclasses import replace
+from typing import List, Optional, Sequence, Tuple
 
 import cv2
 import numpy as np
@@ -112,6 +113,48 @@ def ring_colour_share(bgr: np.ndarray, mask: np.ndarray, ranges, config: Pipelin
     if not ring.any():
         return 0.0
     return float(np.count_nonzero(hsv_mask(cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV), ranges)[ring])) / ring.sum()
+
+
+def annulus_colour_share(bgr: np.ndarray, u: float, v: float, r: float, ranges, band: Tuple[float, float]
+                         ) -> Tuple[float, float]:
+    """(share of the annulus band[0]*r..band[1]*r about (u, v) that lies in the image, share of those pixels inside
+    the HSV ``ranges``): the colour just outside a circle, read only where the image has it."""
+    height, width = bgr.shape[:2]
+    outer = band[1] * r
+    x0, y0 = int(np.floor(u - outer)), int(np.floor(v - outer))
+    x1, y1 = int(np.ceil(u + outer)) + 1, int(np.ceil(v + outer)) + 1
+    yy, xx = np.mgrid[y0:y1, x0:x1]
+    dist = np.hypot(xx - u, yy - v)
+    ring = (dist >= band[0] * r) & (dist <= outer)
+    inside = (xx >= 0) & (xx < width) & (yy >= 0) & (yy < height)
+    total = int(ring.sum())
+    seen = ring & inside
+    if total == 0 or not seen.any():
+        return 0.0, 0.0
+    cx0, cy0, cx1, cy1 = max(x0, 0), max(y0, 0), min(x1, width), min(y1, height)
+    hsv = cv2.cvtColor(bgr[cy0:cy1, cx0:cx1], cv2.COLOR_BGR2HSV)
+    hit = hsv_mask(hsv, ranges) > 0
+    seen_crop = seen[cy0 - y0 : cy1 - y0, cx0 - x0 : cx1 - x0]
+    return float(seen.sum()) / total, float(np.count_nonzero(hit[seen_crop])) / float(seen_crop.sum())
+
+
+def ringed_field(bgr: np.ndarray, seg: Segment, config: PipelineConfig) -> Optional[Segment]:
+    """A white Hough circle as the field of a red ring around it (a red "hole" segment), or None.
+
+    The colour step finds such a face as its ring; when a pole in front splits the ring or the image border cuts it,
+    the ring is no segment and its white field is the circle Hough finds. Read as white, it would be mapped as a
+    white sign (a 2.30.1 cut by the border as 2.53.1); as the ring's field, the face is grown from it as from any
+    field inside a ring.
+    """
+    ranges = config.colour.hsv_ranges.get("red")
+    if seg.colour != "white" or ranges is None:
+        return None
+    x, y, w, h = seg.bbox
+    band = config.hough.hough_field_ring_band
+    seen, share = annulus_colour_share(bgr, x + (w - 1) / 2.0, y + (h - 1) / 2.0, w / 2.0, ranges, band)
+    if seen < 0.5 or share < config.hough.hough_field_ring_share:
+        return None
+    return replace(seg, colour="red", source="hole")
 
 
 def weak_colour(bgr: np.ndarray, mask: np.ndarray, config: PipelineConfig) -> str:

@@ -297,3 +297,28 @@ def test_apex_completion_needs_a_low_segment_an_apex_in_the_image_and_something_
     red = grey.copy()
     red[:80] = (30, 30, 200)
     assert apex_completed_face(red, (50, 80, 100, 50), ratio, config) is None  # red: the ring, not a cover
+
+
+
+@pytest.mark.parametrize("template_id", ["2.03", "2.09"])
+def test_a_red_ring_split_by_a_wide_pole_is_read_from_its_white_field(catalogue, template_id, monkeypatch):
+    """A pole a third of the face wide, right of its middle and 3 m in front, splits the red ring into pieces
+    too far apart to merge, and Hough finds only the white field (as on drive 1160, where the field was then
+    mapped as the white sign 2.55): the red around the field makes it the ring's field, and the face is grown
+    from it."""
+    from signmapper_core.pipeline import detect as detect_module
+    from signmapper_core.pipeline.hough import circle_segment
+
+    sign = _world(6.0, 0.5, 0.3)
+    left, depth, (x, y, w, h) = sign_scene(catalogue, template_id, "normal", sign, background_depth=30.0)
+    pole = slice(x + w // 2 + w // 8, x + w // 2 + w // 8 + w // 3)
+    left[:, pole] = (110, 110, 110)
+    depth[:, pole] = 3.0
+    left = cv2.GaussianBlur(left, (0, 0), 1.0)
+    field = circle_segment(left, x + (w - 1) / 2, y + (h - 1) / 2, 0.3 * w, PipelineConfig())
+    assert field.colour == "white"
+    assert _detect(catalogue, left, depth, hough=NO_HOUGH) == []  # the colour step alone loses it
+    monkeypatch.setattr(detect_module, "hough_segments", lambda *args, **kwargs: [field])
+    dets = _detect(catalogue, left, depth)
+    assert [(d.template_id, d.source, d.format) for d in dets] == [(template_id, "hole", "normal")]
+    assert np.linalg.norm(dets[0].position - sign) < 0.1

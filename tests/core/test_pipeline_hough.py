@@ -3,7 +3,15 @@ import numpy as np
 from pipeline_scenes import CAMERA, noisy_background, pixels_for
 
 from signmapper_core.pipeline.config import PipelineConfig, with_settings
-from signmapper_core.pipeline.hough import find_circles, hough_segments, radius_range_px, ring_colour_share, weak_colour
+from signmapper_core.pipeline.hough import (
+    circle_segment,
+    find_circles,
+    hough_segments,
+    radius_range_px,
+    ring_colour_share,
+    ringed_field,
+    weak_colour,
+)
 from signmapper_core.pipeline.search_space import search_space_mask
 
 CONFIG = PipelineConfig()
@@ -72,3 +80,40 @@ def test_the_ring_read_for_a_circles_colour_is_its_outer_share():
     deeper = with_settings(CONFIG, {"hough": {"hough_ring_share": 0.4}})
     assert weak_colour(crop, mask, CONFIG) == "red" and ring_colour_share(crop, mask, red, CONFIG) > 0.4
     assert weak_colour(crop, mask, deeper) == "white" and ring_colour_share(crop, mask, red, deeper) < 0.25
+
+
+def _field_in_ring(u, ring_bgr, width=400):
+    """A white field (r 40) in a ring (r 52) centred at (u, 100) on grey, and the white Hough circle of the field."""
+    image = np.full((200, width, 3), 150, np.uint8)
+    cv2.circle(image, (u, 100), 52, ring_bgr, -1)
+    cv2.circle(image, (u, 100), 40, (235, 235, 235), -1)
+    seg = circle_segment(image, u, 100, 40, CONFIG)
+    assert seg is not None and seg.colour == "white"
+    return image, seg
+
+
+def test_a_white_circle_in_a_red_ring_is_the_rings_field():
+    image, seg = _field_in_ring(200, (40, 40, 200))
+    field = ringed_field(image, seg, CONFIG)
+    assert field is not None and field.colour == "red" and field.source == "hole" and field.bbox == seg.bbox
+
+
+def test_a_red_ring_cut_by_the_image_border_still_names_its_field():
+    image, seg = _field_in_ring(350, (40, 40, 200), width=395)  # the ring reaches 7 px past the right border
+    assert ringed_field(image, seg, CONFIG).colour == "red"
+
+
+def test_a_white_circle_on_grey_or_in_a_blue_ring_stays_white():
+    for ring in ((150, 150, 150), (200, 90, 20)):
+        image, seg = _field_in_ring(200, ring)
+        assert ringed_field(image, seg, CONFIG) is None
+
+
+def test_a_ring_mostly_outside_the_image_is_not_read():
+    """Where less than half of the band around the circle is in the image, what lies there says too little."""
+    image = np.full((200, 400, 3), 150, np.uint8)
+    cv2.circle(image, (200, 100), 52, (40, 40, 200), -1)
+    cv2.circle(image, (200, 100), 40, (235, 235, 235), -1)
+    crop = np.ascontiguousarray(image[60:141, 160:241])  # the field's box alone: a third of the band is in it
+    seg = circle_segment(crop, 40, 40, 40, CONFIG)
+    assert seg is not None and ringed_field(crop, seg, CONFIG) is None
