@@ -299,7 +299,6 @@ def test_apex_completion_needs_a_low_segment_an_apex_in_the_image_and_something_
     assert apex_completed_face(red, (50, 80, 100, 50), ratio, config) is None  # red: the ring, not a cover
 
 
-
 @pytest.mark.parametrize("template_id", ["2.03", "2.09"])
 def test_a_red_ring_split_by_a_wide_pole_is_read_from_its_white_field(catalogue, template_id, monkeypatch):
     """A pole a third of the face wide, right of its middle and 3 m in front, splits the red ring into pieces
