@@ -115,27 +115,34 @@ def ring_colour_share(bgr: np.ndarray, mask: np.ndarray, ranges, config: Pipelin
     return float(np.count_nonzero(hsv_mask(cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV), ranges)[ring])) / ring.sum()
 
 
-def annulus_colour_share(bgr: np.ndarray, u: float, v: float, r: float, ranges, band: Tuple[float, float]
-                         ) -> Tuple[float, float]:
-    """(share of the annulus band[0]*r..band[1]*r about (u, v) that lies in the image, share of those pixels inside
-    the HSV ``ranges``): the colour just outside a circle, read only where the image has it."""
-    height, width = bgr.shape[:2]
-    outer = band[1] * r
-    x0, y0 = int(np.floor(u - outer)), int(np.floor(v - outer))
-    x1, y1 = int(np.ceil(u + outer)) + 1, int(np.ceil(v + outer)) + 1
-    yy, xx = np.mgrid[y0:y1, x0:x1]
-    dist = np.hypot(xx - u, yy - v)
-    ring = (dist >= band[0] * r) & (dist <= outer)
-    inside = (xx >= 0) & (xx < width) & (yy >= 0) & (yy < height)
-    total = int(ring.sum())
-    seen = ring & inside
-    if total == 0 or not seen.any():
-        return 0.0, 0.0
-    cx0, cy0, cx1, cy1 = max(x0, 0), max(y0, 0), min(x1, width), min(y1, height)
-    hsv = cv2.cvtColor(bgr[cy0:cy1, cx0:cx1], cv2.COLOR_BGR2HSV)
-    hit = hsv_mask(hsv, ranges) > 0
-    seen_crop = seen[cy0 - y0 : cy1 - y0, cx0 - x0 : cx1 - x0]
-    return float(seen.sum()) / total, float(np.count_nonzero(hit[seen_crop])) / float(seen_crop.sum())
+def band_colour_shares(bgr: np.ndarray, bbox, bands: Sequence[Tuple[float, float]], colour_ranges: Sequence
+                       ) -> List[Tuple[float, List[float]]]:
+    """Per band (inner, outer radius, in radii of the disc ``bbox``: its box centre, half its longer side): the share
+    of the band's pixels that lie in the image, and for each entry of ``colour_ranges`` the share of those pixels
+    inside its HSV ranges (0 where none lies in the image). What surrounds a disc, read only where the image has it:
+    a white field's ring, a red wall that goes on beyond it."""
+    x, y, w, h = bbox
+    radius = max(w, h) / 2.0
+    cx, cy = x + w / 2.0, y + h / 2.0
+    reach = int(np.ceil(radius * max(outer for _, outer in bands))) + 1
+    x0, y0, x1, y1 = int(cx - reach), int(cy - reach), int(cx + reach) + 1, int(cy + reach) + 1
+    ys, xs = np.mgrid[y0:y1, x0:x1]
+    distance = np.hypot(xs + 0.5 - cx, ys + 0.5 - cy) / radius
+    inside = (xs >= 0) & (ys >= 0) & (xs < bgr.shape[1]) & (ys < bgr.shape[0])
+    cx0, cy0, cx1, cy1 = max(x0, 0), max(y0, 0), min(x1, bgr.shape[1]), min(y1, bgr.shape[0])
+    coloured = [np.zeros(distance.shape, bool) for _ in colour_ranges]
+    if cx1 > cx0 and cy1 > cy0:
+        hsv = cv2.cvtColor(bgr[cy0:cy1, cx0:cx1], cv2.COLOR_BGR2HSV)
+        for mask, ranges in zip(coloured, colour_ranges):
+            mask[cy0 - y0 : cy1 - y0, cx0 - x0 : cx1 - x0] = hsv_mask(hsv, ranges) > 0
+    out = []
+    for inner, outer in bands:
+        band = (distance >= inner) & (distance <= outer)
+        seen = band & inside
+        n_seen = int(np.count_nonzero(seen))
+        out.append((n_seen / max(1, int(np.count_nonzero(band))),
+                    [np.count_nonzero(mask & seen) / n_seen if n_seen else 0.0 for mask in coloured]))
+    return out
 
 
 def ringed_field(bgr: np.ndarray, seg: Segment, config: PipelineConfig) -> Optional[Segment]:
@@ -149,9 +156,7 @@ def ringed_field(bgr: np.ndarray, seg: Segment, config: PipelineConfig) -> Optio
     ranges = config.colour.hsv_ranges.get("red")
     if seg.colour != "white" or ranges is None:
         return None
-    x, y, w, h = seg.bbox
-    band = config.hough.hough_field_ring_band
-    seen, share = annulus_colour_share(bgr, x + (w - 1) / 2.0, y + (h - 1) / 2.0, w / 2.0, ranges, band)
+    ((seen, (share,)),) = band_colour_shares(bgr, seg.bbox, (config.hough.hough_field_ring_band,), (ranges,))
     if seen < 0.5 or share < config.hough.hough_field_ring_share:
         return None
     return replace(seg, colour="red", source="hole")

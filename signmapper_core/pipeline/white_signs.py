@@ -21,9 +21,9 @@ from ..face_normal import world_face_normal
 from .boxes import centre_inside
 from .classifiers import accept_threshold
 from .classify import ClassificationResult, classify_segment
-from .colour import Segment, hsv_mask, inscribed_disc
+from .colour import Segment, inscribed_disc
 from .detection import Detection
-from .hough import outer_ring, weak_colour
+from .hough import band_colour_shares, outer_ring, weak_colour
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
 from .search_space import valid_depth
@@ -135,29 +135,13 @@ def in_coloured_ring(bgr: np.ndarray, bbox, config) -> bool:
     image only), and the band ``white_beyond_band`` out less than half as much (a ring ends; a red wall or a
     blue sky behind a white disc goes on). The colour step drops a ring the image edge cuts; its field stays a
     white candidate and must not be read as a white sign."""
-    x, y, w, h = bbox
     white = config.white
-    radius = max(w, h) / 2.0
-    reach = int(np.ceil(radius * white.white_beyond_band[1])) + 1
-    cx, cy = x + w / 2.0, y + h / 2.0
-    x0, y0 = max(0, int(cx - reach)), max(0, int(cy - reach))
-    x1, y1 = min(bgr.shape[1], int(cx + reach) + 1), min(bgr.shape[0], int(cy + reach) + 1)
-    if x1 <= x0 or y1 <= y0:
+    ranges = [config.colour.hsv_ranges[colour] for colour in ("red", "blue")]
+    (near_seen, near), (beyond_seen, beyond) = band_colour_shares(
+        bgr, bbox, (white.white_ring_band, white.white_beyond_band), ranges)
+    if not near_seen or not beyond_seen:
         return False
-    hsv = cv2.cvtColor(bgr[y0:y1, x0:x1], cv2.COLOR_BGR2HSV)
-    ys, xs = np.mgrid[y0:y1, x0:x1]
-    distance = np.hypot(xs + 0.5 - cx, ys + 0.5 - cy) / radius
-    near = (distance >= white.white_ring_band[0]) & (distance <= white.white_ring_band[1])
-    beyond = (distance >= white.white_beyond_band[0]) & (distance <= white.white_beyond_band[1])
-    if not near.any() or not beyond.any():
-        return False
-    for colour in ("red", "blue"):
-        coloured = hsv_mask(hsv, config.colour.hsv_ranges[colour]) > 0
-        share = np.count_nonzero(coloured & near) / np.count_nonzero(near)
-        if share >= white.white_min_ring_share and \
-                np.count_nonzero(coloured & beyond) / np.count_nonzero(beyond) < share / 2.0:
-            return True
-    return False
+    return any(share >= white.white_min_ring_share and farther < share / 2.0 for share, farther in zip(near, beyond))
 
 
 def coloured_share(bgr: np.ndarray, bbox, config) -> float:
