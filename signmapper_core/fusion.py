@@ -21,7 +21,7 @@ from typing import Mapping, Optional, Sequence
 import numpy as np
 
 from .output_schema import ACCEPTED, REVIEW
-from .printed_numbers import printed_number
+from .zone_panels import may_be_disc_of
 
 
 def _of_detection(name: str, doc: str) -> property:
@@ -295,12 +295,6 @@ def build_tracks(observations: Sequence[Observation], config: FusionConfig) -> l
     return [t.observations for t in tracks]
 
 
-def _disc_of(panel_disc: str, reading: str) -> bool:
-    """Whether ``reading`` may be a zone panel's disc (``panel_disc``, the disc sign it carries) read alone: that
-    sign, or, for a speed ring, any speed limit (its digits are what a view of the disc alone misreads)."""
-    return reading == panel_disc or (printed_number(panel_disc) is not None and printed_number(reading) is not None)
-
-
 def _vote(observations: Sequence[Observation], carried_discs: Optional[Mapping[str, str]] = None
           ) -> tuple[str, float]:
     """(class, its share of the weight): each observation weighs classification x detection indicator.
@@ -308,16 +302,17 @@ def _vote(observations: Sequence[Observation], carried_discs: Optional[Mapping[s
     ``carried_discs``: zone panels (template id -> the disc sign they carry: 2.59.1's "30" ring, 2.59.3's
     pedestrian disc). A view that missed the panel's white around its disc reads the disc alone; in a track
     with a confident (accepted) reading of the panel, doubtful (review) readings of such a disc
-    (:func:`_disc_of`) are the panel's own disc and count for it. Confident ones do not, nor other discs: a
-    speed limit or a 2.14 over a plate, read as a panel once from afar and clearly as itself nearer, stays
-    itself (held-out drives 1107 and 1088).
+    (:func:`.zone_panels.may_be_disc_of`; detection holds one inside white at its own depth for review) are the
+    panel's own disc and count for it. Confident ones do not, nor other discs: a speed limit or a 2.14 over a
+    plate, read as a panel once from afar and clearly as itself nearer, stays itself (held-out drives 1107 and
+    1088).
     """
     weights = defaultdict(float)
     panels = {o.template_id: carried_discs[o.template_id] for o in observations
               if carried_discs and o.template_id in carried_discs and o.status == ACCEPTED}
     for o in observations:
         weight = max(o.classification_indicator, 1e-3) * max(o.detection_indicator, 1e-3)
-        panel = next((p for p, disc in panels.items() if o.status != ACCEPTED and _disc_of(disc, o.template_id)),
+        panel = next((p for p, disc in panels.items() if o.status != ACCEPTED and may_be_disc_of(disc, o.template_id)),
                      None)
         weights[panel or o.template_id] += weight
     winner = max(weights, key=weights.get)
@@ -485,7 +480,10 @@ def fuse_track(sign_id: int, observations: Sequence[Observation], config: Fusion
     det_ind = float(np.mean([o.detection_indicator for o in voters]))
     cls_ind = float(np.mean([o.classification_indicator for o in voters]))
     needed = sign_accept_threshold(config)
-    accepted = len(voters) >= config.min_obs_accepted and share >= config.accept_vote_share and cls_ind >= needed
+    # and one view at least accepted its reading: views a detection rule held for review whatever their score (a
+    # Hough circle without a full-colour ring, a disc inside a white panel) make no accepted sign on their own
+    accepted = len(voters) >= config.min_obs_accepted and share >= config.accept_vote_share and \
+        cls_ind >= needed and any(o.status == ACCEPTED for o in voters)
     single = _share_of_way(needed, config.single_margin)
     if config.accept_single_observation and len(voters) == 1 and best.status == ACCEPTED and cls_ind >= single and \
             best.depth_m <= config.single_max_depth_share * config.far_m:

@@ -386,6 +386,16 @@ class ClassificationConfig:
     inner_fraction: float = 0.14  # that field is the face without this outer share (the rim)
     surround_grow: float = 0.04  # a panel's part outside its colour part is read without this margin of the face
     # around the colour part (its blurred edge would count as surround)
+    # a disc read as a zone panel's disc (a speed limit, 2.61) with white at its own depth above it and beside it
+    # is held for review (zone_panel_surround): the panel's surround missed a design unlike the official one. White:
+    # at most white_max_saturation and at least this value, on this share of a strip...
+    panel_white_min_value: int = 130
+    panel_white_share: float = 0.5
+    panel_depth_tolerance: Tuple[float, float] = (0.15, 0.03)  # ...within this of the disc's depth (metres, or
+    # that share of it, the larger)...
+    panel_at_depth: Tuple[float, float] = (0.9, 0.6)  # ...for this share of its depths above the disc, and beside
+    # it (a shadowed procedural panel's margins kept 0.6; set on looked-at drives 801-805, 1150-1179: all 11 views
+    # of a zone panel read as its disc held, one of 155 other speed-limit and 2.61 views, already in review)
     same_sign_max_iou: float = 0.3  # detections of one pair overlapping more (or holding the other's centre) are
     # one sign found twice, or a part of it found as a sign: the best (detection x classification) is kept
     part_max_area_share: float = 0.7  # ...but a detection inside an accepted one's face covering at most this share

@@ -20,6 +20,7 @@ import numpy as np
 from ..face_normal import world_face_normal
 from ..geometry import Camera, Pose
 from ..printed_numbers import number_band, printed_number
+from ..zone_panels import may_be_a_panels_disc
 from .boxes import box_iou, centre_inside
 from .classifiers import accept_threshold, marginal_min_score, min_score
 from .classify import surround_score
@@ -30,6 +31,7 @@ from .detection import Detection
 from .face_extent import (
     FULL,
     candidate_entries,
+    carried_discs,
     face_bbox,
     frame_candidates,
     hole_candidates,
@@ -49,6 +51,7 @@ from .text_panels import context_boxes as panel_context_boxes
 from .text_panels import text_panel_detections, text_panel_fields
 from .white_outlines import WhiteCandidate, context_boxes, face_side_range_px, white_candidates, white_formats
 from .white_signs import white_detections
+from .zone_panel_surround import inside_white_panel
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
 
@@ -283,6 +286,10 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     slack = config.depth.face_depth_slack
     if not (np.isfinite(z) and config.depth.near_m * (1.0 - slack) <= z <= config.depth.far_m * (1.0 + slack)):
         z = size.depth_m
+    panel_discs = carried_discs(catalogue, config.colour.hsv_ranges)
+    if status == "accepted" and may_be_a_panels_disc(panel_discs, cls.template_id) and \
+            inside_white_panel(left, depth, face, z, config):
+        status = "review"  # a zone panel's disc read alone
     entry = catalogue[cls.template_id]
     return Detection(
         template_id=cls.template_id, name=_entry_name(entry), colour=seg.colour, shape=entry.shape,

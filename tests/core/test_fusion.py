@@ -315,3 +315,29 @@ def test_a_plate_is_accepted_on_the_classifiers_threshold_without_the_signs_marg
     (plate,) = fuse_plates(signs_seen + plates_seen, [sign], config)
     assert sign.status == "accepted" and plate.plate_of == sign.sign_id
     assert plate.status == "accepted" and plate.classification_indicator == pytest.approx(0.93)
+
+
+def test_views_held_for_review_make_no_accepted_sign_on_their_own():
+    """Detection holds some readings for review whatever their score (a disc inside a white panel, a Hough circle
+    without a full-colour ring): four such views at 0.99 give a sign for review; one accepted view among them is
+    enough."""
+    truth = np.array([20.0, 3.0, 2.5])
+    held = doubtful(seen_from(truth, [3, 4, 5, 6], template_id="2.30-30", cls=0.99))
+    (sign,) = fuse_observations(held, FusionConfig(accept_classification=0.9))
+    assert sign.template_id == "2.30-30" and sign.status == "review"
+    held[2].detection.status = "accepted"
+    (sign,) = fuse_observations(held, FusionConfig(accept_classification=0.9))
+    assert sign.status == "accepted"
+
+
+def test_a_zone_panels_disc_held_for_review_counts_for_the_panel_read_once():
+    """Drive 1172: a 2.59.3 panel read as its disc (2.61) at 12.9 and 6.0 m, confidently, and as the panel at
+    8.3 m. Held for review (inside white at its own depth), the disc views count for the panel."""
+    truth = np.array([20.0, 3.0, 2.5])
+    panel = seen_from(truth, [5], template_id="2.59.3", shape="rectangle", colour="blue", cls=1.0,
+                      fmt=("normal", 0.6, 0.9))
+    discs = seen_from(truth, [3, 7], template_id="2.61", colour="blue", cls=0.97, det=0.98)
+    (sign,) = fuse_observations(discs + panel, carried_discs=ZONES)
+    assert sign.template_id == "2.61"  # confident disc readings outvote the panel
+    (sign,) = fuse_observations(doubtful(discs) + panel, carried_discs=ZONES)
+    assert sign.template_id == "2.59.3" and sign.n_obs == 3 and sign.vote_share == pytest.approx(1.0)

@@ -321,3 +321,23 @@ def test_a_red_ring_split_by_a_wide_pole_is_read_from_its_white_field(catalogue,
     dets = _detect(catalogue, left, depth)
     assert [(d.template_id, d.source, d.format) for d in dets] == [(template_id, "hole", "normal")]
     assert np.linalg.norm(dets[0].position - sign) < 0.1
+
+
+@pytest.mark.parametrize("panel_depth, status", [(None, "review"), (30.0, "accepted")])
+def test_a_speed_ring_inside_a_white_panel_of_another_design_is_held_for_review(catalogue, panel_depth, status):
+    """A zone panel unlike the official one (lettering higher, a narrow bottom margin): its surround does not match
+    the official panel, so its ring is read as the speed limit, confidently (drive 1179). White at the ring's own
+    depth above and beside it holds that reading for review; the same white as a wall far behind does not."""
+    sign = _world(8.0, 1.0, 0.4)
+    left, depth, (x, y, w, h) = sign_scene(catalogue, "2.30-30", "normal", sign, background_depth=30.0)
+    z = float(depth[y + h // 2, x + w // 2])
+    face = depth < 29.0
+    panel = np.zeros_like(face)
+    panel[int(y - 0.45 * h) : int(y + 1.1 * h), int(x - 0.08 * w) : int(x + 1.08 * w)] = True
+    left[panel & ~face] = (240, 240, 240)
+    for k in range(4):  # the lettering above the ring
+        x0 = int(x + (0.15 + 0.18 * k) * w)
+        left[int(y - 0.38 * h) : int(y - 0.18 * h), x0 : x0 + int(0.12 * w)] = (25, 25, 25)
+    depth[panel & ~face] = z if panel_depth is None else panel_depth
+    dets = _detect(catalogue, left, depth, hough=NO_HOUGH)
+    assert [(d.template_id, d.status) for d in dets] == [("2.30-30", status)]
