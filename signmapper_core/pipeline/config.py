@@ -395,7 +395,8 @@ class ClassificationConfig:
     # that share of it, the larger)...
     panel_at_depth: Tuple[float, float] = (0.9, 0.6)  # ...for this share of its depths above the disc, and beside
     # it (a shadowed procedural panel's margins kept 0.6; set on looked-at drives 801-805, 1150-1179: all 11 views
-    # of a zone panel read as its disc held, one of 155 other speed-limit and 2.61 views, already in review)
+    # of a zone panel read as its disc held; of the 167 other speed-limit and 2.61 views, two had such white around
+    # them, both already in review)
     same_sign_max_iou: float = 0.3  # detections of one pair overlapping more (or holding the other's centre) are
     # one sign found twice, or a part of it found as a sign: the best (detection x classification) is kept
     part_max_area_share: float = 0.7  # ...but a detection inside an accepted one's face covering at most this share

@@ -286,8 +286,8 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     slack = config.depth.face_depth_slack
     if not (np.isfinite(z) and config.depth.near_m * (1.0 - slack) <= z <= config.depth.far_m * (1.0 + slack)):
         z = size.depth_m
-    panel_discs = carried_discs(catalogue, config.colour.hsv_ranges)
-    if status == "accepted" and may_be_a_panels_disc(panel_discs, cls.template_id) and \
+    if status == "accepted" and may_be_a_panels_disc(carried_discs(catalogue, config.colour.hsv_ranges),
+                                                     cls.template_id) and \
             inside_white_panel(left, depth, face, z, config):
         status = "review"  # a zone panel's disc read alone
     entry = catalogue[cls.template_id]
