@@ -1,0 +1,72 @@
+"""Regression figures on two small held-out synthetic drives (mapping end to end, depth by stereo matching).
+
+Their faces are not copies of the templates: 70 % the official drawings printed worn, faded, dirty or with
+stickers, 30 % our procedural designs (``SimulationConfig`` defaults). Seeds 9001 and 9002 were generated for this
+test and taken as they came. Thresholds sit a little below what was measured on them (2026-12-04, main 3b7009d:
+23 signs in view, 22 detected, 19 right, 20 accepted with 1 wrong, a procedural 2.41 read as 2.36; 3D RMS 3.0 cm);
+the figures of record are those of fresh drives measured once (README, "Measuring accuracy and speed").
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.drive import open_drive
+from signmapper_core.evaluation import evaluate
+from signmapper_core.mapping import map_drive
+from signmapper_core.pipeline import PipelineConfig
+from signmapper_core.simulate import SimulationConfig, generate_drive
+from signmapper_core.visibility import mappable_signs
+
+SEEDS = (9001, 9002)
+PAIRS = 50
+
+
+@pytest.fixture(scope="module")
+def figures(tmp_path_factory):
+    """Per drive: (reference signs, evaluation report, fused signs without plates)."""
+    catalogue = load_catalogue(None)
+    out = []
+    for seed in SEEDS:
+        folder = tmp_path_factory.mktemp(f"held_out_{seed}")
+        generate_drive(folder, SimulationConfig(pairs=PAIRS, seed=seed, write_depth=False))
+        drive = open_drive(folder, require_truth=True)
+        result = map_drive(drive, catalogue, PipelineConfig(), workers=1)
+        signs = [s for s in result.signs if s.plate_of is None]
+        reference = mappable_signs(drive, 4.0, 14.0)
+        trajectory = np.array([[r.pose.easting, r.pose.northing] for r in drive.pairs])
+        report = evaluate([s.position for s in signs], [s.template_id for s in signs],
+                          [r.position for r in reference], [r.template_id for r in reference], trajectory, 0.75)
+        out.append((reference, report, signs))
+    return out
+
+
+@pytest.mark.slow
+def test_held_out_drives_detect_and_classify_their_signs(figures):
+    in_view = sum(r.table1.reference_signs for _, r, _ in figures)
+    detected = sum(r.table1.detected_signs for _, r, _ in figures)
+    right = sum(r.table1.correctly_classified_signs for _, r, _ in figures)
+    false_positives = sum(r.table1.false_positive_detections for _, r, _ in figures)
+    assert in_view == 23, "the generator draws other drives now: measure them again and set the thresholds anew"
+    assert detected >= 21 and right >= 18 and false_positives <= 1
+    assert all(r.table1.duplicates == 0 for _, r, _ in figures)  # one feature per sign
+
+
+@pytest.mark.slow
+def test_held_out_drives_accept_few_wrong_ids(figures):
+    accepted = wrong = 0
+    for reference, report, signs in figures:
+        for sign, match in zip(signs, report.match):
+            if sign.status == "accepted":
+                accepted += 1
+                wrong += match < 0 or sign.template_id != reference[match].template_id
+    assert accepted >= 18 and wrong <= 1
+
+
+@pytest.mark.slow
+def test_held_out_drives_place_their_signs_within_a_few_centimetres(figures):
+    errors = np.concatenate([r.differences[:, 4] for _, r, _ in figures])
+    assert len(errors) >= 21
+    assert float(np.sqrt(np.mean(errors ** 2))) <= 0.04
