@@ -237,8 +237,11 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         return None
     # A reading that grows the segment into a larger face (a zone panel around its red ring) wins
     # when the face's part outside the segment matches too: the bare ring alone would always score
-    # higher, and the panel reading alone scores ~0.65 on any round sign.
-    readings, panels = [], []
+    # higher, and the panel reading alone scores ~0.65 on any round sign. A zone panel whose white does not match
+    # the official one (another design, a shadow) still wins where white lies at its disc's depth above and beside
+    # it (zone_panel_surround), held for review.
+    readings, panels, held_panels = [], [], []
+    zone_panels = carried_discs(catalogue, config.colour.hsv_ranges)
     same_shapes = {c for s in shapes for c in catalogue_shapes(s, seg.bbox[2], seg.bbox[3])}
     classifier = pair.classifier_knowing([i for *_, ids, _ in fits for i in ids])
     accept = accept_threshold(classifier, config)
@@ -251,7 +254,9 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         elif surround_score(left, face, catalogue, cls.template_id, ext, config.classification.surround_grow) >= \
                 config.classification.min_surround_score:
             panels.append((match, face, cls))
-    good_panels = [r for r in panels if r[2].score >= accept]
+        elif cls.template_id in zone_panels and inside_white_panel(left, depth, seg.bbox, size.depth_m, config):
+            held_panels.append((match, face, cls))
+    good_panels = [r for r in panels + held_panels if r[2].score >= accept]
     # each reading's indicator is a probability over its own candidates, so readings of other shapes are not
     # ranked by it: the outline's best-fitting shape decides (a stop sign, its octagon the best fit, read as
     # 3.01 with its white rim at 0.98 and, as a disc of the red alone, as no entry 2.02 at 0.99; a disc read
@@ -272,7 +277,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     if best is None or best[2].score < floor:
         return None
     match, face, cls = best
-    status = "accepted" if cls.score >= accept else "review"
+    status = "accepted" if cls.score >= accept and not any(best is r for r in held_panels) else "review"
     if seg.source == "hough" and status == "accepted":
         # a circle with a full-colour ring is a colour find the colour step lost (an attachment
         # spoiled its outline); faded or white ones stay for review
@@ -286,8 +291,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     slack = config.depth.face_depth_slack
     if not (np.isfinite(z) and config.depth.near_m * (1.0 - slack) <= z <= config.depth.far_m * (1.0 + slack)):
         z = size.depth_m
-    if status == "accepted" and may_be_a_panels_disc(carried_discs(catalogue, config.colour.hsv_ranges),
-                                                     cls.template_id) and \
+    if status == "accepted" and may_be_a_panels_disc(zone_panels, cls.template_id) and \
             inside_white_panel(left, depth, face, z, config):
         status = "review"  # a zone panel's disc read alone
     entry = catalogue[cls.template_id]

@@ -341,3 +341,24 @@ def test_a_speed_ring_inside_a_white_panel_of_another_design_is_held_for_review(
     depth[panel & ~face] = z if panel_depth is None else panel_depth
     dets = _detect(catalogue, left, depth, hough=NO_HOUGH)
     assert [(d.template_id, d.status) for d in dets] == [("2.30-30", status)]
+
+
+@pytest.mark.parametrize("panel_depth, found", [(None, ("2.59.1", "review")), (30.0, ("2.30-30", "accepted"))])
+def test_a_zone_panel_whose_white_matches_no_official_panel_is_read_as_the_panel_by_its_depth(
+        catalogue, monkeypatch, panel_depth, found):
+    """Drives 1179 and 1196: the network read a zone panel of another design as 2.59.1 at 1.00, but its white
+    matched the official panel's too poorly (surround NCC 0.11-0.30) and the disc alone was mapped. With the surround
+    failing (patched), white at the disc's own depth above and beside it still makes it the panel, for review; a
+    disc before the same white 22 m behind it is the disc."""
+    from signmapper_core.pipeline import detect as detect_module
+
+    sign = _world(8.0, -1.0, 0.3)
+    left, depth, _ = sign_scene(catalogue, "2.59.1", "normal", sign, seed=2, background_depth=30.0)
+    assert [(d.template_id, d.status) for d in _detect(catalogue, left, depth)] == [("2.59.1", "accepted")]
+    monkeypatch.setattr(detect_module, "surround_score", lambda *args, **kwargs: 0.0)
+    if panel_depth is not None:  # only the red ring stays in front: the panel's white lies far behind it
+        red = (left[..., 2].astype(int) - left[..., 1] > 80).astype(np.uint8)
+        ring = cv2.dilate(red, np.ones((5, 5), np.uint8)).astype(bool)
+        depth[(depth < 29.0) & ~ring] = panel_depth
+    dets = _detect(catalogue, left, depth, hough=NO_HOUGH)
+    assert [(d.template_id, d.status) for d in dets] == [found]
