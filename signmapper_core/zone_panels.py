@@ -1,8 +1,9 @@
 """Zone panels (2.59.1, 2.59.3): white panels that carry a disc sign, and the readings of that disc alone.
 
 A view that misses the panel's white reads its disc as a sign of its own (2.59.1's ring as a speed limit, 2.59.3's
-disc as 2.61). Detection holds such a reading for review when the disc sits inside white at its own depth
-(``pipeline.zone_panel_surround``); fusion counts doubtful ones for a panel read elsewhere on the track.
+disc as 2.61). Where the disc sits inside white at its own depth (``pipeline.zone_panel_surround``), detection
+reads the panel or holds such a reading for review; fusion counts doubtful ones for a panel read elsewhere on the
+track.
 """
 
 from __future__ import annotations

@@ -386,9 +386,10 @@ class ClassificationConfig:
     inner_fraction: float = 0.14  # that field is the face without this outer share (the rim)
     surround_grow: float = 0.04  # a panel's part outside its colour part is read without this margin of the face
     # around the colour part (its blurred edge would count as surround)
-    # a disc read as a zone panel's disc (a speed limit, 2.61) with white at its own depth above it and beside it
-    # is held for review (zone_panel_surround): the panel's surround missed a design unlike the official one. White:
-    # at most white_max_saturation and at least this value, on this share of a strip...
+    # a disc with white at its own depth above it and beside it sits on a zone panel (zone_panel_surround): a panel
+    # reading wins there though its surround fails min_surround_score (a design unlike the official one), and a
+    # reading of the disc alone (a speed limit, 2.61) is held for review. White: at most white_max_saturation and at
+    # least this value, on this share of a strip...
     panel_white_min_value: int = 130
     panel_white_share: float = 0.5
     panel_depth_tolerance: Tuple[float, float] = (0.15, 0.03)  # ...within this of the disc's depth (metres, or

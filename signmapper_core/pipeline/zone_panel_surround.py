@@ -4,8 +4,9 @@ A panel reading wins over its disc only where the white around the disc matches 
 (``classify.surround_score``). A zone panel of another design, or one half in shadow, fails that, and its disc is
 read alone as a speed limit or 2.61, confidently and wrongly (held-out drives 1172 and 1179: two of the four
 accepted signs with a wrong id). What gives the panel away is plain geometry: white at the disc's own depth above
-it (the panel's "ZONE" line) and beside it, where a disc on a pole has background or a wall behind it. Such a
-reading is held for review (``detect.evaluate_segment``).
+it (the panel's "ZONE" line) and beside it, where a disc on a pole has background or a wall behind it. There, a
+panel reading whose surround failed the NCC wins over the disc, and a disc reading is held for review
+(``detect.evaluate_segment``).
 """
 
 from __future__ import annotations
