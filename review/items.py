@@ -13,6 +13,7 @@ from qgis.core import QgsFeatureRequest
 
 from ..gpkg.fields import feature_values
 from ..signmapper_core.changes_schema import CHANGES
+from ..signmapper_core.classifier_alternatives import parse_alternatives
 from ..signmapper_core.output_schema import DETECTIONS, REVIEW, SIGNS
 from ..ui.review_item import ObservationView, ReviewItem
 from .imaging import crop_rect
@@ -65,6 +66,7 @@ def read_item(session, feature) -> ReviewItem:
         pair_id=pair_id or "", time=values["time"], depth_m=values["depth_m"], bbox=_bbox(values),
         centroid=(u, v) if u is not None and v is not None else None,
         position=(point.x(), point.y(), point.z()) if point is not None else None,
+        alternatives=parse_alternatives(values["alternatives"]),
     )
     catalogue = session.catalogue
     if item.template_id and catalogue is not None and item.template_id in catalogue:

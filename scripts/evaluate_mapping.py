@@ -34,6 +34,7 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
 from signmapper_core.catalogue import load_catalogue  # noqa: E402
+from signmapper_core.classifier_alternatives import sign_alternatives  # noqa: E402
 from signmapper_core.drive import open_drive  # noqa: E402
 from signmapper_core.evaluation import combine_reports, evaluate, format_report, majority_id  # noqa: E402
 from signmapper_core.family_evaluation import (  # noqa: E402
@@ -88,6 +89,14 @@ def accepted_but_wrong(signs, reference, report) -> tuple:
     accepted = [(sign, ref) for sign, ref in zip(signs, report.match) if sign.status == "accepted"]
     wrong = sum(1 for sign, ref in accepted if ref >= 0 and sign.template_id != reference[ref].template_id)
     return len(accepted), wrong, sum(1 for _, ref in accepted if ref < 0)
+
+
+def misread_offered(signs, reference, report) -> tuple:
+    """(fused signs matched to a reference sign of another id, of them offering the true id among their next
+    choices): how often the review's one-click suggestions hold the answer."""
+    wrong = [(sign, reference[ref].template_id) for sign, ref in zip(signs, report.match)
+             if ref >= 0 and sign.template_id != reference[ref].template_id]
+    return len(wrong), sum(1 for sign, true_id in wrong if true_id in dict(sign_alternatives(sign)))
 
 
 def by_artwork(signs, reference, report) -> dict:
@@ -160,6 +169,7 @@ def main(argv=None) -> int:
     reports = {"detections": [], "signs": []}
     all_azimuth_errors = []
     accepted_total, accepted_wrong, accepted_unmatched = 0, 0, 0
+    misread_total, offered_total = 0, 0
     total_pairs, total_seconds = 0, 0.0
     plate_totals = PlateFigures()
     panel_totals = PanelFigures()
@@ -194,6 +204,8 @@ def main(argv=None) -> int:
                 all_azimuth_errors += azimuth_errors(signs, reference, report)
                 for artwork, row in by_artwork(signs, reference, report).items():
                     artwork_totals[artwork] = [a + b for a, b in zip(artwork_totals.get(artwork, [0, 0, 0]), row)]
+                misread, offered = misread_offered(signs, reference, report)
+                misread_total, offered_total = misread_total + misread, offered_total + offered
                 n, wrong, unmatched = accepted_but_wrong(signs, reference, report)
                 accepted_total, accepted_wrong, accepted_unmatched = (accepted_total + n, accepted_wrong + wrong,
                                                                       accepted_unmatched + unmatched)
@@ -229,6 +241,8 @@ def main(argv=None) -> int:
           f"{result.classification_threshold:.3f} a view, {sign_accept_threshold(result.fusion):.3f} a sign's "
           f"voters): {accepted_total}; with a wrong id {accepted_wrong} "
           f"({100 * accepted_wrong / max(accepted_total, 1):.1f} %), matching no reference sign {accepted_unmatched}")
+    print(f"Fused signs with a wrong id: {misread_total}; the true id among their next choices (the review's "
+          f"suggestions): {offered_total}")
     for line in artwork_lines(artwork_totals):
         print(line)
     if all_azimuth_errors:

@@ -148,6 +148,12 @@ def _sign_name(entry, language: str) -> str:
     return sign_name(entry, language)
 
 
+def _alternatives_text(item, sign: bool = False) -> Optional[str]:
+    from .classifier_alternatives import detection_alternatives, format_alternatives, sign_alternatives
+
+    return format_alternatives(sign_alternatives(item) if sign else detection_alternatives(item))
+
+
 def _names(en: str, de: str, fr: str, it: str) -> dict:
     return {"aliases": {"en": en, "de": de, "fr": fr, "it": it}}
 
@@ -209,10 +215,15 @@ FIELDS = (
           decimals=4, **_both("detection_indicator"),
           **_names("Detection indicator", "Detektionsindikator", "Indicateur de détection",
                    "Indicatore di rilevamento")),
-    Field("classification_indicator", REAL, "Template-matching score, 0-1: is it this sign? Mean of the voters "
-          "for a sign.", decimals=4, **_both("classification_indicator"),
+    Field("classification_indicator", REAL, "Classification score, 0-1: is it this sign? The network's calibrated "
+          "probability (template matching: its correlation). Mean of the voters for a sign.", decimals=4,
+          **_both("classification_indicator"),
           **_names("Classification indicator", "Klassifikationsindikator", "Indicateur de classification",
                    "Indicatore di classificazione")),
+    Field("alternatives", TEXT, "The classifier's next choices after this id, best first, with their scores "
+          "(\"2.12 0.22, 2.30-40 0.06\"; a sign's pooled over its observations): the review offers them first.",
+          sign=lambda s: _alternatives_text(s, sign=True), detection=lambda o: _alternatives_text(o.detection),
+          **_names("Next choices", "Nächste Wahl", "Choix suivants", "Scelte successive")),
     Field("n_obs", INTEGER, "Number of detections fused into the sign.", required=True, sign=lambda s: s.n_obs,
           **_names("Observations", "Beobachtungen", "Observations", "Osservazioni")),
     Field("vote_share", REAL, "Share of the weighted vote its template won, 0-1.", decimals=3,

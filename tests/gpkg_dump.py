@@ -26,6 +26,8 @@ FLOAT_TOLERANCE = {
     "easting": 1.1e-3, "northing": 1.1e-3, "elevation": 1.1e-3,
 }
 DEFAULT_TOLERANCE = 1e-9
+# Text attributes holding "<id> <score>, ..." (written with two decimals): ids exact, scores to one unit.
+SCORE_LIST_TOLERANCE = {"alternatives": 0.011}
 
 
 def _columns(db: sqlite3.Connection, table: str) -> list:
@@ -121,8 +123,11 @@ def differences(expected, actual, where="") -> list[str]:
         for i, (e, a) in enumerate(zip(expected, actual)):
             out += differences(e, a, f"{where}[{i}]")
         return out
-    if isinstance(expected, float) and isinstance(actual, (int, float)) and not isinstance(actual, bool):
-        field = where.rsplit("/", 1)[-1].split("[", 1)[0]
+    field = where.rsplit("/", 1)[-1].split("[", 1)[0]
+    if field in SCORE_LIST_TOLERANCE and isinstance(expected, str) and isinstance(actual, str):
+        if _same_score_list(expected, actual, SCORE_LIST_TOLERANCE[field]):
+            return []
+    elif isinstance(expected, float) and isinstance(actual, (int, float)) and not isinstance(actual, bool):
         tolerance = FLOAT_TOLERANCE.get(field, DEFAULT_TOLERANCE)
         if math.isclose(expected, actual, rel_tol=0.0, abs_tol=tolerance):
             return []
@@ -131,3 +136,13 @@ def differences(expected, actual, where="") -> list[str]:
     return [f"{where}: expected {expected!r}, found {actual!r}"]
 
 
+def _same_score_list(expected: str, actual: str, tolerance: float) -> bool:
+    def pairs(text):
+        return [(p.split()[0], float(p.split()[1])) for p in text.split(", ")]
+
+    try:
+        e, a = pairs(expected), pairs(actual)
+    except (IndexError, ValueError):
+        return expected == actual
+    return [t for t, _ in e] == [t for t, _ in a] and all(
+        math.isclose(x, y, rel_tol=0.0, abs_tol=tolerance) for (_, x), (_, y) in zip(e, a))

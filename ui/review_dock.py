@@ -328,6 +328,7 @@ class ReviewDock(QDockWidget):
         self.pictogram.clear()
         self.strip_box.setVisible(False)
         self.plate_box.setVisible(False)
+        self.picker.set_suggestions([])
         self.clear_image()
         self.set_item_enabled(False)
 
@@ -355,6 +356,7 @@ class ReviewDock(QDockWidget):
             self.pictogram.setPixmap(pix.scaled(68, 68, Qt.KeepAspectRatio, Qt.SmoothTransformation))
         self.picker.set_filter(item.colour, item.shape, "")
         self.picker.select(item.template_id)
+        self.picker.set_suggestions([a for a in item.alternatives if a[0] != item.template_id])  # after a reclassify
         self.set_item_enabled(True, item.status, item.reviewed, item.position is not None)
         if item.image is not None:
             self.set_image(item.pair_id, item.image, item.crop, item.bbox, item.centroid)

@@ -55,6 +55,7 @@ class ReviewItem:
     plate_of: Optional[int] = None  # a supplementary plate: the sign_id of its sign
     text: Optional[str] = None  # a plate's text as read (or as a person set it)
     text_confidence: Optional[float] = None
+    alternatives: List[Tuple[str, float]] = field(default_factory=list)  # the classifier's next choices, best first
 
     @property
     def is_plate(self) -> bool:

@@ -1,5 +1,8 @@
 """A grid of template pictograms to reclassify a sign, filtered by colour, shape and a search text.
 
+Above the grid, the classifier's next choices for the sign (its ``alternatives``)
+as one-click buttons: a misread sign's true id is most often among them.
+
 It is given plain :class:`TemplateChoice` records (the controller builds them
 from the catalogue), so it neither reads the catalogue nor writes layers.
 """
@@ -7,18 +10,20 @@ from the catalogue), so it neither reads the catalogue nor writes layers.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Iterable, List, Optional
+from typing import Iterable, List, Optional, Sequence, Tuple
 
 from qgis.PyQt.QtCore import QSize, Qt, pyqtSignal
 from qgis.PyQt.QtGui import QIcon
 from qgis.PyQt.QtWidgets import (
     QComboBox,
     QHBoxLayout,
+    QLabel,
     QLineEdit,
     QListView,
     QListWidget,
     QListWidgetItem,
     QPushButton,
+    QToolButton,
     QVBoxLayout,
     QWidget,
 )
@@ -72,6 +77,12 @@ class TemplatePicker(QWidget):
         self.grid.setMaximumHeight(4 * (icon_px + 30) + 8)
         self.choose_button = QPushButton("Reclassify as selected")
         self.choose_button.setEnabled(False)
+        self._suggested: List[Tuple[str, float]] = []
+        self._suggestion_buttons: List[QToolButton] = []
+        self.suggestions = QWidget()
+        self._suggestion_row = QHBoxLayout(self.suggestions)
+        self._suggestion_row.setContentsMargins(0, 0, 0, 0)
+        self.suggestions.setVisible(False)
 
         filters = QHBoxLayout()
         filters.addWidget(self.colour_box)
@@ -79,6 +90,7 @@ class TemplatePicker(QWidget):
         filters.addWidget(self.search, 1)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
+        layout.addWidget(self.suggestions)
         layout.addLayout(filters)
         layout.addWidget(self.grid, 1)
         layout.addWidget(self.choose_button)
@@ -105,6 +117,7 @@ class TemplatePicker(QWidget):
                 box.addItem(value, value)
             box.blockSignals(False)
         self._refilter()
+        self._show_suggestions()
 
     def choices(self) -> List[TemplateChoice]:
         return list(self._choices)
@@ -121,6 +134,42 @@ class TemplatePicker(QWidget):
             self.search.setText(text)
             self.search.blockSignals(False)
         self._refilter()
+
+    def set_suggestions(self, alternatives: Sequence[Tuple[str, float]]) -> None:
+        """The classifier's next choices (id, score), best first; ids the catalogue lacks are not offered."""
+        self._suggested = list(alternatives)
+        self._show_suggestions()
+
+    def suggested_ids(self) -> List[str]:
+        return [button.property("template_id") for button in self._suggestion_buttons]
+
+    def _show_suggestions(self) -> None:
+        while self._suggestion_row.count():
+            widget = self._suggestion_row.takeAt(0).widget()
+            if widget is not None:
+                widget.setParent(None)  # gone from the row now, not at the next event loop turn
+                widget.deleteLater()
+        self._suggestion_buttons = []
+        known = {c.id: c for c in self._choices}
+        offered = [(known[tid], score) for tid, score in self._suggested if tid in known]
+        if offered:
+            label = QLabel("Next choices:")
+            label.setToolTip("What the classifier ranked after the current id, with its scores")
+            self._suggestion_row.addWidget(label)
+        for choice, score in offered:
+            button = QToolButton()
+            button.setProperty("template_id", choice.id)
+            button.setToolButtonStyle(Qt.ToolButtonTextUnderIcon)
+            if choice.icon_path:
+                button.setIcon(QIcon(choice.icon_path))
+                button.setIconSize(QSize(self._icon_px, self._icon_px))
+            button.setText(f"{choice.id}\n{score:.2f}")
+            button.setToolTip(f"Reclassify as {choice.id} {choice.name} (classifier score {score:.2f})")
+            button.clicked.connect(lambda _checked=False, tid=choice.id: self.templateChosen.emit(tid))
+            self._suggestion_row.addWidget(button)
+            self._suggestion_buttons.append(button)
+        self._suggestion_row.addStretch(1)
+        self.suggestions.setVisible(bool(offered))
 
     def visible_ids(self) -> List[str]:
         return [self.grid.item(i).data(ID_ROLE) for i in range(self.grid.count())]

@@ -265,6 +265,28 @@ def test_reclassify_writes_the_catalogue_entry_and_format_and_undo_restores(revi
         assert restored[key] == before[key], key
 
 
+def test_the_next_choices_of_a_feature_reclassify_it_with_one_click(review, gpkg):
+    from qgis.PyQt.QtWidgets import QToolButton
+
+    catalogue = load_catalogue()
+    controller, dock, layer = review(gpkg)
+    feature = next(iter(layer.getFeatures()))
+    fid, current = feature.id(), feature["template_id"]
+    target = next(e for e in catalogue if e.id != current and e.colour == feature["colour"])
+    layer.startEditing()
+    layer.changeAttributeValue(fid, layer.fields().indexOf("alternatives"), f"{target.id} 0.22, no.such.id 0.05")
+    assert layer.commitChanges()
+    select(controller, layer, fid)
+    assert dock.item.alternatives == [(target.id, 0.22), ("no.such.id", 0.05)]
+    assert dock.picker.suggested_ids() == [target.id]  # what the catalogue lacks is not offered
+    (button,) = dock.picker.suggestions.findChildren(QToolButton)
+    button.click()
+    wait_idle(controller)
+    after = on_disk(gpkg)[fid]
+    assert (after["template_id"], after["status"], after["reviewed"]) == (target.id, "accepted", 1)
+    assert dock.picker.suggested_ids() == []  # the feature now carries the suggested id itself
+
+
 def test_decision_in_the_users_edit_session_goes_on_the_undo_stack(review, gpkg):
     controller, dock, layer = review(gpkg)
     fid = next(f.id() for f in layer.getFeatures() if f["status"] == "review")

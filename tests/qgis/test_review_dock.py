@@ -4,7 +4,7 @@ import pytest
 from qgis.PyQt.QtCore import QPoint, Qt
 from qgis.PyQt.QtGui import QColor, QImage
 from qgis.PyQt.QtTest import QTest
-from qgis.PyQt.QtWidgets import QApplication
+from qgis.PyQt.QtWidgets import QApplication, QToolButton
 
 
 @pytest.fixture
@@ -121,6 +121,25 @@ def test_picker_filters_by_colour_shape_and_text_and_emits_reclassify(dock):
     assert dock.picker.select("2.30-80")
     QTest.mouseClick(dock.picker.choose_button, Qt.LeftButton)
     assert rec.calls == [("reclassifyRequested", "2.30-80")]
+
+
+def test_the_classifiers_next_choices_are_one_click_reclassifications(dock, ui):
+    _, review_item, _, _ = ui
+    rec = Recorder(dock)
+    assert not dock.picker.suggested_ids()  # the fixture's item has none
+    item = review_item.ReviewItem(
+        "signs", 5, "signs · sign 5", template_id="2.30-50", colour="red", shape="circle", status="review",
+        alternatives=[("2.30-80", 0.31), ("9.99", 0.2), ("1.01", 0.05)])
+    dock.show_item(item)
+    QTest.keyClick(dock.image_view, Qt.Key_C)
+    assert dock.picker.suggested_ids() == ["2.30-80", "1.01"]  # 9.99 is no catalogue entry: not offered
+    assert dock.picker.suggestions.isVisible()
+    buttons = dock.picker.suggestions.findChildren(QToolButton)
+    assert buttons[0].text() == "2.30-80\n0.31"
+    QTest.mouseClick(buttons[1], Qt.LeftButton)
+    assert rec.calls == [("reclassifyRequested", "1.01")]
+    dock.show_empty("nothing selected")
+    assert not dock.picker.suggested_ids()
 
 
 def test_view_opens_on_the_crop_and_draws_the_bbox(dock):
