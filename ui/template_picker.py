@@ -72,7 +72,7 @@ class TemplatePicker(QWidget):
         self.grid.setMovement(QListView.Static)
         self.grid.setWordWrap(True)
         self.grid.setTextElideMode(Qt.ElideNone)  # ids are short: show them whole, never "2…."
-        self.grid.setUniformItemSizes(True)
+        self.grid.setUniformItemSizes(False)  # a uniform size is the first item's, its id wrapped: "2.…" for all
         self.grid.setMinimumHeight(icon_px + 38)  # one row; the grid scrolls
         self.grid.setMaximumHeight(4 * (icon_px + 30) + 8)
         self.choose_button = QPushButton("Reclassify as selected")

@@ -426,11 +426,19 @@ def test_dock_screenshot(review, gpkg, tmp_path):
     import os
 
     controller, dock, layer = review(gpkg, "signs")
-    dock.resize(460, 1000)
+    dock.resize(460, 1400)  # tall enough for the picker with the sign's next choices
     dock.show()
-    select(controller, layer, next(iter(layer.getFeatures())).id())
+    feature = next(iter(layer.getFeatures()))
+    near = [e.id for e in load_catalogue() if e.colour == feature["colour"] and e.shape == feature["shape"]
+            and e.id != feature["template_id"]][:2]
+    layer.startEditing()
+    layer.changeAttributeValue(feature.id(), layer.fields().indexOf("alternatives"),
+                               ", ".join(f"{tid} {score}" for tid, score in zip(near, ("0.21", "0.04"))))
+    assert layer.commitChanges()
+    select(controller, layer, feature.id())
     dock.show_picker(True)
     QApplication.processEvents()
+    assert dock.picker.suggested_ids() == near
     out = Path(os.environ.get("REVIEW_DOCK_SCREENSHOT", tmp_path / "review-dock.png"))
     assert dock.grab().save(str(out))
     assert 10_000 < out.stat().st_size < 600_000

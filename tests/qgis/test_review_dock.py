@@ -142,6 +142,16 @@ def test_the_classifiers_next_choices_are_one_click_reclassifications(dock, ui):
     assert not dock.picker.suggested_ids()
 
 
+def test_the_picker_shows_every_id_whole(dock):
+    dock.show_picker(True)
+    dock.picker.set_filter("", "", "")
+    QApplication.processEvents()
+    grid = dock.picker.grid
+    for i in range(grid.count()):
+        item = grid.item(i)
+        assert grid.visualItemRect(item).width() >= grid.fontMetrics().horizontalAdvance(item.text()), item.text()
+
+
 def test_view_opens_on_the_crop_and_draws_the_bbox(dock):
     visible = dock.image_view.visible_image_rect()
     assert visible.contains(80, 30) and visible.contains(119, 69)
