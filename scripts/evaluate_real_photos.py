@@ -136,6 +136,7 @@ def check_digits(records: list, catalogue) -> None:
 
 
 def run_classify(args, catalogue, config: PipelineConfig) -> int:
+    from signmapper_core.classifier_alternatives import ranked_alternatives
     from signmapper_core.pipeline.classifiers import NccClassifier, accept_threshold
 
     clf = make_classifier(args.classifier, catalogue, args.model)
@@ -154,7 +155,8 @@ def run_classify(args, catalogue, config: PipelineConfig) -> int:
             by_matching[sign.ssv_id] += 1
         result = reader.classify(sign.load_image(), sign.bbox, candidates)
         records.append({"sign": sign, "id": result.template_id, "score": result.score, "n_cand": len(candidates),
-                        "accepted": result.score >= accept_threshold(reader, config)})
+                        "accepted": result.score >= accept_threshold(reader, config),
+                        "next": [t for t, _ in ranked_alternatives(result.scores, result.template_id)]})
     seconds = time.perf_counter() - start
     if args.read_digits:
         check_digits(records, catalogue)
@@ -177,6 +179,10 @@ def run_classify(args, catalogue, config: PipelineConfig) -> int:
 
     header = ["correct", "accepted", "wrong|acc", "mean score"]
     breakdowns(records, columns, header, "Classification")
+    misread = [r for r in records if r["id"] != r["sign"].ssv_id]
+    offered = sum(r["sign"].ssv_id in r["next"] for r in misread)
+    print(f"misread signs: {len(misread)}; the true id among their next choices (the review's suggestions): "
+          f"{offered} ({pct(offered, len(misread))})")
     by_id = defaultdict(list)
     for r in records:
         by_id[r["sign"].ssv_id].append(r)

@@ -95,7 +95,8 @@ def test_classify_runs_the_classifier_on_every_selected_crop(tiny_set, capsys, m
 
         def classify(self, image, bbox, candidates):
             calls.append((image.shape, tuple(bbox), set(candidates)))
-            return ClassificationResult(candidates[0] if len(candidates) == 1 else "2.30-50", 0.9)
+            chosen = candidates[0] if len(candidates) == 1 else "2.30-50"
+            return ClassificationResult(chosen, 0.9, {chosen: 0.9, "1.22": 0.05} if "1.22" in candidates else {})
 
     monkeypatch.setattr(evaluate, "make_classifier", lambda name, catalogue, model=None: Fake())
     assert evaluate.main(["classify", "--data", str(tiny_set), "--split", "all", "--classifier", "fake"]) == 0
@@ -105,7 +106,8 @@ def test_classify_runs_the_classifier_on_every_selected_crop(tiny_set, capsys, m
     assert calls[0][2] == {"3.02"}
     assert "2.30-50" in calls[1][2] and "2.01" in calls[1][2] and "3.01" not in calls[1][2]
     assert "1.22" in calls[2][2] and "1.30" in calls[2][2]
-    # 3.02 and 2.30-50 right, 1.22 wrong and accepted (score 0.9 >= 0.6)
+    # 3.02 and 2.30-50 right, 1.22 wrong and accepted (score 0.9 >= 0.6), its true id the next choice
+    assert "misread signs: 1; the true id among their next choices (the review's suggestions): 1 (100.0%)" in out
     assert _table_row(out, "by group and size", "same", "all")[2:5] == ["2", "54", "100.0%"]
     assert _table_row(out, "by group and size", "differs", "all")[4:7] == ["0.0%", "100.0%", "100.0%"]
     assert _table_row(out, "per SSV id", "1.22", "differs")[-2:] == ["2.30-50", "1"]
