@@ -66,7 +66,7 @@ def read_item(session, feature) -> ReviewItem:
         pair_id=pair_id or "", time=values["time"], depth_m=values["depth_m"], bbox=_bbox(values),
         centroid=(u, v) if u is not None and v is not None else None,
         position=(point.x(), point.y(), point.z()) if point is not None else None,
-        alternatives=parse_alternatives(values["alternatives"]),
+        alternatives=parse_alternatives(values["alternatives"]), review_reason=values["review_reason"] or "",
     )
     catalogue = session.catalogue
     if item.template_id and catalogue is not None and item.template_id in catalogue:

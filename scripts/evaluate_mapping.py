@@ -26,6 +26,7 @@ from __future__ import annotations
 import argparse
 import sys
 import time
+from collections import Counter
 from pathlib import Path
 
 import numpy as np
@@ -52,6 +53,7 @@ from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, WhiteConfig  # noqa: E402
 from signmapper_core.plate_evaluation import PlateFigures, evaluate_plates  # noqa: E402
 from signmapper_core.plate_fusion import is_plate  # noqa: E402
+from signmapper_core.review_reasons import LOW_INDICATOR  # noqa: E402
 from signmapper_core.simulate.face_artwork import OFFICIAL_PICTOGRAM, pictogram_group  # noqa: E402
 from signmapper_core.visibility import mappable_signs  # noqa: E402
 
@@ -89,6 +91,30 @@ def accepted_but_wrong(signs, reference, report) -> tuple:
     accepted = [(sign, ref) for sign, ref in zip(signs, report.match) if sign.status == "accepted"]
     wrong = sum(1 for sign, ref in accepted if ref >= 0 and sign.template_id != reference[ref].template_id)
     return len(accepted), wrong, sum(1 for _, ref in accepted if ref < 0)
+
+
+def review_outcomes(signs, reference, report) -> Counter:
+    """{(review reason, outcome): fused signs in review}; outcome "right", "wrong" (another id than the reference
+    sign's) or "no sign" (matching no reference sign). Says which rules hold right signs for nothing."""
+    counts = Counter()
+    for sign, ref in zip(signs, report.match):
+        if sign.status != "review":
+            continue
+        outcome = "no sign" if ref < 0 else "right" if sign.template_id == reference[ref].template_id else "wrong"
+        counts[((sign.review_reason or LOW_INDICATOR).split(":")[0], outcome)] += 1
+    return counts
+
+
+def review_lines(counts: Counter) -> list[str]:
+    """One line per review reason, most frequent first: how many signs it held, of them right, wrong, no sign."""
+    reasons = Counter()
+    for (reason, _), n in counts.items():
+        reasons[reason] += n
+    lines = [f"Fused signs in review: {sum(reasons.values())}, by reason (right id / wrong id / no sign):"]
+    for reason, n in reasons.most_common():
+        lines.append(f"  {reason}: {n} ({counts[reason, 'right']} / {counts[reason, 'wrong']} / "
+                     f"{counts[reason, 'no sign']})")
+    return lines
 
 
 def misread_offered(signs, reference, report) -> tuple:
@@ -170,6 +196,7 @@ def main(argv=None) -> int:
     all_azimuth_errors = []
     accepted_total, accepted_wrong, accepted_unmatched = 0, 0, 0
     misread_total, offered_total = 0, 0
+    review_totals = Counter()
     total_pairs, total_seconds = 0, 0.0
     plate_totals = PlateFigures()
     panel_totals = PanelFigures()
@@ -205,6 +232,7 @@ def main(argv=None) -> int:
                 for artwork, row in by_artwork(signs, reference, report).items():
                     artwork_totals[artwork] = [a + b for a, b in zip(artwork_totals.get(artwork, [0, 0, 0]), row)]
                 misread, offered = misread_offered(signs, reference, report)
+                review_totals += review_outcomes(signs, reference, report)
                 misread_total, offered_total = misread_total + misread, offered_total + offered
                 n, wrong, unmatched = accepted_but_wrong(signs, reference, report)
                 accepted_total, accepted_wrong, accepted_unmatched = (accepted_total + n, accepted_wrong + wrong,
@@ -243,6 +271,8 @@ def main(argv=None) -> int:
           f"({100 * accepted_wrong / max(accepted_total, 1):.1f} %), matching no reference sign {accepted_unmatched}")
     print(f"Fused signs with a wrong id: {misread_total}; the true id among their next choices (the review's "
           f"suggestions): {offered_total}")
+    for line in review_lines(review_totals):
+        print(line)
     for line in artwork_lines(artwork_totals):
         print(line)
     if all_azimuth_errors:

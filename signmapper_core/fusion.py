@@ -21,6 +21,7 @@ from typing import Mapping, Optional, Sequence
 import numpy as np
 
 from .output_schema import ACCEPTED, REVIEW
+from .review_reasons import sign_reason
 from .zone_panels import may_be_disc_of
 
 
@@ -52,6 +53,7 @@ class Observation:
     detection_indicator = _of_detection("detection_indicator", "planar share, 0..1")
     classification_indicator = _of_detection("classification_indicator", "template score, 0..1")
     status = _of_detection("status", "accepted, review or manual")
+    review_reason = _of_detection("review_reason", "the rule that held it for review, if one did")
     source = _of_detection("source", "colour segmentation or hough fallback")
     u = _of_detection("u", "column of the face centre in the left image")
     v = _of_detection("v", "row of the face centre in the left image")
@@ -160,6 +162,7 @@ class FusedSign:
     plate_of: Optional[int] = None  # a supplementary plate: the sign_id of its sign (plate_fusion)
     text: Optional[str] = None  # a plate's text as read (lines joined by " / "), None when not read
     text_confidence: Optional[float] = None  # 0..1: OCR confidence and agreement of its readings
+    review_reason: Optional[str] = None  # why it is in review (review_reasons); None when accepted
 
     @property
     def name(self) -> str:
@@ -488,11 +491,13 @@ def fuse_track(sign_id: int, observations: Sequence[Observation], config: Fusion
     if config.accept_single_observation and len(voters) == 1 and best.status == ACCEPTED and cls_ind >= single and \
             best.depth_m <= config.single_max_depth_share * config.far_m:
         accepted = True  # a single, very clear observation, not at the far end of the range
+    reason = None if accepted else sign_reason(voters, share, cls_ind, needed, config.min_obs_accepted,
+                                               config.accept_vote_share, ACCEPTED)
     return FusedSign(
         sign_id=sign_id, template_id=template_id, width_m=width, height_m=height, format=fmt, position=position,
         n_obs=len(observations), vote_share=share, sigma_m=sigma, azimuth=azimuth_deg(mean_face(voters)),
         detection_indicator=det_ind, classification_indicator=cls_ind, status=ACCEPTED if accepted else REVIEW,
-        best=best, observations=list(observations),
+        best=best, observations=list(observations), review_reason=reason,
     )
 
 

@@ -20,6 +20,7 @@ from .ocr import OcrError, OcrUnavailable, read_numbers
 from .output_schema import ACCEPTED, REVIEW
 from .printed_numbers import prepared_band, printed_number
 from .progress import WarnCallback, send_warning
+from .review_reasons import digits_reason
 
 
 @dataclass(frozen=True)
@@ -90,6 +91,6 @@ def check_speed_numbers(signs: Sequence[FusedSign], known: frozenset, warn: Opti
         if verdict.number is not None:
             sign.text, sign.text_confidence = verdict.number, verdict.share
         if verdict.contradicts and sign.status == ACCEPTED:
-            sign.status = REVIEW
+            sign.status, sign.review_reason = REVIEW, digits_reason(verdict.number or "")
             demoted += 1
     return demoted

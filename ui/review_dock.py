@@ -7,6 +7,7 @@ decodes images and writes the decisions. That keeps this widget testable alone.
 
 from __future__ import annotations
 
+import html
 from typing import List, Optional, Sequence
 
 from qgis.PyQt.QtCore import QSize, Qt, pyqtSignal
@@ -339,7 +340,9 @@ class ReviewDock(QDockWidget):
         colour = STATUS_COLOURS.get(item.status, "#555")
         self.info["template"].setText(f"<b>{item.template_id or '–'}</b> {item.name}")
         reviewed = " · reviewed" if item.reviewed else ""
-        self.info["status"].setText(f"<span style='color:{colour}; font-weight:bold'>{item.status}</span>{reviewed}")
+        reason = f" · <i>{html.escape(item.review_reason)}</i>" if item.review_reason else ""
+        self.info["status"].setText(f"<span style='color:{colour}; font-weight:bold'>{item.status}</span>{reviewed}"
+                                    f"{reason}")
         w, h = item.size_m
         self.info["format"].setText(f"{item.colour} {item.shape}, {item.format} {w:.2f} × {h:.2f} m")
         self.info["indicators"].setText(

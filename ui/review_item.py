@@ -56,6 +56,7 @@ class ReviewItem:
     text: Optional[str] = None  # a plate's text as read (or as a person set it)
     text_confidence: Optional[float] = None
     alternatives: List[Tuple[str, float]] = field(default_factory=list)  # the classifier's next choices, best first
+    review_reason: str = ""  # why the mapping left it for review
 
     @property
     def is_plate(self) -> bool:

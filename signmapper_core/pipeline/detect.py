@@ -20,6 +20,7 @@ import numpy as np
 from ..face_normal import world_face_normal
 from ..geometry import Camera, Pose
 from ..printed_numbers import number_band, printed_number
+from ..review_reasons import FAINT_HOUGH_RING, ZONE_PANEL_BY_DEPTH, ZONE_PANEL_DISC
 from ..zone_panels import may_be_a_panels_disc
 from .boxes import box_iou, centre_inside
 from .classifiers import accept_threshold, marginal_min_score, min_score
@@ -277,7 +278,9 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     if best is None or best[2].score < floor:
         return None
     match, face, cls = best
-    status = "accepted" if cls.score >= accept and not any(best is r for r in held_panels) else "review"
+    by_depth = any(best is r for r in held_panels)
+    status = "accepted" if cls.score >= accept and not by_depth else "review"
+    reason = ZONE_PANEL_BY_DEPTH if by_depth and cls.score >= accept else ""
     if seg.source == "hough" and status == "accepted":
         # a circle with a full-colour ring is a colour find the colour step lost (an attachment
         # spoiled its outline); faded or white ones stay for review
@@ -286,6 +289,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         strong = ranges is not None and ring_colour_share(left[y : y + h, x : x + w], seg.mask, ranges, config) >= \
             config.hough.hough_strong_ring_share
         status = status if strong else config.hough.hough_max_status
+        reason = "" if status == "accepted" else FAINT_HOUGH_RING
     u, v = bbox_centre(face)
     z = planarity.depth_at(camera, u, v)
     slack = config.depth.face_depth_slack
@@ -293,7 +297,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         z = size.depth_m
     if status == "accepted" and may_be_a_panels_disc(zone_panels, cls.template_id) and \
             inside_white_panel(left, depth, face, z, config):
-        status = "review"  # a zone panel's disc read alone
+        status, reason = "review", ZONE_PANEL_DISC
     entry = catalogue[cls.template_id]
     return Detection(
         template_id=cls.template_id, name=_entry_name(entry), colour=seg.colour, shape=entry.shape,
@@ -301,7 +305,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         detection_indicator=planarity.indicator, classification_indicator=cls.score, status=status,
         u=u, v=v, bbox=face, depth_m=float(z),
         position=locate(camera, pose, u, v, z), source=seg.source, scores=cls.scores,
-        normal_world=world_face_normal(camera, pose, planarity.plane),
+        normal_world=world_face_normal(camera, pose, planarity.plane), review_reason=reason,
     )
 
 

@@ -46,6 +46,8 @@ class Detection:
     # a plate: the share of its crop seen whole: inside the image's edges and not hidden by something in front
     # (1.0 for a plate seen whole); its text is read from the views that saw most of it
     crop_seen: float = 1.0
+    # the rule that held it for review whatever its indicator (review_reasons); "" for none or a low indicator
+    review_reason: str = ""
 
     @property
     def is_plate(self) -> bool:

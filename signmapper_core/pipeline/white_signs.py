@@ -18,6 +18,7 @@ import cv2
 import numpy as np
 
 from ..face_normal import world_face_normal
+from ..review_reasons import WHITE_UNREAD
 from .boxes import centre_inside
 from .classifiers import accept_threshold
 from .classify import ClassificationResult, classify_segment
@@ -230,18 +231,18 @@ def _network_read(pair: PairContext, bbox, ids: Sequence[str]) -> Optional[Tuple
 
 
 def read_white_face(pair: PairContext, bbox, ids: Sequence[str], matched: ClassificationResult
-                    ) -> Tuple[ClassificationResult, str]:
-    """(classification, status) of a white face that resembles a white template (``matched``: template matching
-    among ``ids``). The pipeline's classifier reads it when it knows every one of ``ids`` (a network trained on
-    the white family reads pictograms, not the correlation of pale faces, and its indicator is calibrated like
-    every other sign's); otherwise, or when it reads no id, the template matching stands."""
+                    ) -> Tuple[ClassificationResult, str, str]:
+    """(classification, status, review reason) of a white face that resembles a white template (``matched``:
+    template matching among ``ids``). The pipeline's classifier reads it when it knows every one of ``ids`` (a
+    network trained on the white family reads pictograms, not the correlation of pale faces, and its indicator
+    is calibrated like every other sign's); otherwise, or when it reads no id, the template matching stands."""
     known = _network_read(pair, bbox, ids)
     if known is None:
-        return matched, "accepted" if matched.score >= pair.config.white.white_accept_score else "review"
+        return matched, "accepted" if matched.score >= pair.config.white.white_accept_score else "review", ""
     read, accept = known
     if read.template_id is None:
-        return matched, "review"  # resembles a white template, but the network reads none of them
-    return read, "accepted" if read.score >= accept else "review"
+        return matched, "review", WHITE_UNREAD  # resembles a white template, but the network reads none of them
+    return read, "accepted" if read.score >= accept else "review", ""
 
 
 def network_reading(pair: PairContext, bbox, ids: Sequence[str]) -> Optional[ClassificationResult]:
@@ -327,9 +328,9 @@ def _judge_face(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
         read = network_reading(pair, seg.bbox, ids) if supported and config.white.white_network_gate else None
         if read is None:
             return None
-        cls, status = read, "accepted"
+        cls, status, reason = read, "accepted", ""
     else:
-        cls, status = read_white_face(pair, seg.bbox, ids, cls)
+        cls, status, reason = read_white_face(pair, seg.bbox, ids, cls)
     entry = catalogue[cls.template_id]
     names = getattr(entry, "names", None) or {}
     return Detection(
@@ -338,7 +339,7 @@ def _judge_face(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
         detection_indicator=planarity.indicator, classification_indicator=cls.score,
         status=status, u=u, v=v, bbox=seg.bbox, depth_m=float(z), position=locate(camera, pair.pose, u, v, z),
         source="white",
-        scores=cls.scores, normal_world=world_face_normal(camera, pair.pose, planarity.plane),
+        scores=cls.scores, normal_world=world_face_normal(camera, pair.pose, planarity.plane), review_reason=reason,
     )
 
 

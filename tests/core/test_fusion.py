@@ -98,6 +98,14 @@ def test_weighted_vote_and_share():
     assert sign.vote_share == pytest.approx(0.8)
 
 
+def test_a_sign_whose_views_disagree_waits_for_review_and_says_so():
+    truth = np.array([20.0, 3.0, 2.5])
+    views = seen_from(truth, [3, 4, 5], cls=0.99) + seen_from(truth, [6, 7], template_id="2.30-60", cls=0.99)
+    (sign,) = fuse_observations(views, FusionConfig(accept_classification=0.9, accept_vote_share=0.7))
+    assert sign.template_id == "2.30-50" and sign.vote_share == pytest.approx(0.6)
+    assert sign.status == "review" and sign.review_reason == "views disagree on the id"
+
+
 def test_single_weak_observation_goes_to_review_not_dropped():
     signs = fuse_observations([observe([20.0, 3.0, 2.5], 4, cls=0.55, det=0.6)])
     assert len(signs) == 1 and signs[0].status == "review" and signs[0].n_obs == 1
@@ -110,6 +118,7 @@ def test_a_sign_seen_twice_needs_two_thirds_of_the_way_from_the_classifiers_thre
     seen_twice = [observe([20.0, 3.0, 2.5], k, cls=c) for k, c in ((5, cls - 0.01), (6, cls + 0.01))]
     (sign,) = fuse_observations(seen_twice, FusionConfig(accept_classification=0.9))
     assert sign.status == status and sign.n_obs == 2
+    assert sign.review_reason == (None if status == "accepted" else "views' mean indicator below the sign's threshold")
     (sign,) = fuse_observations(seen_twice, FusionConfig(accept_classification=0.9, accept_margin=0.0))
     assert sign.status == "accepted"
 
@@ -125,7 +134,7 @@ def test_a_sign_seen_once_needs_more_than_one_seen_twice(cls, status):
 
 def test_by_default_a_sign_seen_once_waits_for_review_however_clear():
     (sign,) = fuse_observations([observe([20.0, 3.0, 2.5], 6, cls=0.99)], FusionConfig(accept_classification=0.9))
-    assert sign.status == "review" and sign.n_obs == 1
+    assert sign.status == "review" and sign.n_obs == 1 and sign.review_reason == "seen in one pair only"
     seen_twice = fuse_observations([observe([20.0, 3.0, 2.5], k, cls=0.99) for k in (5, 6)],
                                    FusionConfig(accept_classification=0.9))
     assert [s.status for s in seen_twice] == ["accepted"]
@@ -323,8 +332,12 @@ def test_views_held_for_review_make_no_accepted_sign_on_their_own():
     enough."""
     truth = np.array([20.0, 3.0, 2.5])
     held = doubtful(seen_from(truth, [3, 4, 5, 6], template_id="2.30-30", cls=0.99))
+    held[0].detection.review_reason = "a zone panel's disc read alone"
     (sign,) = fuse_observations(held, FusionConfig(accept_classification=0.9))
     assert sign.template_id == "2.30-30" and sign.status == "review"
+    # the reason names what held the views: a rule, or for views without one their indicator
+    assert sign.review_reason == ("no view accepted: a zone panel's disc read alone; "
+                                  "indicator below the acceptance threshold")
     held[2].detection.status = "accepted"
     (sign,) = fuse_observations(held, FusionConfig(accept_classification=0.9))
     assert sign.status == "accepted"

@@ -136,6 +136,7 @@ def test_an_accepted_speed_limit_whose_digits_read_another_number_goes_to_review
     assert len(calls) == 1 and len(calls[0]) == 6  # one OCR run: the three largest views of each
     assert all(shape[0] == 96 + 40 for shape in calls[0])  # prepared: 96 px high and a 20-px border
     assert eighty.status == "review" and eighty.template_id == "2.30-80"  # the person decides on the id
+    assert eighty.review_reason == "digits read as 30" and fifty.review_reason is None
     assert eighty.text == "30" and eighty.text_confidence == pytest.approx(2 / 3)
     assert fifty.status == "accepted" and fifty.text == "50" and fifty.text_confidence == pytest.approx(1.0)
 

@@ -122,6 +122,7 @@ def test_faded_round_sign_is_found_by_the_hough_fallback_for_review(catalogue):
     (det,) = _detect(catalogue, left, depth)
     assert det.source == "hough" and det.status == "review"
     assert det.template_id == "2.30-50" and det.format == "normal"
+    assert det.review_reason == "Hough circle without a full-colour ring"  # read clearly, held for its ring
     assert np.linalg.norm(det.position - sign) < 0.05
 
 
@@ -341,6 +342,7 @@ def test_a_speed_ring_inside_a_white_panel_of_another_design_is_held_for_review(
     depth[panel & ~face] = z if panel_depth is None else panel_depth
     dets = _detect(catalogue, left, depth, hough=NO_HOUGH)
     assert [(d.template_id, d.status) for d in dets] == [("2.30-30", status)]
+    assert dets[0].review_reason == ("a zone panel's disc read alone" if status == "review" else "")
 
 
 @pytest.mark.parametrize("panel_depth, found", [(None, ("2.59.1", "review")), (30.0, ("2.30-30", "accepted"))])
@@ -362,3 +364,5 @@ def test_a_zone_panel_whose_white_matches_no_official_panel_is_read_as_the_panel
         depth[(depth < 29.0) & ~ring] = panel_depth
     dets = _detect(catalogue, left, depth, hough=NO_HOUGH)
     assert [(d.template_id, d.status) for d in dets] == [found]
+    assert dets[0].review_reason == ("zone panel read by its depth, its drawing unmatched" if found[1] == "review"
+                                     else "")

@@ -275,9 +275,11 @@ def test_the_next_choices_of_a_feature_reclassify_it_with_one_click(review, gpkg
     target = next(e for e in catalogue if e.id != current and e.colour == feature["colour"])
     layer.startEditing()
     layer.changeAttributeValue(fid, layer.fields().indexOf("alternatives"), f"{target.id} 0.22, no.such.id 0.05")
+    layer.changeAttributeValue(fid, layer.fields().indexOf("review_reason"), "seen in one pair only")
     assert layer.commitChanges()
     select(controller, layer, fid)
     assert dock.item.alternatives == [(target.id, 0.22), ("no.such.id", 0.05)]
+    assert dock.item.review_reason == "seen in one pair only"
     assert dock.picker.suggested_ids() == [target.id]  # what the catalogue lacks is not offered
     (button,) = dock.picker.suggestions.findChildren(QToolButton)
     button.click()

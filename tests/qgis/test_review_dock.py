@@ -142,6 +142,14 @@ def test_the_classifiers_next_choices_are_one_click_reclassifications(dock, ui):
     assert not dock.picker.suggested_ids()
 
 
+def test_the_status_line_says_why_the_mapping_left_a_feature_for_review(dock, ui):
+    _, review_item, _, _ = ui
+    assert "<i>" not in dock.info["status"].text()  # the fixture's detection names no reason
+    dock.show_item(review_item.ReviewItem("signs", 5, "signs · sign 5", template_id="2.30-50", status="review",
+                                          review_reason="no view accepted: a zone panel's disc read alone"))
+    assert dock.info["status"].text().endswith("· <i>no view accepted: a zone panel&#x27;s disc read alone</i>")
+
+
 def test_the_picker_shows_every_id_whole(dock):
     dock.show_picker(True)
     dock.picker.set_filter("", "", "")

@@ -1,0 +1,61 @@
+"""Why the mapping left a detection or a sign for a person to look at: the ``review_reason`` field.
+
+A sign in review with a classification indicator of 0.99 puzzles a reviewer unless
+it says which rule held it (one view only, a zone panel's disc read alone, ...).
+The reasons are short fixed phrases, so a layer can be filtered by them; the first
+rule that held a sign is named. Pure functions of the values fusion and the
+pipeline already decided on: naming a reason never changes a status.
+"""
+
+from __future__ import annotations
+
+from typing import Optional, Sequence
+
+from .output_schema import REVIEW
+
+# a detection, in its pair
+LOW_INDICATOR = "indicator below the acceptance threshold"
+ZONE_PANEL_DISC = "a zone panel's disc read alone"
+ZONE_PANEL_BY_DEPTH = "zone panel read by its depth, its drawing unmatched"
+FAINT_HOUGH_RING = "Hough circle without a full-colour ring"
+WHITE_UNREAD = "resembles a white sign the network reads as none"
+# a fused sign
+ONE_VIEW = "seen in one pair only"
+TOO_FEW_VIEWS = "too few views"
+VIEWS_DISAGREE = "views disagree on the id"
+BELOW_SIGN_THRESHOLD = "views' mean indicator below the sign's threshold"
+NO_VIEW_ACCEPTED = "no view accepted"
+DIGITS_PREFIX = "digits read as "
+
+DETECTION_REASONS = (LOW_INDICATOR, ZONE_PANEL_DISC, ZONE_PANEL_BY_DEPTH, FAINT_HOUGH_RING, WHITE_UNREAD)
+SIGN_REASONS = (ONE_VIEW, TOO_FEW_VIEWS, VIEWS_DISAGREE, BELOW_SIGN_THRESHOLD, NO_VIEW_ACCEPTED)
+
+
+def detection_reason(detection) -> Optional[str]:
+    """The rule that held a detection in its pair; a detection in review without a named rule fell short of its
+    acceptance threshold. None for a detection not in review."""
+    if detection.status != REVIEW:
+        return None
+    return getattr(detection, "review_reason", "") or LOW_INDICATOR
+
+
+def sign_reason(voters: Sequence, vote_share: float, indicator: float, needed: float, min_views: int,
+                min_share: float, accepted_status: str) -> Optional[str]:
+    """The first acceptance condition of :func:`fusion.fuse_track` a sign failed, in the order it tests them,
+    or None when it failed none. ``voters``: the observations that read the sign's id; ``needed``: the mean
+    indicator the voters need (``sign_accept_threshold``)."""
+    if len(voters) < min_views:
+        return ONE_VIEW if len(voters) == 1 else TOO_FEW_VIEWS
+    if vote_share < min_share:
+        return VIEWS_DISAGREE
+    if indicator < needed:
+        return BELOW_SIGN_THRESHOLD
+    if not any(o.status == accepted_status for o in voters):
+        held = sorted({detection_reason(o) or LOW_INDICATOR for o in voters})
+        return f"{NO_VIEW_ACCEPTED}: {'; '.join(held)}"
+    return None
+
+
+def digits_reason(number: str) -> str:
+    """A speed limit whose digits read as another limit's number (``number_check``)."""
+    return f"{DIGITS_PREFIX}{number}"
