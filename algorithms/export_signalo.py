@@ -125,7 +125,8 @@ class ExportToSignaloAlgorithm(SignMapperAlgorithm):
                     values["width_m"] or 0.0, values["height_m"] or 0.0, values["format"] or "",
                     values["shape"] or "", values["status"] or "", values["detection_indicator"],
                     values["classification_indicator"], values["n_obs"], values["sigma_m"],
-                    values["mount_height_m"], update_id, moved, values["plate_of"], values["text"]))
+                    values["mount_height_m"], update_id, moved, values["plate_of"], values["text"],
+                    values["review_reason"]))
             feedback.pushInfo(f"{len(signs)} signs of run {run_id} to write into {where}; {left_out} left out by "
                               f"status (writing {', '.join(sorted(statuses))})")
             try:

@@ -62,6 +62,7 @@ class ExportSign:
     moved: bool = False  # with update_id: the sign was mapped elsewhere (changes: moved)
     plate_of: Optional[int] = None  # a supplementary plate: our sign id of its sign
     text: Optional[str] = None  # a plate's text, lines joined by " / "
+    review_reason: Optional[str] = None  # why the mapping left it for review (review_reasons)
 
 
 @dataclass
@@ -188,7 +189,8 @@ def sign_comment(run_id: str, sign: ExportSign, previous: Optional[str] = None) 
     if sign.mount_height_m is not None:
         figures.append(f"mounting height {sign.mount_height_m:.2f} m")
     if sign.status:
-        figures.append(f"status {sign.status}")
+        why = f" ({sign.review_reason})" if sign.status == REVIEW and sign.review_reason else ""
+        figures.append(f"status {sign.status}{why}")
     text = f"{TAG.format(run=run_id, sign=sign.sign_id)} {'; '.join(parts + [', '.join(figures)])}"
     kept = TAG_PATTERN.sub("", previous or "").strip()
     return f"{text}\n{kept}" if kept else text

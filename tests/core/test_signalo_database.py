@@ -1,5 +1,6 @@
 """Signalo export and reading against a real PostgreSQL/PostGIS with Signalo's own data model (no QGIS)."""
 
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -11,7 +12,7 @@ from signmapper_core.changes import CONFIRMED, ChangeConfig, MappedSign, compare
 from signmapper_core.drive import PairRecord
 from signmapper_core.geometry import Camera
 from signmapper_core.signalo import SignaloError, connect
-from signmapper_core.signalo.export import ExportSign, export_signs, plan_supports
+from signmapper_core.signalo.export import ExportSign, export_signs, plan_supports, sign_comment
 from signmapper_core.signalo.inventory import read_inventory
 
 E0, N0, H0 = START
@@ -193,3 +194,11 @@ def test_round_trip_reads_back_every_sign_confirmed(signalo_database):
     mapped = [MappedSign(s.sign_id, s.template_id, s.position) for s in SIGNS if s.sign_id != 5]
     report = compare(inventory, mapped, camera, records, ChangeConfig(camera_height_m=2.4))
     assert [c.verdict for c in report.changes] == [CONFIRMED] * 5
+
+
+def test_a_sign_for_review_says_why_in_its_signalo_comment():
+    """needs_validation says that a person should look; the comment says what to look for."""
+    held = replace(sign(7, "2.30-50", 20.0, status="review"), review_reason="seen in one pair only")
+    comment = sign_comment(RUN, held)
+    assert comment.endswith("status review (seen in one pair only)")
+    assert sign_comment(RUN, sign(8, "2.30-50", 20.0)).endswith("status accepted")
