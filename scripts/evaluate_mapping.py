@@ -53,7 +53,7 @@ from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, WhiteConfig  # noqa: E402
 from signmapper_core.plate_evaluation import PlateFigures, evaluate_plates  # noqa: E402
 from signmapper_core.plate_fusion import is_plate  # noqa: E402
-from signmapper_core.review_reasons import LOW_INDICATOR  # noqa: E402
+from signmapper_core.review_reasons import reason_shown  # noqa: E402
 from signmapper_core.simulate.face_artwork import OFFICIAL_PICTOGRAM, pictogram_group  # noqa: E402
 from signmapper_core.visibility import mappable_signs  # noqa: E402
 
@@ -101,7 +101,7 @@ def review_outcomes(signs, reference, report) -> Counter:
         if sign.status != "review":
             continue
         outcome = "no sign" if ref < 0 else "right" if sign.template_id == reference[ref].template_id else "wrong"
-        counts[((sign.review_reason or LOW_INDICATOR).split(":")[0], outcome)] += 1
+        counts[(reason_shown(sign).split(":")[0], outcome)] += 1
     return counts
 
 

@@ -483,16 +483,12 @@ def fuse_track(sign_id: int, observations: Sequence[Observation], config: Fusion
     det_ind = float(np.mean([o.detection_indicator for o in voters]))
     cls_ind = float(np.mean([o.classification_indicator for o in voters]))
     needed = sign_accept_threshold(config)
-    # and one view at least accepted its reading: views a detection rule held for review whatever their score (a
-    # Hough circle without a full-colour ring, a disc inside a white panel) make no accepted sign on their own
-    accepted = len(voters) >= config.min_obs_accepted and share >= config.accept_vote_share and \
-        cls_ind >= needed and any(o.status == ACCEPTED for o in voters)
+    reason = sign_reason(voters, share, cls_ind, needed, config.min_obs_accepted, config.accept_vote_share, ACCEPTED)
     single = _share_of_way(needed, config.single_margin)
     if config.accept_single_observation and len(voters) == 1 and best.status == ACCEPTED and cls_ind >= single and \
             best.depth_m <= config.single_max_depth_share * config.far_m:
-        accepted = True  # a single, very clear observation, not at the far end of the range
-    reason = None if accepted else sign_reason(voters, share, cls_ind, needed, config.min_obs_accepted,
-                                               config.accept_vote_share, ACCEPTED)
+        reason = None  # a single, very clear observation, not at the far end of the range
+    accepted = reason is None
     return FusedSign(
         sign_id=sign_id, template_id=template_id, width_m=width, height_m=height, format=fmt, position=position,
         n_obs=len(observations), vote_share=share, sigma_m=sigma, azimuth=azimuth_deg(mean_face(voters)),

@@ -148,19 +148,10 @@ def _sign_name(entry, language: str) -> str:
     return sign_name(entry, language)
 
 
-def _detection_review_reason(detection) -> Optional[str]:
-    from .review_reasons import detection_reason
+def _review_reason(item) -> Optional[str]:
+    from .review_reasons import reason_shown
 
-    return detection_reason(detection)
-
-
-def _sign_review_reason(sign) -> Optional[str]:
-    """A fused sign's reason; a plate's or another sign fusion gave none: its indicator (review_reasons)."""
-    from .review_reasons import LOW_INDICATOR
-
-    if sign.status != REVIEW:
-        return None
-    return getattr(sign, "review_reason", None) or LOW_INDICATOR
+    return reason_shown(item)
 
 
 def _alternatives_text(item, sign: bool = False) -> Optional[str]:
@@ -191,7 +182,7 @@ FIELDS = (
     Field("review_reason", TEXT, "Why the mapping left it for review: the rule that held it (\"seen in one pair "
           "only\", \"a zone panel's disc read alone\", \"digits read as 50\", ...) or an indicator below its "
           "threshold; empty when the mapping accepted it. A person's decision leaves it as it was.",
-          sign=_sign_review_reason, detection=lambda o: _detection_review_reason(o.detection),
+          sign=_review_reason, detection=lambda o: _review_reason(o.detection),
           **_names("Review reason", "Prüfgrund", "Motif de contrôle", "Motivo della verifica")),
     Field("easting", REAL, "E coordinate of the face centre in the drive's CRS [m] (as the point geometry).",
           decimals=3, **_coordinate(0), **_names("E [m]", "E [m]", "E [m]", "E [m]")),

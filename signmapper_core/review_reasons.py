@@ -27,23 +27,22 @@ BELOW_SIGN_THRESHOLD = "views' mean indicator below the sign's threshold"
 NO_VIEW_ACCEPTED = "no view accepted"
 DIGITS_PREFIX = "digits read as "
 
-DETECTION_REASONS = (LOW_INDICATOR, ZONE_PANEL_DISC, ZONE_PANEL_BY_DEPTH, FAINT_HOUGH_RING, WHITE_UNREAD)
-SIGN_REASONS = (ONE_VIEW, TOO_FEW_VIEWS, VIEWS_DISAGREE, BELOW_SIGN_THRESHOLD, NO_VIEW_ACCEPTED)
 
-
-def detection_reason(detection) -> Optional[str]:
-    """The rule that held a detection in its pair; a detection in review without a named rule fell short of its
-    acceptance threshold. None for a detection not in review."""
-    if detection.status != REVIEW:
+def reason_shown(item) -> Optional[str]:
+    """The reason written for a detection, observation or fused sign: the rule that held it, or for one in review
+    without a named rule (a plate, a detection short of its threshold) its indicator. None when not in review."""
+    if item.status != REVIEW:
         return None
-    return getattr(detection, "review_reason", "") or LOW_INDICATOR
+    return getattr(item, "review_reason", "") or LOW_INDICATOR
 
 
 def sign_reason(voters: Sequence, vote_share: float, indicator: float, needed: float, min_views: int,
                 min_share: float, accepted_status: str) -> Optional[str]:
-    """The first acceptance condition of :func:`fusion.fuse_track` a sign failed, in the order it tests them,
-    or None when it failed none. ``voters``: the observations that read the sign's id; ``needed``: the mean
-    indicator the voters need (``sign_accept_threshold``)."""
+    """A fused sign's acceptance test (:func:`fusion.fuse_track`): None when it passes, else the first condition
+    it failed. ``voters``: the observations that read the sign's id; ``needed``: the mean indicator the voters
+    need (``sign_accept_threshold``). The last condition: one view at least accepted its reading, as views a
+    detection rule held for review whatever their score (a Hough circle without a full-colour ring, a disc inside
+    a white panel) make no accepted sign on their own."""
     if len(voters) < min_views:
         return ONE_VIEW if len(voters) == 1 else TOO_FEW_VIEWS
     if vote_share < min_share:
@@ -51,7 +50,7 @@ def sign_reason(voters: Sequence, vote_share: float, indicator: float, needed: f
     if indicator < needed:
         return BELOW_SIGN_THRESHOLD
     if not any(o.status == accepted_status for o in voters):
-        held = sorted({detection_reason(o) or LOW_INDICATOR for o in voters})
+        held = sorted({reason_shown(o) or LOW_INDICATOR for o in voters})
         return f"{NO_VIEW_ACCEPTED}: {'; '.join(held)}"
     return None
 

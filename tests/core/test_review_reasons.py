@@ -27,10 +27,10 @@ def test_a_sign_names_the_first_condition_it_failed_in_fusions_order():
 
 
 def test_a_detection_in_review_without_a_rule_fell_short_of_its_threshold():
-    assert rr.detection_reason(_view("accepted", rr.ZONE_PANEL_DISC)) is None
-    assert rr.detection_reason(_view("manual")) is None
-    assert rr.detection_reason(_view("review")) == rr.LOW_INDICATOR
-    assert rr.detection_reason(_view("review", rr.ZONE_PANEL_DISC)) == rr.ZONE_PANEL_DISC
+    assert rr.reason_shown(_view("accepted", rr.ZONE_PANEL_DISC)) is None
+    assert rr.reason_shown(_view("manual")) is None
+    assert rr.reason_shown(_view("review")) == rr.LOW_INDICATOR
+    assert rr.reason_shown(_view("review", rr.ZONE_PANEL_DISC)) == rr.ZONE_PANEL_DISC
     assert rr.digits_reason("30") == "digits read as 30"
 
 
