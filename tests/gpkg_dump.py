@@ -16,6 +16,8 @@ from pathlib import Path
 
 from osgeo import ogr
 
+from signmapper_core.classifier_alternatives import parse_alternatives
+
 REPO_ROOT = Path(__file__).resolve().parents[1]
 
 # Largest difference accepted per float attribute: one unit of the last written decimal (they are rounded
@@ -137,12 +139,8 @@ def differences(expected, actual, where="") -> list[str]:
 
 
 def _same_score_list(expected: str, actual: str, tolerance: float) -> bool:
-    def pairs(text):
-        return [(p.split()[0], float(p.split()[1])) for p in text.split(", ")]
-
-    try:
-        e, a = pairs(expected), pairs(actual)
-    except (IndexError, ValueError):
-        return expected == actual
+    e, a = parse_alternatives(expected), parse_alternatives(actual)
+    if len(e) != len(expected.split(",")) or len(a) != len(actual.split(",")):
+        return expected == actual  # a part that is no "<id> <score>": compared as text
     return [t for t, _ in e] == [t for t, _ in a] and all(
         math.isclose(x, y, rel_tol=0.0, abs_tol=tolerance) for (_, x), (_, y) in zip(e, a))
