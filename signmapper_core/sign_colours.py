@@ -21,6 +21,12 @@ HSV_RANGES: Dict[str, Tuple[HsvRange, ...]] = {
     "red": ((0, 10, 90, 255, 50, 255), (165, 179, 90, 255, 50, 255)),
     "blue": ((100, 130, 110, 255, 40, 255),),
     "yellow": ((16, 35, 110, 255, 90, 255),),
+    # the families the SSV adds to Cavegn's three, from the official drawings' colours (OpenCV HSV): motorway
+    # green (77, 255, 127) and emergency-exit green (60, 255, 186), kept above foliage's yellow-green; tourist
+    # brown (3, 207, 122), dark where red is bright; diversion orange (13, 213, 245), between red and yellow
+    "green": ((52, 95, 110, 255, 40, 255),),
+    "brown": ((0, 14, 110, 255, 40, 170), (172, 179, 110, 255, 40, 170)),
+    "orange": ((8, 18, 150, 255, 150, 255),),
 }
 
 # Hue bands of the weak (scene-adaptive) pass; its saturation/value floors come from the scene.
@@ -43,6 +49,7 @@ HOUGH_TINT_HUES: Dict[str, HueBands] = {
 
 # The colour a map draws each catalogue colour in (a plain marker where a template has no SVG pictogram); white
 # is a catalogue colour too, found by outline rather than hue
-DISPLAY_COLOURS: Dict[str, str] = {"red": "#d52b1e", "blue": "#1f5fae", "yellow": "#f5c400", "white": "#f0f0f0"}
+DISPLAY_COLOURS: Dict[str, str] = {"red": "#d52b1e", "blue": "#1f5fae", "yellow": "#f5c400", "white": "#f0f0f0",
+                                   "green": "#007f40", "brown": "#7a3228", "orange": "#f5821e"}
 
 SIGN_COLOURS: Tuple[str, ...] = tuple(HSV_RANGES)  # the colours a run may segment, in the order offered

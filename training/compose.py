@@ -98,10 +98,12 @@ def occlude(canvas: np.ndarray, bbox, backgrounds: BackgroundPool, rng: np.rando
 
 
 def distractor_shapes(canvas: np.ndarray, rng: np.random.Generator) -> None:
-    """Sign-coloured blobs, bars and letters that are not signs (shop fronts, cars, posters)."""
+    """Sign-coloured blobs, bars and letters that are not signs (shop fronts, cars, posters); BGR red, blue, yellow,
+    green, brown, orange or any."""
     h, w = canvas.shape[:2]
     for _ in range(int(rng.integers(1, 4))):
         colour = tuple(float(c) for c in rng.choice([(40, 40, 200), (170, 80, 20), (20, 190, 235),
+                                                     (64, 127, 0), (40, 50, 122), (30, 130, 245),
                                                      tuple(rng.uniform(0, 255, 3))]))
         cx, cy = int(rng.uniform(0, w)), int(rng.uniform(0, h))
         if rng.random() < 0.5:
@@ -122,6 +124,12 @@ def jitter_box(bbox, rng: np.random.Generator, amount: float = 1.0) -> tuple[flo
     return cx - nw / 2, cy - nh / 2, nw, nh
 
 
+def _working_size(bgr: np.ndarray, alpha: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    scale = WORK_PX / max(bgr.shape[:2])
+    size = (max(4, round(bgr.shape[1] * scale)), max(4, round(bgr.shape[0] * scale)))
+    return cv2.resize(bgr, size, interpolation=cv2.INTER_AREA), cv2.resize(alpha, size, interpolation=cv2.INTER_AREA)
+
+
 class SampleMaker:
     """Makes labelled training patches from a catalogue's master images."""
 
@@ -134,13 +142,10 @@ class SampleMaker:
         self.input_px = input_px
         self.margin = margin
         self.min_px, self.max_px = min_px, max_px
-        self.masters = {}
+        self.masters = {}  # id -> (bgr, alpha) of each of its drawings, the master first
         for tid in self.class_ids:
-            bgr, alpha = catalogue.master(tid)
-            scale = WORK_PX / max(bgr.shape[:2])
-            size = (max(4, round(bgr.shape[1] * scale)), max(4, round(bgr.shape[0] * scale)))
-            self.masters[tid] = (cv2.resize(bgr, size, interpolation=cv2.INTER_AREA),
-                                 cv2.resize(alpha, size, interpolation=cv2.INTER_AREA))
+            self.masters[tid] = [_working_size(bgr, alpha)
+                                 for bgr, alpha in [catalogue.master(tid)] + catalogue.variant_masters(tid)]
 
     def _canvas(self, rng, size_px):
         side = int(size_px * (1 + 2 * rng.uniform(0.35, 0.8))) + 8
@@ -150,11 +155,13 @@ class SampleMaker:
         return canvas
 
     def _design(self, tid, rng):
-        """The official drawing of ``tid`` or, as often, another design of the same sign (face_variants)."""
-        face, alpha = self.masters[tid]
+        """The official drawing of ``tid`` (any of its language versions or directions) or, as often, another
+        design of the same sign (face_variants)."""
+        drawings = self.masters[tid]
+        face, alpha = drawings[int(rng.integers(len(drawings)))] if len(drawings) > 1 else drawings[0]
         number = speed_limit_number(tid)
         if number is not None and "2.01" in self.masters and rng.random() < 0.4:
-            ring, alpha = self.masters["2.01"]
+            ring, alpha = self.masters["2.01"][0]
             face = speed_limit_face(ring, alpha, number, rng)
         elif tid in MIRROR_SAFE and rng.random() < 0.5:
             face, alpha = mirrored(face, alpha)

@@ -23,12 +23,25 @@ from .text_panels import is_text_panel
 
 DEFAULT_CATALOGUE_DIR = Path(__file__).resolve().parents[2] / "templates" / "ch"
 FORMAT_ID = "signmapper-catalogue/1"
-COLOURS = ("red", "blue", "yellow", "white")
-SHAPES = ("circle", "triangle", "triangle-down", "octagon", "diamond", "square", "rectangle")
-ID_PATTERN = re.compile(r"^[0-9A-Za-z]+(\.[0-9A-Za-z]+)*(-[0-9A-Za-z.]+)?$")
+# colour families of the faces: the colour covering most of a face ("white" also stands for grey and black faces,
+# found by their outline rather than their hue)
+COLOURS = ("red", "blue", "yellow", "white", "green", "brown", "orange")
+# outlines; a "pointer" is a direction sign's panel with one pointed end (either way), a "cross" a St Andrew's cross
+SHAPES = ("circle", "triangle", "triangle-down", "octagon", "diamond", "square", "rectangle", "pointer", "cross")
+# SSV numbers as Signalo writes them: dotted numbers, "/" in lane signs (4.77/01), "-" before a value or variant
+ID_PATTERN = re.compile(r"^[0-9A-Za-z]+([./][0-9A-Za-z]+)*(-[0-9A-Za-z.]+)*$")
+STANDARD, MEASURED = "standard", "measured"  # sizing: rounded to a standard format, or reported as measured
+SIZINGS = (STANDARD, MEASURED)
+MEASURED_SIDE_M = (0.15, 6.0)  # the shorter and longer side of any face without a standard size
+MEASURED_ASPECT_FACTOR = 2.0  # ... and its aspect at most this far from its drawing's
 # master image path -> (size, mtime_ns) of the version found intact: the catalogue is loaded by every
 # algorithm, so each file is checked once per process and again only when it changes
 _INTACT: dict[str, tuple[int, int]] = {}
+
+
+def file_stem(template_id: str) -> str:
+    """The file name (without suffix) of an entry's images: its id, with the "/" of lane signs as "_"."""
+    return template_id.replace("/", "_")
 
 
 class CatalogueError(InputFileError):
@@ -45,6 +58,8 @@ class TemplateEntry:
     size_certain: bool = True
     png: str = ""
     svg: str | None = None
+    sizing: str = STANDARD  # MEASURED: no standard size exists; the formats only give the face's aspect
+    variants: tuple = ()  # further master images of the same sign (other language versions, pointing the other way)
 
     @property
     def aspect(self) -> float:
@@ -85,6 +100,19 @@ def shape_mask(shape: str, w: int, h: int) -> np.ndarray:
     else:
         mask[:] = 255
     return cv2.resize(mask, (w, h), interpolation=cv2.INTER_AREA)
+
+
+def _read_image(path: Path, shape: str, template_id: str) -> tuple[np.ndarray, np.ndarray]:
+    img = cv2.imread(str(path), cv2.IMREAD_UNCHANGED)
+    if img is None:
+        raise CatalogueError(path, f"cannot read the image of template {template_id!r}")
+    if img.ndim == 2:
+        img = cv2.cvtColor(img, cv2.COLOR_GRAY2BGR)
+    if img.dtype != np.uint8:
+        img = (img / 257).astype(np.uint8)
+    if img.shape[2] == 4:
+        return np.ascontiguousarray(img[:, :, :3]), np.ascontiguousarray(img[:, :, 3])
+    return img, shape_mask(shape, img.shape[1], img.shape[0])
 
 
 def _resize(img: np.ndarray, w: int, h: int) -> np.ndarray:
@@ -138,20 +166,12 @@ class Catalogue:
     def read_master(self, template_id: str) -> tuple[np.ndarray, np.ndarray]:
         """The full-resolution (bgr, alpha) of an entry read from its PNG, not cached (:meth:`master` caches)."""
         entry = self[template_id]
-        path = self.folder / entry.png
-        img = cv2.imread(str(path), cv2.IMREAD_UNCHANGED)
-        if img is None:
-            raise CatalogueError(path, f"cannot read the image of template {template_id!r}")
-        if img.ndim == 2:
-            img = cv2.cvtColor(img, cv2.COLOR_GRAY2BGR)
-        if img.dtype != np.uint8:
-            img = (img / 257).astype(np.uint8)
-        if img.shape[2] == 4:
-            bgr, alpha = np.ascontiguousarray(img[:, :, :3]), np.ascontiguousarray(img[:, :, 3])
-        else:
-            bgr = img
-            alpha = shape_mask(entry.shape, img.shape[1], img.shape[0])
-        return bgr, alpha
+        return _read_image(self.folder / entry.png, entry.shape, template_id)
+
+    def variant_masters(self, template_id: str) -> list[tuple[np.ndarray, np.ndarray]]:
+        """(bgr, alpha) of each further drawing of an entry (``variants``), not cached: for training."""
+        entry = self[template_id]
+        return [_read_image(self.folder / image, entry.shape, template_id) for image in entry.variants]
 
     def render(self, template_id: str, size_px, keep_master: bool = True) -> tuple[np.ndarray, np.ndarray]:
         """(bgr, alpha) at ``size_px`` (longer side, or (w, h)); alpha is 255 inside the sign outline.
@@ -187,11 +207,19 @@ class Catalogue:
 
 def round_size(entries: Iterable[TemplateEntry], width_m: float, height_m: float,
                tolerance: float = 0.15) -> SizeMatch | None:
-    """The format (name, size) nearest to a measured size in log space, if within ``tolerance``."""
+    """The format (name, size) nearest to a measured size in log space, if within ``tolerance``.
+
+    Entries without a standard size (``sizing`` MEASURED) come in only where no standard format fits: a
+    :class:`SizeMatch` named ``measured`` with the measured size, for those whose face could be that size
+    (:func:`fits_measured`).
+    """
     if not (width_m > 0 and height_m > 0):
         return None
+    entries = list(entries)
     candidates: dict = {}
     for e in entries:
+        if e.sizing != STANDARD:
+            continue
         for name, (w, h) in e.formats.items():
             key = (name, round(w, 4), round(h, 4))
             candidates.setdefault(key, []).append(e.id)
@@ -201,13 +229,24 @@ def round_size(entries: Iterable[TemplateEntry], width_m: float, height_m: float
         score = lw * lw + lh * lh
         if best is None or score < best[0]:
             best = (score, name, w, h, ids)
-    if best is None:
-        return None
-    _, name, w, h, ids = best
-    rel = max(abs(width_m / w - 1.0), abs(height_m / h - 1.0))
-    if rel > tolerance:
-        return None
-    return SizeMatch(name, w, h, rel, tuple(ids))
+    if best is not None:
+        _, name, w, h, ids = best
+        rel = max(abs(width_m / w - 1.0), abs(height_m / h - 1.0))
+        if rel <= tolerance:
+            return SizeMatch(name, w, h, rel, tuple(ids))
+    measured = tuple(e.id for e in entries if e.sizing == MEASURED and fits_measured(e, width_m, height_m))
+    return SizeMatch(MEASURED, width_m, height_m, 0.0, measured) if measured else None
+
+
+def fits_measured(entry: TemplateEntry, width_m: float, height_m: float) -> bool:
+    """Whether a face of an entry without a standard size could measure ``width_m`` x ``height_m``: its sides
+    within ``MEASURED_SIDE_M`` and its aspect within ``MEASURED_ASPECT_FACTOR`` of the drawing's (the wording
+    makes a panel wider or taller, not a bar of a square)."""
+    lo, hi = MEASURED_SIDE_M
+    if not (lo <= min(width_m, height_m) and max(width_m, height_m) <= hi):
+        return False
+    ratio = (width_m / height_m) / entry.aspect
+    return 1.0 / MEASURED_ASPECT_FACTOR <= ratio <= MEASURED_ASPECT_FACTOR
 
 
 def _entry_from_json(path: Path, raw: dict, index: int) -> TemplateEntry:
@@ -217,7 +256,7 @@ def _entry_from_json(path: Path, raw: dict, index: int) -> TemplateEntry:
         where = f"entry {tid!r}"
         colour, shape = raw["colour"], raw["shape"]
         formats = {str(k): (float(v[0]), float(v[1])) for k, v in raw["formats"].items()}
-        png = raw.get("png") or f"png/{tid}.png"
+        png = raw.get("png") or f"png/{file_stem(tid)}.png"
     except (KeyError, TypeError, ValueError, IndexError) as exc:
         raise CatalogueError(path, f"{where}: missing or malformed field ({exc})") from None
     if not ID_PATTERN.match(tid):
@@ -229,11 +268,18 @@ def _entry_from_json(path: Path, raw: dict, index: int) -> TemplateEntry:
     if not formats or any(w <= 0 or h <= 0 for w, h in formats.values()):
         raise CatalogueError(path, f"{where}: formats must map names to positive [width_m, height_m]")
     names = {str(k): str(v) for k, v in (raw.get("names") or {}).items()} or {"de": tid}
-    if not (path.parent / png).is_file():
-        raise CatalogueError(path, f"{where}: image {png} not found")
-    check_master_image(path.parent / png, where)
+    sizing = raw.get("sizing", STANDARD)
+    if sizing not in SIZINGS:
+        raise CatalogueError(path, f"{where}: sizing {sizing!r} not in {SIZINGS}")
+    variants = raw.get("variants") or []
+    if not isinstance(variants, list) or not all(isinstance(v, str) and v for v in variants):
+        raise CatalogueError(path, f"{where}: variants must be a list of image paths")
+    for image in [png] + variants:
+        if not (path.parent / image).is_file():
+            raise CatalogueError(path, f"{where}: image {image} not found")
+        check_master_image(path.parent / image, where)
     return TemplateEntry(tid, names, colour, shape, formats, bool(raw.get("size_certain", True)), png,
-                         raw.get("svg"))
+                         raw.get("svg"), sizing, tuple(variants))
 
 
 def check_master_image(path: Path, where: str) -> None:

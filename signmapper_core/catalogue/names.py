@@ -35,7 +35,7 @@ NAMES_EN = {
     "2.50": "No parking", "2.53-50": "End of speed limit", "2.53-60": "End of speed limit 60",
     "2.55": "End of no overtaking", "2.56": "End of no overtaking for lorries", "2.58": "End of all prohibitions",
     "2.53.1": "End of general speed limit 50",
-    "2.59.1": "30 km/h zone", "2.59.2": "End of 30 km/h zone", "2.59.3": "Pedestrian zone",
+    "2.59.1-30": "30 km/h zone", "2.59.2-30": "End of 30 km/h zone", "2.59.3": "Pedestrian zone",
     "2.59.4": "End of pedestrian zone", "2.59.5": "Shared zone", "2.59.6": "End of shared zone",
     "2.60": "Cycle path", "2.61": "Footpath", "2.62": "Bridleway", "2.63": "Segregated cycle and footpath",
     "2.63.1": "Shared cycle and footpath", "2.64": "Bus lane",

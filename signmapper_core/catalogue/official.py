@@ -6,7 +6,9 @@ An entry's artwork is one of
   of other official drawings (same typeface), e.g. 2.30-20 from 2.30 "60" and
   the "2" of the zone sign 2.59.5;
 - ``Cutout``: a sign that the official artwork shows only inside another
-  drawing (the 100 and 120 discs of 4.93), cut out of its rendering.
+  drawing (the 100 and 120 discs of 4.93), cut out of its rendering;
+- ``Region``: one board of a drawing that shows several side by side (the three
+  distance beacons of 1.17), rendered from that part of the page.
 
 The rendering is cropped to the sign, checked against the entry's shape and
 aspect, and resized to the master size. Build-time only.
@@ -27,6 +29,7 @@ from .svg_render import render_svg
 RENDER_PX = 2048  # longer side of the sign in the working rendering (4x the 512 px master)
 ASPECT_TOLERANCE = 0.01  # official crop vs catalogue formats
 OUTLINE_MIN_IOU = 0.88  # rendered outline vs the ideal outline of the entry's shape
+FREE_OUTLINES = ("pointer", "cross")  # shapes whose outline comes from the drawing alone
 
 
 class ArtworkError(ValueError):
@@ -91,6 +94,20 @@ class Cutout:
         return f"cut out of {self.file}"
 
 
+@dataclass(frozen=True)
+class Region:
+    """The part ``area`` (x0, y0, x1, y1, user units) of ``file``: one board of a row of boards."""
+
+    file: str
+    area: tuple
+
+    def files(self) -> tuple:
+        return (self.file,)
+
+    def describe(self) -> str:
+        return f"{self.file}, part {tuple(round(v, 1) for v in self.area)}"
+
+
 def _documents(folder: Path, files) -> dict:
     docs = {}
     for name in files:
@@ -152,6 +169,11 @@ def render_artwork(spec, folder: Path) -> tuple[np.ndarray, bool]:
     if isinstance(spec, Relettered):
         doc = docs[spec.base]
         return render_svg(relettered_svg(spec, docs), RENDER_PX / max(doc.page_px()), doc.source), False
+    if isinstance(spec, Region):
+        doc = docs[spec.file]
+        x0, y0, x1, y1 = spec.area
+        zoom = RENDER_PX / (max(x1 - x0, y1 - y0) * doc.px_per_unit())
+        return render_svg(region(doc, spec.area), zoom, doc.source), False
     if isinstance(spec, Cutout):
         doc = docs[spec.file]
         x0, y0, x1, y1 = spec.area
@@ -212,12 +234,34 @@ def rim_colour(bgr: np.ndarray, alpha: np.ndarray) -> tuple:
     return tuple(int(v) for v in np.median(bgr[band], axis=0))
 
 
-def master_from_rendering(bgra: np.ndarray, outline_from_shape: bool, shape: str, size: tuple, name: str) -> np.ndarray:
-    """BGRA master of ``size`` (w, h): cropped to the outline, checked against ``shape`` and the size's aspect."""
+def fill_enclosed(bgr: np.ndarray, alpha: np.ndarray) -> None:
+    """Make transparent parts enclosed by the face white and opaque (in place).
+
+    A few drawings leave the face's white field transparent inside a printed
+    frame (kilometre and hectometre plates); the sign is white there.
+    """
+    clear = (alpha < 128).astype(np.uint8)
+    n, labels = cv2.connectedComponents(clear, connectivity=4)
+    border = np.unique(np.concatenate([labels[0], labels[-1], labels[:, 0], labels[:, -1]]))
+    enclosed = (labels > 0) & ~np.isin(labels, border)
+    if enclosed.any():
+        a = alpha[enclosed].astype(np.float32)[:, None] / 255.0
+        bgr[enclosed] = (bgr[enclosed] * a + 255.0 * (1.0 - a)).astype(np.uint8)
+        alpha[enclosed] = 255
+
+
+def master_from_rendering(bgra: np.ndarray, outline_from_shape: bool, shape: str, size: tuple, name: str,
+                          min_overlap: float = OUTLINE_MIN_IOU) -> np.ndarray:
+    """BGRA master of ``size`` (w, h): cropped to the outline, checked against ``shape`` and the size's aspect.
+
+    Shapes without one ideal outline (``FREE_OUTLINES``: a pointer points either way, a cross's bars vary) keep
+    the drawing's outline unchecked.
+    """
     if not outline_from_shape:
         x0, y0, x1, y1 = _crop_box(bgra[:, :, 3] > 0)
         crop = bgra[y0:y1, x0:x1]
         bgr, alpha = np.ascontiguousarray(crop[:, :, :3]), np.ascontiguousarray(crop[:, :, 3])
+        fill_enclosed(bgr, alpha)
     else:
         bgr = np.ascontiguousarray(bgra[:, :, :3])
         alpha = shape_mask(shape, bgr.shape[1], bgr.shape[0])
@@ -229,7 +273,7 @@ def master_from_rendering(bgra: np.ndarray, outline_from_shape: bool, shape: str
     ideal = shape_mask(shape, w, h) > 127
     drawn = alpha > 127
     iou = (ideal & drawn).sum() / max((ideal | drawn).sum(), 1)
-    if iou < OUTLINE_MIN_IOU:
+    if shape not in FREE_OUTLINES and iou < min_overlap:
         raise ArtworkError(f"{name}: the official outline does not look like a {shape} (overlap {iou:.2f})")
     rim = rim_colour(bgr, alpha)
     bgr[alpha == 0] = rim

@@ -328,8 +328,8 @@ def _meeting_zone(end: bool = False):
 
 _add("2.53.1", "Ende der Höchstgeschwindigkeit 50 generell", "Fin de la vitesse maximale 50, limite générale",
      "Fine della velocità massima 50, limite generale", "white", "circle", F.ROUND, True, _general_limit(True))
-_add("2.59.1", "Tempo-30-Zone", "Zone 30", "Zona 30", "red", "rectangle", F.ZONE, True, _zone("30"))
-_add("2.59.2", "Ende der Tempo-30-Zone", "Fin de la zone 30", "Fine della zona 30", "white", "rectangle", F.ZONE,
+_add("2.59.1-30", "Tempo-30-Zone", "Zone 30", "Zona 30", "red", "rectangle", F.ZONE, True, _zone("30"))
+_add("2.59.2-30", "Ende der Tempo-30-Zone", "Fin de la zone 30", "Fine della zona 30", "white", "rectangle", F.ZONE,
      True, _zone("30", end=True))
 _add("2.59.3", "Fussgängerzone", "Zone piétonne", "Zona pedonale", "blue", "rectangle", F.ZONE, True,
      _zone("pedestrian"))

@@ -49,6 +49,11 @@ TEXT_PANELS = {
 }
 
 
+# Signalo ids that differ only by their lines of text (1 to 3), each stood for by one generic panel above
+COVERED_BY_PANEL = {"4.29-1": "4.29", "4.29-2": "4.29", "4.29-3": "4.29",
+                    "4.33-1": "4.33", "4.33-2": "4.33", "4.33-3": "4.33"}
+
+
 def is_text_panel(template_id: str) -> bool:
     """Whether ``template_id`` is a generic text panel (its size and text vary from face to face)."""
     return template_id in TEXT_PANELS

@@ -3,24 +3,35 @@
 Both use SSV numbers. Signalo keeps one entry for a sign that carries a number
 and writes the number as the sign's first inscription (``2.30`` with
 inscription ``50``); our catalogue has one template per value (``2.30-50``).
-Two zone signs are named differently: Signalo splits the SSV 2.59.1/2.59.2
-zone signs by content, and our 2.59.1/2.59.2 are the Tempo-30 zone (names
-"Tempo-30-Zone" / "Zonensignal Tempo-30-Zone"). Anything else without an
-entry is reported, never guessed.
+Signalo keeps one id per number of text lines of the white place-name and
+direction panels (4.29-1 ... 4.33-3); our catalogue has one generic panel each
+(``catalogue.text_panels``), whose lines give the Signalo id. Anything else
+without an entry is reported, never guessed.
 """
 
 from __future__ import annotations
 
 from typing import Optional
 
-# our id -> Signalo id, where the names say they are the same sign
-ALIASES = {"2.59.1": "2.59.1-30", "2.59.2": "2.59.2-30"}
+from ..catalogue.text_panels import COVERED_BY_PANEL
 
 
-def to_signalo(template_id: str, official_ids) -> Optional[tuple[str, Optional[str]]]:
-    """(Signalo official sign id, first inscription or None) of one of our ids, None if Signalo has no such sign."""
-    if template_id in ALIASES and ALIASES[template_id] in official_ids:
-        return ALIASES[template_id], None
+def _panel_id(template_id: str, lines: int, official_ids) -> Optional[str]:
+    """Signalo's id of a generic text panel with ``lines`` lines (1 to 3), if Signalo has one."""
+    ids = sorted(o for o, panel in COVERED_BY_PANEL.items() if panel == template_id and o in official_ids)
+    if not ids:
+        return None
+    return ids[min(max(lines, 1), len(ids)) - 1]
+
+
+def to_signalo(template_id: str, official_ids, lines: int = 1) -> Optional[tuple[str, Optional[str]]]:
+    """(Signalo official sign id, first inscription or None) of one of our ids, None if Signalo has no such sign.
+
+    ``lines``: lines of text on a generic text panel (4.29, 4.33), which Signalo tells apart by id.
+    """
+    panel = _panel_id(template_id, lines, official_ids)
+    if panel is not None:
+        return panel, None
     if template_id in official_ids:
         return template_id, None
     base, dash, value = template_id.rpartition("-")
@@ -33,9 +44,8 @@ def from_signalo(official_id: Optional[str], inscription: Optional[str], templat
     """Our template id of a Signalo official sign (with its first inscription), None if our catalogue lacks it."""
     if not official_id:
         return None
-    for ours, theirs in ALIASES.items():
-        if theirs == official_id and ours in template_ids:
-            return ours
+    if COVERED_BY_PANEL.get(official_id) in template_ids:
+        return COVERED_BY_PANEL[official_id]
     if inscription:
         candidate = f"{official_id}-{inscription.strip()}"
         if candidate in template_ids:

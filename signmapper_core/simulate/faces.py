@@ -40,12 +40,16 @@ class SignKind:
 
 
 def sign_kinds(colours: tuple[str, ...] = SIGN_COLOURS) -> list[SignKind]:
-    """Catalogue entries of ``colours`` (red, blue and yellow by default) in id order (deterministic)."""
+    """Catalogue entries of ``colours`` (red, blue and yellow by default) in id order (deterministic).
+
+    Only the signs the procedural drawer knows (``has_procedural``): the generator prints each either way.
+    """
     from ..catalogue import load_catalogue
 
     catalogue = load_catalogue()
     kinds = []
-    for entry in sorted(catalogue.filter(colours=list(colours)), key=lambda e: e.id):
+    entries = [e for e in catalogue.filter(colours=list(colours)) if has_procedural(e.id)]
+    for entry in sorted(entries, key=lambda e: e.id):
         formats = tuple(sorted((name, float(w), float(h)) for name, (w, h) in entry.formats.items()))
         if formats:
             kinds.append(SignKind(entry.id, entry.colour, entry.shape, formats))

@@ -11,6 +11,7 @@ import pytest
 from signmapper_core.catalogue import FaceStyle, load_catalogue, render_face
 from signmapper_core.catalogue.drawing import to_svg
 from signmapper_core.catalogue.faces import face_drawing
+from signmapper_core.catalogue.signs_ch import SIGNS
 
 # fraction of the bounding box covered by the outline, and tolerance (corners are rounded)
 SHAPE_FILL = {
@@ -51,14 +52,21 @@ def test_every_entry_renders_at_24_64_256(cat):
             assert bgr.dtype == np.uint8 and alpha.dtype == np.uint8
             assert bgr.shape[:2] == alpha.shape and bgr.shape[2] == 3
             assert max(alpha.shape) == n
-            assert alpha.shape[1] / alpha.shape[0] == pytest.approx(e.aspect, rel=0.06)
+            # within a pixel of the shorter side: a 5:1 pointer is 5 px high at 24 px
+            rel = max(0.06, 1.0 / min(alpha.shape))
+            assert alpha.shape[1] / alpha.shape[0] == pytest.approx(e.aspect, rel=rel)
             assert alpha.max() == 255
             if e.shape not in ("square", "rectangle"):
                 assert alpha.min() == 0
 
 
+def drawn(cat):
+    """The entries the project draws itself too (the others' masters: test_catalogue_whole_set)."""
+    return [e for e in cat if e.id in SIGNS]
+
+
 def test_alpha_mask_matches_the_declared_shape(cat):
-    for e in cat:
+    for e in drawn(cat):
         _, alpha = cat.render(e.id, 256)
         expected, tol = SHAPE_FILL[e.shape]
         if e.id == "4.33":  # a direction panel: a rectangle with one end pointed, in its rectangle's box
@@ -75,7 +83,7 @@ def test_triangles_point_the_declared_way(cat):
 
 def test_dominant_colour_matches_the_colour_class(cat):
     wrong = {}
-    for e in cat:
+    for e in drawn(cat):
         got = colour_class(*cat.render(e.id, 64))
         if got != e.colour:
             wrong[e.id] = (e.colour, got)
@@ -99,7 +107,7 @@ def test_catalogue_render_of_an_own_drawing_is_close_to_the_reference_face(cat):
     assert np.abs(t_bgr.astype(int) - render_face("2.53-50", 64)[0]).mean() < 6
 
 
-@pytest.mark.parametrize("tid", ["2.30-50", "2.01", "1.22", "3.01", "3.02", "3.03", "2.33", "4.08", "1.32", "2.59.1"])
+@pytest.mark.parametrize("tid", ["2.30-50", "2.01", "1.22", "3.01", "3.02", "3.03", "2.33", "4.08", "1.32", "2.59.1-30"])
 def test_render_face_with_a_varied_style_differs_but_keeps_the_colour_class(cat, tid):
     ref_bgr, ref_alpha = render_face(tid, 96)
     for seed in range(3):
@@ -134,7 +142,7 @@ def test_svg_is_written_from_the_same_drawing():
 
 def test_random_styles_keep_every_entry_in_its_colour_class_and_shape(cat):
     """The generator draws random styles: no style may turn a sign into another colour class."""
-    for e in cat:
+    for e in drawn(cat):
         for seed in (11, 12):
             bgr, alpha = render_face(e.id, 48, FaceStyle.random(np.random.default_rng(seed)))
             assert colour_class(bgr, alpha) == e.colour, (e.id, seed)

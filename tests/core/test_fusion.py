@@ -172,12 +172,12 @@ def test_sign_read_as_two_shapes_is_one_sign_with_the_majority_class():
     """A zone panel read as its inner speed ring in some pairs: one sign, classed by the vote."""
     panel_centre = np.array([20.0, 3.0, 2.5])
     ring_centre = panel_centre + [0.0, 0.0, 0.12]
-    panel = seen_from(panel_centre, [3, 4, 6], template_id="2.59.1", shape="rectangle", noise=0.01,
+    panel = seen_from(panel_centre, [3, 4, 6], template_id="2.59.1-30", shape="rectangle", noise=0.01,
                       fmt=("normal", 0.5, 0.7))
     ring = seen_from(ring_centre, [5, 7], template_id="2.30-80", noise=0.01)
     signs = fuse_observations(panel + ring)
     assert len(signs) == 1
-    assert signs[0].template_id == "2.59.1" and signs[0].n_obs == 5
+    assert signs[0].template_id == "2.59.1-30" and signs[0].n_obs == 5
     assert signs[0].vote_share == pytest.approx(0.6)
     assert np.linalg.norm(signs[0].position - panel_centre) < 0.03
 
@@ -266,29 +266,29 @@ def doubtful(observations):
     return observations
 
 
-ZONES = {"2.59.1": "2.30-30", "2.59.3": "2.61"}
+ZONES = {"2.59.1-30": "2.30-30", "2.59.3": "2.61"}
 
 
 def test_doubtful_disc_readings_of_a_zone_panel_count_for_the_panel_but_do_not_accept_it():
     truth = np.array([20.0, 3.0, 2.5])
     # the panel's white missed: its "30" disc read alone, unsure (fresh drive 1100-1109's 2.59.1 and 2.59.3)
     discs = doubtful(seen_from(truth, [3, 4, 6], template_id="2.30-80", cls=0.85))
-    panel = seen_from(truth, [5], template_id="2.59.1", shape="rectangle", cls=0.93, fmt=("normal", 0.5, 0.7))
+    panel = seen_from(truth, [5], template_id="2.59.1-30", shape="rectangle", cls=0.93, fmt=("normal", 0.5, 0.7))
     (alone,) = fuse_observations(discs + panel)
     assert alone.template_id == "2.30-80"  # without the catalogue's zone panels
     (sign,) = fuse_observations(discs + panel, carried_discs=ZONES)
-    assert sign.template_id == "2.59.1" and sign.vote_share == pytest.approx(1.0) and sign.n_obs == 4
+    assert sign.template_id == "2.59.1-30" and sign.vote_share == pytest.approx(1.0) and sign.n_obs == 4
     assert (sign.format, sign.width_m, sign.height_m) == ("normal", 0.5, 0.7)  # from the panel's own reading
     assert sign.status == "review"  # one view read the panel: a person confirms it
-    more = seen_from(truth, [7], template_id="2.59.1", shape="rectangle", cls=0.95, fmt=("normal", 0.5, 0.7))
+    more = seen_from(truth, [7], template_id="2.59.1-30", shape="rectangle", cls=0.95, fmt=("normal", 0.5, 0.7))
     (seen_twice,) = fuse_observations(discs + panel + more, carried_discs=ZONES)
-    assert seen_twice.template_id == "2.59.1" and seen_twice.status == "accepted"
+    assert seen_twice.template_id == "2.59.1-30" and seen_twice.status == "accepted"
 
 
 def test_only_a_confident_panel_reading_claims_discs_and_only_its_own_disc():
     truth = np.array([20.0, 3.0, 2.5])
     discs = doubtful(seen_from(truth, [3, 4, 6], template_id="2.30-80", cls=0.85))
-    unsure_panel = doubtful(seen_from(truth, [5], template_id="2.59.1", shape="rectangle", cls=0.7))
+    unsure_panel = doubtful(seen_from(truth, [5], template_id="2.59.1-30", shape="rectangle", cls=0.7))
     (sign,) = fuse_observations(discs + unsure_panel, carried_discs=ZONES)
     assert sign.template_id == "2.30-80"  # a doubtful panel reading does not outvote three discs
     blue = seen_from(truth, [5], template_id="2.59.3", shape="rectangle", colour="blue", cls=0.95)
@@ -299,12 +299,12 @@ def test_only_a_confident_panel_reading_claims_discs_and_only_its_own_disc():
 def test_a_disc_sign_read_clearly_stays_itself_though_read_as_a_zone_panel_from_afar():
     truth = np.array([20.0, 3.0, 2.5])
     # drive 1107: a 2.30-100 over a plate read as 2.59.1 at 13.6 m (0.98), then as itself at 1.00 three times
-    afar = seen_from(truth, [3], template_id="2.59.1", shape="rectangle", cls=0.98)
+    afar = seen_from(truth, [3], template_id="2.59.1-30", shape="rectangle", cls=0.98)
     near = seen_from(truth, [4, 5, 6], template_id="2.30-100", cls=1.0)
     (sign,) = fuse_observations(afar + near, carried_discs=ZONES)
     assert sign.template_id == "2.30-100" and sign.status == "accepted"
     # drive 1088: a 2.14 over a plate read as 2.59.1 at 13 and 11 m, as 2.14 at 9 and 7 m (no speed limit)
-    afar = seen_from(truth, [3, 4], template_id="2.59.1", shape="rectangle", cls=0.99, det=0.97)
+    afar = seen_from(truth, [3, 4], template_id="2.59.1-30", shape="rectangle", cls=0.99, det=0.97)
     near = doubtful(seen_from(truth, [5, 6], template_id="2.14", cls=1.0, det=0.99))
     (sign,) = fuse_observations(afar + near, carried_discs=ZONES)
     assert sign.template_id == "2.14"

@@ -33,7 +33,7 @@ def test_speed_limit_sign_with_given_depth(catalogue):
 
 
 @pytest.mark.parametrize("template_id,size", [("1.23", "normal"), ("3.03", "normal"), ("2.36", "small"),
-                                              ("3.01", "small"), ("2.59.1", "normal")])
+                                              ("3.01", "small"), ("2.59.1-30", "normal")])
 def test_other_shapes_colours_and_formats(catalogue, template_id, size):
     sign = _world(8.0, -1.0, 0.3)
     left, depth, _ = sign_scene(catalogue, template_id, size, sign, seed=2)
@@ -345,7 +345,7 @@ def test_a_speed_ring_inside_a_white_panel_of_another_design_is_held_for_review(
     assert dets[0].review_reason == ("a zone panel's disc read alone" if status == "review" else "")
 
 
-@pytest.mark.parametrize("panel_depth, found", [(None, ("2.59.1", "review")), (30.0, ("2.30-30", "accepted"))])
+@pytest.mark.parametrize("panel_depth, found", [(None, ("2.59.1-30", "review")), (30.0, ("2.30-30", "accepted"))])
 def test_a_zone_panel_whose_white_matches_no_official_panel_is_read_as_the_panel_by_its_depth(
         catalogue, monkeypatch, panel_depth, found):
     """Drives 1179 and 1196: the network read a zone panel of another design as 2.59.1 at 1.00, but its white
@@ -355,8 +355,8 @@ def test_a_zone_panel_whose_white_matches_no_official_panel_is_read_as_the_panel
     from signmapper_core.pipeline import detect as detect_module
 
     sign = _world(8.0, -1.0, 0.3)
-    left, depth, _ = sign_scene(catalogue, "2.59.1", "normal", sign, seed=2, background_depth=30.0)
-    assert [(d.template_id, d.status) for d in _detect(catalogue, left, depth)] == [("2.59.1", "accepted")]
+    left, depth, _ = sign_scene(catalogue, "2.59.1-30", "normal", sign, seed=2, background_depth=30.0)
+    assert [(d.template_id, d.status) for d in _detect(catalogue, left, depth)] == [("2.59.1-30", "accepted")]
     monkeypatch.setattr(detect_module, "surround_score", lambda *args, **kwargs: 0.0)
     if panel_depth is not None:  # only the red ring stays in front: the panel's white lies far behind it
         red = (left[..., 2].astype(int) - left[..., 1] > 80).astype(np.uint8)

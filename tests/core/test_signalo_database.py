@@ -28,7 +28,7 @@ SIGNS = [
     sign(1, "2.30-50", 20.0, dz=0.35),
     sign(2, "3.05", 20.03, dz=-0.35),  # same pole as 1, below it
     sign(3, "2.02", 35.0, shape="triangle-down"),
-    sign(4, "2.59.1", 50.0, shape="rectangle"),  # Tempo-30 zone: Signalo's 2.59.1-30
+    sign(4, "2.59.1-30", 50.0, shape="rectangle"),  # Tempo-30 zone: Signalo's 2.59.1-30
     sign(5, "2.10", 60.0),  # not in Signalo's list of official signs
     sign(6, "2.01", 35.05, azimuth=95.0, shape="octagon"),  # back to back with 3: same pole, other azimut
 ]
@@ -130,7 +130,7 @@ def test_second_export_of_the_same_run_adds_nothing(signalo_database):
 def test_update_instead_of_adding_moves_a_lonely_pole(signalo_database):
     dsn = signalo_database("update")
     first = dict(export_signs(connect(dsn), RUN, SIGNS).added)
-    moved = ExportSign(**{**sign(9, "2.59.1", 51.0).__dict__, "update_id": first[4], "moved": True})
+    moved = ExportSign(**{**sign(9, "2.59.1-30", 51.0).__dict__, "update_id": first[4], "moved": True})
     result = export_signs(connect(dsn), "run-2", [moved])
     assert result.updated == [(9, first[4])] and result.added == []
     (x, comment), = rows(dsn, f"SELECT ST_X(su.geometry), s.comment FROM signalo_db.sign s JOIN signalo_db.frame f "
@@ -179,10 +179,10 @@ def test_broken_connection_is_a_clear_error(postgres):
 def test_round_trip_reads_back_every_sign_confirmed(signalo_database):
     dsn = signalo_database("roundtrip")
     export_signs(connect(dsn), RUN, SIGNS)
-    catalogue_ids = {"2.30-50", "3.05", "2.02", "2.59.1", "2.10", "2.01"}
+    catalogue_ids = {"2.30-50", "3.05", "2.02", "2.59.1-30", "2.10", "2.01"}
     inventory, others, crs = read_inventory(connect(dsn), catalogue_ids)
     assert crs == "EPSG:2056" and others == 0
-    assert sorted(s.template_id for s in inventory) == ["2.01", "2.02", "2.30-50", "2.59.1", "3.05"]
+    assert sorted(s.template_id for s in inventory) == ["2.01", "2.02", "2.30-50", "2.59.1-30", "3.05"]
     by_type = {s.template_id: s for s in inventory}
     assert by_type["2.01"].facing == 95.0 and by_type["2.02"].facing == 270.0
     # heights rebuilt from the free height under the lowest sign and the sizes above it

@@ -101,7 +101,7 @@ def test_edge_support_counts_circle_points_on_radial_gradients():
 
 @pytest.mark.parametrize("template_id,size,ahead,shape", [
     ("2.55", "normal", 8.0, "circle"), ("2.53-60", "small", 5.0, "circle"), ("2.58", "normal", 8.0, "circle"),
-    ("2.59.2", "normal", 5.0, "rectangle"), ("2.59.6", "normal", 5.0, "rectangle")])
+    ("2.59.2-30", "normal", 5.0, "rectangle"), ("2.59.6", "normal", 5.0, "rectangle")])
 def test_white_faces_are_outline_candidates_with_their_box(catalogue, template_id, size, ahead, shape):
     _, left, _, bbox = _pole_scene(catalogue, template_id, size, ahead)
     cands = white_candidates(left, _sides(catalogue), CONFIG)
@@ -233,16 +233,16 @@ def test_white_sign_on_its_pole_is_detected_and_classified(catalogue):
 
 
 def test_zone_end_panel_is_detected(catalogue):
-    _, left, depth, _ = _pole_scene(catalogue, "2.59.2", "normal", ahead=5.0)
+    _, left, depth, _ = _pole_scene(catalogue, "2.59.2-30", "normal", ahead=5.0)
     dets = detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG)
-    assert [(d.template_id, d.source) for d in dets] == [("2.59.2", "white")]
+    assert [(d.template_id, d.source) for d in dets] == [("2.59.2-30", "white")]
 
 
 def test_zone_end_panel_before_a_pale_wall_is_read_as_the_panel_not_as_its_disc(catalogue):
     # held-out drives: a 2.59.2 before a pale wall was found as its zone disc alone and read as a disc sign;
     # sought as the disc of a panel around it, the panel is found (without that, the disc is the sign)
     sign = _world(10.0, 1.2, 0.3)
-    left, depth, bbox = sign_scene(catalogue, "2.59.2", "normal", sign, background_depth=30.0)
+    left, depth, bbox = sign_scene(catalogue, "2.59.2-30", "normal", sign, background_depth=30.0)
     wall = noisy_background(seed=2, level=190, sigma=6)
     x, y, w, h = bbox
     outside = np.ones(left.shape[:2], bool)
@@ -250,12 +250,12 @@ def test_zone_end_panel_before_a_pale_wall_is_read_as_the_panel_not_as_its_disc(
     left[outside] = wall[outside]
     left = cv2.GaussianBlur(left, (0, 0), 1.0)
     (det,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, CONFIG)
-    assert (det.template_id, det.status, det.format) == ("2.59.2", "accepted", "normal")
+    assert (det.template_id, det.status, det.format) == ("2.59.2-30", "accepted", "normal")
     assert max(abs(a - b) for a, b in zip(det.bbox, bbox)) <= 2
     assert np.linalg.norm(det.position - sign) < 0.1
     disc_only = with_settings(CONFIG, {"white": {"white_panel_around": False}})
     (det,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, disc_only)
-    assert det.template_id != "2.59.2" and det.bbox[2] < w
+    assert det.template_id != "2.59.2-30" and det.bbox[2] < w
 
 
 def test_a_face_matching_its_drawing_weakly_is_read_by_the_network_when_it_is_held(catalogue):
@@ -286,7 +286,7 @@ def test_the_same_face_in_a_facade_is_not_a_sign(catalogue):
 def test_a_blank_white_board_on_a_pole_is_not_a_sign(catalogue):
     # a free-standing white board of a zone panel's size with dark lettering: no white template resembles it
     sign = _world(7.0, 1.2, 0.3)
-    left, depth, bbox = sign_scene(catalogue, "2.59.2", "normal", sign, background_depth=30.0)
+    left, depth, bbox = sign_scene(catalogue, "2.59.2-30", "normal", sign, background_depth=30.0)
     x, y, w, h = bbox
     left[y : y + h, x : x + w] = (236, 236, 234)
     cv2.rectangle(left, (x, y), (x + w - 1, y + h - 1), (20, 20, 20), 2)
@@ -440,7 +440,7 @@ def _white_detection(template_id, shape, bbox):
 
 
 def test_a_disc_inside_a_white_panel_is_the_panels_zone_disc():
-    panel = _white_detection("2.59.2", "rectangle", (100, 100, 50, 70))
+    panel = _white_detection("2.59.2-30", "rectangle", (100, 100, 50, 70))
     inner = _white_detection("2.53.1", "circle", (108, 125, 34, 34))  # the zone's ring on the panel
     alone = _white_detection("2.55", "circle", (300, 100, 50, 50))
     assert without_panel_discs([panel, inner, alone], [], CONFIG) == [panel, alone]

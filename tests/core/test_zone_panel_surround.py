@@ -9,7 +9,7 @@ from signmapper_core.zone_panels import may_be_a_panels_disc, may_be_disc_of
 
 CONFIG = PipelineConfig()
 DISC = (150, 160, 80, 80)  # x, y, w, h
-ZONES = {"2.59.1": "2.30-30", "2.59.3": "2.61"}
+ZONES = {"2.59.1-30": "2.30-30", "2.59.3": "2.61"}
 
 
 def scene(panel_depth=10.0, panel=(130, 100, 120, 170), white=(235, 235, 235), disc=DISC):

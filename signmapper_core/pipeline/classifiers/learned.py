@@ -133,6 +133,10 @@ class LearnedClassifier:
     def knows(self, template_ids: Sequence[str]) -> bool:
         return all(t in self._index for t in template_ids)
 
+    def unknown(self, template_ids: Sequence[str]) -> list:
+        """The ids among ``template_ids`` the network was not trained on: it cannot read them."""
+        return [t for t in template_ids if t not in self._index]
+
     def logits(self, image: np.ndarray, bboxes: Sequence) -> np.ndarray:
         """Network outputs (n, classes) for face boxes of one image, averaged over the card's views of each."""
         views = self.card.views
@@ -148,12 +152,10 @@ class LearnedClassifier:
         return _softmax(logits[picked] / self.card.temperature)
 
     def classify(self, image: np.ndarray, bbox, candidate_ids: Sequence[str]) -> ClassificationResult:
-        ids = list(dict.fromkeys(candidate_ids))
+        # entries added to the catalogue after the network was trained are not read (the run warns of them)
+        ids = [t for t in dict.fromkeys(candidate_ids) if t in self._index]
         if not ids:
             return ClassificationResult(None, 0.0)
-        unknown = [t for t in ids if t not in self._index]
-        if unknown:
-            raise ClassifierError(self.card.path, f"the model does not know the template ids {unknown}")
         p = self.probabilities(self.logits(image, [bbox])[0], ids)
         best = int(np.argmax(p[:-1]))
         scores = {t: float(p[i]) for i, t in enumerate(ids)}
