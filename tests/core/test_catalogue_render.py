@@ -107,7 +107,8 @@ def test_catalogue_render_of_an_own_drawing_is_close_to_the_reference_face(cat):
     assert np.abs(t_bgr.astype(int) - render_face("2.53-50", 64)[0]).mean() < 6
 
 
-@pytest.mark.parametrize("tid", ["2.30-50", "2.01", "1.22", "3.01", "3.02", "3.03", "2.33", "4.08", "1.32", "2.59.1-30"])
+@pytest.mark.parametrize("tid", ["2.30-50", "2.01", "1.22", "3.01", "3.02", "3.03", "2.33", "4.08", "1.32",
+                                 "2.59.1-30"])
 def test_render_face_with_a_varied_style_differs_but_keeps_the_colour_class(cat, tid):
     ref_bgr, ref_alpha = render_face(tid, 96)
     for seed in range(3):
