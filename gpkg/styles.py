@@ -45,7 +45,8 @@ from qgis.PyQt.QtGui import QColor
 
 from ..signmapper_core import output_schema as schema
 from ..signmapper_core.catalogue.families import by_family, family_name
-from ..signmapper_core.catalogue.names import sign_name
+from ..signmapper_core.catalogue.model import UNKNOWN_ID
+from ..signmapper_core.catalogue.names import sign_name, unknown_name
 from ..signmapper_core.output_schema import DETECTIONS, MANUAL, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
 from ..signmapper_core.plate_formats import PLATE_ID, PLATE_NAMES
 from ..signmapper_core.sign_colours import DISPLAY_COLOURS
@@ -184,6 +185,10 @@ def signs_renderer(catalogue, language: str = "en") -> QgsRuleBasedRenderer:
         sign_symbol(_plain_layer(SimpleNamespace(shape="rectangle", colour="white"), PICTOGRAM_MM)), 0, 0,
         f'"template_id" = {_quoted(PLATE_ID)}', PLATE_NAMES.get(language, PLATE_NAMES["en"]))
     root.appendChild(plates)
+    unknown = QgsMarkerSymbol.createSimple({"name": "circle", "color": "#ffffff", "outline_color": "#f57c00",
+                                            "outline_width": "0.6", "size": str(PICTOGRAM_MM * 0.8)})
+    root.appendChild(QgsRuleBasedRenderer.Rule(sign_symbol(unknown.symbolLayer(0).clone()), 0, 0,
+                                               f'"template_id" = {_quoted(UNKNOWN_ID)}', unknown_name(language)))
     fallback = QgsMarkerSymbol.createSimple({"name": "circle", "color": "#d52b1e", "size": "3"})
     other = QgsRuleBasedRenderer.Rule(fallback, 0, 0, "", "other")
     other.setIsElse(True)

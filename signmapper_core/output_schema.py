@@ -59,11 +59,14 @@ class OutputContext:
     crops: dict = dc_field(default_factory=dict)  # sign_id -> crop image path relative to the GeoPackage
 
     def name(self, template_id: str, fallback: str) -> str:
-        from .catalogue.names import sign_name
+        from .catalogue.model import UNKNOWN_ID
+        from .catalogue.names import sign_name, unknown_name
         from .plate_formats import PLATE_ID, PLATE_NAMES
 
         if template_id == PLATE_ID:
             return PLATE_NAMES.get(self.language, PLATE_NAMES["en"])
+        if template_id == UNKNOWN_ID:
+            return unknown_name(self.language)
         if self.catalogue is not None and template_id in self.catalogue:
             return sign_name(self.catalogue[template_id], self.language)
         if self.catalogue is not None and getattr(self.catalogue, "folder", None) is not None:

@@ -27,6 +27,9 @@ from signmapper_core.pipeline.classifiers.learned import BACKGROUND, CARD_FORMAT
 from .dataset import class_shares, generate, labels_for
 from .model import SignNet
 
+# the modules of this package that do not make patches: changing them keeps the cached patches valid
+NOT_SYNTHESIS = ("train.py", "model.py", "left_out.py")
+
 
 def catalogue_digest(catalogue) -> str:
     """Hash of catalogue.json and every master image: a model is only valid for the catalogue it was trained on."""
@@ -127,6 +130,21 @@ def acceptance_threshold(best_p: np.ndarray, correct: np.ndarray, max_wrong: flo
     return float(np.clip(best_p[order][ok[-1]], 0.5, 0.99))
 
 
+def unknown_logit(logits: np.ndarray, labels: np.ndarray, groups, background: int, percentile: float) -> float:
+    """The largest sign logit that ``percentile`` % of the validation signs read right stay below: a face whose
+    largest sign logit is lower matches no sign the network knows as well as the signs it reads right (the open
+    set, ``pipeline.detect.matches_no_entry``)."""
+    signs = [i for i in range(logits.shape[1]) if i != background]
+    fits = []
+    for z, label in zip(logits, labels):
+        if label == background:
+            continue
+        group = groups[label]
+        if group[int(np.argmax(z[group]))] == label:
+            fits.append(z[signs].max())
+    return float(np.percentile(fits, percentile))
+
+
 def export_onnx(model: nn.Module, input_px: int, path: Path) -> None:
     model.eval()
     dummy = torch.zeros(1, 3, input_px, input_px)
@@ -153,7 +171,7 @@ def train(args) -> dict:
     background = len(class_ids) - 1
     digest = catalogue_digest(catalogue)
     synthesis = hashlib.sha256(b"".join(f.read_bytes() for f in sorted(Path(__file__).parent.glob("*.py"))
-                                        if f.name not in ("train.py", "model.py"))).hexdigest()
+                                        if f.name not in NOT_SYNTHESIS)).hexdigest()
     tag = f"{digest[:12]}-{synthesis[:8]}-{args.input_px}-{args.margin}-{args.seed}"
     tag += "-dv" if args.design_variants else ""
     cache = Path(args.cache)
@@ -218,6 +236,7 @@ def train(args) -> dict:
     best_p, correct = restricted_probabilities(logits, y_val, groups, background, temperature,
                                                np.random.default_rng(0))
     threshold = acceptance_threshold(best_p, correct, args.max_wrong)
+    open_set = unknown_logit(logits, y_val, groups, background, args.unknown_percentile)
     out = Path(args.out) if args.out else Path(catalogue.folder) / MODEL_DIR
     out.mkdir(parents=True, exist_ok=True)
     export_onnx(model, args.input_px, out / "model.onnx")
@@ -234,6 +253,7 @@ def train(args) -> dict:
         "temperature": round(temperature, 4),
         "accept_threshold": round(threshold, 4),
         "min_score": args.min_score,
+        "unknown_logit": round(open_set, 3),
         "training": {
             "command": "python -m training.train " + " ".join(args.argv),
             "catalogue_sha256": digest,
@@ -248,7 +268,7 @@ def train(args) -> dict:
     }
     (out / "model.json").write_text(json.dumps(card, indent=1) + "\n", encoding="utf-8")
     log(f"wrote {out}/model.onnx and model.json: temperature {temperature:.3f}, accept threshold {threshold:.3f}, "
-        f"OpenCV check {diff:.1e}")
+        f"unknown below logit {open_set:.2f}, OpenCV check {diff:.1e}")
     return card
 
 
@@ -269,6 +289,8 @@ def main(argv=None) -> None:
     p.add_argument("--margin", type=float, default=0.12)
     p.add_argument("--max-wrong", type=float, default=0.01, help="wrong share allowed among accepted (validation)")
     p.add_argument("--min-score", type=float, default=0.25, help="probability below which nothing is reported")
+    p.add_argument("--unknown-percentile", type=float, default=2.0,
+                   help="validation signs read right whose largest sign logit is below the open set's limit, in %%")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--design-variants", action="store_true",
                    help="half the faces with their pictogram redrawn (moved, warped, restroked, simplified) and rims "

@@ -30,6 +30,7 @@ COLOURS = ("red", "blue", "yellow", "white", "green", "brown", "orange")
 SHAPES = ("circle", "triangle", "triangle-down", "octagon", "diamond", "square", "rectangle", "pointer", "cross")
 # SSV numbers as Signalo writes them: dotted numbers, "/" in lane signs (4.77/01), "-" before a value or variant
 ID_PATTERN = re.compile(r"^[0-9A-Za-z]+([./][0-9A-Za-z]+)*(-[0-9A-Za-z.]+)*$")
+UNKNOWN_ID = "unknown"  # the id of a sign-like face that matches no entry well (the open set); no entry has it
 STANDARD, MEASURED = "standard", "measured"  # sizing: rounded to a standard format, or reported as measured
 SIZINGS = (STANDARD, MEASURED)
 MEASURED_SIDE_M = (0.15, 6.0)  # the shorter and longer side of any face without a standard size
@@ -259,8 +260,8 @@ def _entry_from_json(path: Path, raw: dict, index: int) -> TemplateEntry:
         png = raw.get("png") or f"png/{file_stem(tid)}.png"
     except (KeyError, TypeError, ValueError, IndexError) as exc:
         raise CatalogueError(path, f"{where}: missing or malformed field ({exc})") from None
-    if not ID_PATTERN.match(tid):
-        raise CatalogueError(path, f"{where}: id must look like '2.30-50'")
+    if not ID_PATTERN.match(tid) or tid == UNKNOWN_ID:
+        raise CatalogueError(path, f"{where}: id must look like '2.30-50' (and {UNKNOWN_ID!r} is taken)")
     if colour not in COLOURS:
         raise CatalogueError(path, f"{where}: colour {colour!r} not in {COLOURS}")
     if shape not in SHAPES:

@@ -50,6 +50,15 @@ NAMES_EN = {
 }
 
 
+# the name of the open set's id (model.UNKNOWN_ID): a sign-like face no catalogue entry matches well
+UNKNOWN_NAMES = {"de": "Unbekanntes Signal", "fr": "Signal inconnu", "it": "Segnale sconosciuto",
+                 "en": "Unknown sign"}
+
+
+def unknown_name(language: str) -> str:
+    return UNKNOWN_NAMES.get(language, UNKNOWN_NAMES["en"])
+
+
 def sign_name(entry, language: str) -> str:
     """The name of a catalogue entry in ``language`` (de, fr, it, en); German where that name is unknown."""
     if language == "en":

@@ -398,6 +398,11 @@ class ClassificationConfig:
     # it (a shadowed procedural panel's margins kept 0.6; set on looked-at drives 801-805, 1150-1179: all 11 views
     # of a zone panel read as its disc held; of the 167 other speed-limit and 2.61 views, two had such white around
     # them, both already in review)
+    # the open set: a face that passed colour, outline, size and planarity but whose best sign logit is below its
+    # network's unknown_logit (model card) is mapped as unknown, in review, unless the network gives it at least
+    # this probability of being no sign at all
+    open_set: bool = True
+    unknown_max_background: float = 0.5
     same_sign_max_iou: float = 0.3  # detections of one pair overlapping more (or holding the other's centre) are
     # one sign found twice, or a part of it found as a sign: the best (detection x classification) is kept
     part_max_area_share: float = 0.7  # ...but a detection inside an accepted one's face covering at most this share

@@ -17,10 +17,11 @@ from typing import List, Optional, Sequence, Tuple
 import cv2
 import numpy as np
 
+from ..catalogue.model import UNKNOWN_ID
 from ..face_normal import world_face_normal
 from ..geometry import Camera, Pose
 from ..printed_numbers import number_band, printed_number
-from ..review_reasons import FAINT_HOUGH_RING, ZONE_PANEL_BY_DEPTH, ZONE_PANEL_DISC
+from ..review_reasons import FAINT_HOUGH_RING, NO_ENTRY_MATCHES, ZONE_PANEL_BY_DEPTH, ZONE_PANEL_DISC
 from ..zone_panels import may_be_a_panels_disc
 from .boxes import box_iou, centre_inside
 from .classifiers import accept_threshold, marginal_min_score, min_score
@@ -275,6 +276,8 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     w, h = seg.bbox[2], seg.bbox[3]
     oblique = shape in ROUND_SHAPES and min(w, h) < (1.0 - config.size.size_tolerance) * max(w, h)
     floor = marginal_min_score(classifier, config) if marginal or oblique else min_score(classifier, config)
+    if best is not None and not (marginal or oblique) and matches_no_entry(best[2], classifier, config):
+        return _unknown_detection(seg, best, shape, planarity, size, pair)
     if best is None or best[2].score < floor:
         return None
     match, face, cls = best
@@ -291,10 +294,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         status = status if strong else config.hough.hough_max_status
         reason = "" if status == "accepted" else FAINT_HOUGH_RING
     u, v = bbox_centre(face)
-    z = planarity.depth_at(camera, u, v)
-    slack = config.depth.face_depth_slack
-    if not (np.isfinite(z) and config.depth.near_m * (1.0 - slack) <= z <= config.depth.far_m * (1.0 + slack)):
-        z = size.depth_m
+    z = face_depth(planarity, camera, u, v, size, config)
     if status == "accepted" and may_be_a_panels_disc(zone_panels, cls.template_id) and \
             inside_white_panel(left, depth, face, z, config):
         status, reason = "review", ZONE_PANEL_DISC
@@ -306,6 +306,41 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         u=u, v=v, bbox=face, depth_m=float(z),
         position=locate(camera, pose, u, v, z), source=seg.source, scores=cls.scores,
         normal_world=world_face_normal(camera, pose, planarity.plane), review_reason=reason,
+    )
+
+
+def face_depth(planarity, camera: Camera, u: float, v: float, size, config: PipelineConfig) -> float:
+    """Depth of the face's centre on its fitted plane, or the segment's median depth where the plane puts it
+    outside the depth range (a face reaching past the range's limits)."""
+    z = planarity.depth_at(camera, u, v)
+    slack = config.depth.face_depth_slack
+    if not (np.isfinite(z) and config.depth.near_m * (1.0 - slack) <= z <= config.depth.far_m * (1.0 + slack)):
+        z = size.depth_m
+    return float(z)
+
+
+def matches_no_entry(cls, classifier, config: PipelineConfig) -> bool:
+    """Whether a sign-like face's reading is the open set's: its network (where its model card calibrates this)
+    gives no sign it knows a logit as high as it gives the signs it reads right, and does not call it no sign."""
+    limit = getattr(classifier, "unknown_logit", None)
+    if not config.classification.open_set or limit is None:
+        return False
+    return cls.fit < limit and cls.background < config.classification.unknown_max_background
+
+
+def _unknown_detection(seg: Segment, reading, shape: str, planarity, size, pair: PairContext) -> Detection:
+    """A sign-like face no catalogue entry matches well: id ``unknown``, in review, with the readings it came
+    closest to as its scores (the next choices), its size as measured or as the format it fits."""
+    match, face, cls = reading
+    camera = pair.camera
+    u, v = bbox_centre(face)
+    z = face_depth(planarity, camera, u, v, size, pair.config)
+    return Detection(
+        template_id=UNKNOWN_ID, name=UNKNOWN_ID, colour=seg.colour, shape=shape, width_m=match.width_m,
+        height_m=match.height_m, format=match.format, detection_indicator=planarity.indicator,
+        classification_indicator=cls.score, status="review", u=u, v=v, bbox=face, depth_m=float(z),
+        position=locate(camera, pair.pose, u, v, z), source=seg.source, scores=cls.scores,
+        normal_world=world_face_normal(camera, pair.pose, planarity.plane), review_reason=NO_ENTRY_MATCHES,
     )
 
 

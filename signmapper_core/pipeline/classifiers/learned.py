@@ -44,6 +44,8 @@ class ModelCard:
     accept_threshold: float  # calibrated probability above which a sign is "accepted"
     min_score: float  # below this probability the segment is not reported as a sign
     views: tuple = ((0.0, 0.0, 1.0),)  # (dx, dy, scale) of the box, in box sizes: logits averaged over them
+    # a face whose largest sign logit is below this matches no sign the network knows well (None: not calibrated)
+    unknown_logit: float | None = None
 
     def index(self, template_id: str) -> int:
         return self.classes.index(template_id)
@@ -94,7 +96,17 @@ def load_model_card(path) -> ModelCard:
         accept_threshold=float(field("accept_threshold", (int, float), lambda v: 0 < v < 1, "a number in (0, 1)")),
         min_score=float(field("min_score", (int, float), lambda v: 0 <= v < 1, "a number in [0, 1)")),
         views=tuple(tuple(float(c) for c in v) for v in views),
+        unknown_logit=_optional_number(raw, "unknown_logit", path),
     )
+
+
+def _optional_number(raw: dict, name: str, path: Path) -> float | None:
+    value = raw.get(name)
+    if value is None:
+        return None
+    if not isinstance(value, (int, float)) or isinstance(value, bool) or not -100 < value < 100:
+        raise ClassifierError(path, f"field '{name}' must be a number, got {value!r}")
+    return float(value)
 
 
 def _view(bbox, view) -> tuple:
@@ -121,6 +133,8 @@ class LearnedClassifier:
         self.min_score = card.min_score
         self.marginal_min_score = card.accept_threshold  # a loose or oblique outline must be read with confidence
         self._index = {c: i for i, c in enumerate(card.classes)}
+        self._signs = np.array([i for c, i in self._index.items() if c != BACKGROUND])
+        self.unknown_logit = card.unknown_logit
         try:
             self._net = cv2.dnn.readNetFromONNX(str(card.onnx))
         except cv2.error as exc:
@@ -156,7 +170,10 @@ class LearnedClassifier:
         ids = [t for t in dict.fromkeys(candidate_ids) if t in self._index]
         if not ids:
             return ClassificationResult(None, 0.0)
-        p = self.probabilities(self.logits(image, [bbox])[0], ids)
+        z = self.logits(image, [bbox])[0]
+        p = self.probabilities(z, ids)
         best = int(np.argmax(p[:-1]))
         scores = {t: float(p[i]) for i, t in enumerate(ids)}
-        return ClassificationResult(ids[best], float(p[best]), scores)
+        every = _softmax(z / self.card.temperature)
+        return ClassificationResult(ids[best], float(p[best]), scores, fit=float(z[self._signs].max()),
+                                    background=float(every[self._index[BACKGROUND]]))
