@@ -10,6 +10,7 @@ import pytest
 
 from signmapper_core.catalogue import DEFAULT_CATALOGUE_DIR, load_catalogue
 from signmapper_core.catalogue.model import MEASURED, STANDARD, fits_measured, round_size
+from signmapper_core.catalogue.names import NAMES_EN, sign_name
 from signmapper_core.catalogue.official_entries import OFFICIAL_ENTRIES
 from signmapper_core.catalogue.official_signs import official_signs
 from signmapper_core.catalogue.text_panels import COVERED_BY_PANEL
@@ -56,6 +57,8 @@ def test_names_are_signalos_in_three_languages(cat):
     assert cat["2.59.4"].names["de"] == "Ende der Fussgängerzone"  # Signalo's line-break hyphen joined
     assert cat["2.63"].names["de"].startswith("Rad- und Fussweg")  # a real hyphen kept
     assert cat["2.30-50"].names["de"] == "Höchstgeschwindigkeit 50"  # per-value entries keep their own
+    assert [e.id for e in cat if e.id not in NAMES_EN] == []  # and every entry has an English name
+    assert sign_name(cat["3.22"], "en") == "Single St Andrew's cross"
 
 
 @pytest.mark.parametrize("colour, least", [("red", 80), ("blue", 80), ("yellow", 4), ("white", 50), ("green", 12),
