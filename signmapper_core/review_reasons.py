@@ -20,6 +20,7 @@ ZONE_PANEL_BY_DEPTH = "zone panel read by its depth, its drawing unmatched"
 FAINT_HOUGH_RING = "Hough circle without a full-colour ring"
 WHITE_UNREAD = "resembles a white sign the network reads as none"
 NO_ENTRY_MATCHES = "matches no catalogue sign well"
+OFF_FORMAT = "size fits no standard format"
 # a fused sign
 ONE_VIEW = "seen in one pair only"
 TOO_FEW_VIEWS = "too few views"

@@ -131,17 +131,16 @@ def acceptance_threshold(best_p: np.ndarray, correct: np.ndarray, max_wrong: flo
 
 
 def unknown_logit(logits: np.ndarray, labels: np.ndarray, groups, background: int, percentile: float) -> float:
-    """The largest sign logit that ``percentile`` % of the validation signs read right stay below: a face whose
-    largest sign logit is lower matches no sign the network knows as well as the signs it reads right (the open
-    set, ``pipeline.detect.matches_no_entry``)."""
-    signs = [i for i in range(logits.shape[1]) if i != background]
+    """The logit that ``percentile`` % of the validation signs read right stay below: a face whose best candidate's
+    logit is lower matches no candidate as well as the signs the network reads right (the open set,
+    ``pipeline.detect.matches_no_entry``)."""
     fits = []
     for z, label in zip(logits, labels):
         if label == background:
             continue
         group = groups[label]
         if group[int(np.argmax(z[group]))] == label:
-            fits.append(z[signs].max())
+            fits.append(z[label])
     return float(np.percentile(fits, percentile))
 
 
@@ -290,7 +289,7 @@ def main(argv=None) -> None:
     p.add_argument("--max-wrong", type=float, default=0.01, help="wrong share allowed among accepted (validation)")
     p.add_argument("--min-score", type=float, default=0.25, help="probability below which nothing is reported")
     p.add_argument("--unknown-percentile", type=float, default=2.0,
-                   help="validation signs read right whose largest sign logit is below the open set's limit, in %%")
+                   help="validation signs read right whose logit is below the open set's limit, in %%")
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--design-variants", action="store_true",
                    help="half the faces with their pictogram redrawn (moved, warped, restroked, simplified) and rims "

@@ -27,8 +27,8 @@ class ClassificationResult:
     template_id: Optional[str]
     score: float  # best NCC, the classification indicator (clipped to 0..1)
     scores: Dict[str, float] = field(default_factory=dict)
-    # a learned classifier's view over every class it knows, not only the candidates: its largest logit for any
-    # sign (how well the face matches the sign it resembles most) and its probability that the face is no sign
+    # a learned classifier's raw view: its largest logit for a candidate (how well the face matches the candidate
+    # it resembles most) and, over every class it knows, its probability that the face is no sign
     fit: float = math.inf
     background: float = 0.0
 

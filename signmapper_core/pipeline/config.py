@@ -282,6 +282,9 @@ class SizeConfig:
     """Size (step 5): a segment's metric size rounded to a standard format."""
 
     size_tolerance: float = 0.15  # relative deviation from a standard format
+    # a face fitting no standard format but within this factor of one (old and custom-made signs) is still read,
+    # and mapped where its reading is clear (at the acceptance threshold), in review with its measured size
+    off_format_factor: float = 1.6
     # a round face seen at an angle is an ellipse: sized by its larger axis, down to this axis ratio
     # (~60 deg off the optical axis; beyond it the face is unreadable anyway)
     min_round_axis_ratio: float = 0.5
@@ -398,7 +401,7 @@ class ClassificationConfig:
     # it (a shadowed procedural panel's margins kept 0.6; set on looked-at drives 801-805, 1150-1179: all 11 views
     # of a zone panel read as its disc held; of the 167 other speed-limit and 2.61 views, two had such white around
     # them, both already in review)
-    # the open set: a face that passed colour, outline, size and planarity but whose best sign logit is below its
+    # the open set: a face that passed colour, outline, size and planarity but whose best candidate's logit is below its
     # network's unknown_logit (model card) is mapped as unknown, in review, unless the network gives it at least
     # this probability of being no sign at all
     open_set: bool = True

@@ -17,11 +17,11 @@ from typing import List, Optional, Sequence, Tuple
 import cv2
 import numpy as np
 
-from ..catalogue.model import UNKNOWN_ID
+from ..catalogue.model import MEASURED, STANDARD, UNKNOWN_ID
 from ..face_normal import world_face_normal
 from ..geometry import Camera, Pose
 from ..printed_numbers import number_band, printed_number
-from ..review_reasons import FAINT_HOUGH_RING, NO_ENTRY_MATCHES, ZONE_PANEL_BY_DEPTH, ZONE_PANEL_DISC
+from ..review_reasons import FAINT_HOUGH_RING, NO_ENTRY_MATCHES, OFF_FORMAT, ZONE_PANEL_BY_DEPTH, ZONE_PANEL_DISC
 from ..zone_panels import may_be_a_panels_disc
 from .boxes import box_iou, centre_inside
 from .classifiers import accept_threshold, marginal_min_score, min_score
@@ -156,7 +156,8 @@ def size_to_format(seg: Segment, candidates, depth_m: float, shape: Optional[str
                 width_m, height_m = metric_size(camera, (x, y, diameter, diameter), depth_m)
             else:
                 width_m, height_m = metric_size(camera, face, depth_m)
-            match = round_to_format(catalogue, entries, width_m, height_m, config.size.size_tolerance)
+            match = round_to_format(catalogue, entries, width_m, height_m, config.size.size_tolerance,
+                                    config.size.off_format_factor)
             if match is not None:
                 allowed = {e.id for e in entries}
                 ids = [t for t in match.template_ids if t in allowed]
@@ -281,9 +282,12 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     if best is None or best[2].score < floor:
         return None
     match, face, cls = best
+    off_format = match.format == MEASURED and catalogue[cls.template_id].sizing == STANDARD
+    if off_format and cls.score < accept:  # a size no standard sign has needs a clear reading
+        return None
     by_depth = any(best is r for r in held_panels)
-    status = "accepted" if cls.score >= accept and not by_depth else "review"
-    reason = ZONE_PANEL_BY_DEPTH if by_depth and cls.score >= accept else ""
+    status = "accepted" if cls.score >= accept and not (by_depth or off_format) else "review"
+    reason = ZONE_PANEL_BY_DEPTH if by_depth and cls.score >= accept else (OFF_FORMAT if off_format else "")
     if seg.source == "hough" and status == "accepted":
         # a circle with a full-colour ring is a colour find the colour step lost (an attachment
         # spoiled its outline); faded or white ones stay for review
@@ -321,7 +325,8 @@ def face_depth(planarity, camera: Camera, u: float, v: float, size, config: Pipe
 
 def matches_no_entry(cls, classifier, config: PipelineConfig) -> bool:
     """Whether a sign-like face's reading is the open set's: its network (where its model card calibrates this)
-    gives no sign it knows a logit as high as it gives the signs it reads right, and does not call it no sign."""
+    gives none of its candidates a logit as high as it gives the signs it reads right, and does not call it no
+    sign."""
     limit = getattr(classifier, "unknown_logit", None)
     if not config.classification.open_set or limit is None:
         return False

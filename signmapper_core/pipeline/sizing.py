@@ -12,6 +12,7 @@ from typing import Optional
 
 import numpy as np
 
+from ..catalogue.model import MEASURED, STANDARD, SizeMatch
 from ..geometry import Camera
 from .search_space import valid_depth
 
@@ -57,8 +58,28 @@ def measure_segment(camera: Camera, depth: np.ndarray, bbox, mask, near_m: float
     return SegmentSize(z, width_m, height_m, coverage)
 
 
-def round_to_format(catalogue, entries, width_m: float, height_m: float, tolerance: float):
-    """The catalogue's nearest standard format among ``entries`` within ``tolerance``, or None."""
+def round_to_format(catalogue, entries, width_m: float, height_m: float, tolerance: float,
+                    off_format_factor: float = 1.0):
+    """The catalogue's nearest standard format among ``entries`` within ``tolerance``, or None.
+
+    Where none fits, a face within ``off_format_factor`` of some entries' formats (old and custom-made signs
+    exist) is sized as measured: a :class:`SizeMatch` named ``measured`` listing those entries
+    (:func:`off_format`); the caller decides whether such a reading is clear enough to map.
+    """
     if not entries:
         return None
-    return catalogue.round_size(width_m, height_m, tolerance=tolerance, entries=entries)
+    match = catalogue.round_size(width_m, height_m, tolerance=tolerance, entries=entries)
+    if match is None and off_format_factor > 1.0:
+        return off_format(entries, width_m, height_m, off_format_factor)
+    return match
+
+
+def off_format(entries, width_m: float, height_m: float, factor: float):
+    """A ``measured`` :class:`SizeMatch` of the standard-size entries with a format within ``factor`` of
+    ``width_m`` x ``height_m`` in both sides, or None."""
+    if not (width_m > 0 and height_m > 0):
+        return None
+    limit = np.log(factor)
+    ids = tuple(e.id for e in entries if e.sizing == STANDARD and any(
+        abs(np.log(width_m / w)) <= limit and abs(np.log(height_m / h)) <= limit for w, h in e.formats.values()))
+    return SizeMatch(MEASURED, width_m, height_m, 0.0, ids) if ids else None

@@ -44,7 +44,7 @@ class ModelCard:
     accept_threshold: float  # calibrated probability above which a sign is "accepted"
     min_score: float  # below this probability the segment is not reported as a sign
     views: tuple = ((0.0, 0.0, 1.0),)  # (dx, dy, scale) of the box, in box sizes: logits averaged over them
-    # a face whose largest sign logit is below this matches no sign the network knows well (None: not calibrated)
+    # a face whose best candidate's logit is below this matches no candidate well (None: not calibrated)
     unknown_logit: float | None = None
 
     def index(self, template_id: str) -> int:
@@ -133,7 +133,6 @@ class LearnedClassifier:
         self.min_score = card.min_score
         self.marginal_min_score = card.accept_threshold  # a loose or oblique outline must be read with confidence
         self._index = {c: i for i, c in enumerate(card.classes)}
-        self._signs = np.array([i for c, i in self._index.items() if c != BACKGROUND])
         self.unknown_logit = card.unknown_logit
         try:
             self._net = cv2.dnn.readNetFromONNX(str(card.onnx))
@@ -175,5 +174,6 @@ class LearnedClassifier:
         best = int(np.argmax(p[:-1]))
         scores = {t: float(p[i]) for i, t in enumerate(ids)}
         every = _softmax(z / self.card.temperature)
-        return ClassificationResult(ids[best], float(p[best]), scores, fit=float(z[self._signs].max()),
+        fit = float(max(z[self._index[t]] for t in ids))
+        return ClassificationResult(ids[best], float(p[best]), scores, fit=fit,
                                     background=float(every[self._index[BACKGROUND]]))
