@@ -3,7 +3,8 @@
 Red signs are a red ring around a white field, so each segment is the filled
 outer contour of its colour component, not the coloured pixels alone. Where
 that outline is far from convex (a ring opened by an occluding pole or branch),
-the convex hull is used instead: every sign outline is convex.
+the convex hull is used instead: every sign outline is convex but the St
+Andrew's cross's, which is kept where the outline fits one.
 
 Segments come from up to three passes: the strong HSV classes with the speckle
 opening (as in Cavegn 2011), the scene pass on the white-balanced image with
@@ -31,7 +32,7 @@ from .boxes import box_iou, nonzero_box, touches_border
 from .bright_fields import bright_faces
 from .config import ColourConfig, HsvRange, PipelineConfig
 from .scene_colour import apply_gains, chroma_at_least, scene_colour
-from .shape import classify_shape, plausible_outlines
+from .shape import CROSS_OUTLINES, classify_shape, plausible_outlines
 
 
 @dataclass
@@ -125,6 +126,18 @@ def colour_masks(bgr: np.ndarray, settings: ColourConfig, colours: Iterable[str]
     return masks
 
 
+CROSS_SOLIDITY = (0.4, 0.75)  # a St Andrew's cross fills about half of its hull
+CROSS_MIN_FIT = 0.75  # a non-convex outline is kept as a cross only where it fits one this well
+
+
+def is_cross(filled: np.ndarray, solidity: float) -> bool:
+    """Whether a filled outline far from convex is a St Andrew's cross (``shape.CROSS_OUTLINES``)."""
+    if not CROSS_SOLIDITY[0] <= solidity <= CROSS_SOLIDITY[1]:
+        return False
+    result = classify_shape(filled, CROSS_MIN_FIT, 0.2)
+    return result.shape in CROSS_OUTLINES
+
+
 def _filled_segment(contour, colour, width, height, border_margin_px, source, min_solidity, box):
     """Segment of one contour (its bounding ``box``): its filled outline (hull where far from convex) in its box."""
     x, y, w, h = box
@@ -133,7 +146,7 @@ def _filled_segment(contour, colour, width, height, border_margin_px, source, mi
     hull = cv2.convexHull(contour)
     hull_area = max(1.0, cv2.contourArea(hull))
     solidity = min(1.0, cv2.contourArea(contour) / hull_area)
-    if solidity < min_solidity:
+    if solidity < min_solidity and not is_cross(filled, solidity):
         cv2.drawContours(filled, [hull], -1, 255, thickness=cv2.FILLED, offset=(-x, -y))
     touches = touches_border(box, width, height, border_margin_px)
     return Segment(colour, (x, y, w, h), filled, contour, int(np.count_nonzero(filled)), touches, source, solidity)

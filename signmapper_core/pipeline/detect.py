@@ -48,7 +48,7 @@ from .pair_context import PairContext
 from .plates import find_plates
 from .search_space import search_space_mask
 from .shape import IDEAL_FILL, catalogue_shapes, plausible_outlines
-from .sizing import measure_segment, metric_size, round_to_format
+from .sizing import measure_segment, metric_size, size_readings
 from .text_panels import context_boxes as panel_context_boxes
 from .text_panels import text_panel_detections, text_panel_fields
 from .white_outlines import WhiteCandidate, context_boxes, face_side_range_px, white_candidates, white_formats
@@ -156,10 +156,9 @@ def size_to_format(seg: Segment, candidates, depth_m: float, shape: Optional[str
                 width_m, height_m = metric_size(camera, (x, y, diameter, diameter), depth_m)
             else:
                 width_m, height_m = metric_size(camera, face, depth_m)
-            match = round_to_format(catalogue, entries, width_m, height_m, config.size.size_tolerance,
-                                    config.size.off_format_factor)
-            if match is not None:
-                allowed = {e.id for e in entries}
+            allowed = {e.id for e in entries}
+            for match in size_readings(catalogue, entries, width_m, height_m, config.size.size_tolerance,
+                                       config.size.off_format_factor):
                 ids = [t for t in match.template_ids if t in allowed]
                 if ids:
                     fits.append((match, face, ids, ext))

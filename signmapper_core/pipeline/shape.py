@@ -27,11 +27,35 @@ IDEAL_POLYGONS = {
     "diamond": [(0.5, 0.0), (1.0, 0.5), (0.5, 1.0), (0.0, 0.5)],
     "rectangle": [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)],
 }
+# St Andrew's crosses (3.22-3.25): not convex, in one or two parts, each read off its official drawing (322.svg
+# ... 325.svg) in the unit box; upright ones are the wide ones turned. All are the catalogue's shape "cross".
+_CROSS = [(0.0, 0.066), (0.037, 0.241), (0.33, 0.496), (0.037, 0.755), (0.006, 0.938), (0.096, 0.996),
+          (0.498, 0.642), (0.902, 0.996), (0.998, 0.931), (0.961, 0.755), (0.668, 0.5), (0.961, 0.241),
+          (0.996, 0.062), (0.904, 0.0), (0.5, 0.354), (0.094, 0.0)]
+_CROSS_DOUBLE = ([(0.0, 0.046), (0.037, 0.168), (0.33, 0.345), (0.035, 0.525), (0.002, 0.65), (0.094, 0.693),
+                  (0.498, 0.447), (0.904, 0.693), (0.998, 0.647), (0.963, 0.525), (0.668, 0.348), (0.961, 0.168),
+                  (0.996, 0.043), (0.904, 0.0), (0.5, 0.246), (0.094, 0.0)],
+                 [(0.0, 0.952), (0.094, 0.997), (0.498, 0.751), (0.904, 0.997), (0.998, 0.952), (0.961, 0.83),
+                  (0.5, 0.551), (0.037, 0.83)])
+_CROSS_DOUBLE_UPRIGHT = ([(0.064, 0.0), (0.0, 0.064), (0.351, 0.344), (0.0, 0.617), (0.059, 0.678), (0.239, 0.658),
+                          (0.5, 0.457), (0.755, 0.658), (0.931, 0.682), (0.995, 0.617), (0.644, 0.338),
+                          (0.995, 0.064), (0.936, 0.004), (0.755, 0.023), (0.495, 0.225), (0.239, 0.023)],
+                         [(0.495, 0.545), (0.0, 0.936), (0.064, 0.998), (0.239, 0.975), (0.5, 0.773), (0.755, 0.975),
+                          (0.931, 0.998), (0.995, 0.934)])
+CROSS_OUTLINES = {
+    "cross": (_CROSS,),
+    "cross-upright": ([(y, x) for x, y in _CROSS],),
+    "cross-double": _CROSS_DOUBLE,
+    "cross-double-upright": _CROSS_DOUBLE_UPRIGHT,
+}
 IDEAL_FILL = {"circle": np.pi / 4, "triangle": 0.5, "triangle-down": 0.5, "octagon": 2 / (1 + np.sqrt(2)),
-              "diamond": 0.5, "rectangle": 1.0}
+              "diamond": 0.5, "rectangle": 1.0, "cross": 0.5, "cross-upright": 0.5, "cross-double": 0.54,
+              "cross-double-upright": 0.53}
 SHAPES = tuple(IDEAL_FILL)
 _SHIFT = 4  # fixed-point bits for sub-pixel drawing
-_POLYGON_ARRAYS = {shape: np.array(corners, dtype=np.float64) for shape, corners in IDEAL_POLYGONS.items()}
+_POLYGON_ARRAYS = {shape: (np.array(corners, dtype=np.float64),) for shape, corners in IDEAL_POLYGONS.items()}
+_POLYGON_ARRAYS.update({shape: tuple(np.array(part, dtype=np.float64) for part in parts)
+                        for shape, parts in CROSS_OUTLINES.items()})
 
 
 @dataclass(frozen=True)
@@ -61,8 +85,8 @@ def _drawn_ideal(shape: str, width: int, height: int, value: int) -> np.ndarray:
         axes = (int(round(width / 2 * scale)), int(round(height / 2 * scale)))
         cv2.ellipse(mask, centre, axes, 0, 0, 360, value, thickness=cv2.FILLED, shift=_SHIFT)
         return mask
-    pts = (_POLYGON_ARRAYS[shape] * (width, height) - 0.5) * scale
-    cv2.fillPoly(mask, [np.round(pts).astype(np.int32)], value, shift=_SHIFT)
+    parts = [np.round((part * (width, height) - 0.5) * scale).astype(np.int32) for part in _POLYGON_ARRAYS[shape]]
+    cv2.fillPoly(mask, parts, value, shift=_SHIFT)
     return mask
 
 
@@ -177,4 +201,6 @@ def catalogue_shapes(shape: str, width_px: int, height_px: int) -> tuple:
     pointer (its pointed end costs a rectangle's outline about a tenth of its fit)."""
     if shape == "rectangle":
         return ("square", "rectangle", "pointer")
+    if shape in CROSS_OUTLINES:
+        return ("cross",)
     return (shape,)

@@ -60,18 +60,33 @@ def measure_segment(camera: Camera, depth: np.ndarray, bbox, mask, near_m: float
 
 def round_to_format(catalogue, entries, width_m: float, height_m: float, tolerance: float,
                     off_format_factor: float = 1.0):
-    """The catalogue's nearest standard format among ``entries`` within ``tolerance``, or None.
+    """The first of :func:`size_readings`, or None."""
+    readings = size_readings(catalogue, entries, width_m, height_m, tolerance, off_format_factor)
+    return readings[0] if readings else None
 
-    Where none fits, a face within ``off_format_factor`` of some entries' formats (old and custom-made signs
-    exist) is sized as measured: a :class:`SizeMatch` named ``measured`` listing those entries
-    (:func:`off_format`); the caller decides whether such a reading is clear enough to map.
+
+def size_readings(catalogue, entries, width_m: float, height_m: float, tolerance: float,
+                  off_format_factor: float = 1.0) -> list:
+    """What a face of this size may be among ``entries``: the nearest standard format within ``tolerance``
+    (:meth:`Catalogue.round_size`), and the signs without a standard size it could be (a ``measured``
+    :class:`SizeMatch`), each a reading of its own, so that a disc's format does not hide a board of the
+    same size.
+
+    Where no standard format fits, a face within ``off_format_factor`` of some entries' formats (old and
+    custom-made signs exist) is sized as measured too (:func:`off_format`); the caller decides whether such a
+    reading is clear enough to map.
     """
-    if not entries:
-        return None
-    match = catalogue.round_size(width_m, height_m, tolerance=tolerance, entries=entries)
-    if match is None and off_format_factor > 1.0:
-        return off_format(entries, width_m, height_m, off_format_factor)
-    return match
+    standard = [e for e in entries if e.sizing == STANDARD]
+    measured = [e for e in entries if e.sizing != STANDARD]
+    out = []
+    match = catalogue.round_size(width_m, height_m, tolerance=tolerance, entries=standard) if standard else None
+    if match is not None:
+        out.append(match)
+    elif standard and off_format_factor > 1.0:
+        out.append(off_format(standard, width_m, height_m, off_format_factor))
+    if measured:
+        out.append(catalogue.round_size(width_m, height_m, tolerance=tolerance, entries=measured))
+    return [m for m in out if m is not None]
 
 
 def off_format(entries, width_m: float, height_m: float, factor: float):

@@ -1,0 +1,78 @@
+"""Every colour family and outline of the whole catalogue goes through the pipeline: found, sized, read.
+
+Template matching (``ncc``) reads them here, so these tests do not depend on what the network was trained on;
+its readings are checked on the drives.
+"""
+
+from __future__ import annotations
+
+import cv2
+import numpy as np
+import pytest
+from pipeline_scenes import CAMERA, POSE, sign_scene
+
+from signmapper_core.pipeline import PipelineConfig, detect_pair
+from signmapper_core.pipeline.colour import is_cross
+from signmapper_core.pipeline.config import ClassificationConfig, SizeConfig
+
+FORWARD, RIGHT, DOWN = POSE.rotation[:, 2], POSE.rotation[:, 0], POSE.rotation[:, 1]
+NCC = ClassificationConfig(classifier="ncc")
+
+
+def _world(ahead, right, up):
+    return POSE.centre + ahead * FORWARD + right * RIGHT - up * DOWN
+
+
+def _size(entry, longer_m):
+    """A face of ``entry`` whose longer side is ``longer_m``, at the aspect of its formats."""
+    w, h = next(iter(entry.formats.values()))
+    k = longer_m / max(w, h)
+    return w * k, h * k
+
+
+@pytest.mark.parametrize("template_id, colour, shape, size", [
+    ("4.01", "green", "rectangle", "normal"),  # motorway
+    ("4.95", "green", "rectangle", "normal"),  # emergency exit, a lighter green
+    ("0.1", "brown", "pointer", 1.2),  # tourist direction sign
+    ("4.34", "orange", "pointer", 1.2),  # diversion
+    ("4.32-1", "blue", "pointer", 1.2),  # main-road direction sign
+    ("4.50.1", "red", "pointer", 1.2),  # cycle route
+    ("0.2", "yellow", "pointer", 1.2),  # pedestrian route
+    ("4.63", "blue", "square", 1.0),  # exit board: no standard size
+    ("2.15.1", "red", "circle", "normal"),
+    ("3.22", "red", "cross", 1.0),  # St Andrew's cross, not convex
+    ("3.24", "red", "cross", 1.0),
+])
+@pytest.mark.parametrize("ahead", [6.0, 10.0])
+def test_every_family_is_found_and_read(catalogue, template_id, colour, shape, size, ahead):
+    entry = catalogue[template_id]
+    face = size if isinstance(size, str) else _size(entry, size)
+    sign = _world(ahead, -1.0, 0.3)
+    left, depth, _ = sign_scene(catalogue, template_id, face, sign, seed=2)
+    dets = detect_pair(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig(classification=NCC))
+    assert [(d.template_id, d.colour, d.shape) for d in dets] == [(template_id, colour, shape)]
+    det = dets[0]
+    assert det.format == (size if isinstance(size, str) else "measured")
+    if det.format == "measured":  # reported as measured, within a pixel's worth of the face's size
+        assert det.width_m == pytest.approx(face[0], rel=0.06) and det.height_m == pytest.approx(face[1], rel=0.06)
+    assert np.linalg.norm(det.position - sign) < 0.06
+
+
+def test_a_face_of_no_standard_size_is_mapped_in_review_where_its_reading_is_clear(catalogue):
+    sign = _world(7.0, 1.5, 0.4)
+    left, depth, _ = sign_scene(catalogue, "2.30-50", (0.75, 0.75), sign)  # between the 0.60 and 0.90 discs
+    (det,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig(classification=NCC))
+    assert (det.template_id, det.format, det.status) == ("2.30-50", "measured", "review")
+    assert det.review_reason == "size fits no standard format" and det.width_m == pytest.approx(0.75, rel=0.04)
+    # as before where the factor is 1: no standard size, no sign
+    strict = PipelineConfig(classification=NCC, size=SizeConfig(off_format_factor=1.0))
+    assert detect_pair(left, depth, None, CAMERA, POSE, catalogue, strict) == []
+
+
+def test_only_a_cross_keeps_its_outline_far_from_convex(catalogue):
+    _, alpha = catalogue.render("3.22", 120)
+    cross = (alpha > 127).astype(np.uint8) * 255
+    assert is_cross(cross, 0.5)
+    notch = np.full((60, 110), 255, np.uint8)
+    cv2.fillPoly(notch, [np.array([(20, 0), (90, 0), (55, 45)])], 0)  # a ring opened from above
+    assert not is_cross(notch, 0.6)
