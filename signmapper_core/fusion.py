@@ -183,7 +183,7 @@ class FusedSign:
 
 
 def _compatible_shape(a: str, b: str) -> bool:
-    squareish = {"square", "rectangle"}
+    squareish = {"square", "rectangle", "pointer"}  # a pointer's outline reads as a rectangle
     return a == b or (a in squareish and b in squareish)
 
 

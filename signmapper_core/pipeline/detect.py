@@ -47,7 +47,7 @@ from .locate import bbox_centre, locate
 from .pair_context import PairContext
 from .plates import find_plates
 from .search_space import search_space_mask
-from .shape import IDEAL_FILL, catalogue_shapes, plausible_outlines
+from .shape import IDEAL_FILL, catalogue_shape, catalogue_shapes, plausible_outlines
 from .sizing import measure_segment, metric_size, size_readings
 from .text_panels import context_boxes as panel_context_boxes
 from .text_panels import text_panel_detections, text_panel_fields
@@ -340,8 +340,8 @@ def _unknown_detection(seg: Segment, reading, shape: str, planarity, size, pair:
     u, v = bbox_centre(face)
     z = face_depth(planarity, camera, u, v, size, pair.config)
     return Detection(
-        template_id=UNKNOWN_ID, name=UNKNOWN_ID, colour=seg.colour, shape=shape, width_m=match.width_m,
-        height_m=match.height_m, format=match.format, detection_indicator=planarity.indicator,
+        template_id=UNKNOWN_ID, name=UNKNOWN_ID, colour=seg.colour, shape=catalogue_shape(shape),
+        width_m=match.width_m, height_m=match.height_m, format=match.format, detection_indicator=planarity.indicator,
         classification_indicator=cls.score, status="review", u=u, v=v, bbox=face, depth_m=float(z),
         position=locate(camera, pair.pose, u, v, z), source=seg.source, scores=cls.scores,
         normal_world=world_face_normal(camera, pair.pose, planarity.plane), review_reason=NO_ENTRY_MATCHES,

@@ -196,6 +196,11 @@ def plausible_outlines(mask: np.ndarray, config) -> Tuple[ShapeResult, Tuple[str
     return result, outline_shapes(result, margin, shape.min_shape_fit)
 
 
+def catalogue_shape(shape: str) -> str:
+    """The catalogue's name of a detected outline (the four cross outlines are its 'cross')."""
+    return "cross" if shape in CROSS_OUTLINES else shape
+
+
 def catalogue_shapes(shape: str, width_px: int, height_px: int) -> tuple:
     """Catalogue shape names a detected outline may be: a rectangle may be a square, or a direction sign's
     pointer (its pointed end costs a rectangle's outline about a tenth of its fit)."""
