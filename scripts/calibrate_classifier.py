@@ -3,10 +3,12 @@
     python scripts/calibrate_classifier.py --data /work/data/real [--split tune] [--max-wrong 0.015]
 
 The network is trained on synthetic faces only; on real photographs it is more
-sure of itself than it should be. This fits two numbers on real photographs
+sure of itself than it should be. This fits three numbers on real photographs
 (never the network): the softmax temperature that makes the indicator a
-probability, and the acceptance threshold above which at most ``--max-wrong`` of
-the accepted signs carry a wrong id. Both are written into the model card with
+probability, the acceptance threshold above which at most ``--max-wrong`` of
+the accepted signs carry a wrong id, and the open set's limit: the logit that
+``--unknown-percentile`` % of the real signs read right stay below (a face matching
+its best candidate less well is mapped as unknown). Both are written into the model card with
 what they were fitted on. Report figures on the other half (``--split report``
 of evaluate_real_photos.py), never on this one.
 """
@@ -67,6 +69,12 @@ def fit_temperature(rows) -> float:
     return float(min(grid, key=nll))
 
 
+def unknown_limit(rows, right: np.ndarray, percentile: float) -> float:
+    """The true id's logit below which ``percentile`` % of the signs read right fall."""
+    fits = [z[truth] for (z, truth), ok in zip(rows, right) if ok]
+    return float(np.percentile(fits, percentile))
+
+
 def threshold_for(best: np.ndarray, right: np.ndarray, max_wrong: float) -> float:
     """Lowest threshold with at most ``max_wrong`` wrong among the signs at or above it."""
     order = np.argsort(-best)
@@ -83,6 +91,8 @@ def main(argv=None) -> int:
     parser.add_argument("--split", default="tune", choices=("tune",), help="only the tune half may be fitted on")
     parser.add_argument("--model", type=Path, default=None, help="model folder (default: the catalogue's)")
     parser.add_argument("--max-wrong", type=float, default=0.015, help="wrong share allowed among accepted signs")
+    parser.add_argument("--unknown-percentile", type=float, default=2.0,
+                        help="real signs read right that the open set's limit may take for unknown, in %%")
     parser.add_argument("--dry-run", action="store_true", help="print, do not write the model card")
     args = parser.parse_args(argv)
     catalogue = load_catalogue()
@@ -96,6 +106,8 @@ def main(argv=None) -> int:
     best, right = probabilities(rows, temperature)
     threshold = threshold_for(best, right, args.max_wrong)
     accepted = best >= threshold
+    limit = unknown_limit(rows, right, args.unknown_percentile)
+    print(f"open set: unknown below logit {limit:.2f} (synthetic: {classifier.card.unknown_logit})")
     print(f"{len(rows)} real signs ({args.data / 'crops.csv'}, split {args.split}): correct {right.mean():.3f}; "
           f"temperature {before:.3f} -> {temperature:.3f}; threshold {threshold:.3f} accepts {accepted.mean():.3f} "
           f"with {(~right[accepted]).mean() if accepted.any() else 0:.4f} wrong")
@@ -104,12 +116,16 @@ def main(argv=None) -> int:
     card = json.loads(card_path.read_text(encoding="utf-8"))
     card["temperature"] = round(temperature, 4)
     card["accept_threshold"] = round(threshold, 4)
+    card["unknown_logit"] = round(limit, 3)
     card["calibration"] = {
         "data": "real photographs (GTSRB test crops), tune half of scripts/realset manifests; never trained on",
         "signs": len(rows), "max_wrong": args.max_wrong,
         "accepted_share": round(float(accepted.mean()), 4),
         "wrong_among_accepted": round(float((~right[accepted]).mean()) if accepted.any() else 0.0, 4),
         "synthetic_temperature": before if "calibration" not in card else card["calibration"]["synthetic_temperature"],
+        "unknown_percentile": args.unknown_percentile,
+        "synthetic_unknown_logit": card.get("calibration", {}).get("synthetic_unknown_logit",
+                                                                    classifier.card.unknown_logit),
     }
     card_path.write_text(json.dumps(card, indent=1) + "\n", encoding="utf-8")
     print(f"wrote {card_path}")
