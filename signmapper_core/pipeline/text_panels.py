@@ -25,6 +25,7 @@ from .boxes import centre_inside
 from .detection import Detection
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
+from .scene_colour import median_u8
 from .sizing import measure_segment, metric_size
 from .white_outlines import filled
 from .white_signs import coloured_share, pole_share, side_shares, support_share
@@ -164,13 +165,9 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
             & (area >= white.panel_min_cell_fill * w * h))
     keep[0] = False
     ids = np.flatnonzero(keep)
-    if len(ids):  # brightness and colour only for the few of a field's size
-        flat = labels.ravel()
-        safe = np.maximum(area.astype(np.float64), 1.0)
-        value = np.bincount(flat, weights=hsv[:, :, 2].ravel(), minlength=n) / safe
-        grey_px = np.bincount(flat, weights=(hsv[:, :, 1] <= white.white_max_saturation).ravel(), minlength=n) / safe
-        floor = white.white_min_brightness * float(np.median(hsv[:, :, 2]))
-        ids = [i for i in ids if value[i] >= floor and grey_px[i] >= white.white_min_achromatic]
+    if len(ids):  # brightness and colour only for the few of a field's size, each within its own box
+        floor = white.white_min_brightness * median_u8(hsv[:, :, 2])
+        ids = [i for i in ids if _bright_achromatic(labels, hsv, i, stats[i], floor, config)]
     ids = sorted(ids, key=lambda i: -int(area[i]))[: white.panel_max_candidates]
     fields = []
     for i in ids:
@@ -191,6 +188,19 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
         fields.append(PanelField((x, y, bw, bh), mask, layout, share, line, lettered=ink >= white.panel_min_ink))
     # a blank field is no panel alone (a white board), but may be the part of a 4.30 a dirt mark cut off
     return [f for f in stacked_on_bars(fields, grey, config) if f.lettered]
+
+
+def _bright_achromatic(labels: np.ndarray, hsv: np.ndarray, label: int, stat: np.ndarray, floor: float, config
+                       ) -> bool:
+    """Whether cell ``label`` (its ``stat`` row of connectedComponentsWithStats) has a mean value of at least
+    ``floor`` and ``white_min_achromatic`` of its pixels achromatic."""
+    x, y, w, h, area = (int(v) for v in stat[:5])
+    cell = labels[y : y + h, x : x + w] == label
+    pixels = hsv[y : y + h, x : x + w][cell]
+    area = max(area, 1)
+    return (float(pixels[:, 2].sum(dtype=np.float64)) / area >= floor
+            and np.count_nonzero(pixels[:, 1] <= config.white.white_max_saturation) / area
+            >= config.white.white_min_achromatic)
 
 
 def stacked_on_bars(fields: Sequence[PanelField], grey: np.ndarray, config) -> List[PanelField]:

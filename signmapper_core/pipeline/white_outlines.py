@@ -24,6 +24,7 @@ from ..geometry import Camera
 from .boxes import box_iou
 from .colour import Segment
 from .config import PipelineConfig
+from .scene_colour import median_u8
 from .shape import classify_shape
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
@@ -84,7 +85,7 @@ def white_cells(hsv: np.ndarray, edges: np.ndarray, side_range: Tuple[float, flo
     lo, hi = side_range
     keep = ((np.maximum(w, h) >= config.white.white_part_share * lo) & (np.maximum(w, h) <= hi)
             & (grey_px >= config.white.white_min_achromatic)
-            & (value >= config.white.white_min_brightness * float(np.median(hsv[:, :, 2])))
+            & (value >= config.white.white_min_brightness * median_u8(hsv[:, :, 2]))
             & (area >= config.white.white_min_cell_fill * w * h))
     keep[0] = False  # the edges
     ids = np.flatnonzero(keep)
@@ -111,9 +112,15 @@ def group_cells(boxes: Sequence[Box], side_range: Tuple[float, float], reach: fl
     b = np.asarray(boxes, np.float64)
     x0, y0, x1, y1 = b[:, 0], b[:, 1], b[:, 0] + b[:, 2], b[:, 1] + b[:, 3]
     lo, hi = side_range
+    allowed = np.maximum(gap, reach * np.maximum(b[:, 2], b[:, 3]))
     groups, seen = [], set()
     for i in np.argsort(-(b[:, 2] * b[:, 3]), kind="stable"):
+        # only the cells whose union with this one stays within the largest face can ever join it
+        near = np.flatnonzero(np.maximum(np.maximum(x1, x1[i]) - np.minimum(x0, x0[i]),
+                                         np.maximum(y1, y1[i]) - np.minimum(y0, y0[i])) <= hi)
+        cx0, cy0, cx1, cy1, reach_px = x0[near], y0[near], x1[near], y1[near], allowed[near]
         members = [int(i)]
+        taken = near == i
         ux0, uy0, ux1, uy1 = x0[i], y0[i], x1[i], y1[i]
         for _ in range(max_steps + 1):
             w, h = ux1 - ux0, uy1 - uy0
@@ -122,20 +129,18 @@ def group_cells(boxes: Sequence[Box], side_range: Tuple[float, float], reach: fl
                 seen.add(key)
                 groups.append(((int(ux0), int(uy0), int(w), int(h)), key))
             # distance of every cell's box to the union box; a cell joins within its reach or the gap
-            dx = np.maximum(0.0, np.maximum(x0 - ux1, ux0 - x1))
-            dy = np.maximum(0.0, np.maximum(y0 - uy1, uy0 - y1))
-            dist = np.maximum(dx, dy)
-            allowed = np.maximum(gap, reach * np.maximum(b[:, 2], b[:, 3]))
-            dist[members] = np.inf
-            dist[dist > allowed] = np.inf
-            nx0, ny0 = np.minimum(ux0, x0), np.minimum(uy0, y0)
-            nx1, ny1 = np.maximum(ux1, x1), np.maximum(uy1, y1)
+            dist = np.maximum(np.maximum(0.0, np.maximum(cx0 - ux1, ux0 - cx1)),
+                              np.maximum(0.0, np.maximum(cy0 - uy1, uy0 - cy1)))
+            dist[taken | (dist > reach_px)] = np.inf
+            nx0, ny0 = np.minimum(ux0, cx0), np.minimum(uy0, cy0)
+            nx1, ny1 = np.maximum(ux1, cx1), np.maximum(uy1, cy1)
             dist[np.maximum(nx1 - nx0, ny1 - ny0) > hi] = np.inf
-            j = int(np.argmin(dist))
-            if not np.isfinite(dist[j]):
+            k = int(np.argmin(dist))
+            if not np.isfinite(dist[k]):
                 break
-            members.append(j)
-            ux0, uy0, ux1, uy1 = nx0[j], ny0[j], nx1[j], ny1[j]
+            members.append(int(near[k]))
+            taken[k] = True
+            ux0, uy0, ux1, uy1 = nx0[k], ny0[k], nx1[k], ny1[k]
     return groups
 
 
@@ -237,15 +242,19 @@ def refine_box(gradients: Tuple[np.ndarray, np.ndarray], box: Box, max_grow: flo
     return x - dl, y - dt, w + dl + dr, h + dt + db
 
 
-def outline_in_reach(gradients: Tuple[np.ndarray, np.ndarray], box: Box, config: PipelineConfig) -> bool:
-    """Whether strong edges run near the outline of ``box`` at all (its inscribed circle ``white_edge_band_px``
-    outside, or its sides a pixel outside): the cheap test that spares most unions of cells reading their
-    outline."""
-    x, y, w, h = box
+def outlines_in_reach(gradients: Tuple[np.ndarray, np.ndarray], boxes: Sequence[Box], config: PipelineConfig
+                      ) -> np.ndarray:
+    """Whether strong edges run near the outline of each of ``boxes`` at all (its inscribed circle
+    ``white_edge_band_px`` outside, or its sides a pixel outside): the cheap test that spares most unions of
+    cells reading their outline. The circles of all boxes are measured at once."""
+    if not boxes:
+        return np.zeros(0, bool)
     floor = config.white.white_min_edge_support - config.white.white_refine_margin
-    circle = edge_support(gradients, x + w / 2.0, y + h / 2.0, max(w, h) / 2.0 + config.white.white_edge_band_px,
-                          config)
-    return circle >= floor or box_edge_support(gradients, (x - 1, y - 1, w + 2, h + 2), config) >= floor
+    b = np.asarray(boxes, np.float64)
+    circle = np.atleast_1d(edge_support(gradients, b[:, 0] + b[:, 2] / 2.0, b[:, 1] + b[:, 3] / 2.0,
+                                        np.maximum(b[:, 2], b[:, 3]) / 2.0 + config.white.white_edge_band_px, config))
+    return np.array([c >= floor or box_edge_support(gradients, (x - 1, y - 1, w + 2, h + 2), config) >= floor
+                     for c, (x, y, w, h) in zip(circle, boxes)], bool)
 
 
 def read_face(mask: np.ndarray, box: Box, gradients: Tuple[np.ndarray, np.ndarray], config: PipelineConfig
@@ -309,7 +318,7 @@ def hough_discs(grey: np.ndarray, hsv: np.ndarray, gradients: Tuple[np.ndarray, 
                                minRadius=r_min, maxRadius=r_max)
     if circles is None:
         return []
-    floor = white.white_min_brightness * float(np.median(hsv[:, :, 2]))
+    floor = white.white_min_brightness * median_u8(hsv[:, :, 2])
     height, width = grey.shape[:2]
     readings = []
     for cu, cv, r in circles[0]:
@@ -473,10 +482,12 @@ def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config
     hsv = cv2.cvtColor(small, cv2.COLOR_BGR2HSV)
     labels, ids, boxes = white_cells(hsv, edges, (lo * scale, hi * scale), config)
     faces = hough_discs(grey, hsv, gradients, (lo * scale, hi * scale), config) if config.white.white_hough else []
-    for box, members in group_cells(boxes, (lo * scale, hi * scale), config.white.white_join_reach,
-                                    config.white.white_max_aspect, config.white.white_join_gap * lo * scale,
-                                    config.white.white_join_steps):
-        if not outline_in_reach(gradients, box, config):
+    groups = group_cells(boxes, (lo * scale, hi * scale), config.white.white_join_reach,
+                         config.white.white_max_aspect, config.white.white_join_gap * lo * scale,
+                         config.white.white_join_steps)
+    in_reach = outlines_in_reach(gradients, [box for box, _ in groups], config)
+    for (box, members), reached in zip(groups, in_reach):
+        if not reached:
             continue
         x, y, w, h = box
         mask = np.isin(labels[y : y + h, x : x + w], ids[list(members)]).astype(np.uint8) * 255
