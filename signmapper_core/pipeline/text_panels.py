@@ -27,7 +27,7 @@ from .locate import bbox_centre, locate
 from .pair_context import PairContext
 from .scene_colour import median_u8
 from .sizing import measure_segment, metric_size
-from .white_outlines import filled
+from .white_outlines import bright_achromatic, filled
 from .white_signs import coloured_share, pole_share, side_shares, support_share
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
@@ -159,7 +159,8 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
     grey = cv2.cvtColor(bgr, cv2.COLOR_BGR2GRAY)
     hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
     edges = cv2.dilate(cv2.Canny(cv2.GaussianBlur(grey, (3, 3), 0), *white.panel_canny), np.ones((2, 2), np.uint8))
-    n, labels, stats, _ = cv2.connectedComponentsWithStats((edges == 0).astype(np.uint8), connectivity=4)
+    _, labels, stats, _ = cv2.connectedComponentsWithStatsWithAlgorithm((edges == 0).astype(np.uint8), 4, cv2.CV_32S,
+                                                                      cv2.CCL_SPAGHETTI)
     w, h, area = stats[:, cv2.CC_STAT_WIDTH], stats[:, cv2.CC_STAT_HEIGHT], stats[:, cv2.CC_STAT_AREA]
     keep = ((h >= lo) & (h <= hi) & (w >= white.panel_min_aspect * h) & (w <= white.panel_max_aspect * h)
             & (area >= white.panel_min_cell_fill * w * h))
@@ -167,7 +168,7 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
     ids = np.flatnonzero(keep)
     if len(ids):  # brightness and colour only for the few of a field's size, each within its own box
         floor = white.white_min_brightness * median_u8(hsv[:, :, 2])
-        ids = [i for i in ids if _bright_achromatic(labels, hsv, i, stats[i], floor, config)]
+        ids = [i for i in ids if bright_achromatic(labels, hsv, i, stats[i], floor, config)]
     ids = sorted(ids, key=lambda i: -int(area[i]))[: white.panel_max_candidates]
     fields = []
     for i in ids:
@@ -188,19 +189,6 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
         fields.append(PanelField((x, y, bw, bh), mask, layout, share, line, lettered=ink >= white.panel_min_ink))
     # a blank field is no panel alone (a white board), but may be the part of a 4.30 a dirt mark cut off
     return [f for f in stacked_on_bars(fields, grey, config) if f.lettered]
-
-
-def _bright_achromatic(labels: np.ndarray, hsv: np.ndarray, label: int, stat: np.ndarray, floor: float, config
-                       ) -> bool:
-    """Whether cell ``label`` (its ``stat`` row of connectedComponentsWithStats) has a mean value of at least
-    ``floor`` and ``white_min_achromatic`` of its pixels achromatic."""
-    x, y, w, h, area = (int(v) for v in stat[:5])
-    cell = labels[y : y + h, x : x + w] == label
-    pixels = hsv[y : y + h, x : x + w][cell]
-    area = max(area, 1)
-    return (float(pixels[:, 2].sum(dtype=np.float64)) / area >= floor
-            and np.count_nonzero(pixels[:, 1] <= config.white.white_max_saturation) / area
-            >= config.white.white_min_achromatic)
 
 
 def stacked_on_bars(fields: Sequence[PanelField], grey: np.ndarray, config) -> List[PanelField]:

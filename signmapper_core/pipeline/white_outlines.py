@@ -70,25 +70,36 @@ def edge_map(grey: np.ndarray, config: PipelineConfig) -> np.ndarray:
     return cv2.dilate(edges, np.ones((3, 3), np.uint8))
 
 
+def bright_achromatic(labels: np.ndarray, hsv: np.ndarray, label: int, stat: np.ndarray, floor: float, config
+                      ) -> bool:
+    """Whether cell ``label`` (its ``stat`` row of connectedComponentsWithStats) has a mean value of at least
+    ``floor`` and ``white_min_achromatic`` of its pixels achromatic."""
+    x, y, w, h, area = (int(v) for v in stat[:5])
+    cell = labels[y : y + h, x : x + w] == label
+    pixels = hsv[y : y + h, x : x + w][cell]
+    area = max(area, 1)
+    return (float(pixels[:, 2].sum(dtype=np.float64)) / area >= floor
+            and np.count_nonzero(pixels[:, 1] <= config.white.white_max_saturation) / area
+            >= config.white.white_min_achromatic)
+
+
 def white_cells(hsv: np.ndarray, edges: np.ndarray, side_range: Tuple[float, float], config: PipelineConfig
                 ) -> Tuple[np.ndarray, np.ndarray, List[Box]]:
     """(labels, ids of the cells that may be a white face or a part of one): cells enclosed by ``edges``,
     achromatic (``white_min_achromatic`` of their pixels), bright (mean value at least
     ``white_min_brightness`` x the scene's median), compact, from a part of the smallest face to the largest;
     and their boxes."""
-    n, labels, stats, _ = cv2.connectedComponentsWithStats((edges == 0).astype(np.uint8), connectivity=4)
-    flat = labels.ravel()
-    area = np.maximum(stats[:, cv2.CC_STAT_AREA].astype(np.float64), 1.0)
-    grey_px = np.bincount(flat, weights=(hsv[:, :, 1] <= config.white.white_max_saturation).ravel(), minlength=n) / area
-    value = np.bincount(flat, weights=hsv[:, :, 2].ravel(), minlength=n) / area
-    w, h = stats[:, cv2.CC_STAT_WIDTH], stats[:, cv2.CC_STAT_HEIGHT]
+    _, labels, stats, _ = cv2.connectedComponentsWithStatsWithAlgorithm((edges == 0).astype(np.uint8), 4, cv2.CV_32S,
+                                                                      cv2.CCL_SPAGHETTI)
+    w, h, area = stats[:, cv2.CC_STAT_WIDTH], stats[:, cv2.CC_STAT_HEIGHT], stats[:, cv2.CC_STAT_AREA]
     lo, hi = side_range
     keep = ((np.maximum(w, h) >= config.white.white_part_share * lo) & (np.maximum(w, h) <= hi)
-            & (grey_px >= config.white.white_min_achromatic)
-            & (value >= config.white.white_min_brightness * median_u8(hsv[:, :, 2]))
-            & (area >= config.white.white_min_cell_fill * w * h))
+            & (np.maximum(area, 1) >= config.white.white_min_cell_fill * w * h))
     keep[0] = False  # the edges
-    ids = np.flatnonzero(keep)
+    # brightness and colour only for the cells of a face's size, each within its own box
+    floor = config.white.white_min_brightness * median_u8(hsv[:, :, 2])
+    ids = np.array([i for i in np.flatnonzero(keep) if bright_achromatic(labels, hsv, i, stats[i], floor, config)],
+                   np.intp)
     return labels, ids, [tuple(int(v) for v in stats[i, :4]) for i in ids]
 
 
