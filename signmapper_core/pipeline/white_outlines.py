@@ -124,34 +124,41 @@ def group_cells(boxes: Sequence[Box], side_range: Tuple[float, float], reach: fl
     x0, y0, x1, y1 = b[:, 0], b[:, 1], b[:, 0] + b[:, 2], b[:, 1] + b[:, 3]
     lo, hi = side_range
     allowed = np.maximum(gap, reach * np.maximum(b[:, 2], b[:, 3]))
+    # every start cell (largest first) grows its own union, all of them one join at a time side by side
+    starts = np.argsort(-(b[:, 2] * b[:, 3]), kind="stable")
+    n, rows = len(starts), np.arange(len(starts))
+    ux0, uy0, ux1, uy1 = x0[starts], y0[starts], x1[starts], y1[starts]
+    taken = np.zeros((n, len(b)), bool)
+    taken[rows, starts] = True
+    members = [[int(i)] for i in starts]
+    readings: List[List[Tuple[Box, Tuple[int, ...]]]] = [[] for _ in range(n)]
+    active = np.ones(n, bool)
+    for _ in range(max_steps + 1):
+        w, h = ux1 - ux0, uy1 - uy0
+        face = active & (lo <= np.minimum(w, h)) & (np.maximum(w, h) <= hi) & \
+            (np.maximum(w, h) <= max_aspect * np.minimum(w, h))
+        for k in np.flatnonzero(face):
+            readings[k].append(((int(ux0[k]), int(uy0[k]), int(w[k]), int(h[k])), tuple(sorted(members[k]))))
+        # distance of every cell's box to each union box; a cell joins within its reach or the gap
+        dist = np.maximum(np.maximum(0.0, np.maximum(x0 - ux1[:, None], ux0[:, None] - x1)),
+                          np.maximum(0.0, np.maximum(y0 - uy1[:, None], uy0[:, None] - y1)))
+        nx0, ny0 = np.minimum(ux0[:, None], x0), np.minimum(uy0[:, None], y0)
+        nx1, ny1 = np.maximum(ux1[:, None], x1), np.maximum(uy1[:, None], y1)
+        dist[taken | (dist > allowed) | (np.maximum(nx1 - nx0, ny1 - ny0) > hi)] = np.inf
+        j = np.argmin(dist, axis=1)
+        active &= np.isfinite(dist[rows, j])
+        if not active.any():
+            break
+        for k in np.flatnonzero(active):
+            members[k].append(int(j[k]))
+        taken[rows[active], j[active]] = True
+        ux0, uy0 = np.where(active, nx0[rows, j], ux0), np.where(active, ny0[rows, j], uy0)
+        ux1, uy1 = np.where(active, nx1[rows, j], ux1), np.where(active, ny1[rows, j], uy1)
     groups, seen = [], set()
-    for i in np.argsort(-(b[:, 2] * b[:, 3]), kind="stable"):
-        # only the cells whose union with this one stays within the largest face can ever join it
-        near = np.flatnonzero(np.maximum(np.maximum(x1, x1[i]) - np.minimum(x0, x0[i]),
-                                         np.maximum(y1, y1[i]) - np.minimum(y0, y0[i])) <= hi)
-        cx0, cy0, cx1, cy1, reach_px = x0[near], y0[near], x1[near], y1[near], allowed[near]
-        members = [int(i)]
-        taken = near == i
-        ux0, uy0, ux1, uy1 = x0[i], y0[i], x1[i], y1[i]
-        for _ in range(max_steps + 1):
-            w, h = ux1 - ux0, uy1 - uy0
-            key = tuple(sorted(members))
-            if key not in seen and lo <= min(w, h) and max(w, h) <= hi and max(w, h) <= max_aspect * min(w, h):
-                seen.add(key)
-                groups.append(((int(ux0), int(uy0), int(w), int(h)), key))
-            # distance of every cell's box to the union box; a cell joins within its reach or the gap
-            dist = np.maximum(np.maximum(0.0, np.maximum(cx0 - ux1, ux0 - cx1)),
-                              np.maximum(0.0, np.maximum(cy0 - uy1, uy0 - cy1)))
-            dist[taken | (dist > reach_px)] = np.inf
-            nx0, ny0 = np.minimum(ux0, cx0), np.minimum(uy0, cy0)
-            nx1, ny1 = np.maximum(ux1, cx1), np.maximum(uy1, cy1)
-            dist[np.maximum(nx1 - nx0, ny1 - ny0) > hi] = np.inf
-            k = int(np.argmin(dist))
-            if not np.isfinite(dist[k]):
-                break
-            members.append(int(near[k]))
-            taken[k] = True
-            ux0, uy0, ux1, uy1 = nx0[k], ny0[k], nx1[k], ny1[k]
+    for box, key in (r for start in readings for r in start):
+        if key not in seen:
+            seen.add(key)
+            groups.append((box, key))
     return groups
 
 
@@ -204,27 +211,34 @@ def refine_circle(gradients: Tuple[np.ndarray, np.ndarray], cu: float, cv: float
 def box_edge_support(gradients: Tuple[np.ndarray, np.ndarray], box: Box, config: PipelineConfig) -> float:
     """Share of points on the sides of ``box`` (each looked for a pixel inward or outward) where the grey
     image has a strong gradient across the side: the outline of a panel (the settings of :func:`edge_support`)."""
+    return float(box_edge_supports(gradients, [box], config)[0])
+
+
+def box_edge_supports(gradients: Tuple[np.ndarray, np.ndarray], boxes: Sequence[Box], config: PipelineConfig
+                      ) -> np.ndarray:
+    """:func:`box_edge_support` of each of ``boxes``, all at once."""
     white = config.white
     min_gradient, samples = white.white_min_gradient, white.white_support_samples
     gx, gy = gradients
     height, width = gx.shape
-    x, y, w, h = box
+    x, y, w, h = (np.asarray(v)[:, None, None] for v in zip(*boxes))  # (boxes, 1, 1)
     n = max(2, samples // 4)
     t = (np.arange(n) + 0.5) / n
-    along_u, along_v = np.round(x + t * w).astype(int), np.round(y + t * h).astype(int)
+    along_u, along_v = np.round(x + t * w).astype(int), np.round(y + t * h).astype(int)  # (boxes, 1, n)
     d = np.array([-1, 0, 1])[:, None]
+    shape = (len(boxes), 3, n)
     # rows of points (3 offsets x n) on the top, bottom (gradient across: gy) and left, right sides (gx)
-    us = np.concatenate([np.broadcast_to(along_u, (3, n)), np.broadcast_to(along_u, (3, n)),
-                         np.broadcast_to(x + d, (3, n)), np.broadcast_to(x + w - 1 + d, (3, n))], axis=1)
-    vs = np.concatenate([np.broadcast_to(y + d, (3, n)), np.broadcast_to(y + h - 1 + d, (3, n)),
-                         np.broadcast_to(along_v, (3, n)), np.broadcast_to(along_v, (3, n))], axis=1)
+    us = np.concatenate([np.broadcast_to(along_u, shape), np.broadcast_to(along_u, shape),
+                         np.broadcast_to(x + d, shape), np.broadcast_to(x + w - 1 + d, shape)], axis=2)
+    vs = np.concatenate([np.broadcast_to(y + d, shape), np.broadcast_to(y + h - 1 + d, shape),
+                         np.broadcast_to(along_v, shape), np.broadcast_to(along_v, shape)], axis=2)
     inside = (us >= 0) & (vs >= 0) & (us < width) & (vs < height)
     us, vs = np.where(inside, us, 0), np.where(inside, vs, 0)
     horizontal = np.arange(4 * n) < 2 * n
     across = np.where(horizontal, gy[vs, us], gx[vs, us]) * inside
     along = np.where(horizontal, gx[vs, us], gy[vs, us]) * inside
     hit = (np.abs(across) >= min_gradient) & (np.abs(across) >= white.white_radial_cos * np.hypot(across, along))
-    return float(np.count_nonzero(hit.any(axis=0))) / float(4 * n)
+    return np.count_nonzero(hit.any(axis=1), axis=1) / float(4 * n)
 
 
 def refine_box(gradients: Tuple[np.ndarray, np.ndarray], box: Box, max_grow: float) -> Box:
@@ -264,8 +278,12 @@ def outlines_in_reach(gradients: Tuple[np.ndarray, np.ndarray], boxes: Sequence[
     b = np.asarray(boxes, np.float64)
     circle = np.atleast_1d(edge_support(gradients, b[:, 0] + b[:, 2] / 2.0, b[:, 1] + b[:, 3] / 2.0,
                                         np.maximum(b[:, 2], b[:, 3]) / 2.0 + config.white.white_edge_band_px, config))
-    return np.array([c >= floor or box_edge_support(gradients, (x - 1, y - 1, w + 2, h + 2), config) >= floor
-                     for c, (x, y, w, h) in zip(circle, boxes)], bool)
+    reached = circle >= floor
+    rest = np.flatnonzero(~reached)
+    if len(rest):
+        reached[rest] = box_edge_supports(gradients, [(boxes[i][0] - 1, boxes[i][1] - 1, boxes[i][2] + 2,
+                                                       boxes[i][3] + 2) for i in rest], config) >= floor
+    return reached
 
 
 def read_face(mask: np.ndarray, box: Box, gradients: Tuple[np.ndarray, np.ndarray], config: PipelineConfig
