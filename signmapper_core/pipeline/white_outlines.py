@@ -58,10 +58,11 @@ def face_side_range_px(camera: Camera, formats: Sequence[Tuple[float, float]], c
 
 
 def scan_scale(smallest_side_px: float, config: PipelineConfig) -> float:
-    """Scale of the scanned image: the smallest face sought keeps ``white_scan_side_px`` (never enlarged)."""
+    """Scale of the scanned image: a whole reduction (which OpenCV averages several times faster than any other)
+    by which the smallest face sought keeps at least ``white_scan_side_px`` (never enlarged)."""
     if smallest_side_px <= 0:
         return 1.0
-    return float(min(1.0, config.white.white_scan_side_px / smallest_side_px))
+    return 1.0 / max(1, int(smallest_side_px // config.white.white_scan_side_px))
 
 
 def edge_map(grey: np.ndarray, config: PipelineConfig) -> np.ndarray:
@@ -83,24 +84,51 @@ def bright_achromatic(labels: np.ndarray, hsv: np.ndarray, label: int, stat: np.
             >= config.white.white_min_achromatic)
 
 
-def white_cells(hsv: np.ndarray, edges: np.ndarray, side_range: Tuple[float, float], config: PipelineConfig
-                ) -> Tuple[np.ndarray, np.ndarray, List[Box]]:
-    """(labels, ids of the cells that may be a white face or a part of one): cells enclosed by ``edges``,
-    achromatic (``white_min_achromatic`` of their pixels), bright (mean value at least
-    ``white_min_brightness`` x the scene's median), compact, from a part of the smallest face to the largest;
-    and their boxes."""
-    _, labels, stats, _ = cv2.connectedComponentsWithStatsWithAlgorithm((edges == 0).astype(np.uint8), 4, cv2.CV_32S,
-                                                                      cv2.CCL_SPAGHETTI)
+@dataclass(frozen=True)
+class WhiteScan:
+    """One reduced look at an image that the white step's searches share (white faces by their cells and
+    outline, text panels' fields by their cells): the image at ``scale``, its grey levels, HSV and gradients,
+    and the cells that strong edges enclose (labels and connectedComponentsWithStats rows)."""
+
+    scale: float
+    grey: np.ndarray
+    hsv: np.ndarray
+    gradients: Tuple[np.ndarray, np.ndarray]
+    labels: np.ndarray
+    stats: np.ndarray
+    median_value: float  # the scene's median brightness (HSV value)
+
+
+def scan_image(bgr: np.ndarray, smallest_side_px: float, config: PipelineConfig) -> WhiteScan:
+    """The :class:`WhiteScan` of ``bgr``, reduced so that the smallest face sought keeps ``white_scan_side_px``
+    (:func:`scan_scale`)."""
+    scale = scan_scale(smallest_side_px, config)
+    small = cv2.resize(bgr, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA) if scale < 1 else bgr
+    grey = cv2.cvtColor(small, cv2.COLOR_BGR2GRAY)
+    hsv = cv2.cvtColor(small, cv2.COLOR_BGR2HSV)
+    gradients = (cv2.Sobel(grey, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(grey, cv2.CV_32F, 0, 1, ksize=3))
+    _, labels, stats, _ = cv2.connectedComponentsWithStatsWithAlgorithm((edge_map(grey, config) == 0).astype(np.uint8),
+                                                                      4, cv2.CV_32S, cv2.CCL_SPAGHETTI)
+    return WhiteScan(scale, grey, hsv, gradients, labels, stats, median_u8(hsv[:, :, 2]))
+
+
+def white_cells(scan: WhiteScan, side_range: Tuple[float, float], config: PipelineConfig
+                ) -> Tuple[np.ndarray, List[Box]]:
+    """(ids of the cells that may be a white face or a part of one, their boxes): cells of ``scan`` (enclosed by
+    strong edges), achromatic (``white_min_achromatic`` of their pixels), bright (mean value at least
+    ``white_min_brightness`` x the scene's median), compact, from a part of the smallest face to the largest
+    (``side_range``, pixels of the scan)."""
+    stats = scan.stats
     w, h, area = stats[:, cv2.CC_STAT_WIDTH], stats[:, cv2.CC_STAT_HEIGHT], stats[:, cv2.CC_STAT_AREA]
     lo, hi = side_range
     keep = ((np.maximum(w, h) >= config.white.white_part_share * lo) & (np.maximum(w, h) <= hi)
             & (np.maximum(area, 1) >= config.white.white_min_cell_fill * w * h))
     keep[0] = False  # the edges
     # brightness and colour only for the cells of a face's size, each within its own box
-    floor = config.white.white_min_brightness * median_u8(hsv[:, :, 2])
-    ids = np.array([i for i in np.flatnonzero(keep) if bright_achromatic(labels, hsv, i, stats[i], floor, config)],
-                   np.intp)
-    return labels, ids, [tuple(int(v) for v in stats[i, :4]) for i in ids]
+    floor = config.white.white_min_brightness * scan.median_value
+    ids = np.array([i for i in np.flatnonzero(keep)
+                    if bright_achromatic(scan.labels, scan.hsv, i, stats[i], floor, config)], np.intp)
+    return ids, [tuple(int(v) for v in stats[i, :4]) for i in ids]
 
 
 def _union(a: Box, b: Box) -> Box:
@@ -330,24 +358,25 @@ def read_face(mask: np.ndarray, box: Box, gradients: Tuple[np.ndarray, np.ndarra
     return readings + [("circle", (int(round(x + cu - side / 2)), int(round(y + cv - side / 2)), side, side), disc)]
 
 
-def hough_discs(grey: np.ndarray, hsv: np.ndarray, gradients: Tuple[np.ndarray, np.ndarray],
-                side_range: Tuple[float, float], config: PipelineConfig) -> List[Tuple[str, Box, np.ndarray]]:
+def hough_discs(scan: WhiteScan, side_range: Tuple[float, float], config: PipelineConfig
+                ) -> List[Tuple[str, Box, np.ndarray]]:
     """Disc readings (shape, box, outline mask in that box) of the round outlines that the Hough transform
-    finds in the scanned ``grey`` image: a disc whose field digits and stripes cut into cells smaller than
+    finds in the scanned grey image: a disc whose field digits and stripes cut into cells smaller than
     a part of a face, or whose pale ring runs into a pale wall, still has a round outline. Each circle is
     moved to its best outline (:func:`refine_circle`) and kept when that lies on strong radial gradients and
     the disc inside is achromatic and bright like a white face's cells (``white_cells``)."""
+    grey, hsv, gradients = scan.grey, scan.hsv, scan.gradients
     white = config.white
     lo, hi = side_range
     r_min, r_max = max(2, int(white.white_hough_min_radius * lo / 2)), int(np.ceil(hi / 2))
     if r_max <= r_min:
         return []
     circles = cv2.HoughCircles(grey, cv2.HOUGH_GRADIENT_ALT, white.white_hough_dp,
-                               float(r_min), param1=white.white_hough_edge, param2=white.white_hough_roundness,
-                               minRadius=r_min, maxRadius=r_max)
+                               white.white_hough_min_dist * r_min, param1=white.white_hough_edge,
+                               param2=white.white_hough_roundness, minRadius=r_min, maxRadius=r_max)
     if circles is None:
         return []
-    floor = white.white_min_brightness * median_u8(hsv[:, :, 2])
+    floor = white.white_min_brightness * scan.median_value
     height, width = grey.shape[:2]
     readings = []
     for cu, cv, r in circles[0]:
@@ -491,11 +520,12 @@ def _centre_inside(a: Box, b: Box) -> bool:
     return b[0] <= cu < b[0] + b[2] and b[1] <= cv < b[1] + b[3]
 
 
-def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config: PipelineConfig
-                     ) -> List[WhiteCandidate]:
+def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config: PipelineConfig,
+                     scan: Optional[WhiteScan] = None) -> List[WhiteCandidate]:
     """Candidates of white and grey signs in ``bgr`` (a whole image or a window; pixels of that image).
 
-    ``side_range_px``: the smallest and the largest face side sought (:func:`face_side_range_px`).
+    ``side_range_px``: the smallest and the largest face side sought (:func:`face_side_range_px`); ``scan``:
+    the image's :func:`scan_image` for its smallest side, when already made.
     The faces read from the cells, largest first; one whose centre lies inside a larger one is a part of it
     (the ring on a zone panel). At most ``white_max_candidates``.
     """
@@ -503,14 +533,10 @@ def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config
     height, width = bgr.shape[:2]
     if lo <= 0 or hi <= 0:
         return []
-    scale = scan_scale(lo, config)
-    small = cv2.resize(bgr, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA) if scale < 1 else bgr
-    grey = cv2.cvtColor(small, cv2.COLOR_BGR2GRAY)
-    edges = edge_map(grey, config)
-    gradients = (cv2.Sobel(grey, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(grey, cv2.CV_32F, 0, 1, ksize=3))
-    hsv = cv2.cvtColor(small, cv2.COLOR_BGR2HSV)
-    labels, ids, boxes = white_cells(hsv, edges, (lo * scale, hi * scale), config)
-    faces = hough_discs(grey, hsv, gradients, (lo * scale, hi * scale), config) if config.white.white_hough else []
+    scan = scan if scan is not None else scan_image(bgr, lo, config)
+    scale, gradients = scan.scale, scan.gradients
+    ids, boxes = white_cells(scan, (lo * scale, hi * scale), config)
+    faces = hough_discs(scan, (lo * scale, hi * scale), config) if config.white.white_hough else []
     groups = group_cells(boxes, (lo * scale, hi * scale), config.white.white_join_reach,
                          config.white.white_max_aspect, config.white.white_join_gap * lo * scale,
                          config.white.white_join_steps)
@@ -519,7 +545,7 @@ def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config
         if not reached:
             continue
         x, y, w, h = box
-        mask = np.isin(labels[y : y + h, x : x + w], ids[list(members)]).astype(np.uint8) * 255
+        mask = np.isin(scan.labels[y : y + h, x : x + w], ids[list(members)]).astype(np.uint8) * 255
         faces += [face for face in read_face(mask, box, gradients, config)
                   if lo * scale <= min(face[1][2:]) and max(face[1][2:]) <= hi * scale]
     faces.sort(key=lambda f: f[1][2] * f[1][3], reverse=True)
