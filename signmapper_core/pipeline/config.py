@@ -459,10 +459,9 @@ class WhiteConfig:
     bright, read as discs and upright rectangles over the whole image; then depth, format, planarity, standing
     free, a support below and NCC among the white entries."""
 
-    # off by default: on held-out drives (seeds 1720-1729) it finds 92 % of the white signs in view and names 87 %
-    # of those right, at ~2.5 x the CPU of a pair (the outline scan and the Hough transform cover the whole image);
-    # mapsigns offers it
-    white_signs: bool = False
+    # on by default: a surveyor's inventory holds the white and grey signs too; the scan and the Hough transform
+    # still cover the whole image, so a run without them is faster (docs/measurements.md)
+    white_signs: bool = True
     white_max_side_m: float = 0.9  # formats up to this: the 1.2 m discs (motorways) would set the cost
     white_scan_side_px: float = 20.0  # the image is scanned reduced by a whole factor so that the smallest face
     # sought keeps at least this side (Full HD, 4-14 m: by 2, the smallest 21 px)

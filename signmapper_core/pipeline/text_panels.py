@@ -157,7 +157,6 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
     if hi <= 0:
         return []
     grey = cv2.cvtColor(bgr, cv2.COLOR_BGR2GRAY)
-    hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
     edges = cv2.dilate(cv2.Canny(cv2.GaussianBlur(grey, (3, 3), 0), *white.panel_canny), np.ones((2, 2), np.uint8))
     _, labels, stats, _ = cv2.connectedComponentsWithStatsWithAlgorithm((edges == 0).astype(np.uint8), 4, cv2.CV_32S,
                                                                       cv2.CCL_SPAGHETTI)
@@ -167,6 +166,7 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
     keep[0] = False
     ids = np.flatnonzero(keep)
     if len(ids):  # brightness and colour only for the few of a field's size, each within its own box
+        hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
         floor = white.white_min_brightness * median_u8(hsv[:, :, 2])
         ids = [i for i in ids if bright_achromatic(labels, hsv, i, stats[i], floor, config)]
     ids = sorted(ids, key=lambda i: -int(area[i]))[: white.panel_max_candidates]
