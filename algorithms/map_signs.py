@@ -124,13 +124,14 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             # optional: models saved before this parameter existed stay valid (QGIS asks for every mandatory one)
-            QgsProcessingParameterBoolean(self.WHITE_SIGNS, self.tr("Also look for white and grey signs (slower)"),
+            QgsProcessingParameterBoolean(self.WHITE_SIGNS, self.tr("Look for white and grey signs"),
                                           defaultValue=default("white", "white_signs"), optional=True),
             "End-of-restriction discs and panels (2.53-2.59) have no sign colour: they are found by their outlines "
             "and the depth map over the whole image and classified by the classifier. White place-name and direction "
             "panels of secondary roads (4.29, 4.30, 4.33) are found by their framed white field, told apart by "
             "their layout (a pointer, a bar), sized as measured and their text read by Tesseract like a plate's. "
-            "Off by default: a pair takes three to four times as long (see the README for the figures).",
+            f"{'On' if default('white', 'white_signs') else 'Off'} by default; switched off, a run maps only the "
+            "coloured signs and is somewhat faster (see the README for the figures).",
         )
         self.add_parameter(
             QgsProcessingParameterString(self.EXCLUDE, self.tr("Sign types to exclude"), optional=True),

@@ -177,8 +177,9 @@ def main(argv=None) -> int:
     parser.add_argument("--catalogue", type=Path, default=None)
     parser.add_argument("--classifier", default="auto", help="auto, cnn or ncc")
     parser.add_argument("--workers", type=int, default=0, help="worker processes (0 = all cores)")
-    parser.add_argument("--white-signs", action="store_true",
-                        help="also look for white and grey signs (the white step, off by default)")
+    parser.add_argument("--white-signs", action=argparse.BooleanOptionalAction, default=WhiteConfig().white_signs,
+                        help="look for white and grey signs (the white step; default: "
+                             f"{'on' if WhiteConfig().white_signs else 'off'})")
     parser.add_argument("--evidence", action="store_true",
                         help="per-observation readings of every fused sign mapped with a wrong id or matching no "
                              "reference sign")

@@ -30,6 +30,8 @@ PRINT_EVERY_S = 5.0  # a progress line at most this often
 
 
 def build_parser() -> argparse.ArgumentParser:
+    from .pipeline.config import WhiteConfig  # the settings alone: no OpenCV
+
     p = argparse.ArgumentParser(
         prog="python -m signmapper_core.map",
         description="Map the traffic signs of drives into GeoPackages (the layers of mapsigns) without QGIS: "
@@ -47,9 +49,10 @@ def build_parser() -> argparse.ArgumentParser:
                                        "cluster a folder of your own must be at the same path on every worker")
     p.add_argument("--settings-from", metavar="GPKG",
                    help="map with the settings an earlier output's run table records (pipeline, fusion, catalogue)")
-    p.add_argument("--white-signs", action="store_true",
-                   help="also look for white and grey signs (end-of-restriction discs and panels; slower, as the "
-                        "mapsigns option)")
+    p.add_argument("--white-signs", action=argparse.BooleanOptionalAction, default=None,
+                   help="look for white and grey signs (end-of-restriction discs and panels, white place-name and "
+                        "direction panels), as the mapsigns option (default: "
+                        f"{'on' if WhiteConfig().white_signs else 'off'}, or as the --settings-from record says)")
     p.add_argument("--language", choices=LANGUAGES,
                    help="language of sign names (default: the environment's locale, else English)")
     p.add_argument("--crops", action="store_true",
@@ -96,8 +99,8 @@ def settings(args, say):
     folder = args.catalogue or (earlier.catalogue if earlier is not None else None)
     catalogue = load_catalogue(folder)
     config, fusion = (PipelineConfig(), FusionConfig()) if earlier is None else (earlier.config, earlier.fusion)
-    if args.white_signs:  # given, it wins over the record (as a changed dialog value in mapsigns)
-        config = with_settings(config, {"white": {"white_signs": True}})
+    if args.white_signs is not None:  # given, it wins over the record (as a changed dialog value in mapsigns)
+        config = with_settings(config, {"white": {"white_signs": args.white_signs}})
     return catalogue, config, fusion
 
 

@@ -467,13 +467,12 @@ class WhiteConfig:
     bright, read as discs and upright rectangles over the whole image; then depth, format, planarity, standing
     free, a support below and NCC among the white entries."""
 
-    # off by default: on held-out drives (seeds 1720-1729) it finds 92 % of the white signs in view and names 87 %
-    # of those right, at ~2.5 x the CPU of a pair (the outline scan and the Hough transform cover the whole image);
-    # mapsigns offers it
-    white_signs: bool = False
+    # on by default: a surveyor's inventory holds the white and grey signs too; the scan and the Hough transform
+    # still cover the whole image, so a run without them is faster (docs/measurements.md)
+    white_signs: bool = True
     white_max_side_m: float = 0.9  # formats up to this: the 1.2 m discs (motorways) would set the cost
-    white_scan_side_px: float = 24.0  # the image is scanned reduced so the smallest face sought keeps this side
-    # (tune drives: at 21 px a quarter of the faces seen were lost, their fields too cut up by print)
+    white_scan_side_px: float = 20.0  # the image is scanned reduced by a whole factor so that the smallest face
+    # sought keeps at least this side (Full HD, 4-14 m: by 2, the smallest 21 px)
     white_canny_low: int = 40  # Canny thresholds of the outline edges (grey levels of the reduced image)
     white_canny_high: int = 110
     white_max_saturation: int = 60  # an achromatic pixel (white, grey, black print); faded red rims stay above
@@ -513,6 +512,8 @@ class WhiteConfig:
     # scanned image: tune drives 1700-1705, 12 of 38 disc views had no candidate from the cells (fields cut by
     # digits and stripes into cells below a part of a face, pale rings before pale walls); Hough found 6 of them
     white_hough_dp: float = 1.5  # its accumulator's resolution (1.5 x coarser than the scanned image)
+    white_hough_min_dist: float = 2.0  # circles' centres at least this x the smallest radius apart: the transform
+    # costs less than half of what it does at 1.0 (a face's concentric outlines are one circle anyway)
     white_hough_edge: float = 300.0  # its edge threshold on Scharr gradients (~ Canny 110 on Sobel)...
     white_hough_roundness: float = 0.75  # ...and how round an outline must be (0-1): 4 circles per pair
     white_hough_min_radius: float = 0.85  # x half the smallest face side: its radius estimate runs short of a

@@ -51,7 +51,15 @@ from .shape import IDEAL_FILL, catalogue_shape, catalogue_shapes, plausible_outl
 from .sizing import measure_segment, metric_size, size_readings
 from .text_panels import context_boxes as panel_context_boxes
 from .text_panels import text_panel_detections, text_panel_fields
-from .white_outlines import WhiteCandidate, context_boxes, face_side_range_px, white_candidates, white_formats
+from .white_outlines import (
+    WhiteCandidate,
+    WhiteScan,
+    context_boxes,
+    face_side_range_px,
+    scan_image,
+    white_candidates,
+    white_formats,
+)
 from .white_signs import white_detections
 from .zone_panel_surround import inside_white_panel
 
@@ -420,7 +428,8 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
         # colour candidates before depth, for a source that matches only around them
         boxes = stereo_candidate_boxes(pair, frame) if source.wants_candidate_boxes(config) else None
     with timer("white"):  # white and grey outlines over the whole window; depth is matched around them too
-        whites = white_outline_candidates(pair)
+        scan = white_scan(pair)
+        whites = white_outline_candidates(pair, scan)
         panel_fields = text_panel_fields(pair)
         if boxes is not None:
             boxes = boxes + context_boxes(whites, config) + panel_context_boxes(panel_fields, config)
@@ -472,15 +481,26 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
         return signs + (find_plates(pair, depth, signs) if pair.is_whole_image else [])
 
 
-def white_outline_candidates(pair: PairContext) -> List[WhiteCandidate]:
-    """White and grey sign candidates in the pair's roi (full-image pixels); none with ``white.white_signs`` off."""
+def white_scan(pair: PairContext) -> Optional[WhiteScan]:
+    """The white step's reduced look at the pair's roi, shared by its searches; None with ``white.white_signs``
+    off."""
+    if not pair.config.white.white_signs:
+        return None
+    x0, y0, x1, y1 = pair.roi
+    smallest = face_side_range_px(pair.camera, white_formats(pair.catalogue, pair.config), pair.config)[0]
+    return scan_image(pair.left[y0:y1, x0:x1], smallest, pair.config) if smallest > 0 else None
+
+
+def white_outline_candidates(pair: PairContext, scan: Optional[WhiteScan] = None) -> List[WhiteCandidate]:
+    """White and grey sign candidates in the pair's roi (full-image pixels); none with ``white.white_signs`` off.
+    ``scan``: the roi's :func:`white_scan`, when already made."""
     config = pair.config
     if not config.white.white_signs:
         return []
     x0, y0, x1, y1 = pair.roi
     sides = face_side_range_px(pair.camera, white_formats(pair.catalogue, config), config)
     return [WhiteCandidate(_shift_segment(c.segment, x0, y0), c.shape)
-            for c in white_candidates(pair.left[y0:y1, x0:x1], sides, config)]
+            for c in white_candidates(pair.left[y0:y1, x0:x1], sides, config, scan)]
 
 
 def _hough_detections(pair: PairContext, depth: np.ndarray, search: np.ndarray,

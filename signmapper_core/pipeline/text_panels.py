@@ -25,8 +25,9 @@ from .boxes import centre_inside
 from .detection import Detection
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
+from .scene_colour import median_u8
 from .sizing import measure_segment, metric_size
-from .white_outlines import filled
+from .white_outlines import bright_achromatic, filled
 from .white_signs import coloured_share, pole_share, side_shares, support_share
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
@@ -156,21 +157,18 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
     if hi <= 0:
         return []
     grey = cv2.cvtColor(bgr, cv2.COLOR_BGR2GRAY)
-    hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
     edges = cv2.dilate(cv2.Canny(cv2.GaussianBlur(grey, (3, 3), 0), *white.panel_canny), np.ones((2, 2), np.uint8))
-    n, labels, stats, _ = cv2.connectedComponentsWithStats((edges == 0).astype(np.uint8), connectivity=4)
+    _, labels, stats, _ = cv2.connectedComponentsWithStatsWithAlgorithm((edges == 0).astype(np.uint8), 4, cv2.CV_32S,
+                                                                      cv2.CCL_SPAGHETTI)
     w, h, area = stats[:, cv2.CC_STAT_WIDTH], stats[:, cv2.CC_STAT_HEIGHT], stats[:, cv2.CC_STAT_AREA]
     keep = ((h >= lo) & (h <= hi) & (w >= white.panel_min_aspect * h) & (w <= white.panel_max_aspect * h)
             & (area >= white.panel_min_cell_fill * w * h))
     keep[0] = False
     ids = np.flatnonzero(keep)
-    if len(ids):  # brightness and colour only for the few of a field's size
-        flat = labels.ravel()
-        safe = np.maximum(area.astype(np.float64), 1.0)
-        value = np.bincount(flat, weights=hsv[:, :, 2].ravel(), minlength=n) / safe
-        grey_px = np.bincount(flat, weights=(hsv[:, :, 1] <= white.white_max_saturation).ravel(), minlength=n) / safe
-        floor = white.white_min_brightness * float(np.median(hsv[:, :, 2]))
-        ids = [i for i in ids if value[i] >= floor and grey_px[i] >= white.white_min_achromatic]
+    if len(ids):  # brightness and colour only for the few of a field's size, each within its own box
+        hsv = cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV)
+        floor = white.white_min_brightness * median_u8(hsv[:, :, 2])
+        ids = [i for i in ids if bright_achromatic(labels, hsv, i, stats[i], floor, config)]
     ids = sorted(ids, key=lambda i: -int(area[i]))[: white.panel_max_candidates]
     fields = []
     for i in ids:

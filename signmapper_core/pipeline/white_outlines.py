@@ -24,6 +24,7 @@ from ..geometry import Camera
 from .boxes import box_iou
 from .colour import Segment
 from .config import PipelineConfig
+from .scene_colour import median_u8
 from .shape import classify_shape
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
@@ -57,10 +58,11 @@ def face_side_range_px(camera: Camera, formats: Sequence[Tuple[float, float]], c
 
 
 def scan_scale(smallest_side_px: float, config: PipelineConfig) -> float:
-    """Scale of the scanned image: the smallest face sought keeps ``white_scan_side_px`` (never enlarged)."""
+    """Scale of the scanned image: a whole reduction (which OpenCV averages several times faster than any other)
+    by which the smallest face sought keeps at least ``white_scan_side_px`` (never enlarged)."""
     if smallest_side_px <= 0:
         return 1.0
-    return float(min(1.0, config.white.white_scan_side_px / smallest_side_px))
+    return 1.0 / max(1, int(smallest_side_px // config.white.white_scan_side_px))
 
 
 def edge_map(grey: np.ndarray, config: PipelineConfig) -> np.ndarray:
@@ -69,26 +71,64 @@ def edge_map(grey: np.ndarray, config: PipelineConfig) -> np.ndarray:
     return cv2.dilate(edges, np.ones((3, 3), np.uint8))
 
 
-def white_cells(hsv: np.ndarray, edges: np.ndarray, side_range: Tuple[float, float], config: PipelineConfig
-                ) -> Tuple[np.ndarray, np.ndarray, List[Box]]:
-    """(labels, ids of the cells that may be a white face or a part of one): cells enclosed by ``edges``,
-    achromatic (``white_min_achromatic`` of their pixels), bright (mean value at least
-    ``white_min_brightness`` x the scene's median), compact, from a part of the smallest face to the largest;
-    and their boxes."""
-    n, labels, stats, _ = cv2.connectedComponentsWithStats((edges == 0).astype(np.uint8), connectivity=4)
-    flat = labels.ravel()
-    area = np.maximum(stats[:, cv2.CC_STAT_AREA].astype(np.float64), 1.0)
-    grey_px = np.bincount(flat, weights=(hsv[:, :, 1] <= config.white.white_max_saturation).ravel(), minlength=n) / area
-    value = np.bincount(flat, weights=hsv[:, :, 2].ravel(), minlength=n) / area
-    w, h = stats[:, cv2.CC_STAT_WIDTH], stats[:, cv2.CC_STAT_HEIGHT]
+def bright_achromatic(labels: np.ndarray, hsv: np.ndarray, label: int, stat: np.ndarray, floor: float, config
+                      ) -> bool:
+    """Whether cell ``label`` (its ``stat`` row of connectedComponentsWithStats) has a mean value of at least
+    ``floor`` and ``white_min_achromatic`` of its pixels achromatic."""
+    x, y, w, h, area = (int(v) for v in stat[:5])
+    cell = labels[y : y + h, x : x + w] == label
+    pixels = hsv[y : y + h, x : x + w][cell]
+    area = max(area, 1)
+    return (float(pixels[:, 2].sum(dtype=np.float64)) / area >= floor
+            and np.count_nonzero(pixels[:, 1] <= config.white.white_max_saturation) / area
+            >= config.white.white_min_achromatic)
+
+
+@dataclass(frozen=True)
+class WhiteScan:
+    """One reduced look at an image that the white step's searches share (white faces by their cells and
+    outline, text panels' fields by their cells): the image at ``scale``, its grey levels, HSV and gradients,
+    and the cells that strong edges enclose (labels and connectedComponentsWithStats rows)."""
+
+    scale: float
+    grey: np.ndarray
+    hsv: np.ndarray
+    gradients: Tuple[np.ndarray, np.ndarray]
+    labels: np.ndarray
+    stats: np.ndarray
+    median_value: float  # the scene's median brightness (HSV value)
+
+
+def scan_image(bgr: np.ndarray, smallest_side_px: float, config: PipelineConfig) -> WhiteScan:
+    """The :class:`WhiteScan` of ``bgr``, reduced so that the smallest face sought keeps ``white_scan_side_px``
+    (:func:`scan_scale`)."""
+    scale = scan_scale(smallest_side_px, config)
+    small = cv2.resize(bgr, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA) if scale < 1 else bgr
+    grey = cv2.cvtColor(small, cv2.COLOR_BGR2GRAY)
+    hsv = cv2.cvtColor(small, cv2.COLOR_BGR2HSV)
+    gradients = (cv2.Sobel(grey, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(grey, cv2.CV_32F, 0, 1, ksize=3))
+    _, labels, stats, _ = cv2.connectedComponentsWithStatsWithAlgorithm((edge_map(grey, config) == 0).astype(np.uint8),
+                                                                      4, cv2.CV_32S, cv2.CCL_SPAGHETTI)
+    return WhiteScan(scale, grey, hsv, gradients, labels, stats, median_u8(hsv[:, :, 2]))
+
+
+def white_cells(scan: WhiteScan, side_range: Tuple[float, float], config: PipelineConfig
+                ) -> Tuple[np.ndarray, List[Box]]:
+    """(ids of the cells that may be a white face or a part of one, their boxes): cells of ``scan`` (enclosed by
+    strong edges), achromatic (``white_min_achromatic`` of their pixels), bright (mean value at least
+    ``white_min_brightness`` x the scene's median), compact, from a part of the smallest face to the largest
+    (``side_range``, pixels of the scan)."""
+    stats = scan.stats
+    w, h, area = stats[:, cv2.CC_STAT_WIDTH], stats[:, cv2.CC_STAT_HEIGHT], stats[:, cv2.CC_STAT_AREA]
     lo, hi = side_range
     keep = ((np.maximum(w, h) >= config.white.white_part_share * lo) & (np.maximum(w, h) <= hi)
-            & (grey_px >= config.white.white_min_achromatic)
-            & (value >= config.white.white_min_brightness * float(np.median(hsv[:, :, 2])))
-            & (area >= config.white.white_min_cell_fill * w * h))
+            & (np.maximum(area, 1) >= config.white.white_min_cell_fill * w * h))
     keep[0] = False  # the edges
-    ids = np.flatnonzero(keep)
-    return labels, ids, [tuple(int(v) for v in stats[i, :4]) for i in ids]
+    # brightness and colour only for the cells of a face's size, each within its own box
+    floor = config.white.white_min_brightness * scan.median_value
+    ids = np.array([i for i in np.flatnonzero(keep)
+                    if bright_achromatic(scan.labels, scan.hsv, i, stats[i], floor, config)], np.intp)
+    return ids, [tuple(int(v) for v in stats[i, :4]) for i in ids]
 
 
 def _union(a: Box, b: Box) -> Box:
@@ -111,31 +151,42 @@ def group_cells(boxes: Sequence[Box], side_range: Tuple[float, float], reach: fl
     b = np.asarray(boxes, np.float64)
     x0, y0, x1, y1 = b[:, 0], b[:, 1], b[:, 0] + b[:, 2], b[:, 1] + b[:, 3]
     lo, hi = side_range
+    allowed = np.maximum(gap, reach * np.maximum(b[:, 2], b[:, 3]))
+    # every start cell (largest first) grows its own union, all of them one join at a time side by side
+    starts = np.argsort(-(b[:, 2] * b[:, 3]), kind="stable")
+    n, rows = len(starts), np.arange(len(starts))
+    ux0, uy0, ux1, uy1 = x0[starts], y0[starts], x1[starts], y1[starts]
+    taken = np.zeros((n, len(b)), bool)
+    taken[rows, starts] = True
+    members = [[int(i)] for i in starts]
+    readings: List[List[Tuple[Box, Tuple[int, ...]]]] = [[] for _ in range(n)]
+    active = np.ones(n, bool)
+    for _ in range(max_steps + 1):
+        w, h = ux1 - ux0, uy1 - uy0
+        face = active & (lo <= np.minimum(w, h)) & (np.maximum(w, h) <= hi) & \
+            (np.maximum(w, h) <= max_aspect * np.minimum(w, h))
+        for k in np.flatnonzero(face):
+            readings[k].append(((int(ux0[k]), int(uy0[k]), int(w[k]), int(h[k])), tuple(sorted(members[k]))))
+        # distance of every cell's box to each union box; a cell joins within its reach or the gap
+        dist = np.maximum(np.maximum(0.0, np.maximum(x0 - ux1[:, None], ux0[:, None] - x1)),
+                          np.maximum(0.0, np.maximum(y0 - uy1[:, None], uy0[:, None] - y1)))
+        nx0, ny0 = np.minimum(ux0[:, None], x0), np.minimum(uy0[:, None], y0)
+        nx1, ny1 = np.maximum(ux1[:, None], x1), np.maximum(uy1[:, None], y1)
+        dist[taken | (dist > allowed) | (np.maximum(nx1 - nx0, ny1 - ny0) > hi)] = np.inf
+        j = np.argmin(dist, axis=1)
+        active &= np.isfinite(dist[rows, j])
+        if not active.any():
+            break
+        for k in np.flatnonzero(active):
+            members[k].append(int(j[k]))
+        taken[rows[active], j[active]] = True
+        ux0, uy0 = np.where(active, nx0[rows, j], ux0), np.where(active, ny0[rows, j], uy0)
+        ux1, uy1 = np.where(active, nx1[rows, j], ux1), np.where(active, ny1[rows, j], uy1)
     groups, seen = [], set()
-    for i in np.argsort(-(b[:, 2] * b[:, 3]), kind="stable"):
-        members = [int(i)]
-        ux0, uy0, ux1, uy1 = x0[i], y0[i], x1[i], y1[i]
-        for _ in range(max_steps + 1):
-            w, h = ux1 - ux0, uy1 - uy0
-            key = tuple(sorted(members))
-            if key not in seen and lo <= min(w, h) and max(w, h) <= hi and max(w, h) <= max_aspect * min(w, h):
-                seen.add(key)
-                groups.append(((int(ux0), int(uy0), int(w), int(h)), key))
-            # distance of every cell's box to the union box; a cell joins within its reach or the gap
-            dx = np.maximum(0.0, np.maximum(x0 - ux1, ux0 - x1))
-            dy = np.maximum(0.0, np.maximum(y0 - uy1, uy0 - y1))
-            dist = np.maximum(dx, dy)
-            allowed = np.maximum(gap, reach * np.maximum(b[:, 2], b[:, 3]))
-            dist[members] = np.inf
-            dist[dist > allowed] = np.inf
-            nx0, ny0 = np.minimum(ux0, x0), np.minimum(uy0, y0)
-            nx1, ny1 = np.maximum(ux1, x1), np.maximum(uy1, y1)
-            dist[np.maximum(nx1 - nx0, ny1 - ny0) > hi] = np.inf
-            j = int(np.argmin(dist))
-            if not np.isfinite(dist[j]):
-                break
-            members.append(j)
-            ux0, uy0, ux1, uy1 = nx0[j], ny0[j], nx1[j], ny1[j]
+    for box, key in (r for start in readings for r in start):
+        if key not in seen:
+            seen.add(key)
+            groups.append((box, key))
     return groups
 
 
@@ -188,27 +239,34 @@ def refine_circle(gradients: Tuple[np.ndarray, np.ndarray], cu: float, cv: float
 def box_edge_support(gradients: Tuple[np.ndarray, np.ndarray], box: Box, config: PipelineConfig) -> float:
     """Share of points on the sides of ``box`` (each looked for a pixel inward or outward) where the grey
     image has a strong gradient across the side: the outline of a panel (the settings of :func:`edge_support`)."""
+    return float(box_edge_supports(gradients, [box], config)[0])
+
+
+def box_edge_supports(gradients: Tuple[np.ndarray, np.ndarray], boxes: Sequence[Box], config: PipelineConfig
+                      ) -> np.ndarray:
+    """:func:`box_edge_support` of each of ``boxes``, all at once."""
     white = config.white
     min_gradient, samples = white.white_min_gradient, white.white_support_samples
     gx, gy = gradients
     height, width = gx.shape
-    x, y, w, h = box
+    x, y, w, h = (np.asarray(v)[:, None, None] for v in zip(*boxes))  # (boxes, 1, 1)
     n = max(2, samples // 4)
     t = (np.arange(n) + 0.5) / n
-    along_u, along_v = np.round(x + t * w).astype(int), np.round(y + t * h).astype(int)
+    along_u, along_v = np.round(x + t * w).astype(int), np.round(y + t * h).astype(int)  # (boxes, 1, n)
     d = np.array([-1, 0, 1])[:, None]
+    shape = (len(boxes), 3, n)
     # rows of points (3 offsets x n) on the top, bottom (gradient across: gy) and left, right sides (gx)
-    us = np.concatenate([np.broadcast_to(along_u, (3, n)), np.broadcast_to(along_u, (3, n)),
-                         np.broadcast_to(x + d, (3, n)), np.broadcast_to(x + w - 1 + d, (3, n))], axis=1)
-    vs = np.concatenate([np.broadcast_to(y + d, (3, n)), np.broadcast_to(y + h - 1 + d, (3, n)),
-                         np.broadcast_to(along_v, (3, n)), np.broadcast_to(along_v, (3, n))], axis=1)
+    us = np.concatenate([np.broadcast_to(along_u, shape), np.broadcast_to(along_u, shape),
+                         np.broadcast_to(x + d, shape), np.broadcast_to(x + w - 1 + d, shape)], axis=2)
+    vs = np.concatenate([np.broadcast_to(y + d, shape), np.broadcast_to(y + h - 1 + d, shape),
+                         np.broadcast_to(along_v, shape), np.broadcast_to(along_v, shape)], axis=2)
     inside = (us >= 0) & (vs >= 0) & (us < width) & (vs < height)
     us, vs = np.where(inside, us, 0), np.where(inside, vs, 0)
     horizontal = np.arange(4 * n) < 2 * n
     across = np.where(horizontal, gy[vs, us], gx[vs, us]) * inside
     along = np.where(horizontal, gx[vs, us], gy[vs, us]) * inside
     hit = (np.abs(across) >= min_gradient) & (np.abs(across) >= white.white_radial_cos * np.hypot(across, along))
-    return float(np.count_nonzero(hit.any(axis=0))) / float(4 * n)
+    return np.count_nonzero(hit.any(axis=1), axis=1) / float(4 * n)
 
 
 def refine_box(gradients: Tuple[np.ndarray, np.ndarray], box: Box, max_grow: float) -> Box:
@@ -237,15 +295,23 @@ def refine_box(gradients: Tuple[np.ndarray, np.ndarray], box: Box, max_grow: flo
     return x - dl, y - dt, w + dl + dr, h + dt + db
 
 
-def outline_in_reach(gradients: Tuple[np.ndarray, np.ndarray], box: Box, config: PipelineConfig) -> bool:
-    """Whether strong edges run near the outline of ``box`` at all (its inscribed circle ``white_edge_band_px``
-    outside, or its sides a pixel outside): the cheap test that spares most unions of cells reading their
-    outline."""
-    x, y, w, h = box
+def outlines_in_reach(gradients: Tuple[np.ndarray, np.ndarray], boxes: Sequence[Box], config: PipelineConfig
+                      ) -> np.ndarray:
+    """Whether strong edges run near the outline of each of ``boxes`` at all (its inscribed circle
+    ``white_edge_band_px`` outside, or its sides a pixel outside): the cheap test that spares most unions of
+    cells reading their outline. The circles of all boxes are measured at once."""
+    if not boxes:
+        return np.zeros(0, bool)
     floor = config.white.white_min_edge_support - config.white.white_refine_margin
-    circle = edge_support(gradients, x + w / 2.0, y + h / 2.0, max(w, h) / 2.0 + config.white.white_edge_band_px,
-                          config)
-    return circle >= floor or box_edge_support(gradients, (x - 1, y - 1, w + 2, h + 2), config) >= floor
+    b = np.asarray(boxes, np.float64)
+    circle = np.atleast_1d(edge_support(gradients, b[:, 0] + b[:, 2] / 2.0, b[:, 1] + b[:, 3] / 2.0,
+                                        np.maximum(b[:, 2], b[:, 3]) / 2.0 + config.white.white_edge_band_px, config))
+    reached = circle >= floor
+    rest = np.flatnonzero(~reached)
+    if len(rest):
+        reached[rest] = box_edge_supports(gradients, [(boxes[i][0] - 1, boxes[i][1] - 1, boxes[i][2] + 2,
+                                                       boxes[i][3] + 2) for i in rest], config) >= floor
+    return reached
 
 
 def read_face(mask: np.ndarray, box: Box, gradients: Tuple[np.ndarray, np.ndarray], config: PipelineConfig
@@ -292,24 +358,25 @@ def read_face(mask: np.ndarray, box: Box, gradients: Tuple[np.ndarray, np.ndarra
     return readings + [("circle", (int(round(x + cu - side / 2)), int(round(y + cv - side / 2)), side, side), disc)]
 
 
-def hough_discs(grey: np.ndarray, hsv: np.ndarray, gradients: Tuple[np.ndarray, np.ndarray],
-                side_range: Tuple[float, float], config: PipelineConfig) -> List[Tuple[str, Box, np.ndarray]]:
+def hough_discs(scan: WhiteScan, side_range: Tuple[float, float], config: PipelineConfig
+                ) -> List[Tuple[str, Box, np.ndarray]]:
     """Disc readings (shape, box, outline mask in that box) of the round outlines that the Hough transform
-    finds in the scanned ``grey`` image: a disc whose field digits and stripes cut into cells smaller than
+    finds in the scanned grey image: a disc whose field digits and stripes cut into cells smaller than
     a part of a face, or whose pale ring runs into a pale wall, still has a round outline. Each circle is
     moved to its best outline (:func:`refine_circle`) and kept when that lies on strong radial gradients and
     the disc inside is achromatic and bright like a white face's cells (``white_cells``)."""
+    grey, hsv, gradients = scan.grey, scan.hsv, scan.gradients
     white = config.white
     lo, hi = side_range
     r_min, r_max = max(2, int(white.white_hough_min_radius * lo / 2)), int(np.ceil(hi / 2))
     if r_max <= r_min:
         return []
     circles = cv2.HoughCircles(grey, cv2.HOUGH_GRADIENT_ALT, white.white_hough_dp,
-                               float(r_min), param1=white.white_hough_edge, param2=white.white_hough_roundness,
-                               minRadius=r_min, maxRadius=r_max)
+                               white.white_hough_min_dist * r_min, param1=white.white_hough_edge,
+                               param2=white.white_hough_roundness, minRadius=r_min, maxRadius=r_max)
     if circles is None:
         return []
-    floor = white.white_min_brightness * float(np.median(hsv[:, :, 2]))
+    floor = white.white_min_brightness * scan.median_value
     height, width = grey.shape[:2]
     readings = []
     for cu, cv, r in circles[0]:
@@ -453,11 +520,12 @@ def _centre_inside(a: Box, b: Box) -> bool:
     return b[0] <= cu < b[0] + b[2] and b[1] <= cv < b[1] + b[3]
 
 
-def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config: PipelineConfig
-                     ) -> List[WhiteCandidate]:
+def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config: PipelineConfig,
+                     scan: Optional[WhiteScan] = None) -> List[WhiteCandidate]:
     """Candidates of white and grey signs in ``bgr`` (a whole image or a window; pixels of that image).
 
-    ``side_range_px``: the smallest and the largest face side sought (:func:`face_side_range_px`).
+    ``side_range_px``: the smallest and the largest face side sought (:func:`face_side_range_px`); ``scan``:
+    the image's :func:`scan_image` for its smallest side, when already made.
     The faces read from the cells, largest first; one whose centre lies inside a larger one is a part of it
     (the ring on a zone panel). At most ``white_max_candidates``.
     """
@@ -465,21 +533,19 @@ def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config
     height, width = bgr.shape[:2]
     if lo <= 0 or hi <= 0:
         return []
-    scale = scan_scale(lo, config)
-    small = cv2.resize(bgr, None, fx=scale, fy=scale, interpolation=cv2.INTER_AREA) if scale < 1 else bgr
-    grey = cv2.cvtColor(small, cv2.COLOR_BGR2GRAY)
-    edges = edge_map(grey, config)
-    gradients = (cv2.Sobel(grey, cv2.CV_32F, 1, 0, ksize=3), cv2.Sobel(grey, cv2.CV_32F, 0, 1, ksize=3))
-    hsv = cv2.cvtColor(small, cv2.COLOR_BGR2HSV)
-    labels, ids, boxes = white_cells(hsv, edges, (lo * scale, hi * scale), config)
-    faces = hough_discs(grey, hsv, gradients, (lo * scale, hi * scale), config) if config.white.white_hough else []
-    for box, members in group_cells(boxes, (lo * scale, hi * scale), config.white.white_join_reach,
-                                    config.white.white_max_aspect, config.white.white_join_gap * lo * scale,
-                                    config.white.white_join_steps):
-        if not outline_in_reach(gradients, box, config):
+    scan = scan if scan is not None else scan_image(bgr, lo, config)
+    scale, gradients = scan.scale, scan.gradients
+    ids, boxes = white_cells(scan, (lo * scale, hi * scale), config)
+    faces = hough_discs(scan, (lo * scale, hi * scale), config) if config.white.white_hough else []
+    groups = group_cells(boxes, (lo * scale, hi * scale), config.white.white_join_reach,
+                         config.white.white_max_aspect, config.white.white_join_gap * lo * scale,
+                         config.white.white_join_steps)
+    in_reach = outlines_in_reach(gradients, [box for box, _ in groups], config)
+    for (box, members), reached in zip(groups, in_reach):
+        if not reached:
             continue
         x, y, w, h = box
-        mask = np.isin(labels[y : y + h, x : x + w], ids[list(members)]).astype(np.uint8) * 255
+        mask = np.isin(scan.labels[y : y + h, x : x + w], ids[list(members)]).astype(np.uint8) * 255
         faces += [face for face in read_face(mask, box, gradients, config)
                   if lo * scale <= min(face[1][2:]) and max(face[1][2:]) <= hi * scale]
     faces.sort(key=lambda f: f[1][2] * f[1][3], reverse=True)

@@ -67,7 +67,9 @@ def test_face_side_range_covers_every_white_format_in_the_search_space(catalogue
     assert lo == pytest.approx(0.4 * 600 / 14 * 0.85)
     assert hi == pytest.approx(0.9 * 600 / 4 * 1.15)
     assert scan_scale(lo, CONFIG) == 1.0  # a small image is scanned as it is
-    assert scan_scale(85.0, CONFIG) == pytest.approx(24 / 85)
+    # a whole reduction that keeps the smallest face at least white_scan_side_px (20) wide
+    assert scan_scale(85.0, CONFIG) == pytest.approx(1 / 4)
+    assert scan_scale(79.0, CONFIG) == pytest.approx(1 / 3)
 
 
 def test_cells_overlapping_one_face_are_joined_and_far_ones_are_not():

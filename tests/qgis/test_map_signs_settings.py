@@ -24,11 +24,11 @@ from signmapper_core.run_settings import SETTINGS_VERSION, load_run_settings, re
 
 # not the defaults: depth range, colours, both thresholds and an excluded type
 CHANGED = {"NEAR": 5.0, "FAR": 16.0, "COLOURS": [0, 1], "DETECTION_THRESHOLD": 0.6,
-           "CLASSIFICATION_THRESHOLD": 0.7, "EXCLUDE": "2.30-120", "WHITE_SIGNS": True}
+           "CLASSIFICATION_THRESHOLD": 0.7, "EXCLUDE": "2.30-120", "WHITE_SIGNS": False}
 EXPECTED = PipelineConfig(depth=DepthConfig(near_m=5.0, far_m=16.0), colour=ColourConfig(colours=("red", "blue")),
                           planarity=PlanarityConfig(detection_threshold=0.6),
                           classification=ClassificationConfig(classification_threshold=0.7, exclude=("2.30-120",)),
-                          white=WhiteConfig(white_signs=True))
+                          white=WhiteConfig(white_signs=False))
 
 
 _MAPPED = {}  # the earlier output is mapped once for all tests (the plugin fixture is per test)
