@@ -190,8 +190,8 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     if unread:
         listed = ", ".join(unread[:5]) + (", ..." if len(unread) > 5 else "")
         send_warning(warn, f"The classifier of {catalogue.folder} was trained without {len(unread)} of the "
-                           f"catalogue's {len(catalogue)} signs ({listed}): they are not looked for; retrain it "
-                           "(make train-classifier)")
+                           f"catalogue's {len(catalogue)} signs ({listed}): faces that may be one of them are read "
+                           "by template matching instead; retrain it (make train-classifier)")
     accept = accept_threshold(classifier, config)
     # always the classifier's threshold and the run's depth range
     fusion = replace(fusion or FusionConfig(), accept_classification=accept, far_m=config.depth.far_m)

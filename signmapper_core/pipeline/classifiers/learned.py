@@ -165,7 +165,8 @@ class LearnedClassifier:
         return _softmax(logits[picked] / self.card.temperature)
 
     def classify(self, image: np.ndarray, bbox, candidate_ids: Sequence[str]) -> ClassificationResult:
-        # entries added to the catalogue after the network was trained are not read (the run warns of them)
+        # entries added to the catalogue after the network was trained are not its to read (the pipeline asks
+        # template matching where a face may be one of them: PairContext.classifier_knowing)
         ids = [t for t in dict.fromkeys(candidate_ids) if t in self._index]
         if not ids:
             return ClassificationResult(None, 0.0)
