@@ -657,6 +657,8 @@ class PlateConfig:
     # before comparing (the best counts): a box taken for the inside of a frame is that much larger than the plate
     plate_inset_candidates: int = 2  # the insets beyond the first are tried on only this many drawings the crop is
     # most like uncut (each inset costs a correlation per drawing)
+    plate_aspect_tolerance: float = 0.25  # a plate's crop is compared only with drawings of its aspect within this
+    # share (log): its box is found to a pixel or two, a frame's margin at most (plate_compare_insets)
     plate_pictogram_min_seen: float = 0.4  # share of a plate's crop seen (not hidden in front) to compare it with
     # the drawings at all: less leaves too little of a pictogram to tell it from the others
 

@@ -22,7 +22,7 @@ from typing import List, Optional, Sequence
 import cv2
 import numpy as np
 
-from ..plate_catalogue import load_plate_templates, pictogram_formats, template_by_id
+from ..plate_catalogue import load_plate_templates, pictogram_formats
 from ..plate_formats import PLATE_FORMATS, PLATE_ID, PLATE_NAMES
 from .boxes import touches_border
 from .detection import Detection
@@ -50,15 +50,22 @@ def all_plate_formats(templates) -> dict:
     return {**PLATE_FORMATS, **pictogram_formats(templates)}
 
 
-def nearest_plate_format(width_m: float, height_m: float, tolerance: float, formats=None):
-    """(format name, (width_m, height_m), relative error) of the nearest plate format (``formats``, default the
-    text plates'), or None beyond ``tolerance``."""
-    best = None
+def fitting_plate_formats(width_m: float, height_m: float, tolerance: float, formats=None) -> list:
+    """[(format name, (width_m, height_m), log error)] of the plate formats (``formats``, default the text plates')
+    within ``tolerance`` of the size, nearest first."""
+    fits = []
     for name, (w, h) in (formats or PLATE_FORMATS).items():
         error = max(abs(math.log(width_m / w)), abs(math.log(height_m / h)))
-        if best is None or error < best[2]:
-            best = (name, (w, h), error)
-    return best if best is not None and best[2] <= math.log(1.0 + tolerance) else None
+        if error <= math.log(1.0 + tolerance):
+            fits.append((name, (w, h), error))
+    return sorted(fits, key=lambda fit: fit[2])
+
+
+def nearest_plate_format(width_m: float, height_m: float, tolerance: float, formats=None):
+    """(format name, (width_m, height_m), log error) of the nearest plate format (``formats``, default the text
+    plates'), or None beyond ``tolerance``."""
+    fits = fitting_plate_formats(width_m, height_m, tolerance, formats)
+    return fits[0] if fits else None
 
 
 def white_masks(bgr: np.ndarray, config) -> List[np.ndarray]:
@@ -179,13 +186,14 @@ def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int,
     size = (bw * z / camera.fx, bh * z / camera.fy)
     templates = plate_templates(pair)
     plates = config.plates
-    fmt = nearest_plate_format(*size, plates.plate_size_tolerance, all_plate_formats(templates))
-    if fmt is not None and "@" in fmt[0]:  # a pictogram plate's size: if it shows that plate's drawing
-        shown = template_by_id(templates, fmt[0].split("@")[0])
+    fits = fitting_plate_formats(*size, plates.plate_size_tolerance, all_plate_formats(templates))
+    fmt = fits[0] if fits else None
+    if fmt is not None and "@" in fmt[0]:  # a drawn plate's size: if it shows one of the drawings of its size
+        drawn = {name.split("@")[0]: (name, wh, error) for name, wh, error in fits if "@" in name}
         seen_crop = pair.left[cy:cy + ch, cx:cx + cw]
         part_hidden = None if hidden is None else hidden[cy:cy + ch, cx:cx + cw]
-        if classify_plate(seen_crop, [shown], config, part_hidden)[0] is None:
-            fmt = nearest_plate_format(*size, plates.plate_size_tolerance)
+        shown = classify_plate(seen_crop, [t for t in templates if t.id in drawn], config, part_hidden)[0]
+        fmt = drawn[shown.id] if shown is not None else nearest_plate_format(*size, plates.plate_size_tolerance)
     if fmt is None:
         return None
     grey = cv2.cvtColor(pair.left[cy:cy + ch, cx:cx + cw], cv2.COLOR_BGR2GRAY)
@@ -444,9 +452,10 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     crop = np.ascontiguousarray(pair.left[by:by + bh, bx:bx + bw])
     template_id, label, printed = PLATE_ID, PLATE_NAMES["de"], None
     pictogram, likeness = classify_plate(crop, plate_templates(pair), config, crop_hidden)
-    if pictogram is not None:  # its drawing's own size at the plate's width; its score is the likeness
+    if pictogram is not None:  # its drawing's own size at the plate's span; its score is the likeness
+        span = max(pw, ph)
         template_id, label, printed = pictogram.id, pictogram.name("de"), pictogram.text
-        (pw, ph), name, score = pictogram.size_m(pw), f"{pictogram.id}@{pw:.2f}", min(score, likeness)
+        (pw, ph), name, score = pictogram.size_m(span), f"{pictogram.id}@{span:.2f}", min(score, likeness)
     return Detection(
         template_id=template_id, name=label, colour="white", shape="rectangle", width_m=pw, height_m=ph,
         format=name, detection_indicator=float(fill), classification_indicator=float(score),
