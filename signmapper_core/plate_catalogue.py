@@ -3,7 +3,8 @@
 ``plates/plates.json`` (written by ``catalogue.plate_build``) lists each rendering
 of an official drawing: id, language variant, kind (``pictogram``, ``layout`` or
 ``text``, see ``catalogue.plates_ch``), names, the words printed on it, a layout
-plate's text field and its aspect (width / height). Pictogram and layout plates
+plate's text field, whether its drawing prints in colour and its aspect (width /
+height). Pictogram and layout plates
 are told by their drawing (``drawn_plates``); text plates by what they say, their
 rendering only shows the review what they look like. An entry without ``kind`` is
 a pictogram plate (the folders of before text plates were typed). A catalogue
@@ -45,6 +46,7 @@ class PlateTemplate:
     kind: str = PICTOGRAM
     field: tuple = ()  # a layout plate's text field: (x0, y0, x1, y1), shares of its width and height
     png: str = ""  # the master's file (in colour: what a synthetic drive prints)
+    coloured: bool = False  # its drawing prints in colour too (5.10's red and blue), not only black
 
     def name(self, lang: str = "de") -> str:
         return self.names.get(lang) or next(iter(self.names.values()), self.id)
@@ -92,7 +94,7 @@ def load_plate_templates(catalogue_folder) -> tuple:
                                                 f"x0 < x1, y0 < y1 within 0..1 (kind {kind}, field {list(field)})")
             out.append(PlateTemplate(str(entry["id"]), str(entry["variant"]), dict(entry["names"]),
                                      str(entry.get("text", "")), float(entry["aspect"]), grey, kind, field,
-                                     str(png)))
+                                     str(png), bool(entry.get("coloured", False))))
         except KeyError as exc:
             raise PlateCatalogueError(path, f"plate {k + 1} lacks the field {exc}") from exc
     return tuple(out)

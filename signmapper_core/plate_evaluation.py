@@ -20,19 +20,12 @@ from typing import Optional
 
 import numpy as np
 
+from .catalogue.plates_ch import kind_of
 from .evaluation import match_to_reference, share_text
 from .visibility import largest_view_px, mappable_signs
 
 MIN_TEXT_PX = 40.0
 KINDS = ("text", "layout", "pictogram")  # catalogue.plates_ch's kinds, in the order reported
-
-
-def plate_kind(template_id: str) -> str:
-    """The kind of a reference plate's id (``catalogue.plates_ch``); the untyped ``plate`` and any id the table
-    lacks: a text plate."""
-    from .catalogue.plates_ch import plate_drawings
-
-    return next((p.kind for p in plate_drawings() if p.id == template_id), "text")
 
 
 @dataclass
@@ -100,7 +93,7 @@ def evaluate_plates(drive, signs, sign_reference, sign_match, near_m: float = 4.
                                np.array([r.position for r in reference]).reshape(-1, 3), radius_m)
     figures.false_positives = int((match < 0).sum())
     for k, ref in enumerate(reference):
-        kind = plate_kind(ref.template_id)
+        kind = kind_of(ref.template_id)
         setattr(figures, kind, getattr(figures, kind) + 1)
         found = [mapped[i] for i in np.flatnonzero(match == k)]
         largest_px = largest_view_px(drive, ref, near_m, far_m)

@@ -27,6 +27,8 @@ from .svg_render import render_svg
 
 MASTER_PX = 256  # the longer side
 INK_GREY = 128  # darker is print (text, pictogram, frame), for the text field's check
+COLOUR_SATURATION = 60  # HSV saturation above which a pixel is coloured print (a blue P, a red disc) ...
+COLOUR_MIN_SHARE = 0.005  # ... and a drawing with this share of such pixels is coloured
 RENDER_ZOOM = 8.0
 FORMAT = "signmapper-plates/1"
 DEFAULT_OUT = DEFAULT_CATALOGUE_DIR / "plates"
@@ -51,6 +53,12 @@ def field_pixels(shape, field) -> tuple:
     """(x0, y0, x1, y1) pixels of a text field (shares of the plate) in an image of ``shape``."""
     h, w = shape[:2]
     return (int(round(field[0] * w)), int(round(field[1] * h)), int(round(field[2] * w)), int(round(field[3] * h)))
+
+
+def is_coloured(master: np.ndarray) -> bool:
+    """Whether a plate's drawing prints in colour (5.10's red and blue, 5.17's blue pump), not only black."""
+    saturation = cv2.cvtColor(master, cv2.COLOR_BGR2HSV)[:, :, 1]
+    return bool((saturation > COLOUR_SATURATION).mean() >= COLOUR_MIN_SHARE)
 
 
 def check_field(master: np.ndarray, field, name: str) -> None:
@@ -91,6 +99,8 @@ def build(svg_dir: Path, out: Path = DEFAULT_OUT) -> list:
                  "artwork": f"ASTRA {plate.drawing}"}
         if plate.field:
             entry["field"] = list(plate.field)
+        if is_coloured(master):
+            entry["coloured"] = True
         entries.append(entry)
     (out / "plates.json").write_text(json.dumps({"format": FORMAT, "plates": entries}, ensure_ascii=False,
                                                 indent=1) + "\n", encoding="utf-8")

@@ -35,7 +35,10 @@ LEFT, RIGHT = "l", "r"
 DIRECTION_NAMES = {LEFT: {"de": "links", "fr": "gauche", "it": "sinistra"},
                    RIGHT: {"de": "rechts", "fr": "droite", "it": "destra"}}
 
-TEXT_PLATES = ("5.00-1", "5.00-2", "5.00-3", "5.00-exception", "5.01")
+FREE_TEXT_PLATES = ("5.00-1", "5.00-2", "5.00-3")  # one to three lines of any text
+EXCEPTION_PLATE = "5.00-exception"  # "ausgenommen" and what is excepted
+DISTANCE_PLATE = "5.01"  # a distance
+TEXT_PLATES = FREE_TEXT_PLATES + (EXCEPTION_PLATE, DISTANCE_PLATE)
 # layout plates: Signalo id -> text field per direction ("" for a plate without one)
 TEXT_FIELDS = {
     "5.02": {LEFT: (0.06, 0.54, 0.68, 0.95), RIGHT: (0.32, 0.54, 0.94, 0.95)},  # "50 m" under the turning arrow
@@ -123,3 +126,9 @@ def plate_drawings() -> tuple:
                                     words.get(variant, words.get("de", "")),
                                     TEXT_FIELDS.get(official_id, {}).get(direction, ())))
     return tuple(out)
+
+
+def kind_of(plate_id: str) -> str:
+    """The kind of one of our plate ids; TEXT for an id the table lacks (the untyped ``plate``: a plate read for
+    its text)."""
+    return next((p.kind for p in plate_drawings() if p.id == plate_id), TEXT)

@@ -17,9 +17,8 @@ The settings are those of ``PlateConfig`` (``config.plates``).
 
 from __future__ import annotations
 
-from typing import Optional, Sequence
-
 import math
+from typing import Optional, Sequence
 
 import cv2
 import numpy as np
@@ -88,22 +87,31 @@ def pictogram_scores(crop: np.ndarray, templates: Sequence, config: PipelineConf
     not :func:`comparable` with.
 
     ``hidden``: the crop's pixels hidden by something in front (same size): painted the plate's paper (the
-    median of what is seen) before comparing, so a branch counts as a missing part, not as a dark one. Less than
-    ``plate_pictogram_min_seen`` of it seen: no score (-1)."""
+    median of what is seen) before comparing, so a branch counts as a missing part, not as a dark one; a drawing
+    in colour (``coloured``: its coloured print is "hidden" too) scores the better of that and the crop as seen.
+    Less than ``plate_pictogram_min_seen`` of it seen: no score (-1)."""
     plates = config.plates
-    grey = cv2.cvtColor(crop, cv2.COLOR_BGR2GRAY) if crop.ndim == 3 else crop
+    grey = raw = cv2.cvtColor(crop, cv2.COLOR_BGR2GRAY) if crop.ndim == 3 else crop
     if hidden is not None and hidden.any():
         shown = ~hidden.astype(bool)
         if shown.mean() < plates.plate_pictogram_min_seen:
             return [-1.0] * len(templates)
         grey = grey.copy()
         grey[~shown] = int(np.median(grey[shown]))
+    else:
+        raw = None  # nothing painted over: one comparison
     first, *more = plates.plate_compare_insets
-    scores = [_score(grey, template, first, plates) if comparable(template, grey.shape, plates) else -1.0
-              for template in templates]
+
+    def score(template, inset):
+        # a drawing in colour is compared as seen too: its coloured print counts as hidden in front
+        painted = _score(grey, template, inset, plates)
+        return max(painted, _score(raw, template, inset, plates)) if template.coloured and raw is not None \
+            else painted
+
+    scores = [score(template, first) if comparable(template, grey.shape, plates) else -1.0 for template in templates]
     for k in np.argsort(scores)[::-1][:plates.plate_inset_candidates]:
         if scores[k] > -1.0:
-            scores[k] = max([scores[k]] + [_score(grey, templates[k], inset, plates) for inset in more])
+            scores[k] = max([scores[k]] + [score(templates[k], inset) for inset in more])
     return scores
 
 

@@ -10,7 +10,8 @@ lie in the sign's depth (a white wall behind is not a plate); where it does not
 in the sign's plane, as it is mounted on the same pole. Each plate is a
 :class:`Detection` with ``plate_of`` = its sign's detection and the crop its text
 is read from after fusion (``plate_fusion``); a plate that shows the drawing of
-a pictogram plate (``plate_classify``) takes that plate's id, name and size.
+a pictogram or layout plate (``plate_classify``) takes that plate's id, name and
+size, and the crop of a layout plate holds only its text field.
 """
 
 from __future__ import annotations
@@ -456,6 +457,8 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
         span = max(pw, ph)
         template_id, label, printed = pictogram.id, pictogram.name("de"), pictogram.text
         (pw, ph), name, score = pictogram.size_m(span), f"{pictogram.id}@{span:.2f}", min(score, likeness)
+        if pictogram.field:  # a layout plate: OCR reads its text field, the rest of its drawing painted over
+            crop, printed = text_field_only(crop, pictogram.field), None
     return Detection(
         template_id=template_id, name=label, colour="white", shape="rectangle", width_m=pw, height_m=ph,
         format=name, detection_indicator=float(fill), classification_indicator=float(score),
@@ -463,6 +466,21 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
         position=locate(camera, pair.pose, u, v, z), source="plate", normal_world=sign.normal_world,
         plate_of=sign, crop=crop, printed_text=printed, crop_seen=seen,
     )
+
+
+def text_field_only(crop: np.ndarray, field: tuple) -> np.ndarray:
+    """A layout plate's crop with all but its text ``field`` (x0, y0, x1, y1, shares of the plate) painted its
+    paper's colour (the crop's brightest half): what OCR reads of it is the free text, not its arrows or
+    pictogram."""
+    h, w = crop.shape[:2]
+    x0, y0, x1, y1 = (int(round(f * n)) for f, n in zip(field, (w, h, w, h)))
+    grey = crop.reshape(-1, crop.shape[2]) if crop.ndim == 3 else crop.reshape(-1, 1)
+    bright = grey.sum(axis=1) >= np.median(grey.sum(axis=1))
+    paper = np.median(grey[bright], axis=0).astype(crop.dtype)
+    out = np.empty_like(crop)
+    out[...] = paper.reshape((1, 1, -1)) if crop.ndim == 3 else paper[0]
+    out[y0:y1, x0:x1] = crop[y0:y1, x0:x1]
+    return out
 
 
 def find_plates(pair: PairContext, depth: np.ndarray, signs: Sequence[Detection]) -> List[Detection]:

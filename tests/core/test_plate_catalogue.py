@@ -49,6 +49,8 @@ def test_the_shipped_plate_templates_are_every_drawing_of_the_table():
     assert [i for i, k in sorted(kinds.items()) if k == LAYOUT] == ["5.02-l", "5.02-r", "5.03", "5.15", "5.17",
                                                                     "5.31-3"]
     assert kinds["5.07-r"] == kinds["5.20"] == kinds["5.58"] == PICTOGRAM
+    coloured = {t.id for t in templates if t.coloured}
+    assert {"5.10", "5.11", "5.17", "5.18", "5.54", "5.56", "5.58"} <= coloured and not coloured & {"5.20", "5.03"}
     assert {t.id for t in drawn_plates(templates)} == set(kinds) - {i for i, k in kinds.items() if k == TEXT}
     formats = pictogram_formats(templates)
     assert formats["5.31@0.60"] == (0.6, pytest.approx(0.6 / by[("5.31", "de")].aspect, abs=1e-3))

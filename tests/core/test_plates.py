@@ -16,7 +16,7 @@ from signmapper_core.evaluation import evaluate
 from signmapper_core.fusion import FusionConfig
 from signmapper_core.geometry import Camera, Pose, world_to_pixel
 from signmapper_core.mapping import map_drive
-from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable
+from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable, read_texts
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.boxes import box_iou
 from signmapper_core.pipeline.config import PlateConfig
@@ -28,6 +28,7 @@ from signmapper_core.plate_catalogue import load_plate_templates
 from signmapper_core.plate_evaluation import evaluate_plates
 from signmapper_core.plate_formats import PLATE_ID
 from signmapper_core.plate_fusion import read_plate_texts
+from signmapper_core.plate_text import normalise_text
 from signmapper_core.simulate.plate_faces import PAPER, draw_plate
 from signmapper_core.simulate.plate_layout import pictogram_face
 from signmapper_core.visibility import mappable_signs
@@ -178,6 +179,39 @@ def test_a_pictogram_plate_is_classified_by_its_drawing_and_takes_its_size(catal
     assert plate.template_id == template_id and plate.name == template.name("de")
     assert (plate.width_m, plate.height_m) == template.size_m(width) and box_iou(plate.bbox, box) > 0.8
     assert plate.printed_text == template.text and plate.classification_indicator > 0.6
+
+
+def test_a_layout_plate_is_typed_by_its_drawing_and_its_crop_holds_only_its_text_field(catalogue):
+    templates = load_plate_templates(catalogue.folder)
+    template = next(t for t in templates if (t.id, t.variant) == ("5.03", "de"))
+    face = pictogram_face(template, 480, int(round(480 / template.aspect)), np.random.default_rng(2), "2,5 km")
+    pose = pose_at(0.0)
+    left, depth, box = scene(catalogue, pose, plate_size=template.size_m(0.60), plate_face=face)
+    (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
+    assert plate.template_id == "5.03" and plate.printed_text is None  # its text is read, not printed words
+    assert (plate.width_m, plate.height_m) == template.size_m(0.60) and box_iou(plate.bbox, box) > 0.8
+    grey = cv2.cvtColor(plate.crop, cv2.COLOR_BGR2GRAY)
+    h, w = grey.shape
+    x0, x1 = int(round(template.field[0] * w)), int(round(template.field[2] * w))
+    assert grey[:, :x0].std() < 1.0 and grey[:, x1:].std() < 1.0  # the arrows painted over
+    assert (grey[:, x0:x1] < 0.6 * np.median(grey)).mean() > 0.1  # the digits kept
+    assert normalise_text(read_texts([plate.crop])[0].lines) == "2,5 km"
+
+
+def test_a_plate_printed_in_colour_is_told_although_its_colour_counts_as_hidden_in_front(catalogue):
+    """The plate step takes coloured pixels for something in front of a white plate (a branch); 5.10's red disc
+    and blue P are its print: such a drawing is compared as seen too."""
+    templates = load_plate_templates(catalogue.folder)
+    template = next(t for t in templates if t.id == "5.10")
+    assert template.coloured and not next(t for t in templates if t.id == "5.20").coloured
+    h = 60
+    face = pictogram_face(template, int(round(h * template.aspect)), h, np.random.default_rng(3))
+    coloured = (cv2.cvtColor(face, cv2.COLOR_BGR2HSV)[:, :, 1] > PlateConfig().plate_max_saturation).astype(np.uint8)
+    assert 0.1 < coloured.mean() < 0.5
+    found, score = classify_plate(face, templates, PipelineConfig(), coloured)
+    assert found.id == "5.10" and score > 0.8
+    painted_only = replace(template, coloured=False)
+    assert max(pictogram_scores(face, [painted_only], PipelineConfig(), coloured)) < score - 0.1
 
 
 def test_a_pictogram_plate_partly_hidden_by_a_branch_is_classified_by_what_is_seen(catalogue):
@@ -425,8 +459,8 @@ def _write_drive(root, catalogue, lines=("200 m",), n=3):
     facing = (HEADING + 180.0) % 360.0
     plate = centre + [0.0, 0.0, -(0.30 + 0.04 + 0.10)]
     write_truth_csv(root, [TruthSign("s1", "2.30-50", *centre, 0.6, 0.6, facing),
-                           TruthSign("s2", PLATE_ID, *plate, 0.6, 0.2, facing, plate_of="s1", text=" / ".join(lines)),
-                           TruthSign("s3", PLATE_ID, *(plate + [30.0, 0, 0]), 0.6, 0.2, facing, plate_of="s1",
+                           TruthSign("s2", "5.01", *plate, 0.6, 0.2, facing, plate_of="s1", text=" / ".join(lines)),
+                           TruthSign("s3", "5.00-1", *(plate + [30.0, 0, 0]), 0.6, 0.2, facing, plate_of="s1",
                                      text="never in view")])
     return open_drive(root)
 
@@ -440,8 +474,8 @@ def test_a_plate_seen_in_three_pairs_is_one_feature_linked_to_its_sign_with_its_
     assert [s.template_id for s in signs] == ["2.30-50"] and len(plates) == 1
     (sign,), (plate,) = signs, plates
     assert plate.plate_of == sign.sign_id and plate.sign_id == sign.sign_id + 1
-    assert plate.n_obs == 3 and plate.template_id == PLATE_ID
-    assert plate.text == "200 m" and plate.text_confidence > 0.7
+    assert plate.n_obs == 3 and plate.text == "200 m" and plate.text_confidence > 0.7
+    assert plate.template_id == "5.01"  # a distance plate: typed by what it says
     assert sign.text == "50" and sign.status == "accepted"  # its digits read by OCR agree with its id
     plate_detections = [o for o in result.detections if o.sign_id == plate.sign_id]
     assert len(plate_detections) == 3
@@ -452,6 +486,7 @@ def test_a_plate_seen_in_three_pairs_is_one_feature_linked_to_its_sign_with_its_
     evidence = []
     figures = evaluate_plates(drive, result.signs, reference, report.match, evidence=evidence)
     assert (figures.reference, figures.detected, figures.links_right, figures.false_positives) == (1, 1, 1, 0)
+    assert (figures.text, figures.text_typed, figures.typed_right) == (1, 1, 1)
     assert (figures.readable, figures.texts_right) == (1, 1)  # 0.2 m at 8 m: 44 px high
     assert evidence == []  # nothing missed, linked or read wrong
 
@@ -464,6 +499,7 @@ def test_without_tesseract_plates_are_mapped_and_the_run_says_once_how_to_instal
     result = map_drive(drive, catalogue, PipelineConfig(), warn=messages.append, workers=1)
     plates = [s for s in result.signs if s.plate_of is not None]
     assert len(plates) == 1 and plates[0].text is None and plates[0].text_confidence is None
+    assert plates[0].template_id == PLATE_ID  # not read: untyped
     about_plates = [m for m in messages if "plate" in m]
     assert len(about_plates) == 1 and INSTALL_HINT in about_plates[0]
     signs = [s for s in result.signs if s.plate_of is None]
@@ -472,7 +508,7 @@ def test_without_tesseract_plates_are_mapped_and_the_run_says_once_how_to_instal
                       [r.template_id for r in reference], [[0, 0], [1, 1]], 0.75)
     evidence = []
     evaluate_plates(drive, result.signs, reference, report.match, evidence=evidence)
-    assert len(evidence) == 1 and "text wrong; truth plate '200 m'; mapped plate None" in evidence[0]
+    assert len(evidence) == 1 and "typed wrong, text wrong; truth 5.01 '200 m'; mapped plate None" in evidence[0]
 
 
 def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
@@ -481,7 +517,7 @@ def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
 
     class Obs:
         def __init__(self, height):
-            self.bbox = (0, 0, 2 * height, height)
+            self.bbox, self.template_id = (0, 0, 2 * height, height), PLATE_ID
             self.detection = type("D", (), {"crop": np.full((height, 2 * height, 3), 200, np.uint8)})()
 
     def plate(heights):
@@ -501,7 +537,9 @@ def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
     assert calls == [[50, 45, 40, 60]]  # the three nearest of the first, all in one call
     assert a.text == "200 m" and a.text_confidence == pytest.approx((0.9 + 0.8) / 3)  # "ZOO m" disagrees
     assert b.text == "Mo–Fr"
+    assert (a.template_id, b.template_id) == ("5.01", "5.00-1")  # typed by what they say
     calls.clear()
+    a.template_id = PLATE_ID
     assert read_plate_texts([a], read=fake_read, config=FusionConfig(plate_readings=1)) == 1
     assert calls == [[50]] and a.text == "200 m" and a.text_confidence == pytest.approx(0.9)  # the nearest alone
 
@@ -524,6 +562,14 @@ def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
     assert read_plate_texts([pictogram, bare], read=fake_read) == 1 and calls == []
     assert pictogram.text == "ausgenommen" and pictogram.text_confidence == pytest.approx(2 / 3)
     assert bare.text is None and bare.text_confidence is None
+
+    # a layout plate's text field is read, from its views of its own id only (the others' crops hold all of it)
+    layout = plate([50, 45, 60])
+    layout.template_id = "5.03"
+    for obs, own in zip(layout.observations, (True, True, False)):
+        obs.template_id, obs.detection.printed_text = ("5.03", None) if own else (PLATE_ID, None)
+    assert read_plate_texts([layout], read=fake_read) == 1 and calls == [[50, 45]]
+    assert layout.template_id == "5.03" and layout.text == "200 m"
 
 
 def test_a_reading_in_a_form_plates_print_outweighs_a_surer_misreading():
@@ -571,7 +617,7 @@ def test_a_plates_text_is_read_from_the_views_that_saw_it_whole_before_larger_cu
 
     class Obs:
         def __init__(self, height, seen):
-            self.bbox = (0, 0, 2 * height, height)
+            self.bbox, self.template_id = (0, 0, 2 * height, height), PLATE_ID
             self.detection = type("D", (), {"crop": np.full((height, 2 * height, 3), 200, np.uint8),
                                             "crop_seen": seen})()
 
