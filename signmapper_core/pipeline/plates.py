@@ -11,7 +11,7 @@ in the sign's plane, as it is mounted on the same pole. Each plate is a
 :class:`Detection` with ``plate_of`` = its sign's detection and the crop its text
 is read from after fusion (``plate_fusion``); a plate that shows the drawing of
 a pictogram or layout plate (``plate_classify``) takes that plate's id, name and
-size, and the crop of a layout plate holds only its text field.
+size, and the crop of a layout plate is only its text field.
 """
 
 from __future__ import annotations
@@ -457,7 +457,7 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
         span = max(pw, ph)
         template_id, label, printed = pictogram.id, pictogram.name("de"), pictogram.text
         (pw, ph), name, score = pictogram.size_m(span), f"{pictogram.id}@{span:.2f}", min(score, likeness)
-        if pictogram.field:  # a layout plate: OCR reads its text field, the rest of its drawing painted over
+        if pictogram.field:  # a layout plate: OCR reads its text field alone
             crop, printed = text_field_only(crop, pictogram.field), None
     return Detection(
         template_id=template_id, name=label, colour="white", shape="rectangle", width_m=pw, height_m=ph,
@@ -469,18 +469,12 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
 
 
 def text_field_only(crop: np.ndarray, field: tuple) -> np.ndarray:
-    """A layout plate's crop with all but its text ``field`` (x0, y0, x1, y1, shares of the plate) painted its
-    paper's colour (the crop's brightest half): what OCR reads of it is the free text, not its arrows or
-    pictogram."""
+    """The part of a layout plate's crop that is its text ``field`` (x0, y0, x1, y1, shares of the plate): what
+    OCR reads of it is the free text, not its arrows or pictogram, and at the size of a plate of its own (a text
+    as small as 5.02's among much blank paper is read as nothing at all)."""
     h, w = crop.shape[:2]
     x0, y0, x1, y1 = (int(round(f * n)) for f, n in zip(field, (w, h, w, h)))
-    grey = crop.reshape(-1, crop.shape[2]) if crop.ndim == 3 else crop.reshape(-1, 1)
-    bright = grey.sum(axis=1) >= np.median(grey.sum(axis=1))
-    paper = np.median(grey[bright], axis=0).astype(crop.dtype)
-    out = np.empty_like(crop)
-    out[...] = paper.reshape((1, 1, -1)) if crop.ndim == 3 else paper[0]
-    out[y0:y1, x0:x1] = crop[y0:y1, x0:x1]
-    return out
+    return np.ascontiguousarray(crop[y0:max(y1, y0 + 1), x0:max(x1, x0 + 1)])
 
 
 def find_plates(pair: PairContext, depth: np.ndarray, signs: Sequence[Detection]) -> List[Detection]:
