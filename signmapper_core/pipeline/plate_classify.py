@@ -3,8 +3,8 @@
 The network of the sign catalogue does not know plates, so plates are compared
 with the renderings of the official drawings (``plate_catalogue``) as the
 template route compares signs: the plate's crop, grey, scaled to each template's
-aspect at ``plate_compare_height_px``, correlated with it over a few pixels of
-shift (the plate's box is found to a pixel or two) and a few insets (a box taken
+aspect at ``plate_compare_height_px``, both a little blurred, correlated with it
+over a few pixels of shift (the plate's box is found to a pixel or two) and a few insets (a box taken
 for the inside of a frame is that much larger than the plate). Only drawings of
 about the crop's aspect are compared (``plate_aspect_tolerance``): a plate's box
 is measured well, and a vehicle plate stretched to another's aspect can look much
@@ -27,26 +27,29 @@ from ..plate_catalogue import LAYOUT, TEXT
 from .config import PipelineConfig, PlateConfig
 
 
-def _scaled(grey: np.ndarray, width: int, height: int) -> np.ndarray:
+def _scaled(grey: np.ndarray, width: int, height: int, blur_px: float) -> np.ndarray:
+    """``grey`` at width x height, blurred by ``blur_px`` (Gaussian sigma): a thin frame or stroke a pixel off
+    between crop and drawing then still overlaps."""
     interpolation = cv2.INTER_AREA if grey.shape[0] > height else cv2.INTER_LINEAR
-    return cv2.resize(grey, (width, height), interpolation=interpolation)
+    out = cv2.resize(grey, (width, height), interpolation=interpolation)
+    return cv2.GaussianBlur(out, (0, 0), blur_px) if blur_px > 0 else out
 
 
 # (id, variant, width, height) -> the template scaled for comparing and its mask (the masters never change)
 _DRAWN: dict = {}
 
 
-def _drawn(template, width: int, height: int) -> tuple:
-    """(the template at width x height, float32; the mask of what is compared: None for the whole drawing, else
-    1 outside a layout plate's text field and 0 in it)."""
-    key = (template.id, template.variant, width, height)
+def _drawn(template, width: int, height: int, blur_px: float) -> tuple:
+    """(the template at width x height, blurred by ``blur_px``, float32; the mask of what is compared: None for
+    the whole drawing, else 1 outside a layout plate's text field and 0 in it)."""
+    key = (template.id, template.variant, width, height, blur_px)
     if key not in _DRAWN:
         mask = None
         if template.kind == LAYOUT:
             x0, y0, x1, y1 = template.field
             mask = np.ones((height, width), np.float32)
             mask[int(round(y0 * height)):int(round(y1 * height)), int(round(x0 * width)):int(round(x1 * width))] = 0
-        _DRAWN[key] = (_scaled(template.grey, width, height).astype(np.float32), mask)
+        _DRAWN[key] = (_scaled(template.grey, width, height, blur_px).astype(np.float32), mask)
     return _DRAWN[key]
 
 
@@ -65,9 +68,10 @@ def _score(grey: np.ndarray, template, inset: float, plates: PlateConfig) -> flo
         return -1.0
     width, height = _compare_size(template, plates)
     part = grey[cut:grey.shape[0] - cut, cut:grey.shape[1] - cut]
-    seen = cv2.copyMakeBorder(_scaled(part, width, height), shift, shift, shift, shift,
+    blur = plates.plate_compare_blur_px
+    seen = cv2.copyMakeBorder(_scaled(part, width, height, blur), shift, shift, shift, shift,
                               cv2.BORDER_REPLICATE).astype(np.float32)
-    drawn, mask = _drawn(template, width, height)
+    drawn, mask = _drawn(template, width, height, blur)
     scores = cv2.matchTemplate(seen, drawn, cv2.TM_CCOEFF_NORMED, mask=mask)
     return float(np.nan_to_num(scores, nan=-1.0, posinf=-1.0, neginf=-1.0).max())
 
