@@ -633,6 +633,7 @@ class PlateConfig:
     # width wide, hides what lies behind it (the sign's own pole is behind both, so its run stops at them)
     plate_occluder_span: float = 0.9
     plate_occluder_max_width: float = 0.3
+    plate_occluder_contrast: float = 0.8  # within a plate's crop, such a post is darker than this x its paper
     plate_split_min_overlap: float = 0.8  # two pieces of a plate cut by such a post are level: rows this shared
     plate_pictogram_min_score: float = 0.7  # correlation with a pictogram plate's drawing: below, a text plate
     plate_min_size_px: Tuple[int, int] = (6, 4)  # (width, height) of the smallest region read as a plate: smaller

@@ -61,7 +61,10 @@ def _compare_size(template, plates: PlateConfig) -> tuple:
     return short, max(smallest, int(round(short / template.aspect)))
 
 
-def _score(grey: np.ndarray, template, inset: float, plates: PlateConfig) -> float:
+def _score(grey: np.ndarray, template, inset: float, plates: PlateConfig, hidden: Optional[np.ndarray] = None
+           ) -> float:
+    """Best correlation of ``grey`` (cut by ``inset``) with ``template``; pixels ``hidden`` (uint8, the crop's
+    size) are left out of it (widened by the shift searched: the drawing moves under them)."""
     cut = int(round(inset * min(grey.shape[:2])))
     smallest, shift = plates.plate_compare_min_px, plates.plate_compare_shift_px
     if grey.shape[0] - 2 * cut < smallest or grey.shape[1] - 2 * cut < smallest:
@@ -72,8 +75,24 @@ def _score(grey: np.ndarray, template, inset: float, plates: PlateConfig) -> flo
     seen = cv2.copyMakeBorder(_scaled(part, width, height, blur), shift, shift, shift, shift,
                               cv2.BORDER_REPLICATE).astype(np.float32)
     drawn, mask = _drawn(template, width, height, blur)
+    if hidden is not None:
+        gone = cv2.resize(hidden[cut:grey.shape[0] - cut, cut:grey.shape[1] - cut], (width, height),
+                          interpolation=cv2.INTER_NEAREST)
+        gone = cv2.dilate(gone, np.ones((2 * shift + 1, 2 * shift + 1), np.uint8))
+        mask = (np.ones((height, width), np.float32) if mask is None else mask) * (gone == 0)
+        if mask.mean() < plates.plate_pictogram_min_seen:  # too little of the drawing left to tell it by
+            return -1.0
     scores = cv2.matchTemplate(seen, drawn, cv2.TM_CCOEFF_NORMED, mask=mask)
-    return float(np.nan_to_num(scores, nan=-1.0, posinf=-1.0, neginf=-1.0).max())
+    return float(np.clip(np.nan_to_num(scores, nan=-1.0, posinf=-1.0, neginf=-1.0), -1.0, 1.0).max())
+
+
+def _painted(grey: np.ndarray, hidden: Optional[np.ndarray]) -> np.ndarray:
+    """``grey`` with its ``hidden`` pixels painted the plate's paper (the median of what is seen)."""
+    if hidden is None:
+        return grey
+    out = grey.copy()
+    out[hidden > 0] = int(np.median(grey[hidden == 0]))
+    return out
 
 
 def comparable(template, crop_shape, plates: PlateConfig) -> bool:
@@ -84,33 +103,64 @@ def comparable(template, crop_shape, plates: PlateConfig) -> bool:
     return abs(math.log(aspect / template.aspect)) <= math.log(1.0 + plates.plate_aspect_tolerance)
 
 
+def crossing_occluders(not_white: np.ndarray, sign_columns: tuple, sign_width: int, plates: PlateConfig) -> np.ndarray:
+    """uint8 mask of the window's narrow vertical runs of ``not_white`` (uint8) pixels that cross it from top to
+    bottom within the sign's columns (``sign_columns``: first, last + 1 in the window): a lamp post or trunk in
+    front of sign and plate, whose depth is unknown where stereo matched only around the sign's colour."""
+    height = not_white.shape[0]
+    c0, c1 = max(0, sign_columns[0]), min(not_white.shape[1], sign_columns[1])
+    out = np.zeros_like(not_white)
+    span = int(plates.plate_occluder_span * height)
+    if c1 - c0 < 2 or span < 2:
+        return out
+    runs = cv2.morphologyEx(np.ascontiguousarray(not_white[:, c0:c1]), cv2.MORPH_OPEN, np.ones((span, 1), np.uint8),
+                            borderType=cv2.BORDER_CONSTANT, borderValue=0)  # beyond the window: no run
+    count, labels, stats, _ = cv2.connectedComponentsWithStats(runs, connectivity=4)
+    narrow = np.zeros(count, bool)
+    narrow[1:] = stats[1:, cv2.CC_STAT_WIDTH] <= plates.plate_occluder_max_width * sign_width
+    out[:, c0:c1] = narrow[labels].astype(np.uint8)
+    return out
+
+
+def crop_poles(grey: np.ndarray, plates: PlateConfig) -> np.ndarray:
+    """uint8 mask of a plate crop's narrow dark runs from top to bottom away from its edges: a pole in front of
+    the plate whose depth is unknown and whose grey passed for the plate's paper where the plate step looked for
+    one (:func:`crossing_occluders` on the crop, darker than ``plate_occluder_contrast`` x its paper)."""
+    height, width = grey.shape[:2]
+    edge = int(round(plates.plate_frame_share * min(height, width))) + 1
+    darker = (grey < plates.plate_occluder_contrast * float(np.median(grey))).astype(np.uint8)
+    return crossing_occluders(darker, (edge, width - edge), width, plates)
+
+
 def pictogram_scores(crop: np.ndarray, templates: Sequence, config: PipelineConfig,
                      hidden: Optional[np.ndarray] = None) -> list:
     """Correlation (-1..1) of a plate crop (BGR or grey) with each template, best shift and inset (the insets
     only for the ``plate_inset_candidates`` templates the crop is most like as it is); -1 for a template it is
     not :func:`comparable` with.
 
-    ``hidden``: the crop's pixels hidden by something in front (same size): painted the plate's paper (the
-    median of what is seen) before comparing, so a branch counts as a missing part, not as a dark one; a drawing
-    in colour (``coloured``: its coloured print is "hidden" too) scores the better of that and the crop as seen.
-    Less than ``plate_pictogram_min_seen`` of it seen: no score (-1)."""
+    ``hidden``: the crop's pixels hidden by something in front (same size): left out of the correlation (and
+    painted the plate's paper), so a branch counts as a missing part, not as a dark one; a drawing in colour
+    (``coloured``: its coloured print is "hidden" too) scores the better of that and the crop as seen; a pole
+    crossing the crop (:func:`crop_poles`) is tried as hidden too. Less than ``plate_pictogram_min_seen`` of it
+    seen: no score (-1)."""
     plates = config.plates
-    grey = raw = cv2.cvtColor(crop, cv2.COLOR_BGR2GRAY) if crop.ndim == 3 else crop
-    if hidden is not None and hidden.any():
-        shown = ~hidden.astype(bool)
-        if shown.mean() < plates.plate_pictogram_min_seen:
-            return [-1.0] * len(templates)
-        grey = grey.copy()
-        grey[~shown] = int(np.median(grey[shown]))
-    else:
-        raw = None  # nothing painted over: one comparison
+    grey = cv2.cvtColor(crop, cv2.COLOR_BGR2GRAY) if crop.ndim == 3 else crop
+    hidden = None if hidden is None or not hidden.any() else hidden.astype(np.uint8)
+    min_seen = plates.plate_pictogram_min_seen
+    if hidden is not None and 1.0 - hidden.mean() < min_seen:
+        return [-1.0] * len(templates)
+    poles = crop_poles(grey, plates)
+    # what is compared: the crop as the plate step saw it; with a pole found in it hidden too (a drawing's own
+    # upright arrow runs top to bottom as well: the better of the two counts); and a drawing in colour also as
+    # seen, its coloured print not hidden (the plate step takes coloured pixels for something in front)
+    masks = [hidden] + ([poles if hidden is None else hidden | poles] if poles.any() else [])
+    views = [(_painted(grey, gone), gone) for gone in masks if gone is None or 1.0 - gone.mean() >= min_seen]
+    as_seen = [(grey, None)] if hidden is not None else []
     first, *more = plates.plate_compare_insets
 
     def score(template, inset):
-        # a drawing in colour is compared as seen too: its coloured print counts as hidden in front
-        painted = _score(grey, template, inset, plates)
-        return max(painted, _score(raw, template, inset, plates)) if template.coloured and raw is not None \
-            else painted
+        return max([_score(seen, template, inset, plates, gone)
+                    for seen, gone in views + (as_seen if template.coloured else [])], default=-1.0)
 
     scores = [score(template, first) if comparable(template, grey.shape, plates) else -1.0 for template in templates]
     for k in np.argsort(scores)[::-1][:plates.plate_inset_candidates]:

@@ -29,7 +29,7 @@ from .boxes import touches_border
 from .detection import Detection
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
-from .plate_classify import classify_plate
+from .plate_classify import classify_plate, crossing_occluders
 
 BELOW, ABOVE = 1, -1
 
@@ -359,25 +359,6 @@ def hidden_mask(bgr: np.ndarray, depth: np.ndarray, z: float, config) -> np.ndar
     return (coloured | nearer).astype(np.uint8)
 
 
-def crossing_occluders(not_white: np.ndarray, sign_columns: tuple, sign_width: int, config) -> np.ndarray:
-    """uint8 mask of the window's narrow vertical runs of ``not_white`` (uint8) pixels that cross it from top to
-    bottom within the sign's columns (``sign_columns``: first, last + 1 in the window): a lamp post or trunk in
-    front of sign and plate, whose depth is unknown where stereo matched only around the sign's colour."""
-    height = not_white.shape[0]
-    c0, c1 = max(0, sign_columns[0]), min(not_white.shape[1], sign_columns[1])
-    out = np.zeros_like(not_white)
-    span = int(config.plates.plate_occluder_span * height)
-    if c1 - c0 < 2 or span < 2:
-        return out
-    runs = cv2.morphologyEx(np.ascontiguousarray(not_white[:, c0:c1]), cv2.MORPH_OPEN, np.ones((span, 1), np.uint8),
-                            borderType=cv2.BORDER_CONSTANT, borderValue=0)  # beyond the window: no run
-    count, labels, stats, _ = cv2.connectedComponentsWithStats(runs, connectivity=4)
-    narrow = np.zeros(count, bool)
-    narrow[1:] = stats[1:, cv2.CC_STAT_WIDTH] <= config.plates.plate_occluder_max_width * sign_width
-    out[:, c0:c1] = narrow[labels].astype(np.uint8)
-    return out
-
-
 class _HiddenCanvas:
     """One image-sized mask per image size and thread, reused by every window (allocating and zeroing a
     full-frame mask per sign and side cost more than the plate search itself)."""
@@ -430,7 +411,7 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
             elsewhere[oy0:oy1, ox0:ox1] = True
     masks = white_masks(window, config)
     if masks:
-        in_window |= crossing_occluders(1 - masks[0], (x - x0, x + w - x0), w, config)
+        in_window |= crossing_occluders(1 - masks[0], (x - x0, x + w - x0), w, config.plates)
     hidden = _HiddenCanvas.of(pair.left.shape[:2])  # image-sized: the readings index it in image coordinates
     hidden[y0:y1, x0:x1] = in_window
     best = None
