@@ -183,7 +183,8 @@ def signs_renderer(catalogue, language: str = "en") -> QgsRuleBasedRenderer:
         root.appendChild(group)
     plates = QgsRuleBasedRenderer.Rule(
         sign_symbol(_plain_layer(SimpleNamespace(shape="rectangle", colour="white"), PICTOGRAM_MM)), 0, 0,
-        f'"template_id" = {_quoted(PLATE_ID)}', PLATE_NAMES.get(language, PLATE_NAMES["en"]))
+        f'"plate_of" IS NOT NULL OR "template_id" = {_quoted(PLATE_ID)}',  # typed (5.01, 5.31-2, ...) or not
+        PLATE_NAMES.get(language, PLATE_NAMES["en"]))
     root.appendChild(plates)
     unknown = QgsMarkerSymbol.createSimple({"name": "circle", "color": "#ffffff", "outline_color": "#f57c00",
                                             "outline_width": "0.6", "size": str(PICTOGRAM_MM * 0.8)})

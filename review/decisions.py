@@ -80,7 +80,8 @@ class DecisionTaker:
         if current["plate_of"] is None:
             self.dock.show_message("Only a supplementary plate has a text to set", error=True)
             return
-        values = plate_text_values(text, current["status"] or "")
+        values = plate_text_values(text, current["status"] or "", current["template_id"] or "",
+                                   session.output_context())
         self._decide(values, f"set the text of plate {{fid}} to \"{values['text'] or ''}\"")
 
     def undo_last(self) -> None:

@@ -22,15 +22,23 @@ def reject_values() -> dict:
     return {"status": REJECTED, "reviewed": 1}
 
 
-def plate_text_values(text: str, current_status: str) -> dict:
+def plate_text_values(text: str, current_status: str, current_template_id: str = "",
+                      context: Optional[OutputContext] = None) -> dict:
     """A person read the plate and set its text: certain (confidence 1), the plate accepted and reviewed.
-    Spelt as the mapping writes texts (``plate_text``): lines joined by " / "."""
+    Spelt as the mapping writes texts (``plate_text``): lines joined by " / ". A text plate (or one mapped
+    untyped) is typed again by what it now says (``plate_types``), named in ``context``'s language."""
+    from ..signmapper_core.catalogue.plates_ch import TEXT, kind_of
     from ..signmapper_core.plate_text import normalise_text
+    from ..signmapper_core.plate_types import text_plate_id
 
     lines = [line for line in text.replace("\n", " / ").split("/")]
     written = normalise_text(lines)
-    return {"text": written or None, "text_confidence": 1.0 if written else None,
-            "status": MANUAL if current_status == MANUAL else ACCEPTED, "reviewed": 1}
+    values = {"text": written or None, "text_confidence": 1.0 if written else None,
+              "status": MANUAL if current_status == MANUAL else ACCEPTED, "reviewed": 1}
+    if current_template_id and kind_of(current_template_id) == TEXT:
+        typed = text_plate_id(written)
+        values.update(template_id=typed, name=(context or OutputContext()).name(typed, typed))
+    return values
 
 
 def template_format(entry, current_format: Optional[str]) -> str:

@@ -28,6 +28,7 @@ import sys
 import time
 from collections import Counter
 from pathlib import Path
+from typing import Optional
 
 import numpy as np
 
@@ -58,15 +59,17 @@ from signmapper_core.simulate.face_artwork import OFFICIAL_PICTOGRAM, pictogram_
 from signmapper_core.visibility import mappable_signs  # noqa: E402
 
 
-def generated_drive(seed: int, pairs: int, depth: bool, legacy_faces: bool = False, white_share: float = 0.0
-                    ) -> Path:
+def generated_drive(seed: int, pairs: int, depth: bool, legacy_faces: bool = False, white_share: float = 0.0,
+                    plate_share: Optional[float] = None) -> Path:
     from signmapper_core.simulate import LEGACY_FACES, SimulationConfig, generate_drive
 
+    plates = {} if plate_share is None else {"plate_share": plate_share}
     config = SimulationConfig(pairs=pairs, seed=seed, write_depth=depth, white_sign_share=white_share,
-                              **(LEGACY_FACES if legacy_faces else {}))
+                              **plates, **(LEGACY_FACES if legacy_faces else {}))
     faces = "legacy" if legacy_faces else f"{config.face_artwork}{config.master_share:g}"
     white = f"-white{white_share:g}" if white_share > 0 else ""
-    out = REPO / "build" / "drives" / f"seed{seed}-{pairs}{'-depth' if depth else ''}-faces-{faces}{white}"
+    plated = f"-plates{plate_share:g}" if plate_share is not None else ""
+    out = REPO / "build" / "drives" / f"seed{seed}-{pairs}{'-depth' if depth else ''}-faces-{faces}{white}{plated}"
     if not (out / "poses.csv").exists():
         print(f"generating {out} ...", flush=True)
         generate_drive(out, config)
@@ -171,6 +174,9 @@ def main(argv=None) -> int:
                         help="generated drives with the faces of before the artwork mix (procedural only)")
     parser.add_argument("--white-share", type=float, default=0.0,
                         help="generated drives: share of sign poles with white and grey signs (and white distractors)")
+    parser.add_argument("--plate-share", type=float, default=None,
+                        help="generated drives: share of sign poles whose lowest sign carries a plate (default: the "
+                             "generator's)")
     parser.add_argument("--radius", type=float, default=0.75, help="matching radius in metres")
     parser.add_argument("--near", type=float, default=4.0)
     parser.add_argument("--far", type=float, default=14.0)
@@ -185,8 +191,8 @@ def main(argv=None) -> int:
                              "reference sign")
     args = parser.parse_args(argv)
 
-    folders = list(args.drives) + [generated_drive(s, args.pairs, args.depth, args.legacy_faces, args.white_share)
-                                        for s in args.generate]
+    folders = list(args.drives) + [generated_drive(s, args.pairs, args.depth, args.legacy_faces, args.white_share,
+                                                   args.plate_share) for s in args.generate]
     if not folders:
         parser.error("give drive folders or --generate SEEDS")
     catalogue = load_catalogue(args.catalogue)

@@ -1,10 +1,15 @@
-"""Pictogram plate templates (SSV 5.xx with a pictogram): loaded from a catalogue's ``plates/`` folder.
+"""Plate templates (SSV 5.xx): loaded from a catalogue's ``plates/`` folder.
 
 ``plates/plates.json`` (written by ``catalogue.plate_build``) lists each rendering
-of an official drawing: id, language variant, names, the words printed on it and
-its aspect (width / height). A catalogue without that folder has no pictogram
-plates: its plates are all read as text. No OpenCV at import: front ends read the
-names and sizes.
+of an official drawing: id, language variant, kind (``pictogram``, ``layout`` or
+``text``, see ``catalogue.plates_ch``), names, the words printed on it, a layout
+plate's text field, whether its drawing prints in colour and its aspect (width /
+height). Pictogram and layout plates
+are told by their drawing (``drawn_plates``); text plates by what they say, their
+rendering only shows the review what they look like. An entry without ``kind`` is
+a pictogram plate (the folders of before text plates were typed). A catalogue
+without that folder has no plate templates: its plates are all read as text. No
+OpenCV at import: front ends read the names and sizes.
 """
 
 from __future__ import annotations
@@ -22,6 +27,8 @@ from .plate_formats import PLATE_FORMATS
 
 FORMAT = "signmapper-plates/1"
 PLATE_WIDTHS_M = sorted({w for w, _ in PLATE_FORMATS.values()})
+PICTOGRAM, LAYOUT, TEXT = "pictogram", "layout", "text"  # as catalogue.plates_ch writes them
+KINDS = (PICTOGRAM, LAYOUT, TEXT)
 
 
 class PlateCatalogueError(InputFileError):
@@ -33,16 +40,23 @@ class PlateTemplate:
     id: str
     variant: str
     names: dict
-    text: str  # words printed on the plate ("" for a pictogram alone)
+    text: str  # words printed on the plate ("" for a pictogram alone; a layout plate's text is read)
     aspect: float  # width / height
     grey: np.ndarray  # the master, grey uint8
+    kind: str = PICTOGRAM
+    field: tuple = ()  # a layout plate's text field: (x0, y0, x1, y1), shares of its width and height
+    png: str = ""  # the master's file (in colour: what a synthetic drive prints)
+    coloured: bool = False  # its drawing prints in colour too (5.10's red and blue), not only black
 
     def name(self, lang: str = "de") -> str:
         return self.names.get(lang) or next(iter(self.names.values()), self.id)
 
-    def size_m(self, width_m: float) -> tuple:
-        """(width, height) of this plate as wide as ``width_m``."""
-        return float(width_m), round(float(width_m) / self.aspect, 3)
+    def size_m(self, span_m: float) -> tuple:
+        """(width, height) of this plate with its longer side ``span_m`` (as wide as a text plate, or as high as
+        one is wide for an upright plate such as 5.05)."""
+        if self.aspect >= 1.0:
+            return float(span_m), round(float(span_m) / self.aspect, 3)
+        return round(float(span_m) * self.aspect, 3), float(span_m)
 
 
 def plates_folder(catalogue_folder) -> Path:
@@ -70,11 +84,25 @@ def load_plate_templates(catalogue_folder) -> tuple:
             grey = cv2.imread(str(png), cv2.IMREAD_GRAYSCALE)
             if grey is None:
                 raise PlateCatalogueError(path, f"plate {k + 1}: image {png} is missing or unreadable")
+            kind = str(entry.get("kind", PICTOGRAM))
+            if kind not in KINDS:
+                raise PlateCatalogueError(path, f"plate {k + 1}: kind {kind!r} is none of {', '.join(KINDS)}")
+            field = tuple(float(v) for v in entry.get("field", ()))
+            if (kind == LAYOUT) != bool(field) or (field and not (len(field) == 4 and 0 <= field[0] < field[2] <= 1
+                                                                   and 0 <= field[1] < field[3] <= 1)):
+                raise PlateCatalogueError(path, f"plate {k + 1}: a layout plate, and only one, has a text field "
+                                                f"x0 < x1, y0 < y1 within 0..1 (kind {kind}, field {list(field)})")
             out.append(PlateTemplate(str(entry["id"]), str(entry["variant"]), dict(entry["names"]),
-                                     str(entry.get("text", "")), float(entry["aspect"]), grey))
+                                     str(entry.get("text", "")), float(entry["aspect"]), grey, kind, field,
+                                     str(png), bool(entry.get("coloured", False))))
         except KeyError as exc:
             raise PlateCatalogueError(path, f"plate {k + 1} lacks the field {exc}") from exc
     return tuple(out)
+
+
+def drawn_plates(templates) -> tuple:
+    """The templates told by their drawing: pictogram and layout plates (not text plates)."""
+    return tuple(t for t in templates if t.kind != TEXT)
 
 
 def template_by_id(templates, template_id: str) -> Optional[PlateTemplate]:
@@ -82,5 +110,6 @@ def template_by_id(templates, template_id: str) -> Optional[PlateTemplate]:
 
 
 def pictogram_formats(templates) -> dict:
-    """Plate sizes the pictogram plates add to the text plates' (``PLATE_FORMATS``): name -> (width, height)."""
-    return {f"{t.id}@{w:.2f}": t.size_m(w) for t in templates for w in PLATE_WIDTHS_M}
+    """Plate sizes the plates told by their drawing add to the text plates' (``PLATE_FORMATS``): name -> (width,
+    height)."""
+    return {f"{t.id}@{w:.2f}": t.size_m(w) for t in drawn_plates(templates) for w in PLATE_WIDTHS_M}

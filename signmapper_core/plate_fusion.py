@@ -23,6 +23,7 @@ from .fusion import FusedSign, FusionConfig, Observation, _merge_tracks, build_t
 from .ocr import OcrError, OcrUnavailable, read_texts
 from .plate_formats import PLATE_ID
 from .plate_text import is_plate_line, normalise_text
+from .plate_types import text_plate_id
 from .progress import WarnCallback, send_warning
 
 
@@ -65,9 +66,12 @@ def fuse_plates(observations: Sequence[Observation], signs: Sequence[FusedSign],
 def reading_crops(plate: FusedSign, per_plate: int, min_seen: float = 1.0) -> list:
     """The crops its text is read from: those of its ``per_plate`` largest (nearest) observations that saw it
     whole (``Detection.crop_seen`` at least ``min_seen``), then, if fewer, the largest of the others: a view
-    cut by the image's edge or by a branch reads part of the text, and its larger letters do not make up for it."""
-    seen = sorted((o for o in plate.observations if getattr(o.detection, "crop", None) is not None),
-                  key=lambda o: (getattr(o.detection, "crop_seen", 1.0) >= min_seen, o.bbox[3]), reverse=True)
+    cut by the image's edge or by a branch reads part of the text, and its larger letters do not make up for it.
+    Only the observations of the plate's id give crops (a layout plate's crop holds its text field only, a text
+    plate's all of it), unless none of them has one."""
+    cropped = [o for o in plate.observations if getattr(o.detection, "crop", None) is not None]
+    own = [o for o in cropped if o.template_id == plate.template_id] or cropped
+    seen = sorted(own, key=lambda o: (getattr(o.detection, "crop_seen", 1.0) >= min_seen, o.bbox[3]), reverse=True)
     return [o.detection.crop for o in seen[:per_plate]]
 
 
@@ -106,8 +110,17 @@ def _part_of(part: str, text: str) -> bool:
 
 
 def read_by_ocr(feature: FusedSign) -> bool:
-    """Whether a feature's text is read by OCR: a text plate, or a white text panel (a place's name, destinations)."""
-    return feature.template_id == PLATE_ID or is_text_panel(feature.template_id)
+    """Whether a feature's text is read by OCR: a white text panel (a place's name, destinations), a text plate,
+    or a layout plate (whose observations of its id carry no printed words: ``Detection.printed_text`` None)."""
+    if is_text_panel(feature.template_id) or feature.template_id == PLATE_ID:
+        return True
+    own = [o for o in feature.observations if o.template_id == feature.template_id]
+    return is_plate_feature(feature) and any(getattr(o.detection, "printed_text", "") is None for o in own)
+
+
+def is_plate_feature(feature: FusedSign) -> bool:
+    """Whether a fused feature is a plate: it has a sign (``plate_of``) or its observations are plates'."""
+    return feature.plate_of is not None or any(is_plate(o) for o in feature.observations)
 
 
 def read_plate_texts(plates: Sequence[FusedSign], warn: Optional[WarnCallback] = None,
@@ -141,6 +154,8 @@ def read_plate_texts(plates: Sequence[FusedSign], warn: Optional[WarnCallback] =
     for k, plate in enumerate(plates):
         if read_by_ocr(plate):
             plate.text, plate.text_confidence = vote_text(by_plate.get(k, []), config)
+            if plate.template_id == PLATE_ID:  # a text plate: typed by what it says
+                plate.template_id = text_plate_id(plate.text)
         done += plate.text is not None
     return done
 

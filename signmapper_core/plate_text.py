@@ -25,6 +25,7 @@ WEEKDAYS = {
     "it": ("lu", "ma", "me", "gi", "ve", "sa", "do"),
 }
 EXCEPT_WORDS = {"de": "ausgenommen", "fr": "excepté", "it": "eccetto"}
+DISTANCE = re.compile(r"\d+(?:[.,]\d+)? (?:m|km)")  # a normalised distance or length: "200 m", "2,5 km"
 # Words of Swiss supplementary plates: what a plate's text is spelt against.
 VOCABULARY = (
     "ausgenommen", "excepté", "eccetto", "Zubringerdienst", "Anwohner", "Velos", "Anstösser",
@@ -109,7 +110,7 @@ def is_plate_line(line: str) -> bool:
     """Whether a normalised line is one of the forms Swiss plates print: a distance, a time range, a weekday
     range, or words of the plates' vocabulary and exceptions (a reading of such lines only is more likely right)."""
     number = r"\d{1,2}(?:\.\d\d)?"
-    if re.fullmatch(r"\d+(?:[.,]\d+)? (?:m|km)", line) or re.fullmatch(rf"{number}{EN_DASH}{number} h", line):
+    if DISTANCE.fullmatch(line) or re.fullmatch(rf"{number}{EN_DASH}{number} h", line):
         return True
     days = re.fullmatch(rf"(\w\w){EN_DASH}(\w\w)", line)
     if days and days.group(1).lower() in _ALL_DAYS and days.group(2).lower() in _ALL_DAYS:

@@ -10,7 +10,8 @@ lie in the sign's depth (a white wall behind is not a plate); where it does not
 in the sign's plane, as it is mounted on the same pole. Each plate is a
 :class:`Detection` with ``plate_of`` = its sign's detection and the crop its text
 is read from after fusion (``plate_fusion``); a plate that shows the drawing of
-a pictogram plate (``plate_classify``) takes that plate's id, name and size.
+a pictogram or layout plate (``plate_classify``) takes that plate's id, name and
+size, and the crop of a layout plate is only its text field.
 """
 
 from __future__ import annotations
@@ -22,13 +23,13 @@ from typing import List, Optional, Sequence
 import cv2
 import numpy as np
 
-from ..plate_catalogue import load_plate_templates, pictogram_formats, template_by_id
+from ..plate_catalogue import load_plate_templates, pictogram_formats
 from ..plate_formats import PLATE_FORMATS, PLATE_ID, PLATE_NAMES
 from .boxes import touches_border
 from .detection import Detection
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
-from .plate_classify import classify_plate
+from .plate_classify import classify_plate, crossing_occluders
 
 BELOW, ABOVE = 1, -1
 
@@ -50,15 +51,22 @@ def all_plate_formats(templates) -> dict:
     return {**PLATE_FORMATS, **pictogram_formats(templates)}
 
 
-def nearest_plate_format(width_m: float, height_m: float, tolerance: float, formats=None):
-    """(format name, (width_m, height_m), relative error) of the nearest plate format (``formats``, default the
-    text plates'), or None beyond ``tolerance``."""
-    best = None
+def fitting_plate_formats(width_m: float, height_m: float, tolerance: float, formats=None) -> list:
+    """[(format name, (width_m, height_m), log error)] of the plate formats (``formats``, default the text plates')
+    within ``tolerance`` of the size, nearest first."""
+    fits = []
     for name, (w, h) in (formats or PLATE_FORMATS).items():
         error = max(abs(math.log(width_m / w)), abs(math.log(height_m / h)))
-        if best is None or error < best[2]:
-            best = (name, (w, h), error)
-    return best if best is not None and best[2] <= math.log(1.0 + tolerance) else None
+        if error <= math.log(1.0 + tolerance):
+            fits.append((name, (w, h), error))
+    return sorted(fits, key=lambda fit: fit[2])
+
+
+def nearest_plate_format(width_m: float, height_m: float, tolerance: float, formats=None):
+    """(format name, (width_m, height_m), log error) of the nearest plate format (``formats``, default the text
+    plates'), or None beyond ``tolerance``."""
+    fits = fitting_plate_formats(width_m, height_m, tolerance, formats)
+    return fits[0] if fits else None
 
 
 def white_masks(bgr: np.ndarray, config) -> List[np.ndarray]:
@@ -179,13 +187,14 @@ def _plate_reading(pair: PairContext, sign: Detection, box, z: float, side: int,
     size = (bw * z / camera.fx, bh * z / camera.fy)
     templates = plate_templates(pair)
     plates = config.plates
-    fmt = nearest_plate_format(*size, plates.plate_size_tolerance, all_plate_formats(templates))
-    if fmt is not None and "@" in fmt[0]:  # a pictogram plate's size: if it shows that plate's drawing
-        shown = template_by_id(templates, fmt[0].split("@")[0])
+    fits = fitting_plate_formats(*size, plates.plate_size_tolerance, all_plate_formats(templates))
+    fmt = fits[0] if fits else None
+    if fmt is not None and "@" in fmt[0]:  # a drawn plate's size: if it shows one of the drawings of its size
+        drawn = {name.split("@")[0]: (name, wh, error) for name, wh, error in fits if "@" in name}
         seen_crop = pair.left[cy:cy + ch, cx:cx + cw]
         part_hidden = None if hidden is None else hidden[cy:cy + ch, cx:cx + cw]
-        if classify_plate(seen_crop, [shown], config, part_hidden)[0] is None:
-            fmt = nearest_plate_format(*size, plates.plate_size_tolerance)
+        shown = classify_plate(seen_crop, [t for t in templates if t.id in drawn], config, part_hidden)[0]
+        fmt = drawn[shown.id] if shown is not None else nearest_plate_format(*size, plates.plate_size_tolerance)
     if fmt is None:
         return None
     grey = cv2.cvtColor(pair.left[cy:cy + ch, cx:cx + cw], cv2.COLOR_BGR2GRAY)
@@ -350,25 +359,6 @@ def hidden_mask(bgr: np.ndarray, depth: np.ndarray, z: float, config) -> np.ndar
     return (coloured | nearer).astype(np.uint8)
 
 
-def crossing_occluders(not_white: np.ndarray, sign_columns: tuple, sign_width: int, config) -> np.ndarray:
-    """uint8 mask of the window's narrow vertical runs of ``not_white`` (uint8) pixels that cross it from top to
-    bottom within the sign's columns (``sign_columns``: first, last + 1 in the window): a lamp post or trunk in
-    front of sign and plate, whose depth is unknown where stereo matched only around the sign's colour."""
-    height = not_white.shape[0]
-    c0, c1 = max(0, sign_columns[0]), min(not_white.shape[1], sign_columns[1])
-    out = np.zeros_like(not_white)
-    span = int(config.plates.plate_occluder_span * height)
-    if c1 - c0 < 2 or span < 2:
-        return out
-    runs = cv2.morphologyEx(np.ascontiguousarray(not_white[:, c0:c1]), cv2.MORPH_OPEN, np.ones((span, 1), np.uint8),
-                            borderType=cv2.BORDER_CONSTANT, borderValue=0)  # beyond the window: no run
-    count, labels, stats, _ = cv2.connectedComponentsWithStats(runs, connectivity=4)
-    narrow = np.zeros(count, bool)
-    narrow[1:] = stats[1:, cv2.CC_STAT_WIDTH] <= config.plates.plate_occluder_max_width * sign_width
-    out[:, c0:c1] = narrow[labels].astype(np.uint8)
-    return out
-
-
 class _HiddenCanvas:
     """One image-sized mask per image size and thread, reused by every window (allocating and zeroing a
     full-frame mask per sign and side cost more than the plate search itself)."""
@@ -421,7 +411,7 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
             elsewhere[oy0:oy1, ox0:ox1] = True
     masks = white_masks(window, config)
     if masks:
-        in_window |= crossing_occluders(1 - masks[0], (x - x0, x + w - x0), w, config)
+        in_window |= crossing_occluders(1 - masks[0], (x - x0, x + w - x0), w, config.plates)
     hidden = _HiddenCanvas.of(pair.left.shape[:2])  # image-sized: the readings index it in image coordinates
     hidden[y0:y1, x0:x1] = in_window
     best = None
@@ -444,9 +434,12 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     crop = np.ascontiguousarray(pair.left[by:by + bh, bx:bx + bw])
     template_id, label, printed = PLATE_ID, PLATE_NAMES["de"], None
     pictogram, likeness = classify_plate(crop, plate_templates(pair), config, crop_hidden)
-    if pictogram is not None:  # its drawing's own size at the plate's width; its score is the likeness
+    if pictogram is not None:  # its drawing's own size at the plate's span; its score is the likeness
+        span = max(pw, ph)
         template_id, label, printed = pictogram.id, pictogram.name("de"), pictogram.text
-        (pw, ph), name, score = pictogram.size_m(pw), f"{pictogram.id}@{pw:.2f}", min(score, likeness)
+        (pw, ph), name, score = pictogram.size_m(span), f"{pictogram.id}@{span:.2f}", min(score, likeness)
+        if pictogram.field:  # a layout plate: OCR reads its text field alone
+            crop, printed = text_field_only(crop, pictogram.field), None
     return Detection(
         template_id=template_id, name=label, colour="white", shape="rectangle", width_m=pw, height_m=ph,
         format=name, detection_indicator=float(fill), classification_indicator=float(score),
@@ -454,6 +447,15 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
         position=locate(camera, pair.pose, u, v, z), source="plate", normal_world=sign.normal_world,
         plate_of=sign, crop=crop, printed_text=printed, crop_seen=seen,
     )
+
+
+def text_field_only(crop: np.ndarray, field: tuple) -> np.ndarray:
+    """The part of a layout plate's crop that is its text ``field`` (x0, y0, x1, y1, shares of the plate): what
+    OCR reads of it is the free text, not its arrows or pictogram, and at the size of a plate of its own (a text
+    as small as 5.02's among much blank paper is read as nothing at all)."""
+    h, w = crop.shape[:2]
+    x0, y0, x1, y1 = (int(round(f * n)) for f, n in zip(field, (w, h, w, h)))
+    return np.ascontiguousarray(crop[y0:max(y1, y0 + 1), x0:max(x1, x0 + 1)])
 
 
 def find_plates(pair: PairContext, depth: np.ndarray, signs: Sequence[Detection]) -> List[Detection]:

@@ -10,11 +10,13 @@ under its lowest sign (the mapped mounting height).
 
 A supplementary plate (a mapped feature with ``plate_of``) is written as Signalo
 models it: one more sign in its sign's frame, ranked by height (a plate below its
-sign comes after it), of its own official type: a pictogram plate by its SSV
-number (``5.31``), a text plate as ``5.00-1/2/3`` (one to three lines) with its
-lines as inscriptions, an exception plate ("ausgenommen ...") as
-``5.00-exception`` with what is excepted as inscriptions. A plate whose sign is
-not written by this export is reported, not written on its own.
+sign comes after it), of its own official type (its SSV id, ``plate_types``): a
+pictogram plate without inscription (``5.31``), a layout plate with its text
+(``5.03`` "2,5 km"), a text plate with its lines (``5.01`` "200 m", ``5.00-2``
+"Mo–Fr", "7–19 h"; ``5.00-exception`` with what is excepted), its parent
+(``fk_parent``) the sign it belongs to; a direction plate (``5.02-r``) as its
+Signalo id with its direction (``natural_direction_or_left``). A plate whose sign
+is not written by this export is reported, not written on its own.
 
 Everything happens in one transaction: all or nothing. Each sign's comment
 starts with a tag naming our run id and sign id, so exporting the same run
@@ -101,21 +103,21 @@ class ExportResult:
         return text
 
 
-def plate_type(plate: ExportSign, official_ids) -> Optional[tuple[str, list]]:
-    """(Signalo official sign id, inscriptions) of a supplementary plate, None if Signalo has no such type."""
+def plate_type(plate: ExportSign, official_ids) -> Optional[tuple[str, list, bool]]:
+    """(Signalo official sign id, inscriptions, natural direction or left) of a supplementary plate, None if
+    Signalo has no such type. A plate mapped untyped (``plate``: its text not read, or a run of before plates
+    were typed) is typed by its text here, a 5.00-1 without one."""
+    from ..catalogue.plates_ch import FREE_TEXT_PLATES, RIGHT, direction_of, signalo_id
     from ..plate_formats import PLATE_ID
-    from ..plate_text import EXCEPT_WORDS
+    from ..plate_types import inscriptions, text_plate_id
 
-    if plate.template_id != PLATE_ID:  # a pictogram plate, classified
-        mapped = to_signalo(plate.template_id, official_ids)
-        return None if mapped is None else (mapped[0], [mapped[1]] if mapped[1] else [])
-    lines = [line.strip() for line in (plate.text or "").split(" / ") if line.strip()]
-    if lines and lines[0].lower() in {w.lower() for w in EXCEPT_WORDS.values()}:
-        official, lines = "5.00-exception", lines[1:]
-    else:
-        official = f"5.00-{min(max(len(lines), 1), 3)}"
-        lines = lines[:2] + [" ".join(lines[2:])] if len(lines) > 3 else lines
-    return (official, lines[:4]) if official in official_ids else None
+    template_id = plate.template_id
+    if template_id == PLATE_ID:
+        template_id = text_plate_id(plate.text) if plate.text else FREE_TEXT_PLATES[0]
+    official = signalo_id(template_id)
+    if official not in official_ids:
+        return None
+    return official, inscriptions(template_id, plate.text), direction_of(template_id) != RIGHT
 
 
 def _circular_mean(degrees: Sequence[float]) -> float:
@@ -243,17 +245,22 @@ def _write_support(cursor, plan: SupportPlan, srid: int, run_id: str, types: dic
             d1, d2 = dimensions(sign)
             frame_id = _insert(cursor, "frame", {"fk_azimut": azimut_id, "rank": rank, "dimension_1": d1,
                                                  "dimension_2": d2, "_creation_user": USER})
-            for in_frame, member in enumerate(_in_frame(sign, plates), start=1):
-                official, inscriptions = types[member.sign_id]
+            members = _in_frame(sign, plates)
+            # the sign first, its plates then with it as their parent; each at its rank in the frame, top first
+            parent = None
+            for member in sorted(members, key=lambda m: m is not sign):
+                official, inscriptions, left = types[member.sign_id]
                 inscriptions = (inscriptions if isinstance(inscriptions, list) else [inscriptions]) + [None] * 4
                 m1, m2 = dimensions(member)
                 sign_uuid = _insert(cursor, "sign", {
-                    "fk_frame": frame_id, "rank": in_frame, "fk_sign_type": OFFICIAL_SIGN_TYPE,
-                    "fk_official_sign": official, "inscription_1": inscriptions[0], "inscription_2": inscriptions[1],
-                    "inscription_3": inscriptions[2], "dimension_1": m1, "dimension_2": m2,
-                    "comment": sign_comment(run_id, member), "needs_validation": member.status == REVIEW,
-                    "_creation_user": USER, "_last_modification_user": USER})
+                    "fk_frame": frame_id, "rank": members.index(member) + 1, "fk_sign_type": OFFICIAL_SIGN_TYPE,
+                    "fk_official_sign": official, "fk_parent": parent, "inscription_1": inscriptions[0],
+                    "inscription_2": inscriptions[1], "inscription_3": inscriptions[2], "dimension_1": m1,
+                    "dimension_2": m2, "natural_direction_or_left": left, "comment": sign_comment(run_id, member),
+                    "needs_validation": member.status == REVIEW, "_creation_user": USER,
+                    "_last_modification_user": USER})
                 written.append((member.sign_id, sign_uuid))
+                parent = parent or sign_uuid
     return written
 
 
@@ -304,8 +311,11 @@ def export_signs(connection, run_id: str, signs: Sequence[ExportSign], pole_radi
                 if sign.sign_id in done:
                     result.already.append(sign.sign_id)
                     continue
-                mapped = to_signalo(sign.template_id, official) if sign.plate_of is None else \
-                    plate_type(sign, official)
+                if sign.plate_of is None:
+                    signalo = to_signalo(sign.template_id, official)
+                    mapped = None if signalo is None else (*signalo, True)
+                else:
+                    mapped = plate_type(sign, official)
                 if mapped is None:
                     result.unknown.append((sign.sign_id, sign.template_id))
                     continue

@@ -57,6 +57,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--white-sign-share", type=float, default=d.white_sign_share,
                    help="share of sign poles with white and grey signs, plus white distractors "
                         f"(default {d.white_sign_share:g})")
+    p.add_argument("--plate-share", type=float, default=d.plate_share,
+                   help="share of sign poles whose lowest sign carries a supplementary plate, plus white text "
+                        f"plates on façades (default {d.plate_share:g})")
     p.add_argument("--quiet", action="store_true", help="no progress output")
     return p
 
@@ -70,7 +73,8 @@ def config_from_args(args: argparse.Namespace) -> SimulationConfig:
         angle_sigma_deg=args.angle_sigma, sign_density=args.sign_density,
         distractor_density=args.distractor_density, jpeg_quality=args.jpeg_quality, crs=args.crs,
         start_easting=args.start[0], start_northing=args.start[1], start_height=args.start[2],
-        face_artwork=args.face_artwork, master_share=args.master_share, white_sign_share=args.white_sign_share)
+        face_artwork=args.face_artwork, master_share=args.master_share, white_sign_share=args.white_sign_share,
+        plate_share=args.plate_share)
     if args.legacy_faces:
         for name, value in LEGACY_FACES.items():
             setattr(cfg, name, value)

@@ -53,8 +53,30 @@ def draw_plate(lines: Sequence[str], width_px: int, height_px: int, border: bool
     if border:
         line = max(1, round(0.025 * min(width_px, height_px)))
         draw.rectangle([inset, inset, width_px - 1 - inset, height_px - 1 - inset], outline=INK[::-1], width=line)
+    _set_lines(draw, lines, (2 * inset + 1, 2 * inset, width_px - 2 * inset - 1, height_px - 2 * inset))
+    return np.ascontiguousarray(np.asarray(image)[:, :, ::-1])
+
+
+def draw_in_field(bgr: np.ndarray, lines: Sequence[str], field: tuple, ink=INK) -> np.ndarray:
+    """A copy of the plate ``bgr`` with its text field (x0, y0, x1, y1, shares of the plate) painted over with
+    the paper's colour and ``lines`` set in it, centred, as large as fit (a layout plate's free text)."""
+    from PIL import Image, ImageDraw
+
+    h, w = bgr.shape[:2]
+    x0, y0, x1, y1 = (int(round(f * n)) for f, n in zip(field, (w, h, w, h)))
+    out = bgr.copy()
+    paper = np.median(bgr.reshape(-1, 3), axis=0)  # the plate's paper: most of it
+    out[y0:y1, x0:x1] = paper.astype(np.uint8)
+    image = Image.fromarray(np.ascontiguousarray(out[:, :, ::-1]))
+    _set_lines(ImageDraw.Draw(image), lines, (x0, y0, x1, y1), ink)
+    return np.ascontiguousarray(np.asarray(image)[:, :, ::-1])
+
+
+def _set_lines(draw, lines: Sequence[str], box: tuple, ink=INK) -> None:
+    """Set ``lines`` of text centred in ``box`` (x0, y0, x1, y1 pixels) of a Pillow drawing, as large as fits."""
+    x0, y0, x1, y1 = box
     lines = [t for t in lines if t] or [""]
-    room_w, room_h = width_px - 4 * inset - 2, (height_px - 4 * inset) / len(lines)
+    room_w, room_h = x1 - x0, (y1 - y0) / len(lines)
     size = max(6, int(room_h * 0.78))
     while size > 6:
         font = text_font(size)
@@ -63,8 +85,5 @@ def draw_plate(lines: Sequence[str], width_px: int, height_px: int, border: bool
             break
         size -= 1
     font = text_font(size)
-    top = (height_px - room_h * len(lines)) / 2
     for k, text in enumerate(lines):
-        cy = top + room_h * (k + 0.5)
-        draw.text((width_px / 2, cy), text, fill=INK[::-1], font=font, anchor="mm")
-    return np.ascontiguousarray(np.asarray(image)[:, :, ::-1])
+        draw.text(((x0 + x1) / 2, y0 + room_h * (k + 0.5)), text, fill=tuple(ink[::-1]), font=font, anchor="mm")

@@ -1,16 +1,20 @@
 """Supplementary plates under signs, and white distractors, in a synthetic street.
 
 A plate hangs right below the lowest sign of some poles, as wide as the sign
-(``plate_formats_for``), one or two lines high, with a text in German, French or
-Italian: a distance, a time, weekdays, an exception; or, for some, a pictogram
-plate printed from its official drawing (``plate_catalogue``), worn like the
-sign faces. Its truth row names its sign (``plate_of``), its id (``plate`` for a
-text plate, the SSV number of a pictogram plate) and its text, lines joined by
-" / ", exactly as the normalised OCR output writes it (a pictogram plate: the
-words of its drawing). White distractors (house-number and notice plates on
-façades, with text) are white rectangles no sign stands above. Plates and
-distractors draw from random streams of their own, so the rest of the scene is
-the same with or without them.
+(``plate_formats_for``). It is one of the three kinds of ``catalogue.plates_ch``:
+a text plate (one to three lines in German, French or Italian: a distance, a
+time, weekdays, an exception) set in a real font; a layout plate, its official
+drawing printed with its own free text in its text field (5.03's length between
+the arrows); or a pictogram plate printed from its official drawing, every one of
+the official set alike. Drawings are printed in colour and worn like the sign
+faces. Its truth row names its sign (``plate_of``), its SSV id (a text plate's by
+what it says: 5.01 a distance, 5.00-exception an exception, 5.00-1/2/3 any other
+text by its lines) and its text, lines joined by " / ", exactly as the normalised
+OCR output writes it (a layout plate: its free text; a pictogram plate: the words
+of its drawing). White distractors (house-number and notice plates on façades,
+with text) are white rectangles no sign stands above. Plates and distractors draw
+from random streams of their own, so the rest of the scene is the same with or
+without them.
 """
 
 from __future__ import annotations
@@ -18,14 +22,15 @@ from __future__ import annotations
 import numpy as np
 
 from ..drive import TruthSign
-from ..plate_formats import PLATE_ID, plate_formats_for
+from ..plate_formats import plate_formats_for
 from ..plate_text import EXCEPT_WORDS, WEEKDAYS
-from .plate_faces import draw_plate
+from .plate_faces import draw_in_field, draw_plate
 from .surfaces import Texture, TextureSource, rect_surface
 
 UP = np.array([0.0, 0.0, 1.0])
 PLATE_MAX_GAP_M = 0.06  # between a sign's lower edge and its plate's upper edge (at least 2 cm)
-PICTOGRAM_SHARE = 0.3  # of the plates: a pictogram plate (SSV 5.xx drawing) instead of a text plate
+# of the plates: text plates, layout plates (a drawing with free text), pictogram plates (a drawing alone)
+KIND_SHARES = (("text", 0.45), ("layout", 0.2), ("pictogram", 0.35))
 LANGUAGE_SHARES = (("de", 0.6), ("fr", 0.25), ("it", 0.15))
 DISTANCES_M = (20, 30, 50, 80, 100, 150, 200, 250, 300, 400, 500, 800)
 EXCEPTIONS = {
@@ -33,12 +38,31 @@ EXCEPTIONS = {
     "fr": ("riverains", "livraisons", "cycles", "bus", "taxi"),
     "it": ("confinanti", "biciclette", "bus", "taxi"),
 }
+BICYCLES = {"Velos", "cycles", "biciclette"}  # a 5.31-3 (bicycles and ...) already excepts them
+# the free text of the layout plates, by Signalo id: what each says
+LAYOUT_TEXTS = {
+    "5.02": tuple(f"{d} m" for d in DISTANCES_M),  # distance to where the arrow turns
+    "5.03": ("200 m", "300 m", "500 m", "800 m", "1,2 km", "2,5 km", "4 km"),  # length of the stretch
+    "5.15": ("2,30 m", "2,50 m", "2,80 m", "3,20 m", "3,50 m"),  # width of the carriageway
+    "5.17": ("12 km", "25 km", "31 km", "48 km", "60 km"),  # to the next fuel station but one
+}
+# a text plate: (what it says, share of the text plates, its SSV id)
+TEXT_KINDS = (("distance", 0.28, "5.01"), ("hours", 0.12, "5.00-1"), ("days", 0.08, "5.00-1"),
+              ("days_hours", 0.17, "5.00-2"), ("days_two_times", 0.07, "5.00-3"),
+              ("except", 0.28, "5.00-exception"))
+SECOND_EXCEPTION_SHARE = 0.3  # of the exception plates: two things excepted, on two lines
 STREETS = ("Bahnhofstrasse", "Hauptstrasse", "Rue du Lac", "Via Cantonale", "Dorfplatz", "Kirchweg")
 
 
 def _language(rng) -> str:
     names, shares = zip(*LANGUAGE_SHARES)
     return str(rng.choice(names, p=np.array(shares) / sum(shares)))
+
+
+def _choice(rng, table):
+    """One row of ``table`` (rows whose second item is their share), drawn by share."""
+    shares = np.array([row[1] for row in table], float)
+    return table[int(rng.choice(len(table), p=shares / shares.sum()))]
 
 
 def _hours(rng) -> str:
@@ -51,29 +75,49 @@ def _days(rng, language) -> str:
     return f"{days[0]}–{days[int(rng.choice([4, 5]))]}"
 
 
-def plate_lines(rng, language: str = "") -> list:
-    """The lines of a plate's text, in the spelling normalised OCR output has (``language`` drawn if not given)."""
+def text_plate(rng, language: str = "") -> tuple:
+    """(SSV id, lines) of a text plate, the lines in the spelling normalised OCR output has (``language`` drawn if
+    not given)."""
     language = language or _language(rng)
-    kind = rng.choice(["distance", "hours", "days", "days_hours", "except"], p=[0.3, 0.15, 0.1, 0.2, 0.25])
+    kind, _, ssv = _choice(rng, TEXT_KINDS)
     if kind == "distance":
-        return [f"{int(rng.choice(DISTANCES_M))} m"]
+        return ssv, [f"{int(rng.choice(DISTANCES_M))} m"]
     if kind == "hours":
-        return [_hours(rng)]
+        return ssv, [_hours(rng)]
     if kind == "days":
-        return [_days(rng, language)]
+        return ssv, [_days(rng, language)]
     if kind == "days_hours":
-        return [_days(rng, language), _hours(rng)]
-    what = str(rng.choice(EXCEPTIONS[language]))
-    return [EXCEPT_WORDS[language], what]
+        return ssv, [_days(rng, language), _hours(rng)]
+    if kind == "days_two_times":
+        return ssv, [_days(rng, language), f"{int(rng.choice([7, 8]))}–12 h", f"{int(rng.choice([13, 14]))}–18 h"]
+    excepted = [str(w) for w in rng.permutation(EXCEPTIONS[language])]
+    count = 2 if rng.random() < SECOND_EXCEPTION_SHARE else 1
+    return ssv, [EXCEPT_WORDS[language]] + excepted[:count]
 
 
-def pictogram_plate(rng, language: str):
-    """A pictogram plate template (SSV 5.xx drawing) in the plate's language version (German where the drawing
-    has no other), or None when the catalogue has none."""
+def plate_lines(rng, language: str = "") -> list:
+    """The lines of a text plate (:func:`text_plate`)."""
+    return text_plate(rng, language)[1]
+
+
+def layout_text(rng, template, language: str) -> str:
+    """The free text a layout plate carries in its field."""
+    from ..catalogue.plates_ch import signalo_id
+
+    official = signalo_id(template.id)
+    if official in LAYOUT_TEXTS:
+        return str(rng.choice(LAYOUT_TEXTS[official]))
+    # 5.31-3: bicycles and something else excepted
+    return str(rng.choice([w for w in EXCEPTIONS[language] if w not in BICYCLES]))
+
+
+def drawn_plate(rng, language: str, kind: str):
+    """A plate template of ``kind`` (pictogram or layout), each id alike, in the plate's language version (German
+    where the drawing has no other), or None when the catalogue has none."""
     from ..catalogue.model import DEFAULT_CATALOGUE_DIR
     from ..plate_catalogue import load_plate_templates
 
-    templates = load_plate_templates(DEFAULT_CATALOGUE_DIR)
+    templates = [t for t in load_plate_templates(DEFAULT_CATALOGUE_DIR) if t.kind == kind]
     ids = sorted({t.id for t in templates})
     if not ids:
         return None
@@ -82,21 +126,26 @@ def pictogram_plate(rng, language: str):
     return variants.get(language) or variants.get("de") or next(iter(variants.values()))
 
 
-def pictogram_face(template, width_px: int, height_px: int, rng) -> np.ndarray:
-    """BGR of a physical pictogram plate printed from its drawing: placed on the blank with a small error, its
-    own print run, UV ageing and grime (as the drives' sign faces get), never the template's pixels."""
+def pictogram_face(template, width_px: int, height_px: int, rng, text: str = "") -> np.ndarray:
+    """BGR of a physical plate printed from its drawing (in colour), a layout plate's ``text`` set in its field:
+    placed on the blank with a small error, its own print run, UV ageing and grime (as the drives' sign faces
+    get), never the template's pixels."""
     import cv2
 
     from . import face_dirt, face_print, face_wear
     from .face_layers import ink_layers
 
-    grey = cv2.resize(template.grey, (width_px, height_px), interpolation=cv2.INTER_AREA
-                      if width_px < template.grey.shape[1] else cv2.INTER_LINEAR)
+    master = cv2.imread(template.png) if template.png else None
+    if master is None:  # a template without its file (a test's): its grey
+        master = cv2.cvtColor(template.grey, cv2.COLOR_GRAY2BGR)
+    bgr = cv2.resize(master, (width_px, height_px), interpolation=cv2.INTER_AREA
+                     if width_px < master.shape[1] else cv2.INTER_LINEAR)
+    if template.field:
+        bgr = draw_in_field(bgr, [text], template.field)
     matrix = cv2.getRotationMatrix2D(((width_px - 1) / 2.0, (height_px - 1) / 2.0), rng.uniform(-0.5, 0.5),
                                      1.0 + rng.uniform(-0.01, 0.01))
     matrix[:, 2] += rng.uniform(-0.006, 0.006, 2) * (width_px, height_px)
-    grey = cv2.warpAffine(grey, matrix, (width_px, height_px), borderMode=cv2.BORDER_REPLICATE)
-    bgr = cv2.cvtColor(grey, cv2.COLOR_GRAY2BGR)
+    bgr = cv2.warpAffine(bgr, matrix, (width_px, height_px), borderMode=cv2.BORDER_REPLICATE)
     labels = ink_layers(bgr)
     img = face_print.print_variation(bgr.astype(np.float32), labels, rng, float(rng.uniform(0.3, 1.0)),
                                      width_px / 0.6)
@@ -128,28 +177,30 @@ def add_plate(pieces, look, host, centre, facing_deg: float, tilt_deg: float, si
     if host.truth is None or rng.random() >= look.plate_share:
         return []
     language = _language(rng)
-    pictogram = pictogram_plate(rng, language) if rng.random() < PICTOGRAM_SHARE else None
+    kind = _choice(rng, KIND_SHARES)[0]
+    drawn = drawn_plate(rng, language, kind) if kind != "text" else None
     formats = plate_formats_for(float(sign_fmt[1]))
-    if pictogram is None:
-        lines = plate_lines(rng, language)
+    if drawn is None:
+        template_id, lines = text_plate(rng, language)
         name = next((n for n in formats if n.endswith(f"-{len(lines)}")), max(formats))
         width_m, height_m = formats[name]
-        template_id, text = PLATE_ID, " / ".join(lines)
+        text = " / ".join(lines)
     else:
-        width_m, height_m = pictogram.size_m(next(iter(formats.values()))[0])
-        template_id, text, lines = pictogram.id, pictogram.text, []
+        width_m, height_m = drawn.size_m(next(iter(formats.values()))[0])
+        template_id, lines = drawn.id, []
+        text = layout_text(rng, drawn, language) if drawn.field else drawn.text
     phi, tau = np.radians(facing_deg), np.radians(tilt_deg)
     n_h = np.array([np.sin(phi), np.cos(phi), 0.0])
     right = np.array([-np.cos(phi), np.sin(phi), 0.0])
     up = UP * np.cos(tau) - n_h * np.sin(tau)
     gap = rng.uniform(0.02, PLATE_MAX_GAP_M)
     plate_centre = centre - up * (sign_fmt[2] / 2 + gap + height_m / 2)
-    size_px = int(np.clip(look.fx * width_m / 2.5, 64, 720))
+    size_px = int(np.clip(look.fx * max(width_m, height_m) / 2.5, 64, 720))
     fh, fw = face_shape(size_px, width_m, height_m)
     face_rng = np.random.default_rng(rng.integers(1 << 32))
 
     def make_face():
-        printed = draw_plate(lines, fw, fh) if pictogram is None else pictogram_face(pictogram, fw, fh, face_rng)
+        printed = draw_plate(lines, fw, fh) if drawn is None else pictogram_face(drawn, fw, fh, face_rng, text)
         return Texture(_weathered(printed, face_rng))
 
     face = rect_surface(plate_centre - right * width_m / 2 + up * height_m / 2, right * width_m, -up * height_m,

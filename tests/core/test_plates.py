@@ -16,7 +16,7 @@ from signmapper_core.evaluation import evaluate
 from signmapper_core.fusion import FusionConfig
 from signmapper_core.geometry import Camera, Pose, world_to_pixel
 from signmapper_core.mapping import map_drive
-from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable
+from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable, read_texts
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.boxes import box_iou
 from signmapper_core.pipeline.config import PlateConfig
@@ -28,6 +28,7 @@ from signmapper_core.plate_catalogue import load_plate_templates
 from signmapper_core.plate_evaluation import evaluate_plates
 from signmapper_core.plate_formats import PLATE_ID
 from signmapper_core.plate_fusion import read_plate_texts
+from signmapper_core.plate_text import normalise_text
 from signmapper_core.simulate.plate_faces import PAPER, draw_plate
 from signmapper_core.simulate.plate_layout import pictogram_face
 from signmapper_core.visibility import mappable_signs
@@ -180,6 +181,64 @@ def test_a_pictogram_plate_is_classified_by_its_drawing_and_takes_its_size(catal
     assert plate.printed_text == template.text and plate.classification_indicator > 0.6
 
 
+def test_a_layout_plate_is_typed_by_its_drawing_and_its_crop_holds_only_its_text_field(catalogue):
+    templates = load_plate_templates(catalogue.folder)
+    template = next(t for t in templates if (t.id, t.variant) == ("5.03", "de"))
+    face = pictogram_face(template, 480, int(round(480 / template.aspect)), np.random.default_rng(2), "2,5 km")
+    pose = pose_at(0.0)
+    left, depth, box = scene(catalogue, pose, plate_size=template.size_m(0.60), plate_face=face)
+    (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
+    assert plate.template_id == "5.03" and plate.printed_text is None  # its text is read, not printed words
+    assert (plate.width_m, plate.height_m) == template.size_m(0.60) and box_iou(plate.bbox, box) > 0.8
+    x, y, w, h = plate.bbox  # the crop is its text field: between the arrows, the digits
+    x0, y0, x1, y1 = template.field
+    assert plate.crop.shape[:2] == (round(y1 * h) - round(y0 * h), round(x1 * w) - round(x0 * w))
+    grey = cv2.cvtColor(plate.crop, cv2.COLOR_BGR2GRAY)
+    assert (grey < 0.6 * np.median(grey)).mean() > 0.1
+    assert normalise_text(read_texts([plate.crop])[0].lines) == "2,5 km"
+
+
+def test_a_plate_printed_in_colour_is_told_although_its_colour_counts_as_hidden_in_front(catalogue):
+    """The plate step takes coloured pixels for something in front of a white plate (a branch): they are left
+    out of the comparison, which still tells 5.10 by its black print; 5.56 (a blue star of life in a blue frame)
+    has nearly none, and is told by the crop as seen."""
+    templates = load_plate_templates(catalogue.folder)
+    assert {t.id for t in templates if t.coloured} >= {"5.10", "5.56"} and not template_of(templates, "5.20").coloured
+    for plate_id in ("5.10", "5.56"):
+        template = template_of(templates, plate_id)
+        h = 60
+        w = int(round(h * template.aspect))
+        face = pictogram_face(template, w, h, np.random.default_rng(3))
+        coloured = (cv2.cvtColor(face, cv2.COLOR_BGR2HSV)[:, :, 1] > PlateConfig().plate_max_saturation)
+        assert 0.1 < coloured.mean() < 0.5
+        found, score = classify_plate(face, templates, PipelineConfig(), coloured.astype(np.uint8))
+        assert found.id == plate_id and score > 0.8
+    only_hidden = replace(template, coloured=False)  # 5.56 without its coloured print: a white square
+    assert max(pictogram_scores(face, [only_hidden], PipelineConfig(), coloured.astype(np.uint8))) < 0.5
+
+
+def test_a_pole_in_front_of_a_plate_is_left_out_of_the_comparison(catalogue):
+    """A pale post crossing the plate from top to bottom whose depth is unknown: the plate step kept it as the
+    plate's paper; the comparison tries it as hidden."""
+    templates = load_plate_templates(catalogue.folder)
+    template = template_of(templates, "5.31-2")
+    h = 60
+    w = int(round(h * template.aspect))
+    face = pictogram_face(template, w, h, np.random.default_rng(4))
+    face[:, int(0.375 * w):int(0.625 * w)] = 120  # a grey pole over "ausgenommen" and the bicycle
+    found, score = classify_plate(face, templates, PipelineConfig())
+    assert found.id == "5.31-2" and score > PipelineConfig().plates.plate_pictogram_min_score
+    no_poles = PipelineConfig(plates=PlateConfig(plate_occluder_contrast=0.0))
+    assert classify_plate(face, templates, no_poles)[0] is None  # as the plate step saw it: a text plate
+    upright = template_of(templates, "5.05")  # its arrow runs top to bottom: still told
+    arrow = pictogram_face(upright, 24, int(round(24 / upright.aspect)), np.random.default_rng(5))
+    assert classify_plate(arrow, templates, PipelineConfig())[0].id == "5.05"
+
+
+def template_of(templates, plate_id, variant="de"):
+    return next(t for t in templates if (t.id, t.variant) == (plate_id, variant))
+
+
 def test_a_pictogram_plate_partly_hidden_by_a_branch_is_classified_by_what_is_seen(catalogue):
     templates = load_plate_templates(catalogue.folder)
     template = next(t for t in templates if (t.id, t.variant) == ("5.31-1", "de"))
@@ -192,8 +251,9 @@ def test_a_pictogram_plate_partly_hidden_by_a_branch_is_classified_by_what_is_se
     depth[y - 10:y + h + 10, x - 5:x - 5 + w // 3] = np.nan
     (plate,) = [d for d in _detect(catalogue, left, depth, pose) if d.is_plate]
     assert plate.template_id == "5.31-1" and plate.printed_text == "gestattet" and box_iou(plate.bbox, box) > 0.8
-    # the branch counted: no pictogram plate
-    assert max(pictogram_scores(plate.crop, templates, PipelineConfig())) < 0.6
+    # the branch counted as dark print: no pictogram plate (unless taken for a pole in front, as it runs across)
+    as_print = PipelineConfig(plates=PlateConfig(plate_occluder_contrast=0.0))
+    assert max(pictogram_scores(plate.crop, templates, as_print)) < 0.6
 
 
 def test_a_box_around_a_pictogram_plates_frame_needs_an_inset_and_a_plate_must_be_seen_enough(catalogue):
@@ -391,15 +451,15 @@ def test_a_post_of_unknown_depth_in_front_of_sign_and_plate_hides_the_part_of_th
 
 
 def test_crossing_posts_are_narrow_and_run_the_whole_window_within_the_signs_columns():
-    from signmapper_core.pipeline.plates import crossing_occluders
+    from signmapper_core.pipeline.plate_classify import crossing_occluders
 
     not_white = np.zeros((100, 80), np.uint8)
     not_white[:, 30:36] = 1  # a post from top to bottom
     not_white[40:, 50:54] = 1  # the sign's own pole, from the sign's lower edge down
     not_white[:, 60:79] = 1  # a wall beside the sign: too wide
-    found = crossing_occluders(not_white, (20, 80), 60, PipelineConfig())
+    found = crossing_occluders(not_white, (20, 80), 60, PlateConfig())
     assert np.flatnonzero(found.any(axis=0)).tolist() == list(range(30, 36))
-    assert not crossing_occluders(not_white, (40, 80), 60, PipelineConfig()).any()  # outside the sign's columns
+    assert not crossing_occluders(not_white, (40, 80), 60, PlateConfig()).any()  # outside the sign's columns
 
 
 def test_level_pieces_are_grouped_with_what_lies_between_them():
@@ -425,8 +485,8 @@ def _write_drive(root, catalogue, lines=("200 m",), n=3):
     facing = (HEADING + 180.0) % 360.0
     plate = centre + [0.0, 0.0, -(0.30 + 0.04 + 0.10)]
     write_truth_csv(root, [TruthSign("s1", "2.30-50", *centre, 0.6, 0.6, facing),
-                           TruthSign("s2", PLATE_ID, *plate, 0.6, 0.2, facing, plate_of="s1", text=" / ".join(lines)),
-                           TruthSign("s3", PLATE_ID, *(plate + [30.0, 0, 0]), 0.6, 0.2, facing, plate_of="s1",
+                           TruthSign("s2", "5.01", *plate, 0.6, 0.2, facing, plate_of="s1", text=" / ".join(lines)),
+                           TruthSign("s3", "5.00-1", *(plate + [30.0, 0, 0]), 0.6, 0.2, facing, plate_of="s1",
                                      text="never in view")])
     return open_drive(root)
 
@@ -440,8 +500,8 @@ def test_a_plate_seen_in_three_pairs_is_one_feature_linked_to_its_sign_with_its_
     assert [s.template_id for s in signs] == ["2.30-50"] and len(plates) == 1
     (sign,), (plate,) = signs, plates
     assert plate.plate_of == sign.sign_id and plate.sign_id == sign.sign_id + 1
-    assert plate.n_obs == 3 and plate.template_id == PLATE_ID
-    assert plate.text == "200 m" and plate.text_confidence > 0.7
+    assert plate.n_obs == 3 and plate.text == "200 m" and plate.text_confidence > 0.7
+    assert plate.template_id == "5.01"  # a distance plate: typed by what it says
     assert sign.text == "50" and sign.status == "accepted"  # its digits read by OCR agree with its id
     plate_detections = [o for o in result.detections if o.sign_id == plate.sign_id]
     assert len(plate_detections) == 3
@@ -452,6 +512,7 @@ def test_a_plate_seen_in_three_pairs_is_one_feature_linked_to_its_sign_with_its_
     evidence = []
     figures = evaluate_plates(drive, result.signs, reference, report.match, evidence=evidence)
     assert (figures.reference, figures.detected, figures.links_right, figures.false_positives) == (1, 1, 1, 0)
+    assert (figures.text, figures.text_typed, figures.typed_right) == (1, 1, 1)
     assert (figures.readable, figures.texts_right) == (1, 1)  # 0.2 m at 8 m: 44 px high
     assert evidence == []  # nothing missed, linked or read wrong
 
@@ -464,6 +525,7 @@ def test_without_tesseract_plates_are_mapped_and_the_run_says_once_how_to_instal
     result = map_drive(drive, catalogue, PipelineConfig(), warn=messages.append, workers=1)
     plates = [s for s in result.signs if s.plate_of is not None]
     assert len(plates) == 1 and plates[0].text is None and plates[0].text_confidence is None
+    assert plates[0].template_id == PLATE_ID  # not read: untyped
     about_plates = [m for m in messages if "plate" in m]
     assert len(about_plates) == 1 and INSTALL_HINT in about_plates[0]
     signs = [s for s in result.signs if s.plate_of is None]
@@ -472,7 +534,7 @@ def test_without_tesseract_plates_are_mapped_and_the_run_says_once_how_to_instal
                       [r.template_id for r in reference], [[0, 0], [1, 1]], 0.75)
     evidence = []
     evaluate_plates(drive, result.signs, reference, report.match, evidence=evidence)
-    assert len(evidence) == 1 and "text wrong; truth plate '200 m'; mapped plate None" in evidence[0]
+    assert len(evidence) == 1 and "typed wrong, text wrong; truth 5.01 '200 m'; mapped plate None" in evidence[0]
 
 
 def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
@@ -481,7 +543,7 @@ def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
 
     class Obs:
         def __init__(self, height):
-            self.bbox = (0, 0, 2 * height, height)
+            self.bbox, self.template_id = (0, 0, 2 * height, height), PLATE_ID
             self.detection = type("D", (), {"crop": np.full((height, 2 * height, 3), 200, np.uint8)})()
 
     def plate(heights):
@@ -501,7 +563,9 @@ def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
     assert calls == [[50, 45, 40, 60]]  # the three nearest of the first, all in one call
     assert a.text == "200 m" and a.text_confidence == pytest.approx((0.9 + 0.8) / 3)  # "ZOO m" disagrees
     assert b.text == "Mo–Fr"
+    assert (a.template_id, b.template_id) == ("5.01", "5.00-1")  # typed by what they say
     calls.clear()
+    a.template_id = PLATE_ID
     assert read_plate_texts([a], read=fake_read, config=FusionConfig(plate_readings=1)) == 1
     assert calls == [[50]] and a.text == "200 m" and a.text_confidence == pytest.approx(0.9)  # the nearest alone
 
@@ -524,6 +588,14 @@ def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
     assert read_plate_texts([pictogram, bare], read=fake_read) == 1 and calls == []
     assert pictogram.text == "ausgenommen" and pictogram.text_confidence == pytest.approx(2 / 3)
     assert bare.text is None and bare.text_confidence is None
+
+    # a layout plate's text field is read, from its views of its own id only (the others' crops hold all of it)
+    layout = plate([50, 45, 60])
+    layout.template_id = "5.03"
+    for obs, own in zip(layout.observations, (True, True, False)):
+        obs.template_id, obs.detection.printed_text = ("5.03", None) if own else (PLATE_ID, None)
+    assert read_plate_texts([layout], read=fake_read) == 1 and calls == [[50, 45]]
+    assert layout.template_id == "5.03" and layout.text == "200 m"
 
 
 def test_a_reading_in_a_form_plates_print_outweighs_a_surer_misreading():
@@ -571,7 +643,7 @@ def test_a_plates_text_is_read_from_the_views_that_saw_it_whole_before_larger_cu
 
     class Obs:
         def __init__(self, height, seen):
-            self.bbox = (0, 0, 2 * height, height)
+            self.bbox, self.template_id = (0, 0, 2 * height, height), PLATE_ID
             self.detection = type("D", (), {"crop": np.full((height, 2 * height, 3), 200, np.uint8),
                                             "crop_seen": seen})()
 

@@ -85,31 +85,41 @@ def plate(plate_id, of, template_id, text, dz, ahead=20.0, height=0.2):
 
 
 PLATES = [
-    plate(11, 2, "plate", "Mo–Fr / 7–19 h", -0.35 - 0.3 - 0.2, height=0.3),  # below 3.05, the lower sign of pole 1
-    plate(12, 1, "plate", "200 m", 0.35 + 0.3 + 0.15),  # above 2.30-50
-    plate(13, 3, "plate", "ausgenommen / Zubringerdienst", -0.6, ahead=35.0, height=0.3),
+    plate(11, 2, "5.00-2", "Mo–Fr / 7–19 h", -0.35 - 0.3 - 0.2, height=0.3),  # below 3.05, the lower sign of pole 1
+    plate(12, 1, "5.01", "200 m", 0.35 + 0.3 + 0.15),  # above 2.30-50
+    plate(13, 3, "5.00-exception", "ausgenommen / Zubringerdienst", -0.6, ahead=35.0, height=0.3),
     plate(14, 4, "5.31", None, -0.6, ahead=50.0),  # a pictogram plate: bicycles
-    plate(15, 5, "plate", "50 m", -0.45, ahead=60.0),  # its sign 2.10 is not in Signalo
+    plate(15, 5, "5.01", "50 m", -0.45, ahead=60.0),  # its sign 2.10 is not in Signalo
+    plate(16, 6, "5.02-r", "150 m", -0.6, ahead=35.05, height=0.42),  # a direction plate, pointing right
+    plate(17, 1, "plate", "excepté / bus / taxi", 0.35 + 0.3 + 0.15 + 0.25),  # untyped: typed by its text
 ]
 
 PLATE_ROWS = """SELECT s.comment, s.fk_official_sign, s.inscription_1, s.inscription_2, s.rank, s.fk_frame,
-       s.dimension_1, s.dimension_2 FROM signalo_db.sign s"""
+       s.dimension_1, s.dimension_2, s.fk_parent, s.id, s.natural_direction_or_left FROM signalo_db.sign s"""
 
 
 def test_plates_are_written_into_their_signs_frame_as_their_official_type(signalo_database):
     dsn = signalo_database("plates")
     result = export_signs(connect(dsn), RUN, SIGNS + PLATES)
-    assert sorted(i for i, _ in result.added) == [1, 2, 3, 4, 6, 11, 12, 13, 14]
+    assert sorted(i for i, _ in result.added) == [1, 2, 3, 4, 6, 11, 12, 13, 14, 16, 17]
     assert result.plates_without_sign == [(15, 5)] and result.supports == 3
     assert "1 plates not written (their sign is not written by this export: plate 15 of sign 5)" in result.summary()
     by_sign = {int(r[0].split("sign=")[1].split("]")[0]): r[1:] for r in rows(dsn, PLATE_ROWS)}
     assert by_sign[11][:4] == ("5.00-2", "Mo–Fr", "7–19 h", 2) and by_sign[11][4] == by_sign[2][4]
     assert by_sign[2][3] == 1  # the sign first in its frame, its plate below it second
-    assert by_sign[12][:4] == ("5.00-1", "200 m", None, 1) and by_sign[1][3] == 2  # a plate above: first
+    assert by_sign[17][:4] == ("5.00-exception", "bus", "taxi", 1)  # two plates above 2.30-50: the top one first
+    assert by_sign[12][:4] == ("5.01", "200 m", None, 2) and by_sign[1][3] == 3
     assert by_sign[12][4] == by_sign[1][4] != by_sign[2][4]
     assert by_sign[13][:3] == ("5.00-exception", "Zubringerdienst", None)
-    assert by_sign[14][:2] == ("5.31", None) and by_sign[14][4] == by_sign[4][4]
+    assert by_sign[14][:3] == ("5.31", None, None) and by_sign[14][4] == by_sign[4][4]
     assert (float(by_sign[11][5]), float(by_sign[11][6])) == (0.3, 0.6)  # a rectangle: height, width
+    # each plate's parent is the sign of its frame; signs have none
+    for plate_id, sign_id in ((11, 2), (12, 1), (13, 3), (14, 4), (16, 6), (17, 1)):
+        assert by_sign[plate_id][7] == by_sign[sign_id][8]
+    assert all(by_sign[i][7] is None for i in (1, 2, 3, 4, 6))
+    # a direction plate: Signalo's id, its direction on the sign (left, Signalo's default, for every other sign)
+    assert by_sign[16][:3] == ("5.02", "150 m", None) and by_sign[16][9] is False
+    assert all(by_sign[i][9] is True for i in by_sign if i != 16)
     comment = rows(dsn, "SELECT comment FROM signalo_db.sign WHERE fk_official_sign = '5.00-2'")[0][0]
     assert 'plate of sign 2, text "Mo–Fr / 7–19 h"' in comment
     frames = rows(dsn, "SELECT count(*) FROM signalo_db.frame")[0][0]

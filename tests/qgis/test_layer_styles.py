@@ -116,7 +116,8 @@ def test_legend_groups_the_pictograms_by_sign_family(styles):
     assert labels == ["Signaux de danger", "Signaux de priorité", "Interdictions", "Prescriptions",
                       "Signaux d'indication", "Plaque complémentaire", "other"]
     assert sum(len(g.children()) for g in groups[:-2]) == len(catalogue)
-    assert groups[-2].filterExpression() == "\"template_id\" = 'plate'"  # supplementary plates: one rule
+    # supplementary plates: one rule, typed or not
+    assert groups[-2].filterExpression() == "\"plate_of\" IS NOT NULL OR \"template_id\" = 'plate'"
     danger = {r.label().split(" ", 1)[0] for r in groups[0].children()}
     assert "1.01" in danger and "2.30-50" not in danger
     mandatory = {r.label().split(" ", 1)[0] for r in groups[3].children()}

@@ -579,10 +579,19 @@ def test_a_plate_shows_its_sign_and_text_and_a_person_corrects_the_text(review, 
     assert (after["text"], after["text_confidence"], after["status"], after["reviewed"]) == ("200 m", 1.0,
                                                                                               "accepted", 1)
     assert after["plate_of"] == host  # still the plate of its sign
+    assert (after["template_id"], after["name"]) == ("5.01", "Distanztafel")  # typed by what it now says
     dock.undoRequested.emit()
     wait_idle(controller)
     restored = on_disk(gpkg, "signs")[plate.id()]
-    assert (restored["text"], restored["status"]) == (before["text"], before["status"])
+    assert (restored["text"], restored["status"], restored["template_id"]) == (before["text"], before["status"],
+                                                                               "plate")
+    pictogram = next(f for f in layer.getFeatures() if f["template_id"] == "5.31-2")
+    select(controller, layer, pictogram.id())
+    dock.plate_text.setText("excepté")
+    dock.set_text_button.click()
+    wait_idle(controller)
+    assert on_disk(gpkg, "signs")[pictogram.id()]["template_id"] == "5.31-2"  # a drawing's id stays
+    select(controller, layer, plate.id())
     dock.rejectRequested.emit()  # a plate that is none: rejected like a sign
     wait_idle(controller)
     assert on_disk(gpkg, "signs")[plate.id()]["status"] == "rejected"
