@@ -1,4 +1,10 @@
-"""Shared idioms of Sign Mapper's algorithms: groups, help, dependency check, feedback."""
+"""Shared idioms of Sign Mapper's algorithms: groups, help, dependency check, safe outputs, feedback.
+
+Every algorithm implements :meth:`SignMapperAlgorithm.process`; the base class's
+``processAlgorithm`` checks the paths, runs it inside :class:`.run_outputs.RunOutputs`
+(every file output written whole or not at all) and turns the core's output and
+file errors into messages.
+"""
 
 from __future__ import annotations
 
@@ -19,13 +25,16 @@ ICONS = Path(__file__).resolve().parents[1] / "icons"
 
 
 class SignMapperAlgorithm(QgsProcessingAlgorithm):
-    """Base class: subclasses set NAME, DISPLAY_NAME, GROUP_ID, HELP and add parameters."""
+    """Base class: subclasses set NAME, DISPLAY_NAME, GROUP_ID, HELP, add parameters and implement
+    :meth:`process`."""
 
     NAME = ""
     DISPLAY_NAME = ""
     GROUP_ID = "mapping"
     HELP = ""
     ICON = ""  # file in icons/
+    OWNED_LAYERS: dict = {}  # GeoPackage file output -> the layers it (re)writes; the file's others are kept
+    run_outputs = None  # the RunOutputs of the run in progress
 
     GROUPS = {"mapping": "Mapping", "tools": "Tools", "quality": "Quality", "inventory": "Inventory"}
 
@@ -82,11 +91,67 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         ok, message = super().checkParameterValues(parameters, context)
         if not ok:
             return ok, message
+        from .output_paths import path_problems
+
         try:
+            problem = path_problems(self, parameters, context)  # first: Python's own checks raise on such a path
+            if problem:
+                return False, problem
             self.check_inputs(parameters, context)
         except QgsProcessingException as exc:
             return False, str(exc)
+        except OSError as exc:  # a file the checks read: named, never a traceback (qgis_process would abort)
+            return False, file_error(exc)
         return True, ""
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        """:meth:`process` with its file outputs written as partial outputs, moved in only when it returns."""
+        from ..signmapper_core.errors import OutputFileError
+        from .run_outputs import RunOutputs
+
+        try:
+            self.check_outputs(parameters, context)
+            self.run_outputs = outputs = RunOutputs(self, parameters, context)
+        except OutputFileError as exc:
+            raise QgsProcessingException(str(exc)) from None
+        except OSError as exc:
+            raise QgsProcessingException(file_error(exc)) from None
+        try:
+            return outputs.commit(self.process(parameters, context, feedback))
+        except BaseException as exc:
+            outputs.discard()
+            if isinstance(exc, OutputFileError):
+                raise QgsProcessingException(f"{exc}. Nothing written{outputs.unchanged()}.") from None
+            if isinstance(exc, OSError) and exc.filename:
+                raise QgsProcessingException(f"{file_error(exc)}. Nothing written{outputs.unchanged()}.") from None
+            raise
+        finally:
+            self.run_outputs = None
+
+    def process(self, parameters, context, feedback) -> dict:
+        """The algorithm's work (what ``processAlgorithm`` is elsewhere); its outputs are committed after it."""
+        raise NotImplementedError
+
+    def parameterAsSink(self, parameters, name, context, *args, **kwargs):  # noqa: N802 - QGIS's name
+        """QGIS's sink; during a run, for an output given as a file, one that writes the run's partial output and
+        raises when a write fails (:mod:`.run_outputs`). The id returned is the final layer's."""
+        def create(params):
+            return super(SignMapperAlgorithm, self).parameterAsSink(params, name, context, *args, **kwargs)
+
+        if self.run_outputs is None:
+            return create(parameters)
+        return self.run_outputs.sink(name, parameters, create)
+
+    def parameterAsFileOutput(self, parameters, name, context):  # noqa: N802 - QGIS's name
+        """QGIS's file; during a run, for an output given as a file, where the run's partial output is written
+        (committed under the file's name when the run succeeds)."""
+        path = self.run_outputs.file_output(name) if self.run_outputs is not None else None
+        return path if path is not None else super().parameterAsFileOutput(parameters, name, context)
+
+    def output_target(self, parameters, name, context) -> str:
+        """The file an output becomes once the run has succeeded (for messages and results)."""
+        target = self.run_outputs.target(name) if self.run_outputs is not None else None
+        return str(target) if target is not None else super().parameterAsFileOutput(parameters, name, context)
 
     def check_inputs(self, parameters, context) -> None:
         """QgsProcessingException naming what is wrong: the outputs (no folder, writable, not an input,
@@ -94,9 +159,12 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         self.check_outputs(parameters, context)
 
     def check_outputs(self, parameters, context) -> None:
-        """The output check of ``checkParameterValues`` at the start of a run (models may skip the former)."""
+        """The output check of ``checkParameterValues`` at the start of a run (models may skip the former); done
+        once per run: once the run holds its outputs, another check would find them busy."""
         from .output_paths import output_problem
 
+        if self.run_outputs is not None:
+            return
         problem = output_problem(self, parameters, context)
         if problem:
             raise QgsProcessingException(problem)
@@ -113,7 +181,7 @@ class CoreFeedback:
 
     The core reports fractions 0..1 of its operation; they fill ``span`` percent
     of the algorithm's bar from ``start``. Cancel is the feedback's; warnings are
-    logged as non-fatal errors.
+    warnings (``qgis_process`` prints them as WARNING, never as ERROR).
     """
 
     def __init__(self, feedback, start: float = 0.0, span: float = 100.0):
@@ -128,4 +196,12 @@ class CoreFeedback:
         return self.feedback.isCanceled()
 
     def warn(self, message: str) -> None:
-        self.feedback.reportError(message, fatalError=False)
+        self.feedback.pushWarning(message)
+
+
+def file_error(exc: OSError) -> str:
+    """An OSError as a message naming the file (shortened when very long) and what the system said."""
+    from ..signmapper_core.file_paths import shown
+
+    where = f"{shown(exc.filename)}: " if exc.filename else ""
+    return f"{where}{exc.strerror or exc}"

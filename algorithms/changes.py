@@ -32,7 +32,8 @@ from qgis.core import (
 )
 
 from ..gpkg.fields import QT_TYPES
-from ..gpkg.output import AtomicGeoPackage, layer_uri
+from ..gpkg.output import GeoPackageLayers, layer_uri
+from ..signmapper_core.output_schema import RUN_TABLE
 from .base import SignMapperAlgorithm
 from .drive_input import qgis_crs
 from .signalo_connection import HELP as SIGNALO_HELP
@@ -57,6 +58,7 @@ def _feature(fields: QgsFields, values: dict, geometry) -> QgsFeature:
 
 class ChangesAlgorithm(SignMapperAlgorithm):
     NAME = "changes"
+    OWNED_LAYERS = {"OUTPUT": ("changes", "displacements", RUN_TABLE)}
     DISPLAY_NAME = "Compare with inventory"
     GROUP_ID = "inventory"
     ICON = "changes.svg"
@@ -241,7 +243,7 @@ class ChangesAlgorithm(SignMapperAlgorithm):
         return signs, f"Signalo {where} ({len(signs)} signs)"
 
     # run --------------------------------------------------------------------------------------------------
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+    def process(self, parameters, context, feedback):
         import numpy as np
 
         from ..signmapper_core.catalogue import load_catalogue
@@ -289,7 +291,8 @@ class ChangesAlgorithm(SignMapperAlgorithm):
                          mappable_types={e.id for e in catalogue if e.id not in excluded})
         feedback.pushInfo(report.summary())
 
-        path = self.write(parameters, context, report, drive, run, layer, described)
+        self.write(parameters, context, report, drive, run, layer, described)
+        path = self.output_target(parameters, self.OUTPUT, context)
         html_path = self.parameterAsFileOutput(parameters, self.REPORT, context)
         if html_path:
             track = [(r.pose.easting, r.pose.northing) for r in drive.pairs]
@@ -306,44 +309,39 @@ class ChangesAlgorithm(SignMapperAlgorithm):
             results[verdict.upper().replace(" ", "_")] = count
         return results
 
-    def write(self, parameters, context, report, drive, run, layer, described) -> str:
+    def write(self, parameters, context, report, drive, run, layer, described) -> None:
         from ..signmapper_core import changes_schema
         from ..signmapper_core.changes import CHANGED, CONFIRMED, MOVED, with_height
 
         crs, _note = qgis_crs(drive.crs)
-        output = AtomicGeoPackage(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
+        output = GeoPackageLayers(self.run_outputs.partial(self.OUTPUT))
         centres = [r.pose.centre for r in drive.pairs]
-        try:
-            fields = schema_fields(changes_schema.FIELDS)
-            writer = output.open_layer("changes", fields, QgsWkbTypes.PointZ, crs,
-                                       abstract=f"Sign Mapper: {layer.source()} against {described}")
-            import numpy as np
+        fields = schema_fields(changes_schema.FIELDS)
+        writer = output.open_layer("changes", fields, QgsWkbTypes.PointZ, crs,
+                                   abstract=f"Sign Mapper: {layer.source()} against {described}")
+        import numpy as np
 
-            for change in report.changes:
-                if change.inventory is not None:
-                    east, north, up = with_height(change.inventory, np.array(centres), report.config)
-                else:
-                    east, north, up = change.mapped.position
-                up = up if math.isfinite(up) else 0.0
-                point = QgsGeometry(QgsPoint(east, north, up))
-                writer.addFeature(_feature(fields, changes_schema.values(change), point), QgsFeatureSink.FastInsert)
-            del writer
-            fields = schema_fields(changes_schema.LINE_FIELDS)
-            writer = output.open_layer("displacements", fields, QgsWkbTypes.LineStringZ, crs,
-                                       abstract="Sign Mapper: inventory position to mapped position")
-            for change in report.changes:
-                if change.verdict not in (CONFIRMED, MOVED, CHANGED):
-                    continue
-                start = with_height(change.inventory, np.array(centres), report.config)
-                end = change.mapped.position
-                line = QgsLineString([QgsPoint(*(float(c) for c in start)), QgsPoint(*(float(c) for c in end))])
-                writer.addFeature(_feature(fields, changes_schema.values(change, changes_schema.DISPLACEMENTS),
-                                           QgsGeometry(line)), QgsFeatureSink.FastInsert)
-            del writer
-            table = dict(run)
-            table.update(drive=str(drive.root.resolve()), signs=layer.source(), inventory=described)
-            output.write_run_table(table)
-            return output.commit()
-        except BaseException:
-            output.discard()
-            raise
+        for change in report.changes:
+            if change.inventory is not None:
+                east, north, up = with_height(change.inventory, np.array(centres), report.config)
+            else:
+                east, north, up = change.mapped.position
+            up = up if math.isfinite(up) else 0.0
+            point = QgsGeometry(QgsPoint(east, north, up))
+            writer.addFeature(_feature(fields, changes_schema.values(change), point), QgsFeatureSink.FastInsert)
+        writer.close()
+        fields = schema_fields(changes_schema.LINE_FIELDS)
+        writer = output.open_layer("displacements", fields, QgsWkbTypes.LineStringZ, crs,
+                                   abstract="Sign Mapper: inventory position to mapped position")
+        for change in report.changes:
+            if change.verdict not in (CONFIRMED, MOVED, CHANGED):
+                continue
+            start = with_height(change.inventory, np.array(centres), report.config)
+            end = change.mapped.position
+            line = QgsLineString([QgsPoint(*(float(c) for c in start)), QgsPoint(*(float(c) for c in end))])
+            writer.addFeature(_feature(fields, changes_schema.values(change, changes_schema.DISPLACEMENTS),
+                                       QgsGeometry(line)), QgsFeatureSink.FastInsert)
+        writer.close()
+        table = dict(run)
+        table.update(drive=str(drive.root.resolve()), signs=layer.source(), inventory=described)
+        output.write_run_table(table)

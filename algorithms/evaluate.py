@@ -31,7 +31,6 @@ from qgis.PyQt.QtCore import QVariant
 from ..gpkg.output import read_run_table
 from ..signmapper_core.output_schema import REJECTED
 from .base import SignMapperAlgorithm
-from .output_paths import remove_written
 
 
 def facing_value(source, feature, field: str):
@@ -148,10 +147,8 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
                             ("SIGMA_3D", "Empirical σ 3D [m]")):
             self.addOutput(QgsProcessingOutputNumber(name, self.tr(title)))
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+    def process(self, parameters, context, feedback):
         import numpy as np
-
-        self.check_outputs(parameters, context)
 
         from ..signmapper_core.evaluation import COMPONENTS, evaluate, format_report
         from ..signmapper_core.report_html import missed_rows, report_html, sign_rows
@@ -191,19 +188,12 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         run = self.report_run(parameters, context, signs, reference, radius, facing_field)
         sign_list = sign_rows(report, mapped["ids"], [f"fid {f}" for f in mapped["fids"]])
         missed = missed_rows(report, refs["xyz"], [f"fid {f}" for f in refs["fids"]])
-        written = [html_path]  # deleted again when the run fails or is cancelled while writing
-        try:
-            Path(html_path).write_text(report_html(report, "Sign Mapper: evaluation against reference", notes, run,
-                                                   sign_list, missed), encoding="utf-8")
-            stats_id = self.write_statistics(parameters, context, report, COMPONENTS)
-            written.append(stats_id)
-            matches_id = self.write_matches(parameters, context, signs, report, mapped, refs)
-            written.append(matches_id)
-            if feedback.isCanceled():
-                raise QgsProcessingException("Cancelled; nothing written.")
-        except BaseException:
-            remove_written(written)
-            raise
+        Path(html_path).write_text(report_html(report, "Sign Mapper: evaluation against reference", notes, run,
+                                               sign_list, missed), encoding="utf-8")
+        stats_id = self.write_statistics(parameters, context, report, COMPONENTS)
+        matches_id = self.write_matches(parameters, context, signs, report, mapped, refs)
+        if feedback.isCanceled():
+            raise QgsProcessingException("Cancelled; nothing written.")
         t1 = report.table1
         return {
             self.REPORT: html_path, self.STATISTICS: stats_id, self.MATCHES: matches_id,
@@ -253,7 +243,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             text += f" Numbers were read back as the catalogue ids they stand for (e.g. {example})."
         if unresolved:
             text += f" {len(unresolved)} stand for no single catalogue id and stay numbers (e.g. {unresolved[0]})."
-        feedback.reportError(text, fatalError=False)
+        feedback.pushWarning(text)
         return ids
 
     @staticmethod
