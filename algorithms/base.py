@@ -11,6 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from qgis.core import (
+    QgsApplication,
     QgsProcessingAlgorithm,
     QgsProcessingException,
     QgsProcessingParameterDefinition,
@@ -22,6 +23,12 @@ from qgis.PyQt.QtGui import QIcon
 from ..dependencies import install_hint, missing_modules
 
 ICONS = Path(__file__).resolve().parents[1] / "icons"
+OUTPUTS_HELP = (
+    "<p><b>Outputs</b> are written whole or not at all: a failed or cancelled run leaves earlier files as they were, "
+    "and a second run writing the same file at the same time is refused. A layer written into an existing "
+    "GeoPackage keeps the file's other layers; a layer of the same name is replaced only when Sign Mapper wrote "
+    "it. To add a layer under a name of your own, choose 'Save to GeoPackage…' or give FILE.gpkg|layername=NAME.</p>"
+)
 
 
 class SignMapperAlgorithm(QgsProcessingAlgorithm):
@@ -60,12 +67,14 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         return self.GROUP_ID
 
     def shortHelpString(self):  # noqa: N802
-        """The algorithm's help followed by every parameter's own help text."""
+        """The algorithm's help followed by every parameter's own help text and how outputs are written."""
         lines = [self.tr(self.HELP), "", "<b>Parameters</b>", "<ul>"]
         for param in self.parameterDefinitions():
             help_text = param.help() if hasattr(param, "help") else ""
             lines.append(f"<li><b>{param.description()}</b>: {help_text}</li>")
         lines.append("</ul>")
+        if self.destinationParameterDefinitions():
+            lines.append(self.tr(OUTPUTS_HELP))
         return "\n".join(lines)
 
     def add_parameter(self, param, help_text: str, advanced: bool = False):
@@ -106,27 +115,39 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         """:meth:`process` with its file outputs written as partial outputs, moved in only when it returns."""
-        from ..signmapper_core.errors import OutputFileError
         from .run_outputs import RunOutputs
 
         try:
             self.check_outputs(parameters, context)
             self.run_outputs = outputs = RunOutputs(self, parameters, context)
-        except OutputFileError as exc:
-            raise QgsProcessingException(str(exc)) from None
-        except OSError as exc:
-            raise QgsProcessingException(file_error(exc)) from None
+        except BaseException as exc:
+            raise self.user_error(exc) from None
         try:
             return outputs.commit(self.process(parameters, context, feedback))
         except BaseException as exc:
+            unchanged = outputs.unchanged()
             outputs.discard()
-            if isinstance(exc, OutputFileError):
-                raise QgsProcessingException(f"{exc}. Nothing written{outputs.unchanged()}.") from None
-            if isinstance(exc, OSError) and exc.filename:
-                raise QgsProcessingException(f"{file_error(exc)}. Nothing written{outputs.unchanged()}.") from None
-            raise
+            raise self.user_error(exc, f". Nothing written{unchanged}.") from None
         finally:
             self.run_outputs = None
+
+    @staticmethod
+    def user_error(exc: BaseException, written: str = "") -> BaseException:
+        """What a run that failed with ``exc`` tells the user: a QgsProcessingException naming the file for an
+        output or file error (``written``: what became of the outputs), any other exception as it is.
+
+        In ``qgis_process`` the message is shown once: it echoes every error of the message log to the console,
+        where Processing logs a failed run's error twice more after printing it.
+        """
+        from ..signmapper_core.errors import OutputFileError
+
+        if isinstance(exc, OutputFileError):
+            exc = QgsProcessingException(f"{exc}{written}")
+        elif isinstance(exc, OSError) and exc.filename:
+            exc = QgsProcessingException(f"{file_error(exc)}{written}")
+        if isinstance(exc, QgsProcessingException) and QgsApplication.platform() == "qgis_process":
+            QgsApplication.messageLog().blockSignals(True)  # the process ends with this error
+        return exc
 
     def process(self, parameters, context, feedback) -> dict:
         """The algorithm's work (what ``processAlgorithm`` is elsewhere); its outputs are committed after it."""

@@ -181,10 +181,11 @@ class ChangesAlgorithm(SignMapperAlgorithm):
         except DriveFormatError as exc:
             raise QgsProcessingException(f"Drive of the mapped signs: {exc}") from exc
 
-    def inventory_from_layer(self, parameters, context, drive_crs, catalogue):
+    def inventory_from_layer(self, parameters, context, drive_crs, catalogue, feedback):
         import numpy as np
 
         from ..signmapper_core.changes import InventorySign
+        from ..signmapper_core.reference_rows import no_geometry_note
 
         source = self.parameterAsSource(parameters, self.INVENTORY, context)
         type_field = self.parameterAsString(parameters, self.TYPE_FIELD, context) or "template_id"
@@ -195,10 +196,11 @@ class ChangesAlgorithm(SignMapperAlgorithm):
             if name and name not in names:
                 raise QgsProcessingException(f"{source.sourceName()}: no field '{name}'")
         transform = QgsCoordinateTransform(source.sourceCrs(), drive_crs, context.transformContext())
-        signs = []
+        signs, no_geometry = [], []
         for feature in source.getFeatures():
             geom = QgsGeometry(feature.geometry())
             if geom.isNull():
+                no_geometry.append(f"fid {feature.id()}")
                 continue
             if transform.sourceCrs() != transform.destinationCrs():
                 geom.transform(transform)
@@ -212,7 +214,20 @@ class ChangesAlgorithm(SignMapperAlgorithm):
             signs.append(InventorySign(str(feature.id()), type_id, np.array([point.x(), point.y(), z]),
                                        None if facing in (None, NULL) else float(facing),
                                        size[0] if size else None, size[1] if size else None, label=type_id))
-        return signs, f"layer {source.sourceName()} ({len(signs)} signs)"
+        if no_geometry:
+            feedback.pushWarning(no_geometry_note(source.sourceName(), no_geometry))
+        return signs, f"layer {source.sourceName()}"
+
+    @staticmethod
+    def without_repeats(inventory: list, where: str, row: str, feedback) -> list:
+        """The inventory with each sign that repeats another exactly left out, with a warning (``row``: what the
+        inventory's keys are, "fid" or "sign")."""
+        from ..signmapper_core.reference_rows import exact_duplicates, repeats_note
+
+        repeats = exact_duplicates([s.template_id for s in inventory], [s.position for s in inventory])
+        if repeats:
+            feedback.pushWarning(repeats_note(where, repeats, [f"{row} {s.key}" for s in inventory]))
+        return [sign for i, sign in enumerate(inventory) if i not in repeats]
 
     def inventory_from_signalo(self, parameters, context, drive_crs, catalogue, feedback):
         import numpy as np
@@ -240,7 +255,7 @@ class ChangesAlgorithm(SignMapperAlgorithm):
                                            sign.facing, sign.width_m, sign.height_m, sign.height_above_road_m,
                                            sign.label))
             signs = moved
-        return signs, f"Signalo {where} ({len(signs)} signs)"
+        return signs, f"Signalo {where}"
 
     # run --------------------------------------------------------------------------------------------------
     def process(self, parameters, context, feedback):
@@ -274,9 +289,11 @@ class ChangesAlgorithm(SignMapperAlgorithm):
             raise QgsProcessingException(str(exc)) from exc
 
         if has_layer:
-            inventory, described = self.inventory_from_layer(parameters, context, drive_crs, catalogue)
+            inventory, where = self.inventory_from_layer(parameters, context, drive_crs, catalogue, feedback)
         else:
-            inventory, described = self.inventory_from_signalo(parameters, context, drive_crs, catalogue, feedback)
+            inventory, where = self.inventory_from_signalo(parameters, context, drive_crs, catalogue, feedback)
+        inventory = self.without_repeats(inventory, where, "fid" if has_layer else "sign", feedback)
+        described = f"{where} ({len(inventory)} signs)"
         mapped = []
         for values, xyz in read_signs(layer, drive_crs, context):
             if values.get("plate_of") is not None:

@@ -162,13 +162,15 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         height_field = self.parameterAsString(parameters, self.REFERENCE_HEIGHT_FIELD, context)
         radius = self.parameterAsDouble(parameters, self.RADIUS, context)
 
-        mapped = self.read_points(signs, sign_field, None, None, context, skip_rejected=True)
+        mapped = self.read_points(signs, sign_field, None, None, context, skip_rejected=True, feedback=feedback)
         to_signs = QgsCoordinateTransform(reference.sourceCrs(), signs.sourceCrs(), context.transformContext())
         facing_field = self.parameterAsString(parameters, self.REFERENCE_FACING_FIELD, context)
-        refs = self.read_points(reference, ref_field, height_field, to_signs, context, facing_field=facing_field)
+        refs = self.read_points(reference, ref_field, height_field, to_signs, context, facing_field=facing_field,
+                                feedback=feedback)
         if reference.fields().field(ref_field).isNumeric():
             refs["ids"] = self.ids_from_numbers(refs["ids"], mapped["ids"], parameters, context, feedback,
                                                 reference, ref_field)
+        refs = self.without_repeats(refs, reference, feedback)
         if not refs["xyz"]:
             raise QgsProcessingException("The reference layer has no points.")
         trajectory = self.trajectory_xy(parameters, context, signs, to_signs)
@@ -257,17 +259,22 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
 
     @staticmethod
     def read_points(source, id_field, height_field, transform, context, skip_rejected=False,
-                    facing_field=None) -> dict:
+                    facing_field=None, feedback=None) -> dict:
+        """Position, id, fid and facing of every feature; those without geometry are left out with a warning."""
+        from ..signmapper_core.reference_rows import no_geometry_note
+
         names = source.fields().names()
         if id_field not in names:
             raise QgsProcessingException(f"{source.sourceName()}: no field '{id_field}'")
         has_status = skip_rejected and "status" in names
         out = {"xyz": [], "ids": [], "fids": [], "facing": []}
+        no_geometry = []
         for feature in source.getFeatures(QgsFeatureRequest()):
             if has_status and feature["status"] == REJECTED:
                 continue
             geom = QgsGeometry(feature.geometry())
             if geom.isNull():
+                no_geometry.append(f"fid {feature.id()}")
                 continue
             if transform is not None and transform.sourceCrs() != transform.destinationCrs():
                 geom.transform(transform)
@@ -283,7 +290,20 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             out["ids"].append(str(feature[id_field]))
             out["fids"].append(feature.id())
             out["facing"].append(facing_value(source, feature, facing_field) if facing_field else None)
+        if no_geometry and feedback is not None:
+            feedback.pushWarning(no_geometry_note(source.sourceName(), no_geometry))
         return out
+
+    @staticmethod
+    def without_repeats(points: dict, source, feedback) -> dict:
+        """``points`` (:meth:`read_points`) with each row that repeats another exactly left out, with a warning."""
+        from ..signmapper_core.reference_rows import exact_duplicates, repeats_note
+
+        repeats = exact_duplicates(points["ids"], points["xyz"])
+        if not repeats:
+            return points
+        feedback.pushWarning(repeats_note(source.sourceName(), repeats, [f"fid {f}" for f in points["fids"]]))
+        return {key: [v for i, v in enumerate(values) if i not in repeats] for key, values in points.items()}
 
     def report_run(self, parameters, context, signs, reference, radius, facing_field) -> dict:
         """What the report says about the run: drive, date, the evaluation's and the mapping's parameters."""
