@@ -67,11 +67,11 @@ from signmapper_core.simulate.face_artwork import OFFICIAL_PICTOGRAM, pictogram_
 from signmapper_core.visibility import mappable_signs  # noqa: E402
 
 
-def generated_drive(seed: int, pairs: int, depth: bool, legacy_faces: bool = False, white_share: float = 0.0,
-                    drawable: bool = False) -> Path:
-    """A synthetic drive under build/drives/, generated unless there: the whole catalogue's signs, or with
+def drive_config(seed: int, pairs: int, depth: bool, legacy_faces: bool = False, white_share: float = 0.0,
+                 drawable: bool = False):
+    """(folder under build/drives/, SimulationConfig) of a synthetic drive: the whole catalogue's signs, or with
     ``drawable`` (implied by ``legacy_faces`` and ``white_share``) the drives of before."""
-    from signmapper_core.simulate import DRAWABLE_SIGNS, LEGACY_FACES, SimulationConfig, generate_drive
+    from signmapper_core.simulate import DRAWABLE_SIGNS, LEGACY_FACES, SimulationConfig
     from signmapper_core.simulate.config import WHOLE
 
     before = LEGACY_FACES if legacy_faces else DRAWABLE_SIGNS if drawable or white_share > 0 else {}
@@ -80,7 +80,23 @@ def generated_drive(seed: int, pairs: int, depth: bool, legacy_faces: bool = Fal
     white = f"-white{white_share:g}" if white_share > 0 else ""
     # the drives of before keep their folder names; those of the whole catalogue have their own
     whole = "-whole" if config.sign_set == WHOLE else ""
-    out = REPO / "build" / "drives" / f"seed{seed}-{pairs}{'-depth' if depth else ''}-faces-{faces}{white}{whole}"
+    name = f"seed{seed}-{pairs}{'-depth' if depth else ''}-faces-{faces}{white}{whole}"
+    return REPO / "build" / "drives" / name, config
+
+
+def drive_folder(*args, **kwargs) -> Path:
+    """The folder of :func:`drive_config`'s drive, which must have been generated."""
+    out, _config = drive_config(*args, **kwargs)
+    if not (out / "poses.csv").exists():
+        raise SystemExit(f"{out} has not been generated")
+    return out
+
+
+def generated_drive(*args, **kwargs) -> Path:
+    """The folder of :func:`drive_config`'s drive, generated unless there."""
+    from signmapper_core.simulate import generate_drive
+
+    out, config = drive_config(*args, **kwargs)
     if not (out / "poses.csv").exists():
         print(f"generating {out} ...", flush=True)
         generate_drive(out, config)
