@@ -12,6 +12,7 @@ from signmapper_core.catalogue import load_catalogue
 from signmapper_core.catalogue.model import COLOURS
 from signmapper_core.catalogue.text_panels import is_text_panel
 from signmapper_core.drive import read_truth
+from signmapper_core.geometry import world_to_pixel
 from signmapper_core.simulate import SimulationConfig, generate_drive
 from signmapper_core.simulate.face_artwork import MASTER, drawing_stems, has_procedural, pointing
 from signmapper_core.simulate.faces import LONGER_SIDE, FaceOptions, SignFace, draw_sign_face
@@ -208,3 +209,25 @@ def test_a_face_of_a_sign_the_drawer_does_not_know_is_printed_from_its_drawing()
     assert face.artwork == MASTER
     bgr, alpha = face.pixels()
     assert bgr.shape == (30, 120, 3) and alpha.max() == 255
+
+
+def test_a_rendered_drive_shows_each_sign_where_its_truth_says(tmp_path):
+    """Posts, boards and overhead signs are seen at their truth centre (not hidden in a façade or behind a pole)."""
+    config = SimulationConfig(pairs=10, seed=8607, width=640, height=360, fx=1750.0 / 3, sign_density=25.0,
+                              write_depth=True)
+    summary = generate_drive(tmp_path / "drive", config)
+    header = (tmp_path / "drive" / "truth.csv").read_text(encoding="utf-8").splitlines()[0]
+    assert header.endswith(",face_artwork,face_drawing")
+    drive_truth = read_truth(tmp_path / "drive" / "truth.csv")
+    signs = [t for t in drive_truth if not t.is_plate]
+    assert len(signs) >= 3 and sum(whole_mix().part_of(t.template_id).mount == POST for t in signs) == 3
+    checks = hits = 0
+    for k, pose in enumerate(summary.true_poses):
+        depth = np.load(tmp_path / "drive" / "depth" / f"{k:06d}.npy")
+        for sign in signs:
+            u, v, z = (float(np.ravel(x)[0]) for x in world_to_pixel(summary.camera, pose, sign.position))
+            if not (4.0 <= z <= 14.0 and 10 <= u < config.width - 10 and 10 <= v < config.height - 10):
+                continue
+            checks += 1
+            hits += abs(float(depth[int(round(v)), int(round(u))]) - z) < 0.05
+    assert checks >= 5 and hits >= 0.8 * checks
