@@ -78,8 +78,8 @@ def sign_spot(pieces: Pieces, look: PanelLook, s: float, mix: SignMix, rng: np.r
         return sign_post(pieces, look, s, kinds, part.stack, rng, side, facades, first=kind)
     if part.mount == BOARD:
         return board(pieces, look, s, kind, rng, side, facades)
-    return sign_pole(pieces, look, s, mix.only(POLE), rng, 1 if pole_form(u) == "overhead" else side, pole_form(u),
-                     first=kind)
+    form = pole_form(u)
+    return sign_pole(pieces, look, s, mix.only(POLE), rng, 1 if form == "overhead" else side, form, first=kind)
 
 
 def _facing(pieces: Pieces, s: float, rng: np.random.Generator, side: int) -> tuple[float, float]:
@@ -91,15 +91,15 @@ def _facing(pieces: Pieces, s: float, rng: np.random.Generator, side: int) -> tu
 
 def sign_post(pieces: Pieces, look: PanelLook, s: float, kinds, stack: int, rng: np.random.Generator, side: int,
               facades: list[FacadeSpan], first=None) -> list[PlacedSign]:
-    """One to ``stack`` signs of ``kinds`` (one width for all) on a post at ``s``: as many as fit before the
-    façade, the first always. A pointer's blunt end is at the post, so its centre lies half its width off."""
+    """One to ``stack`` signs of ``kinds`` (one width for all) on a post at ``s``: as many as fit between the
+    carriageway and the façade, the first always (the widest sign of a part fits before the nearest façade). A
+    pointer's blunt end is at the post, so its centre lies half its width off."""
     count = int(rng.integers(1, stack + 1))
     chosen = [first or kinds[int(rng.integers(len(kinds)))]]
     chosen += [kinds[int(rng.integers(len(kinds)))] for _ in range(count - 1)]
     rule = chosen[0].measured
     value = float(rng.uniform(rule.lo, rule.hi)) if rule is not None else None
-    room = roadside_room(facades, s, side)
-    clear = float(rng.uniform(*KERB_CLEAR_M))
+    room = roadside_room(facades, s, side) - FACADE_CLEAR_M - KERB_CLEAR_M[0]  # for the signs' lateral reach
     faces = []
     towards_road = away = 0.0  # how far the post's signs reach from its axis, towards the road and away
     for kind in chosen:
@@ -111,10 +111,12 @@ def sign_post(pieces: Pieces, look: PanelLook, s: float, kinds, stack: int, rng:
         # the face's right is the street's right (+l), so the road lies towards -side
         road_reach = max(towards_road, -side * offset + fmt[1] / 2)
         away_reach = max(away, side * offset + fmt[1] / 2)
-        if faces and clear + road_reach + away_reach > room - FACADE_CLEAR_M:
+        if faces and road_reach + away_reach > room:
             continue  # no room for this one
         towards_road, away = road_reach, away_reach
         faces.append((kind, fmt, face, key, offset))
+    slack = room - towards_road - away  # the kerb clearance takes what the façade leaves, within its range
+    clear = float(rng.uniform(KERB_CLEAR_M[0], KERB_CLEAR_M[0] + float(np.clip(slack, 0.0, np.ptp(KERB_CLEAR_M)))))
     edge = CARRIAGEWAY[1] if side > 0 else PARKING_LEFT[0]
     l_axis = edge + side * (clear + towards_road)
     facing, tilt = _facing(pieces, s, rng, side)
