@@ -14,8 +14,8 @@ from signmapper_core.catalogue.text_panels import is_text_panel
 from signmapper_core.drive import read_truth
 from signmapper_core.geometry import world_to_pixel
 from signmapper_core.simulate import SimulationConfig, generate_drive
-from signmapper_core.simulate.face_artwork import MASTER, drawing_stems, has_procedural, pointing
-from signmapper_core.simulate.faces import LONGER_SIDE, FaceOptions, SignFace, draw_sign_face
+from signmapper_core.simulate.face_artwork import MASTER, drawing_stems, has_procedural, master_face, pointing
+from signmapper_core.simulate.faces import LONGER_SIDE, FaceOptions, SignFace, draw_sign_face, pick_format
 from signmapper_core.simulate.generator import make_scene, make_street
 from signmapper_core.simulate.layout import CARRIAGEWAY
 from signmapper_core.simulate.scene_pieces import KERB_H, Pieces, TextureKeys
@@ -231,3 +231,17 @@ def test_a_rendered_drive_shows_each_sign_where_its_truth_says(tmp_path):
             checks += 1
             hits += abs(float(depth[int(round(v)), int(round(u))]) - z) < 0.05
     assert checks >= 5 and hits >= 0.8 * checks
+
+
+def test_every_drawing_of_every_entry_prints():
+    """Each entry's master and variants print at the size the generator gives it (every id is placed sometimes)."""
+    rng = np.random.default_rng(0)
+    for kind in whole_mix().kinds():
+        if is_text_panel(kind.template_id):
+            continue  # set from their wording (test_simulate_text_panels.py)
+        _name, w_m, h_m = pick_format(kind, rng)
+        size = (64, max(1, round(64 * h_m / w_m))) if w_m >= h_m else (max(1, round(64 * w_m / h_m)), 64)
+        for drawing in range(len(drawing_stems(kind.template_id))):
+            bgr, alpha = master_face(kind.template_id, size, rng, drawing)
+            assert bgr.shape[:2] == alpha.shape == (size[1], size[0]), kind.template_id
+            assert alpha.mean() > 60, (kind.template_id, drawing)  # the outline fills a good part of its box
