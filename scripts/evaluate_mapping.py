@@ -13,8 +13,13 @@ by more than one fused sign). Signs in status "review" count like accepted ones;
 the review step decides on them. Supplementary plates have rows of their own
 (``plate_evaluation``): detected, linked to the right sign, text exactly right
 for plates at least 40 px high. The white and grey signs and the coloured ones have rows of their own
-too (``family_evaluation``): detected, correctly classified, false positives per 100 pairs;
-``--white-share`` generates drives with white signs and white distractors.
+too (``family_evaluation``): detected, correctly classified, false positives per 100 pairs; and a table of
+the fused signs per colour family (red, blue, yellow, white and grey, green, brown, orange), faces printed from
+the procedural designs apart: in view, detected, right id whatever the status, accepted, accepted with a wrong
+id, 3D RMS. ``--ids`` adds how the signs of chosen ids came out (``id_outcomes``: mapped as unknown, accepted as
+another id, missed), e.g. of ids left out of a classifier's training. Generated drives carry the whole
+catalogue (``SimulationConfig`` defaults); ``--drawable`` generates the drives of before, and ``--white-share``
+those with white signs and white distractors.
 ``--evidence`` lists, for every fused sign mapped with a wrong id, what each of its observations read
 (``misread_evidence``): whether a vote could have found the true id, or the classifier never saw it; and
 for every false positive the same per observation, with the pair and pixel box to look at; and every
@@ -43,10 +48,14 @@ from signmapper_core.family_evaluation import (  # noqa: E402
     COLOURED,
     WHITE,
     FamilyFigures,
+    GroupFigures,
     catalogue_colour,
     family_figures,
+    group_figures,
+    group_lines,
 )
 from signmapper_core.fusion import sign_accept_threshold  # noqa: E402
+from signmapper_core.id_outcomes import id_outcomes, outcome_lines  # noqa: E402
 from signmapper_core.mapping import map_drive  # noqa: E402
 from signmapper_core.misread_evidence import false_positive_lines, misread_lines, missed_lines  # noqa: E402
 from signmapper_core.panel_evaluation import PanelFigures, evaluate_panels  # noqa: E402
@@ -59,17 +68,39 @@ from signmapper_core.simulate.face_artwork import OFFICIAL_PICTOGRAM, pictogram_
 from signmapper_core.visibility import mappable_signs  # noqa: E402
 
 
-def generated_drive(seed: int, pairs: int, depth: bool, legacy_faces: bool = False, white_share: float = 0.0,
-                    plate_share: Optional[float] = None) -> Path:
-    from signmapper_core.simulate import LEGACY_FACES, SimulationConfig, generate_drive
+def drive_config(seed: int, pairs: int, depth: bool, legacy_faces: bool = False, white_share: float = 0.0,
+                 drawable: bool = False, plate_share: Optional[float] = None):
+    """(folder under build/drives/, SimulationConfig) of a synthetic drive: the whole catalogue's signs, or with
+    ``drawable`` (implied by ``legacy_faces`` and ``white_share``) the drives of before."""
+    from signmapper_core.simulate import DRAWABLE_SIGNS, LEGACY_FACES, SimulationConfig
+    from signmapper_core.simulate.config import WHOLE
 
+    before = LEGACY_FACES if legacy_faces else DRAWABLE_SIGNS if drawable or white_share > 0 else {}
     plates = {} if plate_share is None else {"plate_share": plate_share}
-    config = SimulationConfig(pairs=pairs, seed=seed, write_depth=depth, white_sign_share=white_share,
-                              **plates, **(LEGACY_FACES if legacy_faces else {}))
+    config = SimulationConfig(pairs=pairs, seed=seed, write_depth=depth, white_sign_share=white_share, **plates,
+                              **before)
     faces = "legacy" if legacy_faces else f"{config.face_artwork}{config.master_share:g}"
     white = f"-white{white_share:g}" if white_share > 0 else ""
+    # the drives of before keep their folder names; those of the whole catalogue have their own
+    whole = "-whole" if config.sign_set == WHOLE else ""
     plated = f"-plates{plate_share:g}" if plate_share is not None else ""
-    out = REPO / "build" / "drives" / f"seed{seed}-{pairs}{'-depth' if depth else ''}-faces-{faces}{white}{plated}"
+    name = f"seed{seed}-{pairs}{'-depth' if depth else ''}-faces-{faces}{white}{whole}{plated}"
+    return REPO / "build" / "drives" / name, config
+
+
+def drive_folder(*args, **kwargs) -> Path:
+    """The folder of :func:`drive_config`'s drive, which must have been generated."""
+    out, _config = drive_config(*args, **kwargs)
+    if not (out / "poses.csv").exists():
+        raise SystemExit(f"{out} has not been generated")
+    return out
+
+
+def generated_drive(*args, **kwargs) -> Path:
+    """The folder of :func:`drive_config`'s drive, generated unless there."""
+    from signmapper_core.simulate import generate_drive
+
+    out, config = drive_config(*args, **kwargs)
     if not (out / "poses.csv").exists():
         print(f"generating {out} ...", flush=True)
         generate_drive(out, config)
@@ -160,6 +191,14 @@ def artwork_lines(totals: dict) -> list:
     return lines
 
 
+def read_ids(text: str) -> list[str]:
+    """The ids of ``--ids``: comma-separated, or ``@FILE`` with one id a line (blank lines and # comments skipped)."""
+    if text.startswith("@"):
+        lines = Path(text[1:]).read_text(encoding="utf-8").splitlines()
+        return [line.split("#")[0].strip() for line in lines if line.split("#")[0].strip()]
+    return [part.strip() for part in text.split(",") if part.strip()]
+
+
 def positions_ids(items):
     return np.array([o.position for o in items]).reshape(-1, 3), [o.template_id for o in items]
 
@@ -173,7 +212,14 @@ def main(argv=None) -> int:
     parser.add_argument("--legacy-faces", action="store_true",
                         help="generated drives with the faces of before the artwork mix (procedural only)")
     parser.add_argument("--white-share", type=float, default=0.0,
-                        help="generated drives: share of sign poles with white and grey signs (and white distractors)")
+                        help="generated drives of before (--drawable): share of sign poles with white and grey "
+                             "signs (and white distractors)")
+    parser.add_argument("--drawable", action="store_true",
+                        help="generated drives of before the whole catalogue: only the signs the procedural drawer "
+                             "knows, each equally likely (the seeds figures were taken on until 2026-12-06)")
+    parser.add_argument("--ids", default="",
+                        help="comma-separated ids, or @FILE with one id a line: how their signs came out (mapped "
+                             "as unknown, accepted as another id, missed, ...), e.g. the ids left out of training")
     parser.add_argument("--plate-share", type=float, default=None,
                         help="generated drives: share of sign poles whose lowest sign carries a plate (default: the "
                              "generator's)")
@@ -192,7 +238,8 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
 
     folders = list(args.drives) + [generated_drive(s, args.pairs, args.depth, args.legacy_faces, args.white_share,
-                                                   args.plate_share) for s in args.generate]
+                                                   args.drawable, args.plate_share) for s in args.generate]
+    chosen_ids = read_ids(args.ids)
     if not folders:
         parser.error("give drive folders or --generate SEEDS")
     catalogue = load_catalogue(args.catalogue)
@@ -210,6 +257,8 @@ def main(argv=None) -> int:
     artwork_totals = {}  # (artwork, pictogram group) -> [reference signs, detected, correct]
     colour_of = catalogue_colour(catalogue)
     family_totals = {(family, kind): FamilyFigures() for family in FAMILIES for kind in ("detections", "signs")}
+    group_totals: dict[str, GroupFigures] = {}
+    outcome_totals: dict = {}
     for folder in folders:
         drive = open_drive(folder, require_truth=True)
         reference = mappable_signs(drive, args.near, args.far)
@@ -241,6 +290,10 @@ def main(argv=None) -> int:
                 misread, offered = misread_offered(signs, reference, report)
                 review_totals += review_outcomes(signs, reference, report)
                 misread_total, offered_total = misread_total + misread, offered_total + offered
+                groups = group_figures(signs, reference, report.match, colour_of)
+                group_totals = {g: row + group_totals.get(g, GroupFigures()) for g, row in groups.items()}
+                for template_id, counts in id_outcomes(signs, reference, report.match, chosen_ids).items():
+                    outcome_totals[template_id] = outcome_totals.get(template_id, Counter()) + counts
                 n, wrong, unmatched = accepted_but_wrong(signs, reference, report)
                 accepted_total, accepted_wrong, accepted_unmatched = (accepted_total + n, accepted_wrong + wrong,
                                                                       accepted_unmatched + unmatched)
@@ -300,6 +353,14 @@ def main(argv=None) -> int:
             print()
         for (family, kind), figures in family_totals.items():
             print("\n".join(figures.lines(f"== all {len(folders)} drives: {family} signs, {FAMILY_KINDS[kind]}")))
+        print()
+    print("\n".join(group_lines(group_totals, f"== all {len(folders)} drives: fused signs per colour family, faces "
+                                             "of the procedural designs apart (accepted of the signs in view; "
+                                             "'acc., none': accepted matching no sign, by their id's colour)")))
+    print()
+    if chosen_ids:
+        print("\n".join(outcome_lines(outcome_totals, f"== all {len(folders)} drives: the {len(chosen_ids)} ids asked "
+                                                     f"for, {len(outcome_totals)} of them in view")))
         print()
     return 0
 

@@ -38,6 +38,9 @@ TRUTH_OPTIONAL = ("plate_of", "text")  # a supplementary plate's sign, and the t
 # a column of our own (the format lets readers ignore columns they do not know): which artwork a synthetic
 # face was printed from, so evaluations can tell the official drawings from other designs of a sign
 TRUTH_ARTWORK = "face_artwork"
+# ... and which of the catalogue entry's drawings a face printed from the official artwork shows (the master's
+# file stem, or a variant's: another language, the other pointing direction), on drives that print variants
+TRUTH_DRAWING = "face_drawing"
 CAMERA_KEYS = ("width", "height", "fx", "fy", "cx", "cy", "baseline_m")
 MAX_ANGLE_DEG = 1e9  # beyond this a double no longer resolves a microdegree: the value is not an angle
 
@@ -70,6 +73,7 @@ class TruthSign:
     plate_of: str = ""  # a supplementary plate: the sign_id of its sign; "" for a sign
     text: str = ""  # the text printed on a plate or panel, lines joined by " / "
     artwork: str = ""  # synthetic drives: "master" (the catalogue's drawing) or "procedural"; "" where unknown
+    drawing: str = ""  # synthetic drives: the file stem of the official drawing printed ("2.30.1~2"); "" where none
 
     @property
     def position(self) -> np.ndarray:
@@ -392,7 +396,7 @@ def read_truth(path) -> list[TruthSign]:
     signs = []
     seen: dict[str, int] = {}
     plates = []
-    for line, row in _read_csv_rows(path, TRUTH_COLUMNS, TRUTH_OPTIONAL + (TRUTH_ARTWORK,)):
+    for line, row in _read_csv_rows(path, TRUTH_COLUMNS, TRUTH_OPTIONAL + (TRUTH_ARTWORK, TRUTH_DRAWING)):
         if row["sign_id"] in seen:
             raise DriveFormatError(
                 path, f"sign_id {row['sign_id']!r} repeats line {seen[row['sign_id']]}", line=line, field="sign_id"
@@ -403,7 +407,7 @@ def read_truth(path) -> list[TruthSign]:
             if nums[k] <= 0:
                 raise DriveFormatError(path, f"must be positive, found {row[k]}", line=line, field=k)
         signs.append(TruthSign(row["sign_id"], row["template_id"], **nums, plate_of=row["plate_of"], text=row["text"],
-                               artwork=row[TRUTH_ARTWORK]))
+                               artwork=row[TRUTH_ARTWORK], drawing=row[TRUTH_DRAWING]))
         if row["plate_of"]:
             plates.append((line, row["plate_of"]))
     for line, sign_id in plates:

@@ -13,7 +13,7 @@ from typing import Iterable
 
 import numpy as np
 
-from .drive import FORMAT_ID, POSE_COLUMNS, TRUTH_ARTWORK, TRUTH_COLUMNS, TRUTH_OPTIONAL, TruthSign
+from .drive import FORMAT_ID, POSE_COLUMNS, TRUTH_ARTWORK, TRUTH_COLUMNS, TRUTH_DRAWING, TRUTH_OPTIONAL, TruthSign
 from .geometry import Camera, Pose
 from .image_files import write_depth
 
@@ -48,14 +48,17 @@ def write_truth_csv(root: Path, signs: Iterable[TruthSign]) -> Path:
     signs = list(signs)
     optional = any(s.plate_of or s.text for s in signs)  # the columns only where a plate or text needs them
     artwork = any(s.artwork for s in signs)
+    drawing = any(s.drawing for s in signs)
     with open(path, "w", newline="", encoding="utf-8") as fh:
         writer = csv.writer(fh, lineterminator="\n")
-        writer.writerow(TRUTH_COLUMNS + (TRUTH_OPTIONAL if optional else ()) + ((TRUTH_ARTWORK,) if artwork else ()))
+        writer.writerow(TRUTH_COLUMNS + (TRUTH_OPTIONAL if optional else ()) + ((TRUTH_ARTWORK,) if artwork else ())
+                        + ((TRUTH_DRAWING,) if drawing else ()))
         for s in signs:
             writer.writerow(
                 [s.sign_id, s.template_id, f"{s.easting:.4f}", f"{s.northing:.4f}", f"{s.height:.4f}",
                  f"{s.width_m:.3f}", f"{s.height_m:.3f}", f"{s.facing:.2f}"]
                 + ([s.plate_of, s.text] if optional else []) + ([s.artwork] if artwork else [])
+                + ([s.drawing] if drawing else [])
             )
     return path
 

@@ -6,8 +6,8 @@ poses the images were rendered from (poses.csv holds them with GNSS/INS noise).
 """
 
 from ..progress import Cancelled
-from .config import LEGACY_FACES, SimulationConfig, SimulationSummary
+from .config import DRAWABLE_SIGNS, LEGACY_FACES, SimulationConfig, SimulationSummary
 from .generator import generate_drive, recorded_poses, true_poses
 
-__all__ = ["LEGACY_FACES", "Cancelled", "SimulationConfig", "SimulationSummary", "generate_drive", "recorded_poses",
-           "true_poses"]
+__all__ = ["DRAWABLE_SIGNS", "LEGACY_FACES", "Cancelled", "SimulationConfig", "SimulationSummary", "generate_drive",
+           "recorded_poses", "true_poses"]

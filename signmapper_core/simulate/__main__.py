@@ -6,7 +6,7 @@ import argparse
 import sys
 from dataclasses import fields
 
-from .config import LEGACY_FACES, SimulationConfig
+from .config import DRAWABLE, DRAWABLE_SIGNS, LEGACY_FACES, WHOLE, SimulationConfig
 from .generator import generate_drive
 
 REALISM = ("noise", "motion_blur", "exposure_changes", "shadows", "weathering", "occlusion", "glare", "face_print",
@@ -43,6 +43,13 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--crs", default=d.crs, help=f"CRS of the coordinates (default {d.crs})")
     p.add_argument("--start", type=float, nargs=3, metavar=("E", "N", "H"),
                    default=(d.start_easting, d.start_northing, d.start_height), help="start point of the street")
+    p.add_argument("--sign-set", choices=(WHOLE, DRAWABLE), default=d.sign_set,
+                   help="'whole': signs of every family of the whole catalogue in the proportions of a Swiss street; "
+                        "'drawable': the drives of before, only the signs the procedural drawer knows, each equally "
+                        f"likely, printed from their masters only (default {d.sign_set})")
+    p.add_argument("--no-face-variants", action="store_true",
+                   help="print master faces from the entry's master drawing only, never from its variants "
+                        "(other languages, the other pointing direction)")
     p.add_argument("--face-artwork", choices=("mixed", "procedural"), default=d.face_artwork,
                    help="sign faces from the catalogue master or the procedural drawer per sign ('mixed'), or "
                         f"procedural only (default {d.face_artwork})")
@@ -55,8 +62,8 @@ def build_parser() -> argparse.ArgumentParser:
         words = name.replace("_", " ")
         p.add_argument(f"--no-{name.replace('_', '-')}", action="store_true", help=f"switch off {words}")
     p.add_argument("--white-sign-share", type=float, default=d.white_sign_share,
-                   help="share of sign poles with white and grey signs, plus white distractors "
-                        f"(default {d.white_sign_share:g})")
+                   help="with --sign-set drawable: share of sign poles with white and grey signs, plus white "
+                        f"distractors (default {d.white_sign_share:g})")
     p.add_argument("--plate-share", type=float, default=d.plate_share,
                    help="share of sign poles whose lowest sign carries a supplementary plate, plus white text "
                         f"plates on façades (default {d.plate_share:g})")
@@ -75,6 +82,10 @@ def config_from_args(args: argparse.Namespace) -> SimulationConfig:
         start_easting=args.start[0], start_northing=args.start[1], start_height=args.start[2],
         face_artwork=args.face_artwork, master_share=args.master_share, white_sign_share=args.white_sign_share,
         plate_share=args.plate_share)
+    if args.sign_set == DRAWABLE:
+        for name, value in DRAWABLE_SIGNS.items():
+            setattr(cfg, name, value)
+    cfg.face_variants = cfg.face_variants and not args.no_face_variants
     if args.legacy_faces:
         for name, value in LEGACY_FACES.items():
             setattr(cfg, name, value)

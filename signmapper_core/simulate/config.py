@@ -9,10 +9,15 @@ from pathlib import Path
 from ..drive import TruthSign
 from ..geometry import Camera, Pose
 
+WHOLE, DRAWABLE = "whole", "drawable"  # the sign sets of SimulationConfig.sign_set
+# Settings that reproduce the drives of before the whole catalogue (2026-12-06), e.g. the seeds tests and figures
+# were taken on: only the red, blue and yellow signs the procedural drawer knows (white ones by white_sign_share),
+# equally likely, each printed from its master only; ``SimulationConfig(**DRAWABLE_SIGNS)``.
+DRAWABLE_SIGNS = dict(sign_set=DRAWABLE, face_variants=False)
 # Face settings that reproduce the faces of before the artwork mix: procedural drawings only, no physical
-# variation (the older weathering still applies); e.g. ``SimulationConfig(**LEGACY_FACES)``.
-LEGACY_FACES = dict(face_artwork="procedural", face_print=False, face_sheeting=False, face_wear=False,
-                    face_dirt=False, face_marks=False, face_dents=False, back_mounts=False)
+# variation (the older weathering still applies), on the signs of before; e.g. ``SimulationConfig(**LEGACY_FACES)``.
+LEGACY_FACES = dict(DRAWABLE_SIGNS, face_artwork="procedural", face_print=False, face_sheeting=False,
+                    face_wear=False, face_dirt=False, face_marks=False, face_dents=False, back_mounts=False)
 
 
 @dataclass
@@ -35,6 +40,9 @@ class SimulationConfig:
     position_sigma_m: float = 0.02
     angle_sigma_deg: float = 0.02
     # Scene content, per 100 m of street.
+    # Which signs stand along the street: "whole", every family of the whole catalogue in the proportions of a
+    # Swiss street (simulate/sign_mix.py), white ones included; "drawable", the drives of before (DRAWABLE_SIGNS).
+    sign_set: str = WHOLE
     sign_density: float = 10.0            # sign poles
     distractor_density: float = 8.0       # cars, cones, shop signs, coloured patches, sign backs
     # Realism switches.
@@ -50,6 +58,7 @@ class SimulationConfig:
     # sign in face texture space, each switchable and with a seeded random strength per sign.
     face_artwork: str = "mixed"           # "mixed": master image or procedural variant per sign; "procedural"
     master_share: float = 0.7             # share of faces printed from the catalogue master when "mixed"
+    face_variants: bool = True            # a master face shows any of the entry's drawings (languages, directions)
     face_print: bool = True               # print run: ink hue/saturation, line weight, black-layer register
     face_sheeting: bool = True            # reflective film: seal cells, sparkle, sheen, specular hot spot
     face_wear: bool = True                # UV ageing: red to orange/pink, chalky blue, contrast loss, peeling
@@ -60,9 +69,9 @@ class SimulationConfig:
     # Supplementary plates (simulate/plate_layout.py): share of sign poles whose lowest sign carries one, with
     # a text in German, French or Italian; > 0 also puts white text plates on façades as distractors.
     plate_share: float = 0.5
-    # White and grey signs (end-of-restriction discs, end-of-zone panels): share of the sign poles that carry
-    # them instead of coloured signs; > 0 also adds white distractors (white shop signs, white vans, white
-    # emblems). 0 keeps every drive of before as it was.
+    # With sign_set "drawable": white and grey signs (end-of-restriction discs, end-of-zone panels): share of the
+    # sign poles that carry them instead of coloured signs; > 0 also adds white distractors (white shop signs,
+    # white vans, white emblems). 0 keeps every drive of before as it was. The whole catalogue has its own share.
     white_sign_share: float = 0.0
     # Georeference.
     crs: str = "EPSG:2056"
@@ -94,6 +103,10 @@ class SimulationConfig:
             (0.0 <= self.master_share <= 1.0, "master_share must be within 0..1"),
             (0.0 <= self.plate_share <= 1.0, "plate_share must be within 0..1"),
             (0.0 <= self.white_sign_share <= 1.0, "white_sign_share must be within 0..1"),
+            (self.sign_set in (WHOLE, DRAWABLE), f"sign_set must be {WHOLE!r} or {DRAWABLE!r}"),
+            (self.sign_set == DRAWABLE or self.white_sign_share == 0.0,
+             f"white_sign_share applies to sign_set {DRAWABLE!r}: the whole catalogue places white signs in its "
+             "own share"),
         ]
         for ok, message in checks:
             if not ok:

@@ -1,9 +1,10 @@
 """The two artworks a synthetic sign face is printed from.
 
-* ``master``: the catalogue's master image (``templates/ch/png``; the official
-  drawings once the catalogue carries them), resampled to the face size with a
-  small random placement of the print on the blank (shift, scale, rotation), so
-  even a face at the master's own size is a resampling, never a pixel copy.
+* ``master``: the catalogue's master image (``templates/ch/png``, the official
+  drawings) or one of the entry's variant drawings, resampled to the face size
+  with a small random placement of the print on the blank (shift, scale,
+  rotation), so even a face at the master's own size is a resampling, never a
+  pixel copy.
 * ``procedural``: the catalogue's procedural drawer with a random FaceStyle
   (pen widths, palette, font, details), an independent drawing of the sign.
 
@@ -13,12 +14,14 @@ Which of the two a sign gets is a seeded choice per sign (``choose_artwork``).
 from __future__ import annotations
 
 from functools import lru_cache
+from pathlib import Path
 
 import cv2
 import numpy as np
 
 MASTER, PROCEDURAL = "master", "procedural"
 MASTER_CACHE_PX = 800  # masters are kept at most this large: faces are at most 640 px
+POINTED_END = 0.8  # a panel's end whose outline covers less than this share of the other end's is its point
 
 
 # Signs whose procedural drawing shows another pictogram than the official drawing: another object, another
@@ -69,12 +72,29 @@ def has_procedural(template_id: str) -> bool:
     return template_id in SIGNS
 
 
-@lru_cache(maxsize=24)  # bounded: memory stays flat however many different signs a drive has
-def _master(template_id: str) -> tuple[np.ndarray, np.ndarray]:
-    """(bgr, alpha) of the bundled catalogue's master, reduced to MASTER_CACHE_PX on its longer side."""
+@lru_cache(maxsize=1)
+def _entries() -> dict:
+    """The bundled catalogue's entries (their drawings' paths), read once."""
     from ..catalogue import load_catalogue
 
-    bgr, alpha = load_catalogue().master(template_id)  # a fresh catalogue: its full-size cache is dropped
+    return load_catalogue().entries
+
+
+def drawing_stems(template_id: str) -> tuple[str, ...]:
+    """File stems of the official drawings a master face of the sign can be printed from: the entry's master,
+    then its variants (other language versions, the other pointing direction, the other boards of a row)."""
+    entry = _entries()[template_id]
+    return tuple(Path(png).stem for png in (entry.png, *entry.variants))
+
+
+@lru_cache(maxsize=24)  # bounded: memory stays flat however many different signs a drive has
+def _master(template_id: str, drawing: int = 0) -> tuple[np.ndarray, np.ndarray]:
+    """(bgr, alpha) of the bundled catalogue's master (``drawing`` 0) or its ``drawing``-th variant, reduced to
+    MASTER_CACHE_PX on its longer side."""
+    from ..catalogue.model import DEFAULT_CATALOGUE_DIR, Catalogue
+
+    catalogue = Catalogue(DEFAULT_CATALOGUE_DIR, _entries())  # a fresh catalogue: its full-size cache is dropped
+    bgr, alpha = catalogue.master(template_id) if drawing == 0 else catalogue.variant_masters(template_id)[drawing - 1]
     scale = MASTER_CACHE_PX / max(bgr.shape[:2])
     if scale < 1:
         size = (max(1, round(bgr.shape[1] * scale)), max(1, round(bgr.shape[0] * scale)))
@@ -83,11 +103,25 @@ def _master(template_id: str) -> tuple[np.ndarray, np.ndarray]:
     return bgr, alpha
 
 
-def master_face(template_id: str, size_wh: tuple[int, int], rng: np.random.Generator
+def pointing(template_id: str, drawing: int = 0) -> int:
+    """Which way a drawing's panel points: 1 right, -1 left (its pointed end is the narrower one), 0 neither
+    (a rectangle, a disc). A direction sign stands on its pole at its blunt end."""
+    alpha = _master(template_id, drawing)[1].astype(np.float32)
+    band = max(1, alpha.shape[1] // 20)
+    left, right = alpha[:, :band].mean(), alpha[:, -band:].mean()
+    if right < POINTED_END * left:
+        return 1
+    if left < POINTED_END * right:
+        return -1
+    return 0
+
+
+def master_face(template_id: str, size_wh: tuple[int, int], rng: np.random.Generator, drawing: int = 0
                 ) -> tuple[np.ndarray, np.ndarray]:
-    """Master artwork at (w, h): outline from the master's alpha, print placed with a small random error."""
+    """Master artwork (or its ``drawing``-th variant) at (w, h): outline from the drawing's alpha, print placed
+    with a small random error."""
     w, h = int(size_wh[0]), int(size_wh[1])
-    src_bgr, src_alpha = _master(template_id)
+    src_bgr, src_alpha = _master(template_id, drawing)
     shrink = w <= src_bgr.shape[1] and h <= src_bgr.shape[0]
     interp = cv2.INTER_AREA if shrink else cv2.INTER_LINEAR
     bgr = cv2.resize(src_bgr, (w, h), interpolation=interp)

@@ -1,9 +1,10 @@
 """Where sign faces come from: the one place the generator asks for a sign's pixels.
 
 A face is printed from one of two artworks, chosen per sign by a seeded draw
-(``face_artwork.py``): the catalogue's master image, resampled (the official
-drawings once the catalogue carries them), or the catalogue's procedural drawer
-with a random style. The physical sign then gets its own print run, reflective
+(``face_artwork.py``): the catalogue's master image or one of the entry's
+variant drawings (another language, the other pointing direction), resampled,
+or the catalogue's procedural drawer with a random style (only the signs it
+knows). The physical sign then gets its own print run, reflective
 sheeting, wear, dirt, stickers or a tag and dents, each switchable and each with
 a seeded random strength (``face_print.py`` ... ``face_dents.py``), and the
 older weathering here (fading, dirt blotches, cast shadow). All of it happens
@@ -18,7 +19,15 @@ import cv2
 import numpy as np
 
 from . import face_dirt, face_marks, face_print, face_sheeting, face_wear
-from .face_artwork import MASTER, PROCEDURAL, choose_artwork, has_procedural, master_face, procedural_face
+from .face_artwork import (
+    MASTER,
+    PROCEDURAL,
+    choose_artwork,
+    drawing_stems,
+    has_procedural,
+    master_face,
+    procedural_face,
+)
 from .face_dents import DentWarp, dent_warp
 from .face_layers import ink_layers
 from .textures import metal, smooth_noise
@@ -26,17 +35,46 @@ from .textures import metal, smooth_noise
 SIGN_COLOURS = ("red", "blue", "yellow")
 
 # seed streams of one face, one per variation, so switching one off leaves the others as they were
-_ARTWORK, _PRINT, _SHEETING, _WEAR, _DIRT, _MARKS, _DENTS, _BACK, _SHEEN = range(9)
+_ARTWORK, _PRINT, _SHEETING, _WEAR, _DIRT, _MARKS, _DENTS, _BACK, _SHEEN, _DRAWING = range(10)
+
+LONGER_SIDE, SCALE = "longer side", "scale"
+MEASURED = "measured"  # the format name of a face sized by a MeasuredSize
+
+
+@dataclass(frozen=True)
+class MeasuredSize:
+    """How large a sign without a standard size is made: its longer side in metres (``LONGER_SIDE``) or its
+    drawing's nominal size (the catalogue's format, the drawing at 1:20) times a factor (``SCALE``), uniform
+    within ``lo``..``hi``; the aspect is always the drawing's."""
+
+    rule: str
+    lo: float
+    hi: float
+
+    def size(self, nominal_wh: tuple[float, float], value: float) -> tuple[float, float]:
+        """(width_m, height_m) of a face of ``nominal_wh``'s aspect at ``value`` (a longer side or a factor)."""
+        w, h = nominal_wh
+        factor = value / max(w, h) if self.rule == LONGER_SIDE else value
+        return w * factor, h * factor
 
 
 @dataclass(frozen=True)
 class SignKind:
-    """What the layout needs to know about a template: id, colour, shape and standard formats."""
+    """What the layout needs to know about a template: id, colour, shape and standard formats; for the whole
+    catalogue's street (``sign_mix``) also the size rule of a sign without a standard size and its mounting."""
 
     template_id: str
     colour: str
     shape: str
     formats: tuple[tuple[str, float, float], ...]  # (name, width_m, height_m), sorted by name
+    measured: MeasuredSize | None = None  # set for the catalogue's ``sizing: measured`` entries
+    mount: str = "pole"  # sign_mix.MOUNTS
+
+
+def sign_kind(entry, **extra) -> SignKind | None:
+    """The SignKind of a catalogue entry (None when it has no format to size it by)."""
+    formats = tuple(sorted((name, float(w), float(h)) for name, (w, h) in entry.formats.items()))
+    return SignKind(entry.id, entry.colour, entry.shape, formats, **extra) if formats else None
 
 
 def sign_kinds(colours: tuple[str, ...] = SIGN_COLOURS) -> list[SignKind]:
@@ -50,9 +88,9 @@ def sign_kinds(colours: tuple[str, ...] = SIGN_COLOURS) -> list[SignKind]:
     kinds = []
     entries = [e for e in catalogue.filter(colours=list(colours)) if has_procedural(e.id)]
     for entry in sorted(entries, key=lambda e: e.id):
-        formats = tuple(sorted((name, float(w), float(h)) for name, (w, h) in entry.formats.items()))
-        if formats:
-            kinds.append(SignKind(entry.id, entry.colour, entry.shape, formats))
+        kind = sign_kind(entry)
+        if kind is not None:
+            kinds.append(kind)
     if not kinds:
         raise RuntimeError(f"the template catalogue has no {', '.join(colours)} signs to place")
     return kinds
@@ -70,7 +108,11 @@ def white_sign_kinds() -> list[SignKind]:
 
 
 def pick_format(kind: SignKind, rng: np.random.Generator) -> tuple[str, float, float]:
-    """'normal' mostly, 'small' sometimes, otherwise any format the sign has."""
+    """'normal' mostly, 'small' sometimes, otherwise any format the sign has; a sign without a standard size
+    (``kind.measured``) gets a size of its rule, named ``measured``."""
+    if kind.measured is not None:
+        rule = kind.measured
+        return (MEASURED, *rule.size(kind.formats[0][1:], float(rng.uniform(rule.lo, rule.hi))))
     by_name = {f[0]: f for f in kind.formats}
     if "normal" in by_name and "small" in by_name:
         return by_name["small"] if rng.random() < 0.3 else by_name["normal"]
@@ -85,6 +127,7 @@ class FaceOptions:
 
     face_artwork: str = "mixed"
     master_share: float = 0.7
+    face_variants: bool = True
     face_print: bool = True
     face_sheeting: bool = True
     face_wear: bool = True
@@ -98,8 +141,8 @@ class FaceOptions:
         return cls(**{f.name: getattr(config, f.name) for f in fields(cls)})
 
 
-PROCEDURAL_ONLY = FaceOptions(face_artwork="procedural", face_print=False, face_sheeting=False, face_wear=False,
-                              face_dirt=False, face_marks=False, face_dents=False, back_mounts=False)
+PROCEDURAL_ONLY = FaceOptions(face_artwork="procedural", face_variants=False, face_print=False, face_sheeting=False,
+                              face_wear=False, face_dirt=False, face_marks=False, face_dents=False, back_mounts=False)
 
 
 @dataclass(frozen=True)
@@ -130,12 +173,28 @@ class SignFace:
             return PROCEDURAL
         return choose_artwork(self.rng(_ARTWORK), self.options.master_share)
 
+    @property
+    def drawing(self) -> int:
+        """Which official drawing a master face is printed from: 0 the entry's master, k its k-th variant (another
+        language, the other pointing direction), each equally likely; always 0 without ``face_variants``."""
+        if not self.options.face_variants or self.artwork != MASTER:
+            return 0
+        count = len(drawing_stems(self.template_id))
+        return int(self.rng(_DRAWING).integers(count)) if count > 1 else 0
+
+    @property
+    def drawing_name(self) -> str:
+        """The file stem of the drawing printed, for the truth; "" for a procedural face or without variants."""
+        if not self.options.face_variants or self.artwork != MASTER:
+            return ""
+        return drawing_stems(self.template_id)[self.drawing]
+
     def clean(self) -> tuple[np.ndarray, np.ndarray]:
         """(bgr, alpha) of the artwork as printed, before any physical variation."""
         if self.artwork == MASTER:
             rng = self.rng(_ARTWORK)
             rng.random()  # the artwork choice
-            return master_face(self.template_id, self.size_wh, rng)
+            return master_face(self.template_id, self.size_wh, rng, self.drawing)
         return procedural_face(self.template_id, self.size_wh, np.random.default_rng(self.style_seed))
 
     def dents(self) -> DentWarp | None:

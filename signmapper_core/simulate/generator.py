@@ -20,11 +20,12 @@ from ..drive_writer import write_drive_json, write_pair, write_poses_csv, write_
 from ..geometry import Pose
 from ..progress import CancelCheck, ProgressCallback, check_cancelled, report
 from . import textures as tx
-from .config import SimulationConfig, SimulationSummary
+from .config import WHOLE, SimulationConfig, SimulationSummary
 from .faces import FaceOptions, sign_kinds, white_sign_kinds
 from .layout import CARRIAGEWAY, Scene, build_scene
 from .rasterizer import Rasterizer, TextureCache
 from .realism import apply_effects, draw_effects
+from .sign_mix import POLE, whole_mix
 from .street import Street
 
 S_FIRST = 10.0          # street position of the first pair (objects exist behind it)
@@ -83,10 +84,12 @@ def make_scene(config: SimulationConfig, street: Street | None = None) -> Scene:
     street = street or make_street(config)
     s_cam = _vehicle_positions(config)
     realism = {"weathering": config.weathering, "shadows": config.shadows, "occlusion": config.occlusion}
+    mix = whole_mix() if config.sign_set == WHOLE else None
+    kinds = mix.kinds([POLE]) if mix is not None else sign_kinds()
     return build_scene(street, config.seed, float(s_cam[0]), float(s_cam[-1]), config.fx, config.sign_density,
-                       config.distractor_density, sign_kinds(), realism,
+                       config.distractor_density, kinds, realism,
                        FaceOptions.from_config(config), config.plate_share,
-                       white_sign_kinds() if config.white_sign_share > 0 else [], config.white_sign_share)
+                       white_sign_kinds() if config.white_sign_share > 0 else [], config.white_sign_share, mix)
 
 
 def right_pose(pose: Pose, baseline_m: float) -> Pose:

@@ -22,6 +22,8 @@ from .distractors import distractors, white_sign_distractors
 from .faces import FaceOptions, SignKind
 from .plate_layout import white_distractors
 from .scene_pieces import CARRIAGEWAY, PARKING_LEFT, SIDEWALK_RIGHT, Pieces, TextureKeys
+from .sign_mix import SignMix
+from .sign_mounts import RIGHT_SIDE_SHARE, pole_form, sign_spot
 from .sign_poles import PanelLook, PlacedSign, sign_pole
 from .street import Street
 from .street_body import buildings, lamp_post, road
@@ -62,13 +64,17 @@ class Scene:
 def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float, fx: float,
                 sign_density: float, distractor_density: float, kinds: list[SignKind], realism: dict,
                 face_options: FaceOptions | None = None, plate_share: float = 0.0,
-                white_kinds: list[SignKind] | None = None, white_share: float = 0.0) -> Scene:
+                white_kinds: list[SignKind] | None = None, white_share: float = 0.0, mix: SignMix | None = None
+                ) -> Scene:
     """Lay out the whole street: road, buildings, signs (where the drive passes them), distractors.
 
-    ``plate_share``: share of the poles whose lowest sign carries a supplementary plate (``plate_layout``).
-    ``white_share``: share of the poles carrying signs of ``white_kinds`` (the white and grey family) instead
+    ``mix``: the signs of the whole catalogue (``sign_mix``), each spot mounted as its part says
+    (``sign_mounts``), white distractors included; ``kinds`` then only give the sign backs among the
+    distractors. Without it (the drives of before): ``kinds`` on every pole, each equally likely, and
+    ``white_share`` the share of the poles carrying signs of ``white_kinds`` (the white and grey family) instead
     of ``kinds``; white signs stand on single or stacked poles (none hangs overhead), about a third of the
     white poles carry a text panel instead (``text_panel_poles``), and white distractors join the others.
+    ``plate_share``: share of the poles whose lowest sign carries a supplementary plate (``plate_layout``).
     """
     keys = TextureKeys(seed)
     pieces = Pieces(street, keys)
@@ -98,27 +104,27 @@ def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float
     text_panel_rng = keys.rng(1, 33)  # drawn from only on white poles
     signs: list[PlacedSign] = []
     for s in spots:
+        if mix is not None:
+            signs += sign_spot(pieces, look, s, mix, sign_rng, text_panel_rng, facades)
+            continue
         u = sign_rng.random()
-        side = 1 if sign_rng.random() < 0.75 else -1
+        side = 1 if sign_rng.random() < RIGHT_SIDE_SHARE else -1
         # drawn only when white signs are asked for, so drives without them stay as they were
         white = bool(white_kinds) and white_share > 0 and sign_rng.random() < white_share
         pole_kinds = white_kinds if white else kinds
+        form = pole_form(u)
+        if white and form == "overhead":
+            form = "stacked"  # no white sign hangs overhead
         if white and text_panel_rng.random() < TEXT_PANEL_SHARE:
             signs += text_panel_pole(pieces, look, s, text_panel_rng, side)
-        elif u < 0.08 and not white:
-            signs += sign_pole(pieces, look, s, pole_kinds, sign_rng, 1, "overhead")
-        elif u < 0.30:
-            signs += sign_pole(pieces, look, s, pole_kinds, sign_rng, side, "stacked")
-        elif u < 0.40:
-            signs += sign_pole(pieces, look, s, pole_kinds, sign_rng, side, "back-to-back")
         else:
-            signs += sign_pole(pieces, look, s, pole_kinds, sign_rng, side)
+            signs += sign_pole(pieces, look, s, pole_kinds, sign_rng, 1 if form == "overhead" else side, form)
     if distractor_density > 0:
         signs += distractors(pieces, look, s_cam_first, s_end - 10, distractor_density, keys.rng(1, 3), spots, kinds,
                              facades)
         if plate_share > 0:
             white_distractors(pieces, s_cam_first, s_end - 10, distractor_density / 2, keys.rng(1, 31), facades)
-        if white_kinds and white_share > 0:
+        if (white_kinds and white_share > 0) or mix is not None:
             white_sign_distractors(pieces, s_cam_first, s_end - 10, distractor_density / 2, keys.rng(1, 32),
                                    facades)
     _number_truth(signs)

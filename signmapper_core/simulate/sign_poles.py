@@ -12,10 +12,12 @@ from . import textures as tx
 from .faces import FaceOptions, SignFace, SignKind, draw_sign_face, pick_format
 from .plate_layout import PLATE_MAX_GAP_M, add_plate
 from .scene_pieces import CARRIAGEWAY, KERB_H, PARKING_LEFT, SIDEWALK_RIGHT, UP, Pieces
+from .sign_mix import pick_kind
 from .surfaces import Surface, Texture, TextureSource, rect_surface
 
 POLE_FORMS = ("single", "stacked", "back-to-back", "overhead", "away")
 POLE_STANDOFF_M = 0.04  # pole axis behind an upright panel (a 6 cm pole: 1 cm clear of it)
+OVERHEAD_REACH_M = 0.3  # how far an overhead panel may reach over the right sidewalk
 
 
 @dataclass
@@ -49,16 +51,21 @@ def face_shape(size_px: int, w_m: float, h_m: float) -> tuple[int, int]:
     return size_px, max(1, int(round(size_px * w_m / h_m)))
 
 
-def sign_panel(pieces: Pieces, look: PanelLook, kind: SignKind, centre, facing_deg, tilt_deg, fmt, s,
-               towards_vehicle: bool) -> PlacedSign:
-    """Face and grey back of one panel (truth if it faces the vehicle)."""
+def make_face(pieces: Pieces, look: PanelLook, kind: SignKind, fmt) -> tuple[SignFace, str]:
+    """A physical face of ``kind`` in format ``fmt`` (name, width_m, height_m), and its texture key."""
     _name, w_m, h_m = fmt
     size_px = int(np.clip(look.fx * max(w_m, h_m) / 3.0, 48, 640))
     fh, fw = face_shape(size_px, w_m, h_m)
     key, rng = pieces.keys.key("face")
-    sign_face = draw_sign_face(kind.template_id, (fw, fh), float(w_m), rng, look.face_options, look.weathering,
-                               look.shadows)
-    return mount_face(pieces, sign_face, key, kind.colour, centre, facing_deg, tilt_deg, (w_m, h_m), s,
+    return draw_sign_face(kind.template_id, (fw, fh), float(w_m), rng, look.face_options, look.weathering,
+                          look.shadows), key
+
+
+def sign_panel(pieces: Pieces, look: PanelLook, kind: SignKind, centre, facing_deg, tilt_deg, fmt, s,
+               towards_vehicle: bool) -> PlacedSign:
+    """Face and grey back of one panel (truth if it faces the vehicle)."""
+    sign_face, key = make_face(pieces, look, kind, fmt)
+    return mount_face(pieces, sign_face, key, kind.colour, centre, facing_deg, tilt_deg, fmt[1:], s,
                       towards_vehicle)
 
 
@@ -92,7 +99,8 @@ def mount_face(pieces: Pieces, sign_face: SignFace, key: str, colour: str, centr
     truth = None
     if towards_vehicle:
         truth = TruthSign("", sign_face.template_id, float(centre[0]), float(centre[1]), float(centre[2]),
-                          float(w_m), float(h_m), float(facing_deg % 360.0), text=text, artwork=sign_face.artwork)
+                          float(w_m), float(h_m), float(facing_deg % 360.0), text=text, artwork=sign_face.artwork,
+                          drawing=sign_face.drawing_name)
     return PlacedSign(truth, colour, centre, [face, back])
 
 
@@ -101,22 +109,25 @@ def standing_pole(pieces: Pieces, base, height: float, s) -> None:
     pieces.crossed(base, 0.06, height, None, None, s, (140, 145, 145))
 
 
-def sign_pole(pieces: Pieces, look: PanelLook, s, kinds, rng, side, form: str = "single") -> list[PlacedSign]:
+def sign_pole(pieces: Pieces, look: PanelLook, s, kinds, rng, side, form: str = "single",
+              first: SignKind | None = None, fmt=None) -> list[PlacedSign]:
     """A pole with its panels (``form``: one of ``POLE_FORMS``); right-side signs face approaching traffic,
-    ``away`` ones the other way (distractors, not in the truth)."""
+    ``away`` ones the other way (distractors, not in the truth). ``kinds``: a list (each equally likely) or a
+    ``SignMix``; ``first``, ``fmt``: the lowest panel's kind and format when the caller has chosen them."""
     if form not in POLE_FORMS:
         raise ValueError(f"unknown pole form {form!r}; choose one of {', '.join(POLE_FORMS)}")
     away = form == "away"
     st = pieces.street
     heading = np.degrees(st.heading(s))
-    first = kinds[int(rng.integers(len(kinds)))]
-    fmt = pick_format(first, rng)
+    first = first or pick_kind(kinds, rng)
+    fmt = fmt or pick_format(first, rng)
     w_m, h_m = fmt[1], fmt[2]
     yaw = rng.uniform(-4, 4) + side * rng.uniform(0, 6)  # turned a little towards the road
     facing = heading + 180.0 - yaw if not away else heading + rng.uniform(-4, 4)
     tilt = rng.uniform(-3, 3)
     if form == "overhead":
-        l_c = CARRIAGEWAY[1] / 2 + rng.uniform(-0.6, 0.6)
+        # over the right lane, a wide board no further right than the sidewalk's edge (never reached before boards)
+        l_c = min(CARRIAGEWAY[1] / 2 + rng.uniform(-0.6, 0.6), SIDEWALK_RIGHT[0] + OVERHEAD_REACH_M - w_m / 2)
         lower = rng.uniform(4.3, 4.7)
         centre = st.point(s, l_c, lower + h_m / 2)
         placed = [sign_panel(pieces, look, first, centre, facing, tilt, fmt, s, True)]
@@ -133,7 +144,7 @@ def sign_pole(pieces: Pieces, look: PanelLook, s, kinds, rng, side, form: str = 
     ground = KERB_H
     centres = [(first, fmt, lower + h_m / 2)]
     if form == "stacked":
-        second = kinds[int(rng.integers(len(kinds)))]
+        second = pick_kind(kinds, rng)
         fmt2 = pick_format(second, rng)
         # about 0.7 m between the panel centres, never overlapping
         gap = max(0.7, (h_m + fmt2[2]) / 2 + 0.05)
@@ -147,7 +158,7 @@ def sign_pole(pieces: Pieces, look: PanelLook, s, kinds, rng, side, form: str = 
         lean = abs(np.sin(np.radians(panel_tilt)))
         placed.append(sign_panel(pieces, look, kind, centre, facing, panel_tilt, f, s, not away))
         reach = max(reach, f[2] / 2 * lean)
-        if k == 0 and look.plate_share > 0:  # the lowest sign may carry a supplementary plate
+        if k == 0 and look.plate_share > 0 and kind.measured is None:  # the lowest sign may carry a plate
             plates = add_plate(pieces, look, placed[-1], centre, facing, panel_tilt, f, s)
             reach = max([reach] + [(f[2] / 2 + PLATE_MAX_GAP_M + p.truth.height_m) * lean for p in plates])
             placed += plates
@@ -156,7 +167,7 @@ def sign_pole(pieces: Pieces, look: PanelLook, s, kinds, rng, side, form: str = 
     standoff = POLE_STANDOFF_M + reach
     n_h = np.array([np.sin(np.radians(facing)), np.cos(np.radians(facing)), 0.0])
     if form == "back-to-back":
-        other = kinds[int(rng.integers(len(kinds)))]
+        other = pick_kind(kinds, rng)
         f = pick_format(other, rng)
         centre = st.point(s, l_c, ground + lower + h_m / 2) - n_h * 2 * standoff
         placed.append(sign_panel(pieces, look, other, centre, facing + 180.0, tilt, f, s, False))

@@ -24,7 +24,7 @@ from signmapper_core.errors import ClusterError
 from signmapper_core.mapping import map_drive
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.progress import Cancelled
-from signmapper_core.simulate import SimulationConfig, generate_drive
+from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
 
 REPO = Path(__file__).resolve().parents[2]
 PAIRS = 8
@@ -34,7 +34,7 @@ PAIRS = 8
 def drive_dir(tmp_path_factory) -> Path:
     """JPEG pairs without depth maps (SGBM), 8 pairs: enough for several pairs in flight on each worker."""
     out = tmp_path_factory.mktemp("dask") / "drive"
-    generate_drive(out, SimulationConfig(pairs=PAIRS, seed=11, write_depth=False, **SMALL_SYNTHETIC))
+    generate_drive(out, SimulationConfig(pairs=PAIRS, seed=11, write_depth=False, **SMALL_SYNTHETIC, **DRAWABLE_SIGNS))
     return out
 
 

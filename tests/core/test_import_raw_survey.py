@@ -18,7 +18,7 @@ from signmapper_core.importdrive import (
 )
 from signmapper_core.mapping import map_drive
 from signmapper_core.pipeline import PipelineConfig
-from signmapper_core.simulate import SimulationConfig, generate_drive
+from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
 from signmapper_core.simulate.raw_survey import write_raw_survey
 
 pytestmark = pytest.mark.slow
@@ -27,7 +27,7 @@ pytestmark = pytest.mark.slow
 @pytest.fixture(scope="module")
 def drives(tmp_path_factory):
     base = tmp_path_factory.mktemp("raw_survey")
-    generate_drive(base / "drive", SimulationConfig(pairs=8, seed=11, **SMALL_SYNTHETIC))
+    generate_drive(base / "drive", SimulationConfig(pairs=8, seed=11, **SMALL_SYNTHETIC, **DRAWABLE_SIGNS))
     survey = write_raw_survey(base / "drive", base / "survey")
     original = open_drive(base / "drive")
     source = generic_source(GenericInputs(

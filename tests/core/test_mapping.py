@@ -14,13 +14,13 @@ from signmapper_core.mapping import detect_at, load_pair, manual_sign, map_drive
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.progress import Cancelled
 from signmapper_core.run_settings import run_settings
-from signmapper_core.simulate import SimulationConfig, generate_drive
+from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
 
 
 @pytest.fixture(scope="module")
 def drive_dir(tmp_path_factory) -> Path:
     out = tmp_path_factory.mktemp("mapping") / "drive"
-    generate_drive(out, SimulationConfig(pairs=10, seed=11, write_depth=True, **SMALL_SYNTHETIC))
+    generate_drive(out, SimulationConfig(pairs=10, seed=11, write_depth=True, **SMALL_SYNTHETIC, **DRAWABLE_SIGNS))
     return out
 
 

@@ -17,14 +17,14 @@ from signmapper_core.mapping import map_drive
 from signmapper_core.pair_pool import TemplateHandoff, available_cores, python_executable, worker_count
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.progress import Cancelled
-from signmapper_core.simulate import SimulationConfig, generate_drive
+from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
 
 
 @pytest.fixture(scope="module")
 def stereo_drive(tmp_path_factory) -> Path:
     """JPEG pairs without depth maps: depth by SGBM, as with real drives."""
     out = tmp_path_factory.mktemp("pool") / "drive"
-    generate_drive(out, SimulationConfig(pairs=10, seed=11, write_depth=False, **SMALL_SYNTHETIC))
+    generate_drive(out, SimulationConfig(pairs=10, seed=11, write_depth=False, **SMALL_SYNTHETIC, **DRAWABLE_SIGNS))
     return out
 
 

@@ -10,14 +10,15 @@ from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive import open_drive
 from signmapper_core.geometry import world_to_pixel
 from signmapper_core.plate_formats import PLATE_FORMATS
-from signmapper_core.simulate import SimulationConfig, generate_drive, true_poses
+from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive, true_poses
 from signmapper_core.simulate.generator import right_pose
 
 HUE_RANGES = {"red": [(0, 10), (170, 180)], "blue": [(100, 130)], "yellow": [(18, 35)]}
 
 
 def small_config(**kw) -> SimulationConfig:
-    base = dict(pairs=10, seed=3, width=640, height=360, fx=1750.0 / 3, sign_density=25.0, write_depth=True)
+    base = dict(pairs=10, seed=3, width=640, height=360, fx=1750.0 / 3, sign_density=25.0, write_depth=True,
+                **DRAWABLE_SIGNS)  # red, blue and yellow signs (the whole catalogue's drive: test_simulate_sign_mix)
     base.update(kw)
     return SimulationConfig(**base)
 

@@ -10,6 +10,7 @@ import pytest
 
 from signmapper_core.drive import read_truth
 from signmapper_core.simulate import (
+    DRAWABLE_SIGNS,
     LEGACY_FACES,
     SimulationConfig,
     face_dirt,
@@ -235,7 +236,7 @@ def test_legacy_faces_are_the_procedural_drawing_with_the_older_weathering_only(
 
 def test_faces_do_not_move_signs_truth_and_poses_are_those_of_legacy_faces(tmp_path):
     base = dict(pairs=3, seed=21, width=320, height=180, fx=1750.0 / 6, sign_density=25.0)
-    generate_drive(tmp_path / "new", SimulationConfig(**base))
+    generate_drive(tmp_path / "new", SimulationConfig(**base, **DRAWABLE_SIGNS))  # legacy faces: the signs of before
     generate_drive(tmp_path / "old", SimulationConfig(**base, **LEGACY_FACES))
     for name in ("poses.csv", "drive.json"):
         assert (tmp_path / "new" / name).read_bytes() == (tmp_path / "old" / name).read_bytes(), name
@@ -249,11 +250,14 @@ def test_faces_do_not_move_signs_truth_and_poses_are_those_of_legacy_faces(tmp_p
     assert new_left != (tmp_path / "old" / "left" / "000000.jpg").read_bytes()
 
 
-@pytest.mark.parametrize("field, value, message", [("face_artwork", "official", "face_artwork"),
-                                                    ("master_share", 1.5, "master_share")])
-def test_bad_face_settings_are_rejected_by_name(field, value, message):
+@pytest.mark.parametrize("settings, message", [({"face_artwork": "official"}, "face_artwork"),
+                                               ({"master_share": 1.5}, "master_share"),
+                                               ({"sign_set": "all"}, "sign_set"),
+                                               ({"white_sign_share": 0.3}, "white_sign_share applies to")])
+def test_bad_face_settings_are_rejected_by_name(settings, message):
     with pytest.raises(ValueError, match=message):
-        SimulationConfig(**{field: value}).validate()
+        SimulationConfig(**settings).validate()
+    SimulationConfig(white_sign_share=0.3, **DRAWABLE_SIGNS).validate()  # the drives of before take it
 
 
 def test_no_two_procedural_drawings_of_one_colour_and_shape_look_alike(catalogue):

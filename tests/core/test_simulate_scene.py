@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from signmapper_core.simulate import SimulationConfig
+from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig
 from signmapper_core.simulate.distractors import facade_distractor
 from signmapper_core.simulate.faces import FaceOptions, sign_kinds
 from signmapper_core.simulate.generator import _vehicle_positions, make_scene, make_street
@@ -32,7 +32,8 @@ def street_coords(street, point):
 
 
 def test_signs_stand_along_the_driven_path_and_face_the_traffic():
-    cfg = SimulationConfig(pairs=150, seed=9)
+    """The standing poles of the drives of before (the whole catalogue's posts and boards: test_simulate_sign_mix)."""
+    cfg = SimulationConfig(pairs=150, seed=9, **DRAWABLE_SIGNS)
     street = make_street(cfg)
     scene = make_scene(cfg, street)
     s_cam = _vehicle_positions(cfg)

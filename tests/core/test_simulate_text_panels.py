@@ -8,7 +8,7 @@ import pytest
 from test_simulate_scene import street_coords
 
 from signmapper_core.catalogue.text_panels import TEXT_PANELS, is_text_panel
-from signmapper_core.simulate import SimulationConfig
+from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig
 from signmapper_core.simulate import faces as faces_module
 from signmapper_core.simulate.faces import FaceOptions, SignKind, white_sign_kinds
 from signmapper_core.simulate.generator import make_scene, make_street
@@ -93,7 +93,7 @@ def test_white_sign_kinds_leave_the_text_panels_out(monkeypatch):
 
 
 def test_a_white_drive_has_text_panels_with_their_text_in_the_truth():
-    scene = make_scene(SimulationConfig(pairs=150, seed=9, white_sign_share=0.5))
+    scene = make_scene(SimulationConfig(pairs=150, seed=9, white_sign_share=0.5, **DRAWABLE_SIGNS))
     panels = [t for t in scene.truth if is_text_panel(t.template_id)]
     assert panels and {t.template_id for t in panels} <= {"4.29", "4.30", "4.33"}
     for t in panels:
@@ -102,8 +102,9 @@ def test_a_white_drive_has_text_panels_with_their_text_in_the_truth():
         assert 1 <= len(t.text.split(" / ")) <= 3
 
 
-def test_drives_without_white_signs_have_no_text_panels():
-    for cfg in (SimulationConfig(pairs=150, seed=9), SimulationConfig(pairs=150, seed=9, white_sign_share=0.0)):
+def test_drives_of_before_without_white_signs_have_no_text_panels():
+    for cfg in (SimulationConfig(pairs=150, seed=9, **DRAWABLE_SIGNS),
+                SimulationConfig(pairs=150, seed=9, white_sign_share=0.0, **DRAWABLE_SIGNS)):
         assert not any(is_text_panel(t.template_id) for t in make_scene(cfg).truth)
 
 

@@ -47,11 +47,12 @@ def run(registered_plugin):
 
 @pytest.fixture(scope="session")
 def small_drive(tmp_path_factory) -> Path:
-    """12 half-HD pairs with true depth maps (seed 11): the drive mapsigns tests and the golden file use."""
+    """12 half-HD pairs with true depth maps (seed 11, the signs of before the whole catalogue): the drive
+    mapsigns tests and the golden file use."""
     from drive_fixtures import SMALL_SYNTHETIC
 
-    from signmapper_core.simulate import SimulationConfig, generate_drive
+    from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
 
     out = tmp_path_factory.mktemp("drives") / "drive"
-    generate_drive(out, SimulationConfig(pairs=12, seed=11, write_depth=True, **SMALL_SYNTHETIC))
+    generate_drive(out, SimulationConfig(pairs=12, seed=11, write_depth=True, **SMALL_SYNTHETIC, **DRAWABLE_SIGNS))
     return out

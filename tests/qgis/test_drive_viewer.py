@@ -13,7 +13,7 @@ from qgis.PyQt.QtWidgets import QApplication
 
 from signmapper_core.drive import open_drive
 from signmapper_core.geometry import world_to_pixel
-from signmapper_core.simulate import SimulationConfig, generate_drive, true_poses
+from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive, true_poses
 
 SMALL = dict(width=960, height=540, fx=875.0)
 EXACT_POSES = dict(position_sigma_m=0.0, angle_sigma_deg=0.0)  # recorded poses = the poses images were drawn from
@@ -22,7 +22,7 @@ EXACT_POSES = dict(position_sigma_m=0.0, angle_sigma_deg=0.0)  # recorded poses 
 @pytest.fixture(scope="module")
 def drive_dir(tmp_path_factory):
     out = tmp_path_factory.mktemp("viewer") / "drive"
-    generate_drive(out, SimulationConfig(pairs=10, seed=11, write_depth=True, **SMALL, **EXACT_POSES))
+    generate_drive(out, SimulationConfig(pairs=10, seed=11, write_depth=True, **SMALL, **EXACT_POSES, **DRAWABLE_SIGNS))
     return out
 
 
@@ -133,7 +133,7 @@ def test_a_mapped_sign_is_drawn_within_2_px_of_where_the_image_shows_it(viewer, 
     controller, dock, layers, _ = viewer
     drive = open_drive(drive_dir)
     moved = _move_signs_to_truth(layers["signs"], drive.truth)
-    poses = true_poses(SimulationConfig(pairs=10, seed=11, write_depth=True, **SMALL, **EXACT_POSES))
+    poses = true_poses(SimulationConfig(pairs=10, seed=11, write_depth=True, **SMALL, **EXACT_POSES, **DRAWABLE_SIGNS))
     checked = 0
     for index in range(len(drive.pairs)):
         controller.go_to(index)

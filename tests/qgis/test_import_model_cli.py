@@ -18,11 +18,11 @@ MODEL = REPO / "models" / "import_and_map_signs.model3"
 
 @pytest.fixture(scope="module")
 def raw_survey(tmp_path_factory):
-    from signmapper_core.simulate import SimulationConfig, generate_drive
+    from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
     from signmapper_core.simulate.raw_survey import write_raw_survey
 
     base = tmp_path_factory.mktemp("model_survey")
-    generate_drive(base / "drive", SimulationConfig(pairs=8, seed=11, **SMALL_SYNTHETIC))
+    generate_drive(base / "drive", SimulationConfig(pairs=8, seed=11, **SMALL_SYNTHETIC, **DRAWABLE_SIGNS))
     return open_drive(base / "drive"), write_raw_survey(base / "drive", base / "survey")
 
 

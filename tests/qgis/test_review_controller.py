@@ -25,7 +25,7 @@ from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive import open_drive
 from signmapper_core.geometry import world_to_pixel
 from signmapper_core.pipeline import PipelineConfig, detect_pair
-from signmapper_core.simulate import SimulationConfig, generate_drive
+from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
 
 SMALL = dict(width=960, height=540, fx=875.0)
 REVIEW_EVERY = 2  # every second detection gets status "review" so the walk has several stops
@@ -34,7 +34,7 @@ REVIEW_EVERY = 2  # every second detection gets status "review" so the walk has 
 @pytest.fixture(scope="module")
 def drive_dir(tmp_path_factory) -> Path:
     out = tmp_path_factory.mktemp("review") / "drive"
-    generate_drive(out, SimulationConfig(pairs=8, seed=11, write_depth=True, **SMALL))
+    generate_drive(out, SimulationConfig(pairs=8, seed=11, write_depth=True, **SMALL, **DRAWABLE_SIGNS))
     return out
 
 

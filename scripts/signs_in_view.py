@@ -1,0 +1,93 @@
+"""Signs in view per colour family (faces of the procedural designs apart), from truth and poses only: nothing mapped.
+
+    python scripts/signs_in_view.py DRIVE [DRIVE ...]
+    python scripts/signs_in_view.py --seeds 8000-8059 --pairs 100 [--plan | --generate]
+
+For a held-out set, chosen before anything is mapped: every family should have enough signs in view over it.
+A sign is in view as ``visibility.mappable_signs`` says (its centre inside the image, within the depth range,
+its face turned to the camera, in one pair at least); its row is ``family_evaluation.sign_group``. ``--seeds``
+counts the synthetic drives ``scripts/evaluate_mapping.py --generate SEEDS --pairs N`` maps (the same folders
+under build/drives/): ``--plan`` from their layout alone (no pixel rendered; the same truth and poses the drives
+carry), ``--generate`` writes those not there yet, else the folders must exist.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections import Counter
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+sys.path.insert(0, str(REPO / "scripts"))
+
+from evaluate_mapping import drive_folder, generated_drive  # noqa: E402
+
+from signmapper_core.catalogue import load_catalogue  # noqa: E402
+from signmapper_core.drive import open_drive  # noqa: E402
+from signmapper_core.family_evaluation import GROUP_TITLES, GROUPS, catalogue_colour, sign_group  # noqa: E402
+from signmapper_core.visibility import visible_in_pair  # noqa: E402
+
+
+def in_view(truth, camera, poses, near: float, far: float) -> list:
+    """The signs (not plates) of ``truth`` seen face-on within ``near``..``far`` from one of ``poses`` at least."""
+    return [t for t in truth if not t.is_plate and any(visible_in_pair(camera, p, t, near, far) for p in poses)]
+
+
+def planned(seed: int, pairs: int, near: float, far: float) -> list:
+    """The signs in view of the drive ``evaluate_mapping --generate`` would write, from its layout alone."""
+    from signmapper_core.simulate import SimulationConfig
+    from signmapper_core.simulate.generator import make_scene, make_street, recorded_poses, true_poses
+
+    config = SimulationConfig(pairs=pairs, seed=seed)
+    street = make_street(config)
+    poses = recorded_poses(config, true_poses(config, street))
+    return in_view(make_scene(config, street).truth, config.camera(), poses, near, far)
+
+
+def seed_range(text: str) -> list[int]:
+    """'8000-8059' or '8000,8003' (or both, comma-separated)."""
+    seeds = []
+    for part in text.split(","):
+        lo, _, hi = part.partition("-")
+        seeds += list(range(int(lo), int(hi or lo) + 1))
+    return seeds
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("drives", nargs="*", type=Path, help="drive folders with truth.csv")
+    parser.add_argument("--seeds", type=seed_range, default=[], help="synthetic drives by seed: 8000-8059")
+    parser.add_argument("--pairs", type=int, default=100, help="pairs of each synthetic drive")
+    how = parser.add_mutually_exclusive_group()
+    how.add_argument("--plan", action="store_true", help="count from the layout, write nothing")
+    how.add_argument("--generate", action="store_true", help="write the synthetic drives not there yet")
+    parser.add_argument("--near", type=float, default=4.0)
+    parser.add_argument("--far", type=float, default=14.0)
+    args = parser.parse_args(argv)
+    if not args.drives and not args.seeds:
+        parser.error("give drive folders or --seeds")
+    colour_of = catalogue_colour(load_catalogue())
+    totals = Counter()
+    sources = [(str(d), d) for d in args.drives] + [(f"seed {s}", s) for s in args.seeds]
+    for name, source in sources:
+        if isinstance(source, int) and args.plan:
+            seen = planned(source, args.pairs, args.near, args.far)
+        else:
+            folder = source if isinstance(source, Path) else \
+                generated_drive(source, args.pairs, False) if args.generate else drive_folder(source, args.pairs, False)
+            drive = open_drive(folder, require_truth=True)
+            seen = in_view(drive.truth, drive.camera, [r.pose for r in drive.pairs], args.near, args.far)
+        counts = Counter(sign_group(t, colour_of) for t in seen)
+        totals += counts
+        print(f"{name}: {len(seen)} signs in view; " + ", ".join(f"{g} {counts[g]}" for g in GROUPS if counts[g]),
+              flush=True)
+    print(f"== {len(sources)} drives, {sum(totals.values())} signs in view (near {args.near:g} m, far {args.far:g} m)")
+    for group in GROUPS:
+        print(f"  {GROUP_TITLES.get(group, group):<20} {totals[group]:>5}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
