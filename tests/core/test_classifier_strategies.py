@@ -18,7 +18,7 @@ from signmapper_core.pipeline.classifiers import (
     model_card_path,
 )
 from signmapper_core.pipeline.classifiers.face_patch import expanded_box, face_patch, standardise
-from signmapper_core.pipeline.config import ClassificationConfig
+from signmapper_core.pipeline.config import ClassificationConfig, WhiteConfig
 from signmapper_core.pipeline.pair_context import PairContext
 
 
@@ -179,9 +179,11 @@ def test_a_white_disc_the_network_never_learned_is_matched_by_template_not_an_er
     monkeypatch.setattr(pair_context, "classifier_for", lambda catalogue, config: network)
     sign = POSE.centre + 7.0 * POSE.rotation[:, 2] + 1.5 * POSE.rotation[:, 0] - 0.4 * POSE.rotation[:, 1]
     left, depth, bbox = sign_scene(catalogue, template_id, "normal", sign, background_depth=30.0)
-    pair = PairContext.whole(left, CAMERA, POSE, catalogue, PipelineConfig(), None)
+    # the Hough route reads white discs only with the white step off (on, the white step takes them)
+    hough_route = PipelineConfig(white=WhiteConfig(white_signs=False))
+    pair = PairContext.whole(left, CAMERA, POSE, catalogue, hough_route, None)
     assert pair.classifier_knowing(["2.01", "2.30-50"]) is pair.classifier
     assert isinstance(pair.classifier_knowing(["2.01", template_id]), NccClassifier)
-    (det,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig())
+    (det,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, hough_route)
     assert det.template_id == template_id and det.source == "hough" and det.status == "review"
     assert np.linalg.norm(det.position - sign) < 0.05
