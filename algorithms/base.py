@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import html
 from pathlib import Path
 
 from qgis.core import (
@@ -52,12 +53,16 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
 
     def shortHelpString(self):  # noqa: N802
         """The algorithm's help followed by every parameter's own help text."""
-        lines = [self.tr(self.HELP), "", "<b>Parameters</b>", "<ul>"]
+        lines = [self.help_html(self.HELP), "", "<b>Parameters</b>", "<ul>"]
         for param in self.parameterDefinitions():
             help_text = param.help() if hasattr(param, "help") else ""
-            lines.append(f"<li><b>{param.description()}</b>: {help_text}</li>")
+            lines.append(f"<li><b>{html.escape(param.description())}</b>: {html.escape(help_text, quote=False)}</li>")
         lines.append("</ul>")
         return "\n".join(lines)
+
+    def help_html(self, text: str) -> str:
+        """Plain help text as the HTML the help panel shows: 'depth/<id>.npy' must not lose '<id>' as a tag."""
+        return html.escape(self.tr(text), quote=False)
 
     def add_parameter(self, param, help_text: str, advanced: bool = False):
         """Add a parameter with its help text (shown in the dialog and in shortHelpString).

@@ -93,7 +93,7 @@ class ChangesAlgorithm(SignMapperAlgorithm):
         from ..signmapper_core import changes_schema
 
         lines = [super().shortHelpString(), "<b>Fields of 'changes'</b>", "<ul>"]
-        lines += [f"<li><b>{f.name}</b>: {self.tr(f.help)}</li>" for f in changes_schema.FIELDS]
+        lines += [f"<li><b>{f.name}</b>: {self.help_html(f.help)}</li>" for f in changes_schema.FIELDS]
         return "\n".join(lines + ["</ul>"])
 
     def initAlgorithm(self, config=None):  # noqa: N802

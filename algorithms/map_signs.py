@@ -49,8 +49,9 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         "Detects, classifies and positions the traffic signs of a stereo drive (Cavegn 2011). Per stereo pair: "
         "depth from the given depth map or by semi-global matching, search space cut to the depth range, HSV "
         "colour segmentation, shape, metric size rounded to the catalogue's standard formats, planarity "
-        "(detection indicator), template matching (classification indicator) and the 3D position of the sign "
-        "centre from the pair's pose. Writes a GeoPackage with the layer 'detections' (one PointZ per sign per "
+        "(detection indicator), classification by the learned network or by template matching (classification "
+        "indicator: the network's calibrated probability, or the correlation score) and the 3D position of the "
+        "sign centre from the pair's pose. Writes a GeoPackage with the layer 'detections' (one PointZ per sign per "
         "pair, in the drive's CRS), the layer 'signs' (the detections of each physical sign fused into one point with "
         "class by weighted vote, number of observations, position spread and face azimuth) and the table "
         "'signmapper_run' recording the drive folder and parameters. "
@@ -86,7 +87,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         lines = [super().shortHelpString(), "<b>Output fields</b>", "<ul>"]
         for field in schema.FIELDS:
             layers = " and ".join(layer for layer in schema.LAYERS if field.reader(layer) is not None)
-            lines.append(f"<li><b>{field.name}</b> ({layers}): {self.tr(field.help)}</li>")
+            lines.append(f"<li><b>{field.name}</b> ({layers}): {self.help_html(field.help)}</li>")
         lines.append("</ul>")
         return "\n".join(lines)
 
