@@ -11,6 +11,8 @@ import tempfile
 from pathlib import Path
 
 from qgis.core import (
+    QgsProcessing,
+    QgsProcessingOutputLayerDefinition,
     QgsProcessingParameterFeatureSink,
     QgsProcessingParameterFeatureSource,
     QgsProcessingParameterFile,
@@ -18,6 +20,7 @@ from qgis.core import (
     QgsProcessingParameterFolderDestination,
     QgsProcessingParameterVectorDestination,
     QgsProcessingParameterVectorLayer,
+    QgsProperty,
     QgsProviderRegistry,
 )
 
@@ -32,6 +35,18 @@ def _plain_path(text) -> Path | None:
     return Path(text.split("|")[0])
 
 
+def layer_destination(value, context) -> str:
+    """The file or URI a layer output is given as, read without ``parameterAsOutputLayer``: that one also asks
+    Processing to load the output when the run completes, under a name no layer will have for a temporary one
+    ('memory:Matches'), which ended dialog and model runs with "layers were not correctly generated"."""
+    if isinstance(value, QgsProcessingOutputLayerDefinition):
+        value = value.sink
+    if isinstance(value, QgsProperty):
+        value, _ok = value.valueAsString(context.expressionContext())
+    text = str(value or "")
+    return "" if text == QgsProcessing.TEMPORARY_OUTPUT else text
+
+
 def destinations(alg, parameters, context) -> list[tuple[str, Path, bool]]:
     """(dialog label, path, is a folder) of every output given as a plain file or folder."""
     out = []
@@ -44,7 +59,7 @@ def destinations(alg, parameters, context) -> list[tuple[str, Path, bool]]:
         elif isinstance(param, (QgsProcessingParameterFeatureSink, QgsProcessingParameterVectorDestination)):
             if parameters.get(name) is None:
                 continue  # an optional output not asked for
-            path, folder = _plain_path(alg.parameterAsOutputLayer(parameters, name, context)), False
+            path, folder = _plain_path(layer_destination(parameters[name], context)), False
         else:
             continue
         if path is not None:
