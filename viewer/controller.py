@@ -29,6 +29,8 @@ from .overlays import detection_boxes, parse_key, sign_boxes
 
 PLAY_INTERVAL_MS = 100  # 10 frames/s, twice the 5 pairs/s a vehicle records
 PICK_TOLERANCE_PX = 8  # a click this close to a trajectory point opens that pair
+# a layer's features changed: an edit in its buffer, or a commit (review decisions repaint the layer)
+CHANGED_SIGNALS = ("layerModified", "repaintRequested")
 
 
 class DriveViewerController(DockController):
@@ -65,6 +67,7 @@ class DriveViewerController(DockController):
         self.vehicle.hide()
 
     def release(self) -> None:
+        self._watch({})
         if self.frames is not None:
             self.frames.clear()
         self.runner.shutdown()
@@ -81,16 +84,33 @@ class DriveViewerController(DockController):
             return
         path = gpkg_source(layer)[0]
         if path and path == self.gpkg and self.drive is not None:
-            self.layers[kind] = layer
+            self._watch({**self.layers, kind: layer})
             return
         self.gpkg = path
         self.run = read_run_table(path) if path else {}
-        self.layers = {kind: layer}
+        layers = {kind: layer}
         other = DETECTIONS if kind == SIGNS else SIGNS
         found = self._layer_of(path, other)
         if found is not None:
-            self.layers[other] = found
+            layers[other] = found
+        self._watch(layers)
         self._open_drive(self.run.get("drive", ""))
+
+    def _watch(self, layers: dict) -> None:
+        """Show ``layers``; a change to them (a sign added, a decision) redraws the frame shown."""
+        for layer in self.layers.values():
+            if not isdeleted(layer):
+                for signal in CHANGED_SIGNALS:
+                    getattr(layer, signal).disconnect(self.redraw)
+        self.layers = layers
+        for layer in layers.values():
+            for signal in CHANGED_SIGNALS:
+                getattr(layer, signal).connect(self.redraw)
+
+    def redraw(self) -> None:
+        """The shown frame again with the layers as they are now (its image is in the cache)."""
+        if self.drive is not None and self.index >= 0 and self.wanted == self.index:
+            self.frames.get(self.index, lambda image, i=self.index: self._show(i, image))
 
     @staticmethod
     def _layer_of(path: str, kind: str):

@@ -249,3 +249,28 @@ def test_pick_on_map_opens_the_pair_of_a_clicked_trajectory_point(viewer, drive_
     assert dock.pair_id == drive.pairs[5].id
     dock.buttons["pick"].click()  # off again: the map tool is handed back
     assert canvas.mapTool() is not controller.pick_tool and not dock.buttons["pick"].isChecked()
+
+
+def test_a_sign_added_while_a_frame_is_shown_is_drawn_at_once(viewer):
+    """Add missed sign writes into the signs layer; the viewer shows it without stepping (it once kept saying
+    '1 mapped sign in view')."""
+    from qgis.core import QgsFeature, QgsGeometry, QgsPoint
+
+    controller, dock, layers, _ = viewer
+    controller.go_to(7)
+    wait(lambda: dock.index == 7)
+    before = [b.key for b in dock.view.boxes() if b.key.startswith("signs:")]
+    assert before and f"{len(before)} mapped sign" in dock.caption.text()
+    signs = layers["signs"]
+    shown = signs.getFeature(int(before[0].split(":")[1]))
+    p = shown.geometry().constGet()
+    added = QgsFeature(shown)
+    added.setAttribute("fid", None)  # a new row
+    added.setGeometry(QgsGeometry(QgsPoint(p.x(), p.y(), p.z() + 1.0)))  # a second sign on its pole
+    signs.startEditing()
+    assert signs.addFeature(added)
+    assert signs.commitChanges()
+    QApplication.processEvents()
+    after = [b.key for b in dock.view.boxes() if b.key.startswith("signs:")]
+    assert dock.index == 7 and len(after) == len(before) + 1
+    assert f"{len(after)} mapped signs in view" in dock.caption.text()
