@@ -15,6 +15,7 @@ class ReviewUi(DockUi):
     tooltip = "Sign Mapper: review detected signs, decide on doubtful ones and add missed signs"
     icon = Path(__file__).resolve().parents[1] / "icon.svg"
     what = "The review dock"
+    height = 700  # what its content lays out in, the picker open (ui/review_dock.py)
 
     def __init__(self, iface, ask_drive_folder=None):
         self.ask_drive_folder = ask_drive_folder
