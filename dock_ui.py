@@ -100,6 +100,8 @@ def claim_height(window, dock, height: int) -> None:
 
     QApplication.processEvents()  # the dock is laid out in its area before it is resized
     area = window.dockWidgetArea(dock)
+    if area == Qt.NoDockWidgetArea:  # not in the window's layout (floating, or a test's stand-in window)
+        return
     others = [d for d in window.findChildren(QDockWidget) if d is not dock and d.isVisible() and not d.isFloating()
               and window.dockWidgetArea(d) == area and not window.tabifiedDockWidgets(d)]
     total = dock.height() + sum(d.height() for d in others)

@@ -88,6 +88,7 @@ class ReviewDock(QDockWidget):
     pairRequested = pyqtSignal(str)  # noqa: N815 - show a pair's image (to add a sign where nothing was found)
     observationRequested = pyqtSignal(int)  # noqa: N815 - index into the item's observations
     textEdited = pyqtSignal(str)  # noqa: N815 - a plate's text as a person set it
+    followToggled = pyqtSignal(bool)  # noqa: N815 - Follow switched on or off
 
     def __init__(self, parent=None):
         super().__init__("Sign Mapper review", parent)
@@ -248,6 +249,7 @@ class ReviewDock(QDockWidget):
         self.follow_box.setToolTip("Pan the map to each feature shown (zooming in when it is far out) and open its "
                                    "best pair in the drive viewer")
         self.follow_box.setChecked(True)
+        self.follow_box.toggled.connect(self.followToggled)
         grid.addWidget(self.follow_box, 3, 2)
         for box in (self.pair_box, self.advance_box, self.follow_box):
             box.setFocusPolicy(Qt.TabFocus)  # a click must not take the keys from the dock's shortcuts

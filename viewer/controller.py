@@ -152,6 +152,19 @@ class DriveViewerController(DockController):
         step = 1 if index >= self.index else -1
         self.frames.prefetch(index + step * k for k in range(1, PREFETCH + 1))
 
+    def show_pair(self, layer, pair_id: str) -> None:
+        """Open ``pair_id`` of ``layer``'s drive (the review's Follow); a pair the drive lacks is said."""
+        self.set_layer(layer)
+        if self.drive is None:
+            return
+        try:
+            index = self.drive.pair(pair_id).index
+        except KeyError:
+            self.dock.show_message(f"Pair {pair_id} is not in drive {self.drive.root}", error=True)
+            return
+        if index != self.wanted:
+            self.go_to(index)
+
     def step(self, delta: int) -> None:
         self.go_to(max(0, min(len(self.drive.pairs) - 1, (self.wanted if self.wanted >= 0 else 0) + delta)))
 

@@ -13,6 +13,7 @@ from qgis.core import (
     QgsFeatureSink,
     QgsGeometry,
     QgsPoint,
+    QgsPointXY,
     QgsProject,
     QgsSettings,
     QgsVectorLayer,
@@ -612,3 +613,36 @@ def test_a_pictogram_plate_shows_its_drawing_and_a_sign_no_plate_text(review, tm
     sign = next(f for f in layer.getFeatures() if f["sign_id"] == host)
     select(controller, layer, sign.id())
     assert dock.plate_box.isHidden() and dock.info["plate"].text() == "–"
+
+
+def test_follow_moves_the_map_only_as_far_as_needed(review, gpkg, qgis_iface):
+    from qgis.core import QgsRectangle
+
+    controller, dock, layer = review(gpkg)
+    assert dock.following()  # on by default
+    canvas = qgis_iface.mapCanvas()
+    canvas.resize(600, 400)
+    canvas.setDestinationCrs(layer.crs())
+    fid = next(iter(layer.getFeatures())).id()
+    point = layer.getFeature(fid).geometry().asPoint()
+    canvas.setExtent(QgsRectangle(point.x() - 30, point.y() - 20, point.x() + 30, point.y() + 20))
+    before = canvas.extent()
+    select(controller, layer, fid)  # in the middle of the map: left alone
+    assert canvas.extent() == before
+    width = canvas.extent().width()
+    canvas.setCenter(QgsPointXY(point.x() - (width / 2 - 1.0), point.y()))  # 1 m inside the right edge
+    QApplication.processEvents()
+    assert canvas.extent().contains(point)
+    layer.removeSelection()
+    select(controller, layer, fid)  # at the edge: panned to it, the scale kept
+    assert canvas.extent().center().distance(point) < 0.5 and canvas.extent().width() == pytest.approx(width)
+    canvas.setExtent(QgsRectangle(point.x() - 5000, point.y() - 5000, point.x() + 5000, point.y() + 5000))
+    layer.removeSelection()
+    select(controller, layer, fid)  # 10 km across: zoomed in to ±20 m
+    assert canvas.extent().center().distance(point) < 0.5
+    assert min(canvas.extent().width(), canvas.extent().height()) == pytest.approx(40.0, abs=1.0)
+    dock.follow_box.setChecked(False)
+    canvas.setExtent(QgsRectangle(point.x() - 5000, point.y() - 5000, point.x() + 5000, point.y() + 5000))
+    layer.removeSelection()
+    select(controller, layer, fid)  # Follow off: the map stays
+    assert canvas.extent().width() > 9000

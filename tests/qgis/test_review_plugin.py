@@ -1,37 +1,9 @@
 """The review dock's wiring into QGIS: toolbar and menu action, lazy dock, clean unload."""
 
 import pytest
+from plugin_iface import RecordingIface
 from qgis.core import QgsApplication, QgsProject, QgsVectorLayer
 from qgis.PyQt.QtWidgets import QApplication
-
-
-class RecordingIface:
-    """The pytest-qgis stub iface plus the removal calls it lacks, recording what the plugin adds and removes."""
-
-    def __init__(self, iface):
-        self._iface = iface
-        self.added, self.removed = [], []
-
-    def __getattr__(self, name):
-        return getattr(self._iface, name)
-
-    def addToolBarIcon(self, action):  # noqa: N802
-        self.added.append(("toolbar", action))
-
-    def removeToolBarIcon(self, action):  # noqa: N802
-        self.removed.append(("toolbar", action))
-
-    def addPluginToMenu(self, menu, action):  # noqa: N802
-        self.added.append(("menu", menu, action))
-
-    def removePluginMenu(self, menu, action):  # noqa: N802
-        self.removed.append(("menu", menu, action))
-
-    def addDockWidget(self, area, dock):  # noqa: N802
-        self.added.append(("dock", dock))
-
-    def removeDockWidget(self, dock):  # noqa: N802
-        self.removed.append(("dock", dock))
 
 
 @pytest.fixture
