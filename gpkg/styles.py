@@ -49,6 +49,7 @@ from ..signmapper_core.catalogue.names import sign_name
 from ..signmapper_core.output_schema import DETECTIONS, MANUAL, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
 from ..signmapper_core.plate_formats import PLATE_ID, PLATE_NAMES
 from ..signmapper_core.sign_colours import DISPLAY_COLOURS
+from ..signmapper_core.value_names import LOCALISED_FIELDS, value_map
 
 PICTOGRAM_MM = 7.0
 REJECTED_OPACITY = 35  # percent: a rejected sign stays visible, faded under its cross
@@ -217,12 +218,18 @@ def id_labels(expression: str) -> QgsVectorLayerSimpleLabeling:
 
 
 def set_aliases(layer: QgsVectorLayer, kind: str, language: str) -> None:
-    """Field aliases in ``language``; a crop path field opens as an image in the attribute form."""
+    """Field aliases and coded values (status, shape, ...) in ``language``; a crop path field opens as an image
+    in the attribute form."""
     fields = layer.fields()
     for field in schema.fields(kind):
         index = fields.indexOf(field.name)
         if index >= 0:
             layer.setFieldAlias(index, field.alias(language))
+    for name in LOCALISED_FIELDS:
+        index = fields.indexOf(name)
+        if index >= 0:  # the file keeps the code; tables, forms, identify and represent_value() show the word
+            words = [{word: code} for word, code in value_map(name, language).items()]
+            layer.setEditorWidgetSetup(index, QgsEditorWidgetSetup("ValueMap", {"map": words}))
     index = fields.indexOf("crop_path")
     if index >= 0:
         layer.setEditorWidgetSetup(index, QgsEditorWidgetSetup("ExternalResource", {

@@ -37,6 +37,7 @@ TEXT, INTEGER, REAL = "text", "integer", "real"
 
 # Languages of names and field aliases: the Swiss catalogue's three and English (catalogue.names).
 LANGUAGES = ("en", "de", "fr", "it")
+LANGUAGE_NAMES = {"en": "English", "de": "Deutsch", "fr": "Français", "it": "Italiano"}  # as people choose them
 DEFAULT_LANGUAGE = "de"
 
 Reader = Callable[..., Any]

@@ -135,6 +135,20 @@ def test_fields_get_aliases_in_the_output_language(styles, small_drive, register
     names = {f["template_id"]: f["name"] for f in layer.getFeatures()}
     catalogue = load_catalogue()
     assert names and all(name == catalogue[tid].name("fr") for tid, name in names.items())
+    # coded values read in French where people read them (table, identify, forms, labels); the file keeps codes
+    from qgis.core import QgsExpression, QgsExpressionContext, QgsExpressionContextUtils
+
+    context = QgsExpressionContext(QgsExpressionContextUtils.globalProjectLayerScopes(layer))
+    shown = QgsExpression("represent_value(\"status\") || ' | ' || represent_value(\"reviewed\") || ' | ' || "
+                          "represent_value(\"shape\") || ' | ' || represent_value(\"format\")")
+    for feature in layer.getFeatures():
+        context.setFeature(feature)
+        status = {"accepted": "accepté", "review": "à contrôler"}[feature["status"]]
+        shape = {"circle": "cercle", "triangle": "triangle", "rectangle": "rectangle", "square": "carré",
+                 "diamond": "losange", "octagon": "octogone"}[feature["shape"]]
+        fmt = {"normal": "normal", "large": "grand", "small": "petit", "intermediate": "intermédiaire"}.get(
+            feature["format"], feature["format"])
+        assert shown.evaluate(context) == f"{status} | non | {shape} | {fmt}"
 
 
 
@@ -168,6 +182,8 @@ def test_without_a_language_chosen_the_output_speaks_the_language_qgis_is_set_to
         assert algorithm.language({}, context) == language, locale  # LANGUAGE left at its default
     qgis_locale("fr_CH")
     assert algorithm.language({"LANGUAGE": 3}, context) == "fr" and algorithm.language({"LANGUAGE": 1}, context) != "fr"
+    choices = algorithm.parameterDefinition("LANGUAGE").options()  # offered by name, in the order of the codes
+    assert choices[1:] == ["English", "Deutsch", "Français", "Italiano"]
 
 
 def _assert_styled(layer, language_alias):

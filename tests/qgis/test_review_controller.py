@@ -78,7 +78,7 @@ def _write_layer(gpkg, name, rows, crs):
     del writer
 
 
-def build_gpkg(path: Path, drive_dir: Path, detections, recorded_drive=None, skip=()) -> Path:
+def build_gpkg(path: Path, drive_dir: Path, detections, recorded_drive=None, skip=(), language=None) -> Path:
     """A GeoPackage like mapsigns writes: detections, signs fused by template, and the run table."""
     from sign_mapper.gpkg.output import AtomicGeoPackage
 
@@ -102,7 +102,8 @@ def build_gpkg(path: Path, drive_dir: Path, detections, recorded_drive=None, ski
     _write_layer(gpkg, "detections", rows, crs)
     _write_layer(gpkg, "signs", signs, crs)
     gpkg.write_run_table({"drive": str(recorded_drive or drive_dir), "crs": "EPSG:2056", "near_m": 4.0,
-                          "far_m": 14.0, "colours": ["red", "blue", "yellow"]})
+                          "far_m": 14.0, "colours": ["red", "blue", "yellow"], **({"language": language}
+                                                                                   if language else {})})
     return Path(gpkg.commit())
 
 
@@ -522,12 +523,14 @@ def test_an_added_sign_shows_its_one_observation_and_undo_leaves_no_stale_image(
                   and min(np.linalg.norm(t.position - d.position) for t in drive.truth) < 0.1)
     record, missed = detections[target]
     others = [d for i, d in enumerate(detections) if d[1].template_id != missed.template_id]
-    gpkg = build_gpkg(tmp_path / "one.gpkg", drive_dir, others)  # the sign is in neither layer
+    gpkg = build_gpkg(tmp_path / "one.gpkg", drive_dir, others, language="fr")  # the sign is in neither layer
     controller, dock, layer = review(gpkg, "signs")
     truth = min(drive.truth, key=lambda s: np.linalg.norm(s.position - missed.position))
     dock.addSignClicked.emit(record.id, *_truth_click(drive, record, truth))
     wait_idle(controller)
     assert dock.item.template_id == truth.template_id
+    assert dock.item.name == load_catalogue()[truth.template_id].name("fr")  # the layer's language, as written
+    assert f"Added {truth.template_id} {dock.item.name} at" in dock.message.text()  # and as said
     assert dock.strip_box.title() == "Observations (1)" and dock.strip.count() == 1
     assert dock.item.observations[0].pair_id == record.id
     dock.undoRequested.emit()
