@@ -53,6 +53,19 @@ from ..signmapper_core.value_names import LOCALISED_FIELDS, value_map
 
 PICTOGRAM_MM = 7.0
 REJECTED_OPACITY = 35  # percent: a rejected sign stays visible, faded under its cross
+# Signs on one pole share a point: their pictograms are stacked on the map, the highest on top, one step apart,
+# each with its own label. A pole is the signs within POLE_RADIUS_M (planimetric, the layer's units), found live
+# (a sign added or moved in the review takes its place at the next repaint).
+POLE_RADIUS_M = 0.3
+STACK_STEP_MM = PICTOGRAM_MM + 1.5
+STACK_MAX_SCALE = 5000  # farther out a pole is no longer told from its neighbours, and finding poles costs time
+_HEIGHT = 'coalesce(z($geometry), "elevation", 0)'
+_POLE = (f"overlay_nearest(@layer, array({_HEIGHT}, $id), limit:=32, max_distance:={POLE_RADIUS_M}, cache:=true)")
+# mm below the pole's point (negative: above): rank from the top, the stack centred on the point
+STACK_Y_MM = (f"CASE WHEN @map_scale > {STACK_MAX_SCALE} THEN 0 ELSE "
+              f"with_variable('pole', {_POLE}, (array_length(array_filter(@pole, array_get(@element, 0) > {_HEIGHT} "
+              f"OR (array_get(@element, 0) = {_HEIGHT} AND array_get(@element, 1) < $id))) "
+              f"- array_length(@pole) / 2.0) * {STACK_STEP_MM}) END")
 SIGNS_LABEL = (f"\"template_id\" || CASE WHEN \"status\" = '{REVIEW}' THEN ' ?' "
                f"WHEN \"status\" = '{REJECTED}' THEN ' ✗' ELSE '' END")
 # catalogue shape -> the plain marker drawn where a template has no SVG pictogram
@@ -64,10 +77,18 @@ def _when(status: str) -> QgsProperty:
     return QgsProperty.fromExpression(f"\"status\" = '{status}'")
 
 
+def _stacked(layer, dx_mm: float = 0.0, dy_mm: float = 0.0):
+    """``layer`` offset by (dx, dy) mm and by its sign's place in the stack of its pole."""
+    layer.setOffset(QPointF(dx_mm, dy_mm))
+    layer.setDataDefinedProperty(QgsSymbolLayer.PropertyOffset, QgsProperty.fromExpression(
+        f"concat({dx_mm}, ',', {dy_mm} + {STACK_Y_MM})"))
+    return layer
+
+
 def _svg_layer(svg_bytes: bytes, size_mm: float) -> QgsSvgMarkerSymbolLayer:
     layer = QgsSvgMarkerSymbolLayer("base64:" + base64.b64encode(svg_bytes).decode("ascii"))
     layer.setSize(size_mm)
-    return layer
+    return _stacked(layer)
 
 
 def _azimuth_arrow() -> QgsSimpleMarkerSymbolLayer:
@@ -80,8 +101,13 @@ def _azimuth_arrow() -> QgsSimpleMarkerSymbolLayer:
     arrow = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.ArrowHeadFilled, 2.6)
     arrow.setColor(QColor("#222222"))
     arrow.setStrokeColor(QColor("white"))
-    arrow.setOffset(QPointF(PICTOGRAM_MM / 2 + 1.6, 0.0))
+    side = PICTOGRAM_MM / 2 + 1.6
+    arrow.setOffset(QPointF(side, 0.0))
     arrow.setDataDefinedProperty(QgsSymbolLayer.PropertyAngle, QgsProperty.fromExpression('"azimuth" - 90'))
+    # the stack's offset is straight down the map, so it is turned back by the angle QGIS turns offsets by
+    turn = 'radians("azimuth" - 90)'
+    arrow.setDataDefinedProperty(QgsSymbolLayer.PropertyOffset, QgsProperty.fromExpression(
+        f"with_variable('down', {STACK_Y_MM}, concat({side} + @down * sin({turn}), ',', @down * cos({turn})))"))
     arrow.setDataDefinedProperty(
         QgsSymbolLayer.PropertyLayerEnabled, QgsProperty.fromExpression('"azimuth" is not null')
     )
@@ -96,7 +122,7 @@ def _review_halo() -> QgsSimpleMarkerSymbolLayer:
     halo.setStrokeColor(QColor(STATUS_COLOURS[REVIEW]))
     halo.setStrokeWidth(0.6)
     halo.setDataDefinedProperty(QgsSymbolLayer.PropertyLayerEnabled, _when(REVIEW))
-    return halo
+    return _stacked(halo)
 
 
 def _rejected_cross() -> QgsSimpleMarkerSymbolLayer:
@@ -105,16 +131,15 @@ def _rejected_cross() -> QgsSimpleMarkerSymbolLayer:
     cross.setColor(QColor("#212121"))
     cross.setStrokeWidth(0.8)
     cross.setDataDefinedProperty(QgsSymbolLayer.PropertyLayerEnabled, _when(REJECTED))
-    return cross
+    return _stacked(cross)
 
 
 def _manual_mark() -> QgsSimpleMarkerSymbolLayer:
     mark = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Square, 2.2)
     mark.setColor(QColor(STATUS_COLOURS[MANUAL]))
     mark.setStrokeColor(QColor("white"))
-    mark.setOffset(QPointF(-PICTOGRAM_MM / 2, -PICTOGRAM_MM / 2))
     mark.setDataDefinedProperty(QgsSymbolLayer.PropertyLayerEnabled, _when(MANUAL))
-    return mark
+    return _stacked(mark, -PICTOGRAM_MM / 2, -PICTOGRAM_MM / 2)
 
 
 def _plain_layer(entry, size_mm: float) -> QgsSimpleMarkerSymbolLayer:
@@ -125,8 +150,8 @@ def _plain_layer(entry, size_mm: float) -> QgsSimpleMarkerSymbolLayer:
     layer.setColor(QColor(DISPLAY_COLOURS.get(entry.colour, DISPLAY_COLOURS["red"])))
     layer.setStrokeColor(QColor("#222222"))
     if entry.shape == "triangle-down":
-        layer.setAngle(180.0)
-    return layer
+        layer.setAngle(180.0)  # no offset to turn: the stack's stays straight down
+    return _stacked(layer)
 
 
 def pictogram_svg(catalogue, entry) -> bytes | None:
@@ -202,11 +227,18 @@ def detections_renderer() -> QgsCategorizedSymbolRenderer:
 
 
 def id_labels(expression: str) -> QgsVectorLayerSimpleLabeling:
+    """Each sign's label to the left of its own pictogram (in its pole's stack), every one shown."""
     settings = QgsPalLayerSettings()
     settings.fieldName = expression
     settings.isExpression = True
     settings.placement = QgsPalLayerSettings.OverPoint
-    settings.yOffset = PICTOGRAM_MM / 2 + 2.5
+    settings.quadOffset = QgsPalLayerSettings.QuadrantLeft
+    settings.xOffset = -(PICTOGRAM_MM / 2 + 0.8)
+    settings.displayAll = True  # a pole's labels sit close together: none may be dropped as a collision
+    settings.scaleVisibility = True  # farther out than the stacks, thousands of ids would only cost time
+    settings.minimumScale = STACK_MAX_SCALE
+    settings.dataDefinedProperties().setProperty(QgsPalLayerSettings.OffsetXY, QgsProperty.fromExpression(
+        f"concat({settings.xOffset}, ',', {STACK_Y_MM})"))
     text = QgsTextFormat()
     text.setSize(8)
     buffer = text.buffer()

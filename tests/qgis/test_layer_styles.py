@@ -7,10 +7,14 @@ import numpy as np
 import pytest
 from model_chain import synthetic_drive_then_map_signs
 from qgis.core import (
+    QgsExpressionContext,
+    QgsExpressionContextScope,
+    QgsExpressionContextUtils,
     QgsFeature,
     QgsGeometry,
     QgsMapRendererParallelJob,
     QgsMapSettings,
+    QgsPoint,
     QgsPointXY,
     QgsProject,
     QgsRectangle,
@@ -216,3 +220,87 @@ def test_a_model_run_loads_styled_layers(registered_plugin, tmp_path, clean_proj
     assert signs, [layer.source() for layer in clean_project.mapLayers().values()]
     for layer in signs:
         _assert_styled(layer, "Sign type (SSV)")
+
+
+def pole_layer():
+    """Three signs on one pole (2.30-50 at the top, 2.37, 3.03 at the bottom, a few cm apart) and one alone."""
+    layer = QgsVectorLayer("PointZ?crs=EPSG:2056&field=template_id:string&field=status:string&field=azimuth:double"
+                           "&field=elevation:double", "signs", "memory")
+    features = []
+    for template_id, status, dx, z in (("2.37", "review", 0.04, 401.3), ("2.30-50", "accepted", 0.0, 402.0),
+                                       ("3.03", "accepted", 0.02, 400.6), ("2.30-50", "accepted", 20.0, 402.0)):
+        feature = QgsFeature(layer.fields())
+        feature.setAttributes([template_id, status, 180.0, z])
+        feature.setGeometry(QgsGeometry(QgsPoint(2600000.0 + dx, 1200000.0, z)))
+        features.append(feature)
+    layer.dataProvider().addFeatures(features)
+    return layer
+
+
+def test_every_sign_on_a_pole_is_drawn_and_labelled_apart_highest_on_top(styles, clean_project):
+    """Signs on one pole once hid each other (13 signs showed as 8 symbols): stacked by height on the map."""
+    from qgis.core import QgsRenderContext
+
+    layer = pole_layer()
+    clean_project.addMapLayer(layer)
+    styles.apply_style(layer, "signs", load_catalogue(), "de")
+    # the offsets QGIS draws with, per sign: its face, its label
+    context = QgsRenderContext()
+    context.setExpressionContext(layer.createExpressionContext())
+    rules = {}
+    for group in layer.renderer().rootRule().children():
+        for rule in group.children():
+            rules[rule.filterExpression()] = rule
+    face_y, label_y = {}, {}
+    label_settings = layer.labeling().settings()  # a copy: kept while its properties are read
+    label_offset = label_settings.dataDefinedProperties().property(styles.QgsPalLayerSettings.OffsetXY)
+    for feature in layer.getFeatures():
+        context.expressionContext().setFeature(feature)
+        face = rules[f"\"template_id\" = '{feature['template_id']}'"].symbol().symbolLayer(1)
+        offset, _ = face.dataDefinedProperties().property(styles.QgsSymbolLayer.PropertyOffset).valueAsString(
+            context.expressionContext())
+        face_y[feature.id()] = float(offset.split(",")[1])
+        text, _ = label_offset.valueAsString(context.expressionContext())
+        label_y[feature.id()] = float(text.split(",")[1])
+    by_height = sorted((f for f in layer.getFeatures() if f.geometry().asPoint().x() < 2600010),
+                       key=lambda f: -f["elevation"])
+    ys = [face_y[f.id()] for f in by_height]
+    step = styles.STACK_STEP_MM
+    assert ys == pytest.approx([-step, 0.0, step])  # the highest on top, the stack centred on the pole
+    alone = next(f for f in layer.getFeatures() if f.geometry().asPoint().x() > 2600010)
+    assert face_y[alone.id()] == 0.0
+    assert label_y == face_y  # each label beside its own pictogram
+    assert label_settings.displayAll  # none dropped as a collision
+    far = QgsExpressionContextScope()
+    far.setVariable("map_scale", 2 * styles.STACK_MAX_SCALE)  # zoomed out: poles are not told apart, not stacked
+    context.expressionContext().appendScope(far)
+    context.expressionContext().setFeature(by_height[0])
+    assert label_offset.valueAsString(context.expressionContext())[0].endswith(",0")
+
+    # drawn: the red disc above the blue one above the yellow diamond, each a pictogram's height apart
+    settings = QgsMapSettings()
+    settings.setLayers([layer])
+    settings.setDestinationCrs(layer.crs())
+    settings.setOutputSize(QSize(200, 200))
+    settings.setOutputDpi(96)
+    settings.setExtent(QgsRectangle(2599998.0, 1199998.0, 2600002.0, 1200002.0))  # 1:~75: mm are pixels
+    settings.setBackgroundColor(QColor("white"))
+    map_context = QgsExpressionContext()
+    map_context.appendScope(QgsExpressionContextUtils.mapSettingsScope(settings))  # as the canvas sets it
+    settings.setExpressionContext(map_context)
+    job = QgsMapRendererParallelJob(settings)
+    job.start()
+    job.waitForFinished()
+    image = job.renderedImage().convertToFormat(QImage.Format_RGB888)
+    ptr = image.constBits()
+    ptr.setsize(image.bytesPerLine() * image.height())
+    rgb = np.frombuffer(ptr, np.uint8).reshape(image.height(), image.bytesPerLine())[:, :600].reshape(200, 200, 3)
+    r, g, b = (rgb[..., i].astype(int) for i in range(3))
+    rows = {"red": np.nonzero((r > 180) & (g < 80) & (b < 80))[0], "blue": np.nonzero((b > 150) & (r < 60))[0],
+            "yellow": np.nonzero((r > 200) & (g > 170) & (b < 60))[0]}
+    assert all(len(found) > 20 for found in rows.values()), {k: len(v) for k, v in rows.items()}
+    centres = {colour: float(np.median(found)) for colour, found in rows.items()}
+    px_per_mm = 96 / 25.4
+    assert centres["red"] < centres["blue"] < centres["yellow"]
+    assert centres["blue"] - centres["red"] == pytest.approx(step * px_per_mm, abs=4)
+    assert centres["yellow"] - centres["blue"] == pytest.approx(step * px_per_mm, abs=4)
