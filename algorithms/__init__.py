@@ -11,6 +11,7 @@ ALGORITHMS = (
     ("map_signs", "MapSignsAlgorithm"),
     ("evaluate", "EvaluateAlgorithm"),
     ("changes", "ChangesAlgorithm"),
+    ("export_inventory", "ExportInventoryAlgorithm"),
     ("export_signalo", "ExportToSignaloAlgorithm"),
     ("import_drive", "ImportDriveAlgorithm"),
     ("drive_trajectory", "DriveTrajectoryAlgorithm"),

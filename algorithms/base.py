@@ -75,6 +75,23 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         self.addParameter(param)
         return param
 
+    def add_language_parameter(self, name: str, first: str, help_text: str, advanced: bool = False):
+        """The output language, offered by name after ``first`` (what an algorithm does when none is chosen)."""
+        from qgis.core import QgsProcessingParameterEnum
+
+        from ..signmapper_core.output_schema import LANGUAGE_NAMES, LANGUAGES
+
+        options = [first] + [LANGUAGE_NAMES[code] for code in LANGUAGES]
+        return self.add_parameter(QgsProcessingParameterEnum(name, self.tr("Language of the output"),
+                                                             options=options, defaultValue=0), help_text, advanced)
+
+    def chosen_language(self, parameters, name: str, context):
+        """The language code chosen, None for the first option (the algorithm's own default)."""
+        from ..signmapper_core.output_schema import LANGUAGES
+
+        choice = self.parameterAsEnum(parameters, name, context)
+        return LANGUAGES[choice - 1] if choice > 0 else None
+
     def add_drive_parameter(self, name: str):
         """The drive folder input every drive-reading algorithm starts with."""
         return self.add_parameter(

@@ -25,7 +25,7 @@ from ..gpkg.output import AtomicGeoPackage, geopackage_tables, layer_uri
 from ..gpkg.styles import OutputStyler, embed_default_styles
 from ..signmapper_core import output_schema as schema
 from ..signmapper_core.errors import ClusterError, MappingError
-from ..signmapper_core.output_schema import DETECTIONS, LANGUAGE_NAMES, LANGUAGES, SIGNS, OutputContext
+from ..signmapper_core.output_schema import DETECTIONS, SIGNS, OutputContext
 from ..signmapper_core.pipeline.config import default, with_settings
 from ..signmapper_core.progress import Cancelled, check_cancelled
 from ..signmapper_core.sign_colours import SIGN_COLOURS
@@ -37,7 +37,6 @@ NEAR_M, FAR_M = ("depth", "near_m"), ("depth", "far_m")  # the settings the dept
 CLASSIFIERS = [("auto", "Automatic: the learned network where the catalogue has one, else template matching"),
                ("cnn", "Learned network (CNN trained on the official drawings)"),
                ("ncc", "Template matching (normalised cross-correlation, Cavegn 2011)")]
-LANGUAGE_CHOICES = ["The language QGIS runs in"] + [LANGUAGE_NAMES[code] for code in LANGUAGES]
 
 
 class MapSignsAlgorithm(SignMapperAlgorithm):
@@ -171,9 +170,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             "Folder with catalogue.json and template images; empty = the bundled Swiss (SSV) catalogue.",
             advanced=True,
         )
-        self.add_parameter(
-            QgsProcessingParameterEnum(self.LANGUAGE, self.tr("Language of the output"),
-                                       options=LANGUAGE_CHOICES, defaultValue=0),
+        self.add_language_parameter(
+            self.LANGUAGE, "The language QGIS runs in",
             "Sign names, field titles and the words shown for coded values (status, format, colour, shape) in "
             "English, German, French or Italian; by default the language QGIS runs in. The file keeps the codes "
             "themselves, so expressions and other tools read the same values whatever the language.",
@@ -411,8 +409,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         return results
 
     def language(self, parameters, context) -> str:
-        choice = self.parameterAsEnum(parameters, self.LANGUAGE, context)
-        return LANGUAGES[choice - 1] if choice > 0 else qgis_language()
+        return self.chosen_language(parameters, self.LANGUAGE, context) or qgis_language()
 
     @staticmethod
     def output_context(drive, catalogue, language, result, crops, feedback) -> OutputContext:

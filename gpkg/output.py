@@ -40,13 +40,13 @@ def geopackage_tables(path) -> list[str] | None:
 class AtomicGeoPackage(PartialGeoPackage):
     """A GeoPackage built layer by layer by QGIS in a partial file, committed at the end.
 
-    ``kept`` lists the layers of an existing target that are not ours: they are
+    ``kept`` lists the layers of an existing target that are not ``ours``: they are
     carried over unchanged.
     """
 
-    def __init__(self, target: str):
+    def __init__(self, target: str, ours=geopackage_file.OUR_TABLES):
         try:
-            super().__init__(target)
+            super().__init__(target, ours)
         except OutputFileError as exc:
             raise QgsProcessingException(str(exc)) from exc
         self._layers = 0

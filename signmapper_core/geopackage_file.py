@@ -52,13 +52,14 @@ class PartialGeoPackage:
     carried over unchanged. ``starts_empty``: the first layer creates the partial file.
     """
 
-    def __init__(self, target):
+    def __init__(self, target, ours=OUR_TABLES):
         self.target = Path(target)
+        self.ours = tuple(ours)  # the tables this writer replaces (a mapping run's, unless said otherwise)
         if self.target.suffix.lower() != ".gpkg":
             raise OutputFileError(f"{self.target}: the output must be a GeoPackage file ending in .gpkg")
         self.partial = self.target.with_name(f".{self.target.stem}.partial.gpkg")
         self.discard()
-        self.kept = [t for t in geopackage_tables(self.target) or [] if t not in OUR_TABLES + (STYLE_TABLE,)]
+        self.kept = [t for t in geopackage_tables(self.target) or [] if t not in self.ours + (STYLE_TABLE,)]
         if self.kept:
             self._copy_target()
 
@@ -76,8 +77,8 @@ class PartialGeoPackage:
         with closing(sqlite3.connect(uri, uri=True)) as source, closing(sqlite3.connect(self.partial)) as copy:
             source.backup(copy)
             if copy.execute("SELECT 1 FROM sqlite_master WHERE name = ?", (STYLE_TABLE,)).fetchone():
-                marks = ", ".join("?" * len(OUR_TABLES))
-                copy.execute(f"DELETE FROM {STYLE_TABLE} WHERE f_table_name IN ({marks})", OUR_TABLES)
+                marks = ", ".join("?" * len(self.ours))
+                copy.execute(f"DELETE FROM {STYLE_TABLE} WHERE f_table_name IN ({marks})", self.ours)
                 copy.commit()
 
     def commit(self) -> str:

@@ -43,6 +43,12 @@ DEFAULT_LANGUAGE = "de"
 Reader = Callable[..., Any]
 
 
+def run_language(run: dict) -> str:
+    """The language a run table says its output was written in (German for files from before it was recorded)."""
+    language = run.get("language")
+    return language if language in LANGUAGES else DEFAULT_LANGUAGE
+
+
 def language_of(locale: str) -> str:
     """The output language of a locale name ("fr_CH", "de", "C"): its language if we have it, else English."""
     code = (locale or "").replace("-", "_").split("_", 1)[0].lower()

@@ -1,0 +1,174 @@
+"""``signmapper:exportinventory``: the reviewed signs as a deliverable (GeoPackage, CSV or shapefile)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from qgis.core import (
+    NULL,
+    QgsFeature,
+    QgsFeatureSink,
+    QgsField,
+    QgsFields,
+    QgsGeometry,
+    QgsPoint,
+    QgsProcessing,
+    QgsProcessingContext,
+    QgsProcessingException,
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterBoolean,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterVectorLayer,
+    QgsVectorFileWriter,
+    QgsWkbTypes,
+)
+
+from ..gpkg.fields import QT_TYPES
+from ..gpkg.output import AtomicGeoPackage, geopackage_tables, layer_uri
+from ..review.layers import gpkg_source
+from ..signmapper_core.output_schema import REVIEW, run_language
+from .base import SignMapperAlgorithm
+from .signs_input import read_signs, signs_layer_and_run
+
+INVENTORY_LAYER = "inventory"  # the layer written into a GeoPackage (its other layers are kept)
+# file suffix -> (OGR driver, layer creation options); CSV in the separator spreadsheets of the language expect
+FORMATS = {".gpkg": ("GPKG", []), ".csv": ("CSV", ["WRITE_BOM=YES"]), ".shp": ("ESRI Shapefile", [])}
+CSV_SEPARATORS = {"en": "COMMA", "de": "SEMICOLON", "fr": "SEMICOLON", "it": "SEMICOLON"}
+
+
+class ExportInventoryAlgorithm(SignMapperAlgorithm):
+    NAME = "exportinventory"
+    DISPLAY_NAME = "Export inventory"
+    GROUP_ID = "inventory"
+    ICON = "export_inventory.svg"
+    HELP = (
+        "Writes the reviewed signs of a 'signs' layer as a deliverable: the accepted signs and those a person added "
+        "(optionally also those still to review), in sign number order, each supplementary plate right after its "
+        "sign. The columns are what a surveyor hands over (sign number, SSV type and name, plate of, text, status, "
+        "reviewed, E/N/H, face azimuth, mounting height, size and format, date, image crop), titled and worded in "
+        "the output language. The format follows the file name: a GeoPackage (layer 'inventory', the file's other "
+        "layers kept), a CSV for spreadsheets (UTF-8; separated by semicolons in German, French and Italian, by "
+        "commas in English; E/N/H as columns) or a shapefile (PointZ; its column names are at most 10 characters, "
+        "so they are shortened from the titles and the log lists them). A plate whose sign is not delivered is "
+        "left out and named in the log. A failed or cancelled run leaves an earlier file as it was."
+    )
+
+    SIGNS = "SIGNS"
+    INCLUDE_REVIEW = "INCLUDE_REVIEW"
+    LANGUAGE = "LANGUAGE"
+    OUTPUT = "OUTPUT"
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add_parameter(
+            QgsProcessingParameterVectorLayer(self.SIGNS, self.tr("Mapped signs"), [QgsProcessing.TypeVectorPoint]),
+            "The 'signs' layer written by Map traffic signs, as the review left it.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterBoolean(self.INCLUDE_REVIEW, self.tr("Also signs still to review"), False),
+            "Also deliver signs whose status is still 'review' (their status column says so).",
+        )
+        self.add_language_parameter(
+            self.LANGUAGE, "The layer's language",
+            "Column titles, sign names and coded values (status, format) in this language; by default the "
+            "language the signs were mapped in.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterFileDestination(
+                self.OUTPUT, self.tr("Inventory file"),
+                fileFilter="GeoPackage (*.gpkg);;CSV for spreadsheets (*.csv);;ESRI Shapefile (*.shp)"),
+            "GeoPackage (.gpkg), CSV (.csv) or shapefile (.shp), by its suffix. Written only when the run "
+            "completes; in an existing GeoPackage only the layer 'inventory' is replaced.",
+        )
+        self.addOutput(QgsProcessingOutputNumber("SIGNS_WRITTEN", self.tr("Signs written")))
+
+    def check_inputs(self, parameters, context) -> None:
+        self.output_format(parameters, context)
+        super().check_inputs(parameters, context)
+
+    def output_format(self, parameters, context) -> str:
+        """The output's suffix (.gpkg, .csv, .shp); QgsProcessingException naming the file otherwise."""
+        path = Path(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
+        suffix = path.suffix.lower()
+        if suffix not in FORMATS:
+            label = self.parameterDefinition(self.OUTPUT).description()
+            raise QgsProcessingException(f"{label}: {path}: give a file ending in .gpkg, .csv or .shp")
+        if suffix == ".gpkg":
+            geopackage_tables(path)  # an existing file that is no GeoPackage is refused, not replaced
+        return suffix
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        from ..signmapper_core import inventory_export as inventory
+
+        self.check_outputs(parameters, context)
+        suffix = self.output_format(parameters, context)
+        layer, run = signs_layer_and_run(self.parameterAsVectorLayer(parameters, self.SIGNS, context))
+        language = self.chosen_language(parameters, self.LANGUAGE, context) or run_language(run)
+        statuses = inventory.DELIVERED + ((REVIEW,) if self.parameterAsBoolean(parameters, self.INCLUDE_REVIEW,
+                                                                                 context) else ())
+        signs = []
+        for values, (east, north, height) in read_signs(layer, layer.crs(), context):
+            values.update(easting=east, northing=north, elevation=height)  # where the sign is now, as drawn
+            signs.append(values)
+        chosen = inventory.select(signs, statuses)
+        target = Path(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
+        gpkg_folder = Path(gpkg_source(layer)[0] or target).parent
+        for sign in chosen.signs:
+            sign["crop_path"] = inventory.rebased(sign.get("crop_path"), gpkg_folder, target.parent)
+        columns = inventory.columns(language)
+        names = inventory.short_names([c.title for c in columns]) if suffix == ".shp" else [c.title for c in columns]
+        fields = QgsFields()
+        for column, name in zip(columns, names):
+            fields.append(QgsField(name, QT_TYPES[column.kind]))
+
+        writer, output = self.open_output(target, suffix, fields, layer, language, context)
+        try:
+            for k, sign in enumerate(chosen.signs):
+                if feedback.isCanceled():
+                    raise QgsProcessingException(f"Cancelled; {target} not written.")
+                feature = QgsFeature(fields)
+                feature.setAttributes([NULL if v is None else v for v in inventory.row(sign, language)])
+                if suffix != ".csv":
+                    feature.setGeometry(QgsGeometry(QgsPoint(sign["easting"], sign["northing"], sign["elevation"])))
+                if not writer.addFeature(feature, QgsFeatureSink.FastInsert):
+                    raise QgsProcessingException(f"{target}: cannot write sign {sign.get('sign_id')}: "
+                                                 f"{writer.errorMessage()}")
+                feedback.setProgress(100.0 * (k + 1) / max(len(chosen.signs), 1))
+            del writer
+            path = output.commit()
+        except BaseException:
+            output.discard()
+            raise
+        feedback.pushInfo(f"{len(chosen.signs)} signs written to {path} ({', '.join(statuses)}); {chosen.left_out} "
+                          "left out by status")
+        for plate, host in chosen.orphan_plates:
+            feedback.reportError(f"Plate {plate}: its sign {host} is not delivered (its status); the plate is left "
+                                 "out too", fatalError=False)
+        if suffix == ".shp":
+            feedback.pushInfo("Shapefile columns: " + ", ".join(f"{n} = {c.title}" for n, c in zip(names, columns)))
+        source = layer_uri(path, INVENTORY_LAYER) if suffix == ".gpkg" else path
+        context.addLayerToLoadOnCompletion(source, QgsProcessingContext.LayerDetails(
+            f"Inventory {target.stem}", context.project(), self.OUTPUT))
+        return {self.OUTPUT: path, "SIGNS_WRITTEN": len(chosen.signs)}
+
+    def open_output(self, target: Path, suffix: str, fields, layer, language, context):
+        """(QgsVectorFileWriter, partial output with commit/discard) for the format of ``suffix``."""
+        from ..signmapper_core.partial_files import PartialFiles
+
+        if suffix == ".gpkg":
+            output = AtomicGeoPackage(str(target), ours=(INVENTORY_LAYER,))
+            writer = output.open_layer(INVENTORY_LAYER, fields, QgsWkbTypes.PointZ, layer.crs(),
+                                       abstract=f"Sign Mapper: inventory of {layer.source()}")
+            return writer, output
+        output = PartialFiles(target)
+        driver, layer_options = FORMATS[suffix]
+        options = QgsVectorFileWriter.SaveVectorOptions()
+        options.driverName = driver
+        options.fileEncoding = "UTF-8"
+        options.layerOptions = layer_options + ([f"SEPARATOR={CSV_SEPARATORS[language]}"] if suffix == ".csv" else [])
+        geometry = QgsWkbTypes.NoGeometry if suffix == ".csv" else QgsWkbTypes.PointZ
+        writer = QgsVectorFileWriter.create(str(output.path), fields, geometry, layer.crs(),
+                                            context.transformContext(), options)
+        if writer.hasError() != QgsVectorFileWriter.NoError:
+            output.discard()
+            raise QgsProcessingException(f"{target}: cannot write: {writer.errorMessage()}")
+        return writer, output
