@@ -178,9 +178,10 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             advanced=True,
         )
         self.add_parameter(
-            QgsProcessingParameterBoolean(self.CROPS, self.tr("Write an image crop per sign"), defaultValue=False),
+            QgsProcessingParameterBoolean(self.CROPS, self.tr("Write an image crop per sign"), defaultValue=True),
             "A JPEG of each sign from its best pair, in a folder '<output name>_crops' beside the GeoPackage, its "
-            "path in the field crop_path: signs can then be checked without the drive.",
+            "path in the field crop_path: signs can be checked without the drive, the identify panel's form and "
+            "map tip show the photo, the inventory atlas prints it. Off: no crops (a little faster).",
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.MAX_SKIPPED, self.tr("Largest share of unreadable pairs [%]"),

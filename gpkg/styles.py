@@ -2,14 +2,15 @@
 
 Signs show their catalogue pictogram (SVG embedded as base64, so the style
 does not depend on where the plugin is installed), a small arrow turned to the
-face azimuth and the template id as label; the legend groups the pictograms by
-sign family. The review state is part of every symbol and follows decisions
-live (data-defined on ``status``): a sign to review has an orange halo and a
+face azimuth and the template id as label; signs on one pole are stacked by
+height. The review state is drawn by status rules that follow decisions live:
+an accepted sign has a thin green ring, a sign to review an orange halo and a
 "?" label, a rejected sign is faded and crossed out, a manual one carries a
-blue mark. SVG pictograms are optional in a catalogue: an entry without one (or
-whose file is missing) gets a plain marker of its shape and colour instead.
-Detections show a dot coloured by status. Field aliases are in the output
-language (``output_schema.ALIASES``).
+blue mark; the legend lists these classes by status, then the pictograms by
+sign family. SVG pictograms are optional in a catalogue: an entry without one
+(or whose file is missing) gets a plain marker of its shape and colour instead.
+Detections show a dot coloured by status. Field titles and coded values are in
+the output language (``output_schema`` aliases, ``value_names``).
 
 The styles are embedded in the GeoPackage as its default (opening the file
 shows them) and applied by a Processing layer post-processor to the layers a
@@ -46,10 +47,11 @@ from qgis.PyQt.QtGui import QColor
 from ..signmapper_core import output_schema as schema
 from ..signmapper_core.catalogue.families import by_family, family_name
 from ..signmapper_core.catalogue.names import sign_name
-from ..signmapper_core.output_schema import DETECTIONS, MANUAL, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
+from ..signmapper_core.output_schema import ACCEPTED, DETECTIONS, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
 from ..signmapper_core.plate_formats import PLATE_ID, PLATE_NAMES
 from ..signmapper_core.sign_colours import DISPLAY_COLOURS
-from ..signmapper_core.value_names import LOCALISED_FIELDS, value_map
+from ..signmapper_core.value_names import LOCALISED_FIELDS, value_map, value_name
+from . import feature_actions
 
 PICTOGRAM_MM = 7.0
 REJECTED_OPACITY = 35  # percent: a rejected sign stays visible, faded under its cross
@@ -71,10 +73,6 @@ SIGNS_LABEL = (f"\"template_id\" || CASE WHEN \"status\" = '{REVIEW}' THEN ' ?' 
 # catalogue shape -> the plain marker drawn where a template has no SVG pictogram
 PLAIN_SHAPES = {"circle": "Circle", "triangle": "EquilateralTriangle", "triangle-down": "EquilateralTriangle",
                 "octagon": "Octagon", "diamond": "Diamond", "square": "Square", "rectangle": "Square"}
-
-
-def _when(status: str) -> QgsProperty:
-    return QgsProperty.fromExpression(f"\"status\" = '{status}'")
 
 
 def _stacked(layer, dx_mm: float = 0.0, dy_mm: float = 0.0):
@@ -114,32 +112,52 @@ def _azimuth_arrow() -> QgsSimpleMarkerSymbolLayer:
     return arrow
 
 
-def _review_halo() -> QgsSimpleMarkerSymbolLayer:
-    halo = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Circle, PICTOGRAM_MM + 3.0)
-    colour = QColor(STATUS_COLOURS[REVIEW])
-    colour.setAlpha(150)
-    halo.setColor(colour)
-    halo.setStrokeColor(QColor(STATUS_COLOURS[REVIEW]))
-    halo.setStrokeWidth(0.6)
-    halo.setDataDefinedProperty(QgsSymbolLayer.PropertyLayerEnabled, _when(REVIEW))
-    return _stacked(halo)
+# the passes a sign is drawn in: status marks under (ring, halo) or over (cross, mark) every pictogram
+UNDER, PICTOGRAM, OVER = 0, 1, 2
 
 
-def _rejected_cross() -> QgsSimpleMarkerSymbolLayer:
-    cross = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Cross2, PICTOGRAM_MM + 1.0)
-    cross.setStrokeColor(QColor("#212121"))
-    cross.setColor(QColor("#212121"))
-    cross.setStrokeWidth(0.8)
-    cross.setDataDefinedProperty(QgsSymbolLayer.PropertyLayerEnabled, _when(REJECTED))
-    return _stacked(cross)
-
-
-def _manual_mark() -> QgsSimpleMarkerSymbolLayer:
-    mark = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Square, 2.2)
-    mark.setColor(QColor(STATUS_COLOURS[MANUAL]))
+def _status_mark(status: str) -> QgsSimpleMarkerSymbolLayer:
+    """The mark of a review status around or on a sign's pictogram (what its legend class shows)."""
+    colour = QColor(STATUS_COLOURS[status])
+    if status == ACCEPTED:  # a thin ring in the accepted green
+        mark = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Circle, PICTOGRAM_MM + 1.6)
+        mark.setColor(QColor(0, 0, 0, 0))
+        mark.setStrokeColor(colour)
+        mark.setStrokeWidth(0.5)
+        mark.setRenderingPass(UNDER)
+        return _stacked(mark)
+    if status == REVIEW:  # an orange halo
+        mark = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Circle, PICTOGRAM_MM + 3.0)
+        fill = QColor(colour)
+        fill.setAlpha(150)
+        mark.setColor(fill)
+        mark.setStrokeColor(colour)
+        mark.setStrokeWidth(0.6)
+        mark.setRenderingPass(UNDER)
+        return _stacked(mark)
+    if status == REJECTED:  # crossed out (the pictogram fades: sign_symbol)
+        mark = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Cross2, PICTOGRAM_MM + 1.0)
+        mark.setStrokeColor(QColor("#212121"))
+        mark.setColor(QColor("#212121"))
+        mark.setStrokeWidth(0.8)
+        mark.setRenderingPass(OVER)
+        return _stacked(mark)
+    mark = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Square, 2.2)  # manual: a blue corner mark
+    mark.setColor(colour)
     mark.setStrokeColor(QColor("white"))
-    mark.setDataDefinedProperty(QgsSymbolLayer.PropertyLayerEnabled, _when(MANUAL))
+    mark.setRenderingPass(OVER)
     return _stacked(mark, -PICTOGRAM_MM / 2, -PICTOGRAM_MM / 2)
+
+
+def status_rules(language: str) -> QgsRuleBasedRenderer.Rule:
+    """The legend's classes by status: one rule per status drawing its mark, grouped under the field's title."""
+    group = QgsRuleBasedRenderer.Rule(None, 0, 0, "", schema.field(SIGNS, "status").alias(language))
+    for status in STATUS_COLOURS:
+        symbol = QgsMarkerSymbol()
+        symbol.changeSymbolLayer(0, _status_mark(status))
+        group.appendChild(QgsRuleBasedRenderer.Rule(symbol, 0, 0, f"\"status\" = '{status}'",
+                                                    value_name("status", status, language)))
+    return group
 
 
 def _plain_layer(entry, size_mm: float) -> QgsSimpleMarkerSymbolLayer:
@@ -170,16 +188,19 @@ def templates_without_pictogram(catalogue) -> list[str]:
 
 
 def pictogram_symbol(svg_bytes: bytes) -> QgsMarkerSymbol:
-    """Halo (review), pictogram, face arrow, cross (rejected), mark (manual); faded when rejected."""
+    """A pictogram and its face arrow, faded when rejected."""
     return sign_symbol(_svg_layer(svg_bytes, PICTOGRAM_MM))
 
 
 def sign_symbol(face) -> QgsMarkerSymbol:
-    """The symbol of one sign type around its ``face`` layer (pictogram or plain marker)."""
+    """The symbol of one sign type: its ``face`` (pictogram or plain marker) and the face arrow, faded when
+    rejected; the status marks are the status rules' (``status_rules``)."""
     symbol = QgsMarkerSymbol()
-    symbol.changeSymbolLayer(0, _review_halo())
-    for layer in (face, _azimuth_arrow(), _rejected_cross(), _manual_mark()):
-        symbol.appendSymbolLayer(layer)
+    face.setRenderingPass(PICTOGRAM)
+    symbol.changeSymbolLayer(0, face)
+    arrow = _azimuth_arrow()
+    arrow.setRenderingPass(PICTOGRAM)
+    symbol.appendSymbolLayer(arrow)
     symbol.setDataDefinedProperty(
         QgsSymbol.PropertyOpacity,
         QgsProperty.fromExpression(f"CASE WHEN \"status\" = '{REJECTED}' THEN {REJECTED_OPACITY} ELSE 100 END"),
@@ -192,8 +213,10 @@ def _quoted(text: str) -> str:
 
 
 def signs_renderer(catalogue, language: str = "en") -> QgsRuleBasedRenderer:
-    """Rule-based: one group per sign family, one pictogram rule per catalogue entry; an 'other' rule last."""
+    """Rule-based: the status marks (the legend's classes by status), one group per sign family with one
+    pictogram rule per catalogue entry, the plates; an 'other' rule last."""
     root = QgsRuleBasedRenderer.Rule(None)
+    root.appendChild(status_rules(language))
     for name, entries in by_family(catalogue).items():
         if not entries:
             continue
@@ -217,12 +240,13 @@ def signs_renderer(catalogue, language: str = "en") -> QgsRuleBasedRenderer:
     return QgsRuleBasedRenderer(root)
 
 
-def detections_renderer() -> QgsCategorizedSymbolRenderer:
+def detections_renderer(language: str = "en") -> QgsCategorizedSymbolRenderer:
+    """A dot per detection in its status colour, the legend's classes named in ``language``."""
     renderer = QgsCategorizedSymbolRenderer("status")
     for status, colour in STATUS_COLOURS.items():
         symbol = QgsMarkerSymbol.createSimple({"name": "circle", "color": colour, "size": "1.6",
                                                "outline_color": "white"})
-        renderer.addCategory(QgsRendererCategory(status, symbol, status))
+        renderer.addCategory(QgsRendererCategory(status, symbol, value_name("status", status, language)))
     return renderer
 
 
@@ -250,8 +274,7 @@ def id_labels(expression: str) -> QgsVectorLayerSimpleLabeling:
 
 
 def set_aliases(layer: QgsVectorLayer, kind: str, language: str) -> None:
-    """Field aliases and coded values (status, shape, ...) in ``language``; a crop path field opens as an image
-    in the attribute form."""
+    """Field aliases and coded values (status, shape, ...) in ``language``."""
     fields = layer.fields()
     for field in schema.fields(kind):
         index = fields.indexOf(field.name)
@@ -262,10 +285,6 @@ def set_aliases(layer: QgsVectorLayer, kind: str, language: str) -> None:
         if index >= 0:  # the file keeps the code; tables, forms, identify and represent_value() show the word
             words = [{word: code} for word, code in value_map(name, language).items()]
             layer.setEditorWidgetSetup(index, QgsEditorWidgetSetup("ValueMap", {"map": words}))
-    index = fields.indexOf("crop_path")
-    if index >= 0:
-        layer.setEditorWidgetSetup(index, QgsEditorWidgetSetup("ExternalResource", {
-            "DocumentViewer": 1, "RelativeStorage": 1, "FileWidget": True, "UseLink": True}))
 
 
 def apply_style(layer: QgsVectorLayer, kind: str, catalogue, language: str = "en") -> None:
@@ -275,10 +294,11 @@ def apply_style(layer: QgsVectorLayer, kind: str, catalogue, language: str = "en
         layer.setLabeling(id_labels(SIGNS_LABEL))
         layer.setLabelsEnabled(True)
     elif kind == DETECTIONS:
-        layer.setRenderer(detections_renderer())
+        layer.setRenderer(detections_renderer(language))
     else:
         raise ValueError(f"no style for layer kind '{kind}'")
     set_aliases(layer, kind, language)
+    feature_actions.apply(layer, kind)  # the photo in form and map tip; open in the viewer
     layer.triggerRepaint()
 
 

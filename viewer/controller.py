@@ -16,6 +16,7 @@ from qgis.core import QgsCoordinateReferenceSystem, QgsCoordinateTransform, QgsP
 from qgis.PyQt.QtCore import QTimer
 from qgis.PyQt.sip import isdeleted
 
+from ..gpkg.fields import feature_values
 from ..gpkg.output import layer_uri, read_run_table
 from ..review.background import BackgroundRunner
 from ..review.dock_controller import DockController
@@ -151,6 +152,17 @@ class DriveViewerController(DockController):
         self.frames.get(index, lambda image, i=index: self._show(i, image))
         step = 1 if index >= self.index else -1
         self.frames.prefetch(index + step * k for k in range(1, PREFETCH + 1))
+
+    def show_feature(self, layer, fid: int) -> None:
+        """Select a feature of ``layer`` and open the pair it was seen best in (a sign) or detected in."""
+        kind = layer_kind(layer)
+        feature = layer.getFeature(fid) if kind in (SIGNS, DETECTIONS) else None
+        if feature is None or not feature.isValid():
+            self.dock.show_message(f"{layer.name()}: no Sign Mapper feature {fid}", error=True)
+            return
+        values = feature_values(feature, kind)
+        layer.selectByIds([fid])
+        self.show_pair(layer, values["best_pair_id"] if kind == SIGNS else values["pair_id"])
 
     def show_pair(self, layer, pair_id: str) -> None:
         """Open ``pair_id`` of ``layer``'s drive (the review's Follow); a pair the drive lacks is said."""

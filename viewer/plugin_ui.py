@@ -25,6 +25,12 @@ class ViewerUi(DockUi):
         if review_ui is not None:
             review_ui.followers.append(self.follow_review)
 
+    def open_at_feature(self, layer, fid: int) -> None:
+        """Open the viewer (if closed) at the best pair of a feature, selected (a layer action)."""
+        self.action.setChecked(True)
+        if self.controller is not None:
+            self.controller.show_feature(layer, fid)
+
     def follow_review(self, layer, pair_id: str) -> None:
         """The review's Follow: an open viewer shows the best pair of the feature under review."""
         if self.controller is not None and self.dock is not None and self.dock.isVisible():

@@ -2,6 +2,7 @@
 opening a pair from the map, selecting a sign by its box, a zoom that stays."""
 
 import time
+from pathlib import Path
 
 import cv2
 import numpy as np
@@ -274,3 +275,45 @@ def test_a_sign_added_while_a_frame_is_shown_is_drawn_at_once(viewer):
     after = [b.key for b in dock.view.boxes() if b.key.startswith("signs:")]
     assert dock.index == 7 and len(after) == len(before) + 1
     assert f"{len(after)} mapped signs in view" in dock.caption.text()
+
+
+def test_a_signs_photo_and_the_action_that_opens_the_viewer_at_it(sign_mapper, qgis_iface, mapped, drive_dir):
+    """Crops are written by default; the layer as opened from its file shows each sign's photo (form, map tip)
+    and its action 'Open in the drive viewer' opens the viewer at the sign's best pair, the sign selected."""
+    import qgis.utils
+    from plugin_iface import RecordingIface
+    from qgis.core import QgsExpression
+
+    layer = QgsVectorLayer(f"{mapped}|layername=signs", "signs", "ogr")  # the embedded default style
+    QgsProject.instance().addMapLayer(layer)
+    feature = max(layer.getFeatures(), key=lambda f: int(f["best_pair_id"]))
+    context = layer.createExpressionContext()
+    context.setFeature(feature)
+    crop = mapped.parent / feature["crop_path"]
+    assert crop.is_file() and crop.parent.name == f"{mapped.stem}_crops"
+    # the form's image widget finds the crop from the GeoPackage's folder
+    setup = layer.editorWidgetSetup(layer.fields().indexOf("crop_path"))
+    root = setup.config()["PropertyCollection"]["properties"]["propertyRootPath"]["expression"]
+    assert setup.type() == "ExternalResource" and setup.config()["DocumentViewer"] == 1
+    assert Path(QgsExpression(root).evaluate(context)) / feature["crop_path"] == crop
+    tip = QgsExpression.replaceExpressionText(layer.mapTipTemplate(), context)
+    assert f'src="file://{crop}"' in tip and feature["template_id"] in tip
+    actions = {a.name(): a for a in layer.actions().actions()}
+    assert {"Open in the drive viewer", "Show the image crop"} <= set(actions)
+
+    plugin = sign_mapper.classFactory(RecordingIface(qgis_iface))
+    plugin.initGui()
+    qgis.utils.plugins["sign_mapper_under_test"] = plugin
+    try:
+        code = QgsExpression.replaceExpressionText(actions["Open in the drive viewer"].command(), context)
+        exec(compile(code, "action", "exec"), {})  # what QGIS runs when the action is clicked
+        dock = plugin.viewer_ui.dock
+        assert dock is not None and plugin.viewer_ui.action.isChecked()
+        wait(lambda: dock.pair_id == feature["best_pair_id"])
+        assert layer.selectedFeatureIds() == [feature.id()]
+        assert f"signs:{feature.id()}" in [b.key for b in dock.view.boxes()]
+    finally:
+        del qgis.utils.plugins["sign_mapper_under_test"]
+        plugin.unload()
+        QgsProject.instance().removeMapLayer(layer)
+        QApplication.processEvents()

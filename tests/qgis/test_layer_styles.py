@@ -112,10 +112,16 @@ def test_review_state_shows_in_the_symbol_and_follows_decisions(styles):
     assert share_near(decided, STATUS_COLOURS["review"], 60) < 0.002 and share_near(decided, "#212121", 60) > 0.002
 
 
-def test_legend_groups_the_pictograms_by_sign_family(styles):
+def test_legend_has_classes_by_status_then_the_pictograms_by_sign_family(styles):
     catalogue = load_catalogue()
     renderer = styles.signs_renderer(catalogue, "fr")
-    groups = renderer.rootRule().children()
+    status, *groups = renderer.rootRule().children()
+    assert status.label() == "Statut"
+    assert [(r.label(), r.filterExpression()) for r in status.children()] == [
+        ("accepté", "\"status\" = 'accepted'"), ("à contrôler", "\"status\" = 'review'"),
+        ("rejeté", "\"status\" = 'rejected'"), ("ajouté à la main", "\"status\" = 'manual'")]
+    legend = [item.label() for item in renderer.legendSymbolItems()]
+    assert legend[:5] == ["Statut", "accepté", "à contrôler", "rejeté", "ajouté à la main"]
     labels = [g.label() for g in groups]
     assert labels == ["Signaux de danger", "Signaux de priorité", "Interdictions", "Prescriptions",
                       "Signaux d'indication", "Plaque complémentaire", "other"]
@@ -256,7 +262,7 @@ def test_every_sign_on_a_pole_is_drawn_and_labelled_apart_highest_on_top(styles,
     label_offset = label_settings.dataDefinedProperties().property(styles.QgsPalLayerSettings.OffsetXY)
     for feature in layer.getFeatures():
         context.expressionContext().setFeature(feature)
-        face = rules[f"\"template_id\" = '{feature['template_id']}'"].symbol().symbolLayer(1)
+        face = rules[f"\"template_id\" = '{feature['template_id']}'"].symbol().symbolLayer(0)
         offset, _ = face.dataDefinedProperties().property(styles.QgsSymbolLayer.PropertyOffset).valueAsString(
             context.expressionContext())
         face_y[feature.id()] = float(offset.split(",")[1])
