@@ -12,6 +12,7 @@ ALGORITHMS = (
     ("evaluate", "EvaluateAlgorithm"),
     ("changes", "ChangesAlgorithm"),
     ("export_inventory", "ExportInventoryAlgorithm"),
+    ("inventory_atlas", "InventoryAtlasAlgorithm"),
     ("export_signalo", "ExportToSignaloAlgorithm"),
     ("import_drive", "ImportDriveAlgorithm"),
     ("drive_trajectory", "DriveTrajectoryAlgorithm"),

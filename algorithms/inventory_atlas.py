@@ -1,0 +1,128 @@
+"""``signmapper:inventoryatlas``: a PDF with a sheet per delivered sign, and the print layout that makes it."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from qgis.core import (
+    QgsLayoutExporter,
+    QgsProcessing,
+    QgsProcessingAlgorithm,
+    QgsProcessingException,
+    QgsProcessingOutputNumber,
+    QgsProcessingParameterBoolean,
+    QgsProcessingParameterFileDestination,
+    QgsProcessingParameterVectorLayer,
+)
+
+from ..gpkg.output import read_run_table
+from ..review.layers import gpkg_source
+from ..signmapper_core.output_schema import REVIEW, run_language
+from .base import SignMapperAlgorithm
+from .signs_input import signs_layer_and_run
+
+LAYOUT_NAME = "Sign Mapper inventory: {layer}"
+
+
+class InventoryAtlasAlgorithm(SignMapperAlgorithm):
+    NAME = "inventoryatlas"
+    DISPLAY_NAME = "Inventory atlas (PDF)"
+    GROUP_ID = "inventory"
+    ICON = "inventory_atlas.svg"
+    HELP = (
+        "Prints the delivered signs of a 'signs' layer (accepted and added by hand; optionally also those still to "
+        "review) as a PDF with one A4 sheet per sign, in sign number order: SSV number and name, sign number, "
+        "status and date, the catalogue pictogram, the photo (the image crop Map traffic signs writes beside the "
+        "GeoPackage), E/N/H, face azimuth, mounting height, format and size, the sign a plate belongs to, its text, "
+        "and a map of its surroundings at 1:250. Titles and words are in the output language. The print layout "
+        "can be added to the project (Project ▸ Layouts) to adjust and print it again; its map shows the "
+        "project's layers (a background map, the trajectory) when the signs layer is one of them. A failed or "
+        "cancelled run leaves an earlier PDF as it was."
+    )
+
+    SIGNS = "SIGNS"
+    INCLUDE_REVIEW = "INCLUDE_REVIEW"
+    LANGUAGE = "LANGUAGE"
+    ADD_LAYOUT = "ADD_LAYOUT"
+    OUTPUT = "OUTPUT"
+
+    def flags(self):
+        # a layout is built and its pictures and map drawn on the GUI thread, as QGIS's own atlas export does
+        return super().flags() | QgsProcessingAlgorithm.FlagNoThreading
+
+    def initAlgorithm(self, config=None):  # noqa: N802
+        self.add_parameter(
+            QgsProcessingParameterVectorLayer(self.SIGNS, self.tr("Mapped signs"), [QgsProcessing.TypeVectorPoint]),
+            "The 'signs' layer written by Map traffic signs, as the review left it.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterBoolean(self.INCLUDE_REVIEW, self.tr("Also signs still to review"), False),
+            "Also a sheet for each sign whose status is still 'review' (its status line says so).",
+        )
+        self.add_language_parameter(
+            self.LANGUAGE, "The layer's language",
+            "Titles, sign names and words (status, format) on the sheets in this language; by default the "
+            "language the signs were mapped in.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterBoolean(self.ADD_LAYOUT, self.tr("Add the print layout to the project"), True),
+            "The layout behind the PDF in Project ▸ Layouts, to adjust and print again (replacing an earlier one "
+            "of the same name). Only for a signs layer of the project.",
+        )
+        self.add_parameter(
+            QgsProcessingParameterFileDestination(self.OUTPUT, self.tr("Atlas PDF"), fileFilter="PDF (*.pdf)"),
+            "The PDF to write, one sheet per sign.",
+        )
+        self.addOutput(QgsProcessingOutputNumber("PAGES", self.tr("Sheets")))
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        from ..layout.atlas import atlas_layout
+        from ..signmapper_core.catalogue import load_catalogue
+        from ..signmapper_core.inventory_export import DELIVERED
+        from ..signmapper_core.partial_files import PartialFiles
+
+        self.check_outputs(parameters, context)
+        target = Path(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
+        if target.suffix.lower() != ".pdf":
+            raise QgsProcessingException(f"{self.parameterDefinition(self.OUTPUT).description()}: {target}: give a "
+                                         "file ending in .pdf")
+        layer, run = signs_layer_and_run(self.parameterAsVectorLayer(parameters, self.SIGNS, context))
+        language = self.chosen_language(parameters, self.LANGUAGE, context) or run_language(run)
+        statuses = DELIVERED + ((REVIEW,) if self.parameterAsBoolean(parameters, self.INCLUDE_REVIEW, context)
+                                else ())
+        folder = read_run_table(gpkg_source(layer)[0]).get("catalogue")
+        catalogue = load_catalogue(folder if folder and (Path(folder) / "catalogue.json").is_file() else None)
+        project = context.project()
+        layout = atlas_layout(project, layer, catalogue, language, statuses, LAYOUT_NAME.format(layer=layer.name()))
+        atlas = layout.atlas()
+        if not atlas.updateFeatures():
+            raise QgsProcessingException(f"{layer.name()}: no sign with status {', '.join(statuses)}: no atlas "
+                                         "to print")
+        feedback.pushInfo(f"{atlas.count()} sheets, in {language}")
+        output = PartialFiles(target)
+        try:
+            result, error = QgsLayoutExporter.exportToPdf(atlas, str(output.path),
+                                                          QgsLayoutExporter.PdfExportSettings(), feedback)
+            if feedback.isCanceled():
+                raise QgsProcessingException(f"Cancelled; {target} not written.")
+            if result != QgsLayoutExporter.Success:
+                raise QgsProcessingException(f"{target}: the atlas could not be written: {error}")
+            path = output.commit()
+        except BaseException:
+            output.discard()
+            raise
+        if self.parameterAsBoolean(parameters, self.ADD_LAYOUT, context):
+            self.add_to_project(project, layer, layout, feedback)
+        return {self.OUTPUT: path, "PAGES": atlas.count()}
+
+    @staticmethod
+    def add_to_project(project, layer, layout, feedback) -> None:
+        if project is None or project.mapLayer(layer.id()) is None:
+            feedback.pushInfo("The print layout is not added: the signs layer is not a layer of the project")
+            return
+        manager = project.layoutManager()
+        earlier = manager.layoutByName(layout.name())
+        if earlier is not None:
+            manager.removeLayout(earlier)
+        manager.addLayout(layout)
+        feedback.pushInfo(f"Print layout '{layout.name()}' added to the project (Project ▸ Layouts)")

@@ -1,0 +1,103 @@
+"""``signmapper:inventoryatlas``: a PDF sheet per delivered sign, from a mapped drive, and its print layout."""
+
+import re
+import shutil
+
+import numpy as np
+import pytest
+from qgis.core import QgsLayoutExporter, QgsProcessingException, QgsProject, QgsVectorLayer
+from qgis.PyQt.QtGui import QImage
+
+from signmapper_core.catalogue import load_catalogue
+
+
+@pytest.fixture(scope="module")
+def mapped(small_drive, tmp_path_factory, sign_mapper, qgis_processing):
+    """The small drive mapped once (crops are written by default), one sign rejected in the review."""
+    import processing
+
+    plugin = sign_mapper.classFactory(None)
+    plugin.initProcessing()
+    out = tmp_path_factory.mktemp("atlas") / "signs.gpkg"
+    processing.run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out), "LANGUAGE": 2})
+    plugin.unload()
+    layer = QgsVectorLayer(f"{out}|layername=signs", "signs", "ogr")
+    first = min(layer.getFeatures(), key=lambda f: f["sign_id"])
+    layer.startEditing()
+    layer.changeAttributeValue(first.id(), layer.fields().indexOf("status"), "rejected")
+    assert layer.commitChanges()
+    return out
+
+
+@pytest.fixture
+def project_signs(mapped):
+    layer = QgsVectorLayer(f"{mapped}|layername=signs", "signs", "ogr")
+    QgsProject.instance().addMapLayer(layer)
+    yield layer
+    for layout in QgsProject.instance().layoutManager().layouts():
+        QgsProject.instance().layoutManager().removeLayout(layout)
+    QgsProject.instance().removeAllMapLayers()
+
+
+def pdf_pages(path) -> int:
+    return len(re.findall(rb"/Type\s*/Page[^s]", path.read_bytes()))
+
+
+def test_an_atlas_pdf_with_a_sheet_per_delivered_sign_and_its_layout_in_the_project(run, project_signs, mapped,
+                                                                                      tmp_path):
+    layer = project_signs
+    delivered = sorted(f["sign_id"] for f in layer.getFeatures() if f["status"] in ("accepted", "manual"))
+    assert len(delivered) >= 2
+    out = tmp_path / "atlas.pdf"
+    result = run("signmapper:inventoryatlas", {"SIGNS": layer.id(), "OUTPUT": str(out), "LANGUAGE": 3})  # fr
+    assert result["PAGES"] == len(delivered)
+    assert out.read_bytes().startswith(b"%PDF") and pdf_pages(out) == len(delivered)
+    layout = QgsProject.instance().layoutManager().layoutByName("Sign Mapper inventory: signs")
+    assert layout is not None  # to adjust and print again
+
+    # the first sheet: the first delivered sign's number, French name and words, its coordinates, photo, pictogram
+    atlas = layout.atlas()
+    assert atlas.beginRender() and atlas.first()
+    feature = atlas.layout().reportContext().feature()
+    assert feature["sign_id"] == delivered[0]
+    entry = load_catalogue()[feature["template_id"]]
+    assert layout.itemById("title").currentText() == f"{entry.id}  {entry.name('fr')}"
+    word = {"accepted": "accepté", "manual": "ajouté à la main"}[feature["status"]]
+    assert layout.itemById("status").currentText().startswith(f"N° signal {feature['sign_id']}  ·  {word}  ·  ")
+    facts = layout.itemById("facts").currentText()
+    point = feature.geometry().constGet()
+    assert f"E [m]: {round(point.x(), 3)}" in facts and f"H [m]: {round(point.z(), 3)}" in facts
+    assert "Contrôlé: non" in facts
+    photo, pictogram = layout.itemById("photo"), layout.itemById("pictogram")
+    photo.refreshPicture()
+    pictogram.refreshPicture()
+    assert photo.evaluatedPath() == str(mapped.parent / feature["crop_path"]) and not photo.isMissingImage()
+    assert pictogram.evaluatedPath() == str(load_catalogue().pictogram_path(entry.id, "png"))
+    assert not pictogram.isMissingImage()
+    image = QgsLayoutExporter(layout).renderPageToImage(0)
+    atlas.endRender()
+    rgb = image.convertToFormat(QImage.Format_RGB888)
+    ptr = rgb.constBits()
+    ptr.setsize(rgb.bytesPerLine() * rgb.height())
+    pixels = np.frombuffer(ptr, np.uint8).reshape(rgb.height(), rgb.bytesPerLine())[:, :rgb.width() * 3]
+    px_per_mm = rgb.width() / 210.0
+    photo_area = pixels[int(45 * px_per_mm):int(125 * px_per_mm), int(75 * px_per_mm) * 3:int(190 * px_per_mm) * 3]
+    assert photo_area.std() > 20  # a photograph, not an empty frame
+
+
+def test_a_layer_outside_the_project_gives_the_pdf_only_and_nothing_to_print_is_said(run, mapped, tmp_path):
+    copy = tmp_path / "copy.gpkg"
+    shutil.copy(mapped, copy)
+    out = tmp_path / "only.pdf"
+    result = run("signmapper:inventoryatlas", {"SIGNS": f"{copy}|layername=signs", "OUTPUT": str(out)})
+    assert pdf_pages(out) == result["PAGES"] > 0
+    assert not QgsProject.instance().layoutManager().layouts()
+    layer = QgsVectorLayer(f"{copy}|layername=signs", "signs", "ogr")
+    layer.startEditing()
+    for feature in layer.getFeatures():
+        layer.changeAttributeValue(feature.id(), layer.fields().indexOf("status"), "review")
+    assert layer.commitChanges()
+    del layer
+    with pytest.raises(QgsProcessingException, match="no sign with status accepted, manual"):
+        run("signmapper:inventoryatlas", {"SIGNS": f"{copy}|layername=signs", "OUTPUT": str(tmp_path / "no.pdf")})
+    assert not (tmp_path / "no.pdf").exists()
