@@ -167,6 +167,16 @@ def test_modeler_chain_synthetic_drive_map_signs_evaluate(run, tmp_path):
     assert "Table 1" in html and "Detected signs" in html
     reference_row = html.split("Reference signs</td><td>")[1].split("<")[0]
     assert int(reference_row) == len(open_drive(tmp_path / "drive").truth)
+    # for people: the drive by its folder, the figures first, each sign with its status, the settings last, folded
+    drive = (tmp_path / "drive").resolve()
+    assert "<h1>Sign Mapper: evaluation of drive drive</h1>" in html
+    assert f"<td>drive</td><td>drive ({drive})</td>" in html
+    order = [html.index(marker) for marker in ("Table 1", "Table 2", "<svg", "<h2>Mapped signs</h2>",
+                                               "<h2>Missed reference signs", "<details>", "mapping: pipeline")]
+    assert order == sorted(order)
+    assert "<th>sign</th><th>status</th><th>mapped</th>" in html
+    assert "<tr><td>sign 1</td><td>accepted</td>" in html or "<tr><td>sign 1</td><td>review</td>" in html
+    assert html.index("</details>") > html.index("mapping: fusion")  # the dumps are inside the fold
 
 
 def test_facing_as_text_radius_default_and_a_report_with_signs_missed_and_parameters(run, tmp_path):
@@ -192,7 +202,7 @@ def test_facing_as_text_radius_default_and_a_report_with_signs_missed_and_parame
     result = run("signmapper:evaluate", params)  # RADIUS left at its default
     assert result["FALSE_POSITIVES"] == 0
     html = Path(result["REPORT"]).read_text()
-    assert "<h2>Mapped signs</h2>" in html and html.count("misclassified") == 1 and html.count(">correct<") == 2
+    assert "<h2>Mapped signs</h2>" in html and html.count(">misclassified<") == 1 and html.count(">correct<") == 2
     # s4 is not mapped: the one missed sign
     assert "<h2>Missed reference signs (1)</h2>" in html and ">1.22<" in html
     assert "date of this evaluation" in html and "matching radius [m]</td><td>0.75" in html
