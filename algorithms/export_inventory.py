@@ -12,13 +12,10 @@ from qgis.core import (
     QgsFields,
     QgsGeometry,
     QgsPoint,
-    QgsProcessing,
     QgsProcessingContext,
     QgsProcessingException,
     QgsProcessingOutputNumber,
-    QgsProcessingParameterBoolean,
     QgsProcessingParameterFileDestination,
-    QgsProcessingParameterVectorLayer,
     QgsVectorFileWriter,
     QgsWkbTypes,
 )
@@ -26,9 +23,8 @@ from qgis.core import (
 from ..gpkg.fields import QT_TYPES
 from ..gpkg.output import AtomicGeoPackage, geopackage_tables, layer_uri
 from ..review.layers import gpkg_source
-from ..signmapper_core.output_schema import REVIEW, run_language
-from .base import SignMapperAlgorithm
-from .signs_input import read_signs, signs_layer_and_run
+from .deliverable import DeliverableAlgorithm
+from .signs_input import read_signs
 
 INVENTORY_LAYER = "inventory"  # the layer written into a GeoPackage (its other layers are kept)
 # file suffix -> (OGR driver, layer creation options); CSV in the separator spreadsheets of the language expect
@@ -36,10 +32,9 @@ FORMATS = {".gpkg": ("GPKG", []), ".csv": ("CSV", ["WRITE_BOM=YES"]), ".shp": ("
 CSV_SEPARATORS = {"en": "COMMA", "de": "SEMICOLON", "fr": "SEMICOLON", "it": "SEMICOLON"}
 
 
-class ExportInventoryAlgorithm(SignMapperAlgorithm):
+class ExportInventoryAlgorithm(DeliverableAlgorithm):
     NAME = "exportinventory"
     DISPLAY_NAME = "Export inventory"
-    GROUP_ID = "inventory"
     ICON = "export_inventory.svg"
     HELP = (
         "Writes the reviewed signs of a 'signs' layer as a deliverable: the accepted signs and those a person added "
@@ -53,25 +48,13 @@ class ExportInventoryAlgorithm(SignMapperAlgorithm):
         "left out and named in the log. A failed or cancelled run leaves an earlier file as it was."
     )
 
-    SIGNS = "SIGNS"
-    INCLUDE_REVIEW = "INCLUDE_REVIEW"
-    LANGUAGE = "LANGUAGE"
     OUTPUT = "OUTPUT"
+    REVIEW_HELP = "Also deliver signs whose status is still 'review' (their status column says so)."
+    LANGUAGE_HELP = ("Column titles, sign names and coded values (status, format) in this language; by default the "
+                     "language the signs were mapped in.")
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.add_parameter(
-            QgsProcessingParameterVectorLayer(self.SIGNS, self.tr("Mapped signs"), [QgsProcessing.TypeVectorPoint]),
-            "The 'signs' layer written by Map traffic signs, as the review left it.",
-        )
-        self.add_parameter(
-            QgsProcessingParameterBoolean(self.INCLUDE_REVIEW, self.tr("Also signs still to review"), False),
-            "Also deliver signs whose status is still 'review' (their status column says so).",
-        )
-        self.add_language_parameter(
-            self.LANGUAGE, "The layer's language",
-            "Column titles, sign names and coded values (status, format) in this language; by default the "
-            "language the signs were mapped in.",
-        )
+        self.add_deliverable_inputs()
         self.add_parameter(
             QgsProcessingParameterFileDestination(
                 self.OUTPUT, self.tr("Inventory file"),
@@ -101,10 +84,7 @@ class ExportInventoryAlgorithm(SignMapperAlgorithm):
 
         self.check_outputs(parameters, context)
         suffix = self.output_format(parameters, context)
-        layer, run = signs_layer_and_run(self.parameterAsVectorLayer(parameters, self.SIGNS, context))
-        language = self.chosen_language(parameters, self.LANGUAGE, context) or run_language(run)
-        statuses = inventory.DELIVERED + ((REVIEW,) if self.parameterAsBoolean(parameters, self.INCLUDE_REVIEW,
-                                                                                 context) else ())
+        layer, _run, statuses, language = self.deliverable_inputs(parameters, context)
         signs = []
         for values, (east, north, height) in read_signs(layer, layer.crs(), context):
             values.update(easting=east, northing=north, elevation=height)  # where the sign is now, as drawn

@@ -6,28 +6,21 @@ from pathlib import Path
 
 from qgis.core import (
     QgsLayoutExporter,
-    QgsProcessing,
     QgsProcessingAlgorithm,
     QgsProcessingException,
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterFileDestination,
-    QgsProcessingParameterVectorLayer,
 )
 
-from ..gpkg.output import read_run_table
-from ..review.layers import gpkg_source
-from ..signmapper_core.output_schema import REVIEW, run_language
-from .base import SignMapperAlgorithm
-from .signs_input import signs_layer_and_run
+from .deliverable import DeliverableAlgorithm
 
 LAYOUT_NAME = "Sign Mapper inventory: {layer}"
 
 
-class InventoryAtlasAlgorithm(SignMapperAlgorithm):
+class InventoryAtlasAlgorithm(DeliverableAlgorithm):
     NAME = "inventoryatlas"
     DISPLAY_NAME = "Inventory atlas (PDF)"
-    GROUP_ID = "inventory"
     ICON = "inventory_atlas.svg"
     HELP = (
         "Prints the delivered signs of a 'signs' layer (accepted and added by hand; optionally also those still to "
@@ -40,30 +33,18 @@ class InventoryAtlasAlgorithm(SignMapperAlgorithm):
         "cancelled run leaves an earlier PDF as it was."
     )
 
-    SIGNS = "SIGNS"
-    INCLUDE_REVIEW = "INCLUDE_REVIEW"
-    LANGUAGE = "LANGUAGE"
     ADD_LAYOUT = "ADD_LAYOUT"
     OUTPUT = "OUTPUT"
+    REVIEW_HELP = "Also a sheet for each sign whose status is still 'review' (its status line says so)."
+    LANGUAGE_HELP = ("Titles, sign names and words (status, format) on the sheets in this language; by default the "
+                     "language the signs were mapped in.")
 
     def flags(self):
         # a layout is built and its pictures and map drawn on the GUI thread, as QGIS's own atlas export does
         return super().flags() | QgsProcessingAlgorithm.FlagNoThreading
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        self.add_parameter(
-            QgsProcessingParameterVectorLayer(self.SIGNS, self.tr("Mapped signs"), [QgsProcessing.TypeVectorPoint]),
-            "The 'signs' layer written by Map traffic signs, as the review left it.",
-        )
-        self.add_parameter(
-            QgsProcessingParameterBoolean(self.INCLUDE_REVIEW, self.tr("Also signs still to review"), False),
-            "Also a sheet for each sign whose status is still 'review' (its status line says so).",
-        )
-        self.add_language_parameter(
-            self.LANGUAGE, "The layer's language",
-            "Titles, sign names and words (status, format) on the sheets in this language; by default the "
-            "language the signs were mapped in.",
-        )
+        self.add_deliverable_inputs()
         self.add_parameter(
             QgsProcessingParameterBoolean(self.ADD_LAYOUT, self.tr("Add the print layout to the project"), True),
             "The layout behind the PDF in Project ▸ Layouts, to adjust and print again (replacing an earlier one "
@@ -78,7 +59,6 @@ class InventoryAtlasAlgorithm(SignMapperAlgorithm):
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         from ..layout.atlas import atlas_layout
         from ..signmapper_core.catalogue import load_catalogue
-        from ..signmapper_core.inventory_export import DELIVERED
         from ..signmapper_core.partial_files import PartialFiles
 
         self.check_outputs(parameters, context)
@@ -86,11 +66,8 @@ class InventoryAtlasAlgorithm(SignMapperAlgorithm):
         if target.suffix.lower() != ".pdf":
             raise QgsProcessingException(f"{self.parameterDefinition(self.OUTPUT).description()}: {target}: give a "
                                          "file ending in .pdf")
-        layer, run = signs_layer_and_run(self.parameterAsVectorLayer(parameters, self.SIGNS, context))
-        language = self.chosen_language(parameters, self.LANGUAGE, context) or run_language(run)
-        statuses = DELIVERED + ((REVIEW,) if self.parameterAsBoolean(parameters, self.INCLUDE_REVIEW, context)
-                                else ())
-        folder = read_run_table(gpkg_source(layer)[0]).get("catalogue")
+        layer, run, statuses, language = self.deliverable_inputs(parameters, context)
+        folder = run.get("catalogue")
         catalogue = load_catalogue(folder if folder and (Path(folder) / "catalogue.json").is_file() else None)
         project = context.project()
         layout = atlas_layout(project, layer, catalogue, language, statuses, LAYOUT_NAME.format(layer=layer.name()))

@@ -8,7 +8,7 @@ between the steps:
      and take a screenshot of the main window;
   3. open the drive viewer on a pair that sees signs, with the vehicle on the map;
   4. review with the keys only, Follow on: Space to the first sign, then Accept (A) each sign, one
-     reclassified by key (C, Ctrl+F, its id typed, Enter; or C 1 where it has next choices), one rejected (R);
+     reclassified by key (C, /, its id typed, Enter; or C 1 where it has next choices), one rejected (R);
      at every step the sign must be on the map and the viewer on its best pair; a screenshot with the
      picker open;
   5. export the inventory (CSV) and print the inventory atlas (PDF, its layout added to the project); the
@@ -249,8 +249,13 @@ def step_walk():
     from qgis.PyQt.QtTest import QTest
 
     dock = plugin().review_ui.dock
-    iface.mainWindow().activateWindow()
+    QApplication.setActiveWindow(iface.mainWindow())  # no window manager under Xvfb to activate it
     dock.image_view.setFocus()  # where the pointer over the dock puts it (ui/hover_focus)
+    QApplication.processEvents()
+    if not dock.isAncestorOf(QApplication.focusWidget()):  # keys would reach QGIS's own shortcuts instead
+        log("review", error=f"the keyboard is not in the review dock but in {QApplication.focusWidget()!r}")
+        finish(False)
+        return
     press(Qt.Key_Space)  # to the first sign needing review
     settle()
     walk, total = [], state["signs"].featureCount()
@@ -268,12 +273,12 @@ def step_walk():
                 press(Qt.Key_1)
                 facts["decision"] = "C 1"
             else:
-                press(Qt.Key_F, Qt.ControlModifier)
+                press(Qt.Key_Slash)  # the search (an id starts with a digit)
                 for char in item.template_id:
                     QTest.keyClicks(QApplication.focusWidget(), char)
                     state["presses"] += 1
                 press(Qt.Key_Return)
-                facts["decision"] = f"C Ctrl+F {item.template_id} Enter"
+                facts["decision"] = f"C / {item.template_id} Enter"
         elif step == total - 1 and total > 2:
             press(Qt.Key_R)
             facts["decision"] = "R"

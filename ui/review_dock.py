@@ -58,8 +58,8 @@ CLOSE_PICKER_KEY = "Escape"
 REJECT_COLOUR = "#c62828"
 TOOLTIPS = {"next_review": "Next feature to review", "add_sign": "Add a missed sign: then click the centre of the "
             "sign in the image", "undo": "Undo the last decision",
-            "reclassify": "Choose another sign type: keys 1-3 take the classifier's next choices, typing searches, "
-            "Escape closes"}
+            "reclassify": "Choose another sign type: keys 1-3 take the classifier's next choices, typing (or '/') "
+            "searches, Escape closes"}
 PICTOGRAM_PX = 56
 # the lines of facts under the image: key -> what the line shows (its tooltip)
 INFO_LINES = (("template", "Sign type (SSV) and name"), ("status", "Status and why the mapping left it for review"),
@@ -284,6 +284,7 @@ class ReviewDock(QDockWidget):
             keys[f"choice{i + 1}"] = (f"Next choice {key}", key)
         handlers["close_picker"] = lambda: self.picker_box.isVisible() and self.show_picker(False)
         keys["close_picker"] = ("Close the picker", CLOSE_PICKER_KEY)
+        self.picker.set_reserved(QKeySequence(key).toString() for _text, key in keys.values())
         for name, handler in handlers.items():
             text, key = keys[name]
             action = QAction(text, self)

@@ -30,6 +30,7 @@ from qgis.PyQt.QtWidgets import (
 ANY = ""
 ID_ROLE = Qt.UserRole
 CHOICE_KEYS = ("1", "2", "3")  # the classifier's next choices, best first (the review dock binds them)
+SEARCH_KEY = "/"  # opens the search box without typing into it
 
 
 @dataclass(frozen=True)
@@ -60,8 +61,10 @@ class TemplatePicker(QWidget):
     """Emits ``templateChosen(id)`` on a next choice, a double click, Enter or the Reclassify button.
 
     Keyboard first: it opens with the focus on the grid, where the arrow keys move
-    and Enter chooses; the first character typed that is no shortcut (or Ctrl+F)
-    goes to the search box, so a decision key never lands in it as text.
+    and Enter chooses; the first character typed that is none of the dock's keys
+    (``reserved``) goes to the search box ('/' only opens it: an id starts with a
+    digit, and 1-3 choose), so a decision key never lands in it as text, and QGIS's
+    own one-letter shortcuts (S toggles snapping) do not take a search's first letter.
     """
 
     templateChosen = pyqtSignal(str)  # noqa: N815
@@ -69,13 +72,14 @@ class TemplatePicker(QWidget):
     def __init__(self, parent=None, icon_px: int = 40):
         super().__init__(parent)
         self._choices: List[TemplateChoice] = []
+        self._reserved = set(CHOICE_KEYS)
         self.colour_box = QComboBox()
         self.colour_box.setToolTip("Show only templates of this dominant colour")
         self.shape_box = QComboBox()
         self.shape_box.setToolTip("Show only templates of this shape")
         self.search = QLineEdit()
         self.search.setPlaceholderText("Type to search id or name…")
-        self.search.setToolTip("Start typing (or Ctrl+F) to search; Enter reclassifies as the first match, "
+        self.search.setToolTip("Start typing (or '/') to search; Enter reclassifies as the first match, "
                                "Escape closes the picker")
         self.search.setClearButtonEnabled(True)
         self.search.setFocusPolicy(Qt.ClickFocus)  # Tab never lands here: typing does (see eventFilter)
@@ -131,12 +135,19 @@ class TemplatePicker(QWidget):
         """Where the keyboard starts when the picker opens: the grid, not the search box."""
         self.grid.setFocus()
 
+    def set_reserved(self, keys) -> None:
+        """The keys that stay the dock's while the grid has the focus (its shortcuts): they never start a search."""
+        self._reserved = {str(k).lower() for k in keys}
+
     def eventFilter(self, watched, event):  # noqa: N802 - Qt override
+        if watched is self.grid and event.type() == QEvent.ShortcutOverride and self._starts_typing(event):
+            event.accept()  # a search's first letter: no window shortcut of QGIS may take it
+            return True
         if event.type() != QEvent.KeyPress:
             return False
         if watched is self.grid and self._starts_typing(event):
             self.search.setFocus()
-            if event.key() != Qt.Key_F:
+            if event.text() != SEARCH_KEY:
                 self.search.insert(event.text())
             return True
         if watched is self.search and event.key() == Qt.Key_Down and self.grid.count():
@@ -146,14 +157,11 @@ class TemplatePicker(QWidget):
             return True
         return False
 
-    @staticmethod
-    def _starts_typing(event) -> bool:
-        """A character typed on the grid (or Ctrl+F) starts a search; shortcuts never get here."""
-        if event.key() == Qt.Key_F and event.modifiers() & Qt.ControlModifier:
-            return True
+    def _starts_typing(self, event) -> bool:
+        """A character typed on the grid that is none of the dock's keys starts a search."""
         text = event.text()
-        return bool(text) and text.isprintable() and not text.isspace() and \
-            not event.modifiers() & (Qt.ControlModifier | Qt.AltModifier)
+        return bool(text) and text.isprintable() and not text.isspace() and text.lower() not in self._reserved \
+            and not event.modifiers() & (Qt.ControlModifier | Qt.AltModifier)
 
     def choose_suggestion(self, index: int) -> bool:
         """Reclassify as the ``index``-th next choice (0 = best); False when there is none."""

@@ -7,6 +7,7 @@ from pathlib import Path
 import cv2
 import numpy as np
 import pytest
+from mapping_runs import map_drive
 from qgis.core import QgsPointXY, QgsProject, QgsVectorLayer
 from qgis.PyQt.QtCore import QThreadPool
 from qgis.PyQt.QtGui import QImage
@@ -29,14 +30,7 @@ def drive_dir(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def mapped(drive_dir, tmp_path_factory, sign_mapper, qgis_processing):
-    import processing
-
-    plugin = sign_mapper.classFactory(None)
-    plugin.initProcessing()
-    out = tmp_path_factory.mktemp("viewer-run") / "run.gpkg"
-    processing.run("signmapper:mapsigns", {"DRIVE": str(drive_dir), "OUTPUT": str(out), "LANGUAGE": 2})
-    plugin.unload()
-    return out
+    return map_drive(sign_mapper, drive_dir, tmp_path_factory.mktemp("viewer-run") / "run.gpkg", LANGUAGE=2)
 
 
 def wait(condition, timeout_s=20.0):

@@ -10,10 +10,10 @@ from qgis.core import (
     QgsFeatureSink,
     QgsGeometry,
     QgsPoint,
-    QgsProcessingFeedback,
     QgsVectorLayer,
     QgsWkbTypes,
 )
+from recorder import Recorder
 
 # sign_id, template_id, status, plate_of, text, (E, N, H), crop
 SIGNS = [
@@ -54,22 +54,10 @@ def run_gpkg(tmp_path, sign_mapper):
 
 
 def export(run, run_gpkg, output, **extra):
-    feedback = Messages()
+    feedback = Recorder()
     result = run("signmapper:exportinventory", {"SIGNS": f"{run_gpkg}|layername=signs", "OUTPUT": str(output),
                                                 **extra}, feedback=feedback)
     return result, feedback
-
-
-class Messages(QgsProcessingFeedback):
-    def __init__(self):
-        super().__init__()
-        self.lines = []
-
-    def pushInfo(self, info):  # noqa: N802
-        self.lines.append(info)
-
-    def reportError(self, error, fatalError=False):  # noqa: N802, N803
-        self.lines.append(error)
 
 
 def rows_of(path, layer="inventory"):
@@ -145,7 +133,7 @@ def test_a_wrong_suffix_is_refused_and_a_cancelled_run_leaves_the_earlier_file(r
     target = tmp_path / "inventory.csv"
     target.write_text("earlier\n", encoding="utf-8")
 
-    class CancelAtOnce(Messages):
+    class CancelAtOnce(Recorder):
         def isCanceled(self):  # noqa: N802
             return True
 

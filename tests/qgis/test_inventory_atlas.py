@@ -5,6 +5,7 @@ import shutil
 
 import numpy as np
 import pytest
+from mapping_runs import map_drive
 from qgis.core import QgsLayoutExporter, QgsProcessingException, QgsProject, QgsVectorLayer
 from qgis.PyQt.QtGui import QImage
 
@@ -14,13 +15,7 @@ from signmapper_core.catalogue import load_catalogue
 @pytest.fixture(scope="module")
 def mapped(small_drive, tmp_path_factory, sign_mapper, qgis_processing):
     """The small drive mapped once (crops are written by default), one sign rejected in the review."""
-    import processing
-
-    plugin = sign_mapper.classFactory(None)
-    plugin.initProcessing()
-    out = tmp_path_factory.mktemp("atlas") / "signs.gpkg"
-    processing.run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out), "LANGUAGE": 2})
-    plugin.unload()
+    out = map_drive(sign_mapper, small_drive, tmp_path_factory.mktemp("atlas") / "signs.gpkg", LANGUAGE=2)
     layer = QgsVectorLayer(f"{out}|layername=signs", "signs", "ogr")
     first = min(layer.getFeatures(), key=lambda f: f["sign_id"])
     layer.startEditing()

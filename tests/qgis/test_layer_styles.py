@@ -58,16 +58,21 @@ def memory_signs(statuses, template_id="2.30-50"):
     return layer
 
 
-def render(layer, n):
+def render(layer, n, extent=None, size=None):
+    """The layer drawn as RGB: ``n`` test signs SPACING_M apart, or ``extent`` at ``size`` pixels (96 dpi, the
+    map's expression context as the canvas sets it)."""
     settings = QgsMapSettings()
     settings.setLayers([layer])
     settings.setDestinationCrs(layer.crs())
     width = int(SPACING_M * n * PX_PER_M)
-    settings.setOutputSize(QSize(width, int(SPACING_M * PX_PER_M)))
-    settings.setExtent(QgsRectangle(2600000.0 - SPACING_M / 2, 1200000.0 - SPACING_M / 2,
-                                    2600000.0 + SPACING_M * (n - 0.5), 1200000.0 + SPACING_M / 2))
+    settings.setOutputSize(size or QSize(width, int(SPACING_M * PX_PER_M)))
+    settings.setExtent(extent or QgsRectangle(2600000.0 - SPACING_M / 2, 1200000.0 - SPACING_M / 2,
+                                              2600000.0 + SPACING_M * (n - 0.5), 1200000.0 + SPACING_M / 2))
     settings.setBackgroundColor(QColor("white"))
     settings.setOutputDpi(96)
+    map_context = QgsExpressionContext()
+    map_context.appendScope(QgsExpressionContextUtils.mapSettingsScope(settings))
+    settings.setExpressionContext(map_context)
     job = QgsMapRendererParallelJob(settings)
     job.start()
     job.waitForFinished()
@@ -284,23 +289,7 @@ def test_every_sign_on_a_pole_is_drawn_and_labelled_apart_highest_on_top(styles,
     assert label_offset.valueAsString(context.expressionContext())[0].endswith(",0")
 
     # drawn: the red disc above the blue one above the yellow diamond, each a pictogram's height apart
-    settings = QgsMapSettings()
-    settings.setLayers([layer])
-    settings.setDestinationCrs(layer.crs())
-    settings.setOutputSize(QSize(200, 200))
-    settings.setOutputDpi(96)
-    settings.setExtent(QgsRectangle(2599998.0, 1199998.0, 2600002.0, 1200002.0))  # 1:~75: mm are pixels
-    settings.setBackgroundColor(QColor("white"))
-    map_context = QgsExpressionContext()
-    map_context.appendScope(QgsExpressionContextUtils.mapSettingsScope(settings))  # as the canvas sets it
-    settings.setExpressionContext(map_context)
-    job = QgsMapRendererParallelJob(settings)
-    job.start()
-    job.waitForFinished()
-    image = job.renderedImage().convertToFormat(QImage.Format_RGB888)
-    ptr = image.constBits()
-    ptr.setsize(image.bytesPerLine() * image.height())
-    rgb = np.frombuffer(ptr, np.uint8).reshape(image.height(), image.bytesPerLine())[:, :600].reshape(200, 200, 3)
+    rgb = render(layer, 1, QgsRectangle(2599998.0, 1199998.0, 2600002.0, 1200002.0), QSize(200, 200))  # 1:~75
     r, g, b = (rgb[..., i].astype(int) for i in range(3))
     rows = {"red": np.nonzero((r > 180) & (g < 80) & (b < 80))[0], "blue": np.nonzero((b > 150) & (r < 60))[0],
             "yellow": np.nonzero((r > 200) & (g > 170) & (b < 60))[0]}

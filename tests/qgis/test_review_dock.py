@@ -376,12 +376,39 @@ def test_typing_in_the_open_picker_searches_and_enter_reclassifies_as_the_match(
     assert rec.calls == [("reclassifyRequested", "1.01")]
     dock.show_picker(False)
     press(Qt.Key_C)
-    press(Qt.Key_F, Qt.ControlModifier)  # to search for an id starting with a digit
+    press(Qt.Key_Slash)  # to search for an id starting with a digit (1-3 choose)
     assert QApplication.focusWidget() is dock.picker.search and dock.picker.search.text() == ""
     QTest.keyClicks(dock.picker.search, "2.37")
     assert dock.picker.visible_ids() == ["2.37"]
     press(Qt.Key_Escape)  # closes the picker from the search box too
     assert not dock.picker_box.isVisible()
+
+
+def test_a_search_starting_with_a_letter_qgis_binds_is_a_search(dock, ui):
+    """QGIS binds S (toggle snapping), T (tracing) and Ctrl+F (a modal filter dialog) in its main window: a
+    search's first letter must not reach them."""
+    from qgis.PyQt.QtWidgets import QAction, QMainWindow
+
+    window = QMainWindow()
+    snapping = QAction("Toggle Snapping", window)
+    snapping.setShortcut("S")  # as QGIS has it: a window shortcut
+    window.addAction(snapping)
+    toggled = []
+    snapping.triggered.connect(lambda: toggled.append(True))
+    window.addDockWidget(Qt.RightDockWidgetArea, dock)
+    window.show()
+    QApplication.setActiveWindow(window)
+    reclassifiable(dock, ui)
+    press(Qt.Key_S)  # the picker closed: S is QGIS's
+    assert toggled == [True]
+    press(Qt.Key_C)
+    dock.picker.set_filter("", "", "")
+    for key in (Qt.Key_S, Qt.Key_T, Qt.Key_O, Qt.Key_P):
+        press(key)
+    assert dock.picker.search.text() == "stop" and toggled == [True]
+    window.removeDockWidget(dock)
+    dock.setParent(None)  # the fixture closes it
+    window.close()
 
 
 def _inside_viewport(dock, widget) -> bool:
