@@ -35,7 +35,7 @@ DRIVE = os.environ["SIGNMAPPER_CHECK_DRIVE"]
 OUT = Path(os.environ.get("SIGNMAPPER_CHECK_OUT", "docs"))
 GPKG = os.environ.get("SIGNMAPPER_CHECK_GPKG", str(OUT / "desktop-check.gpkg"))
 REPORT = Path(os.environ.get("SIGNMAPPER_CHECK_REPORT", str(Path(GPKG).with_suffix(".json"))))
-TIMEOUT_S = 600
+TIMEOUT_S = 1200  # mapping the demo drive from the dialog: 9 min with both cores busy (2026-12-06)
 
 report = {"drive": DRIVE, "steps": [], "ok": False}
 state = {"waited": 0.0}
