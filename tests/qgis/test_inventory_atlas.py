@@ -70,6 +70,11 @@ def test_an_atlas_pdf_with_a_sheet_per_delivered_sign_and_its_layout_in_the_proj
     assert photo.evaluatedPath() == str(mapped.parent / feature["crop_path"]) and not photo.isMissingImage()
     assert pictogram.evaluatedPath() == str(load_catalogue().pictogram_path(entry.id, "png"))
     assert not pictogram.isMissingImage()
+    item_map = layout.itemById("map")  # on the sheet whatever the shape of the layer's extent
+    assert (item_map.sizeWithUnits().width(), item_map.sizeWithUnits().height()) == pytest.approx((180.0, 125.0))
+    assert (item_map.positionWithUnits().x(), item_map.positionWithUnits().y()) == pytest.approx((15.0, 145.0))
+    assert item_map.scale() == pytest.approx(250.0)
+    assert item_map.extent().contains(feature.geometry().asPoint())  # around this sheet's sign
     image = QgsLayoutExporter(layout).renderPageToImage(0)
     atlas.endRender()
     rgb = image.convertToFormat(QImage.Format_RGB888)
