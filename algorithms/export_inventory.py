@@ -21,8 +21,9 @@ from qgis.core import (
 )
 
 from ..gpkg.fields import QT_TYPES
-from ..gpkg.output import AtomicGeoPackage, geopackage_tables, layer_uri
+from ..gpkg.output import CheckedSink, GeoPackageLayers, layer_uri
 from ..review.layers import gpkg_source
+from ..signmapper_core.partial_output import write_failure
 from .deliverable import DeliverableAlgorithm
 from .signs_input import read_signs
 
@@ -49,6 +50,7 @@ class ExportInventoryAlgorithm(DeliverableAlgorithm):
     )
 
     OUTPUT = "OUTPUT"
+    OWNED_LAYERS = {OUTPUT: (INVENTORY_LAYER,)}  # in an existing GeoPackage only this layer is replaced
     REVIEW_HELP = "Also deliver signs whose status is still 'review' (their status column says so)."
     LANGUAGE_HELP = ("Column titles, sign names and coded values (status, format) in this language; by default the "
                      "language the signs were mapped in.")
@@ -64,25 +66,23 @@ class ExportInventoryAlgorithm(DeliverableAlgorithm):
         )
         self.addOutput(QgsProcessingOutputNumber("SIGNS_WRITTEN", self.tr("Signs written")))
 
-    def check_inputs(self, parameters, context) -> None:
-        self.output_format(parameters, context)
-        super().check_inputs(parameters, context)
+    def check_outputs(self, parameters, context) -> None:
+        self.output_format(parameters, context)  # first: a wrong suffix is said before any file is locked
+        super().check_outputs(parameters, context)
 
     def output_format(self, parameters, context) -> str:
-        """The output's suffix (.gpkg, .csv, .shp); QgsProcessingException naming the file otherwise."""
-        path = Path(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
+        """The output's suffix (.gpkg, .csv, .shp); QgsProcessingException naming the file otherwise. (An
+        existing .gpkg that is no GeoPackage is refused by the output check, not replaced.)"""
+        path = Path(self.output_target(parameters, self.OUTPUT, context))
         suffix = path.suffix.lower()
         if suffix not in FORMATS:
             label = self.parameterDefinition(self.OUTPUT).description()
             raise QgsProcessingException(f"{label}: {path}: give a file ending in .gpkg, .csv or .shp")
-        if suffix == ".gpkg":
-            geopackage_tables(path)  # an existing file that is no GeoPackage is refused, not replaced
         return suffix
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+    def process(self, parameters, context, feedback):
         from ..signmapper_core import inventory_export as inventory
 
-        self.check_outputs(parameters, context)
         suffix = self.output_format(parameters, context)
         layer, _run, statuses, language = self.deliverable_inputs(parameters, context)
         signs = []
@@ -90,7 +90,7 @@ class ExportInventoryAlgorithm(DeliverableAlgorithm):
             values.update(easting=east, northing=north, elevation=height)  # where the sign is now, as drawn
             signs.append(values)
         chosen = inventory.select(signs, statuses)
-        target = Path(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
+        target = Path(self.output_target(parameters, self.OUTPUT, context))
         gpkg_folder = Path(gpkg_source(layer)[0] or target).parent
         for sign in chosen.signs:
             sign["crop_path"] = inventory.rebased(sign.get("crop_path"), gpkg_folder, target.parent)
@@ -100,29 +100,23 @@ class ExportInventoryAlgorithm(DeliverableAlgorithm):
         for column, name in zip(columns, names):
             fields.append(QgsField(name, QT_TYPES[column.kind]))
 
-        writer, output = self.open_output(target, suffix, fields, layer, language, context)
-        try:
-            for k, sign in enumerate(chosen.signs):
-                if feedback.isCanceled():
-                    raise QgsProcessingException(f"Cancelled; {target} not written.")
-                feature = QgsFeature(fields)
-                feature.setAttributes([NULL if v is None else v for v in inventory.row(sign, language)])
-                if suffix != ".csv":
-                    feature.setGeometry(QgsGeometry(QgsPoint(sign["easting"], sign["northing"], sign["elevation"])))
-                if not writer.addFeature(feature, QgsFeatureSink.FastInsert):
-                    raise QgsProcessingException(f"{target}: cannot write sign {sign.get('sign_id')}: "
-                                                 f"{writer.errorMessage()}")
-                feedback.setProgress(100.0 * (k + 1) / max(len(chosen.signs), 1))
-            del writer
-            path = output.commit()
-        except BaseException:
-            output.discard()
-            raise
+        writer = self.open_output(parameters, target, suffix, fields, layer, language, context)
+        for k, sign in enumerate(chosen.signs):
+            if feedback.isCanceled():
+                raise QgsProcessingException(f"Cancelled; {target} not written.")
+            feature = QgsFeature(fields)
+            feature.setAttributes([NULL if v is None else v for v in inventory.row(sign, language)])
+            if suffix != ".csv":
+                feature.setGeometry(QgsGeometry(QgsPoint(sign["easting"], sign["northing"], sign["elevation"])))
+            writer.addFeature(feature, QgsFeatureSink.FastInsert)  # a failed write raises, naming the file
+            feedback.setProgress(100.0 * (k + 1) / max(len(chosen.signs), 1))
+        writer.close()
+        path = str(target)  # the partial output becomes it when the run returns
         feedback.pushInfo(f"{len(chosen.signs)} signs written to {path} ({', '.join(statuses)}); {chosen.left_out} "
                           "left out by status")
         for plate, host in chosen.orphan_plates:
-            feedback.reportError(f"Plate {plate}: its sign {host} is not delivered (its status); the plate is left "
-                                 "out too", fatalError=False)
+            feedback.pushWarning(f"Plate {plate}: its sign {host} is not delivered (its status); the plate is left "
+                                 "out too")
         if suffix == ".shp":
             feedback.pushInfo("Shapefile columns: " + ", ".join(f"{n} = {c.title}" for n, c in zip(names, columns)))
         source = layer_uri(path, INVENTORY_LAYER) if suffix == ".gpkg" else path
@@ -130,25 +124,22 @@ class ExportInventoryAlgorithm(DeliverableAlgorithm):
             f"Inventory {target.stem}", context.project(), self.OUTPUT))
         return {self.OUTPUT: path, "SIGNS_WRITTEN": len(chosen.signs)}
 
-    def open_output(self, target: Path, suffix: str, fields, layer, language, context):
-        """(QgsVectorFileWriter, partial output with commit/discard) for the format of ``suffix``."""
-        from ..signmapper_core.partial_files import PartialFiles
-
-        if suffix == ".gpkg":
-            output = AtomicGeoPackage(str(target), ours=(INVENTORY_LAYER,))
-            writer = output.open_layer(INVENTORY_LAYER, fields, QgsWkbTypes.PointZ, layer.crs(),
-                                       abstract=f"Sign Mapper: inventory of {layer.source()}")
-            return writer, output
-        output = PartialFiles(target)
+    def open_output(self, parameters, target: Path, suffix: str, fields, layer, language, context) -> CheckedSink:
+        """The writer of the inventory in the run's partial output (``RunOutputs``: committed when the run
+        succeeds, dropped when it fails); a failed write raises ``OutputWriteError``."""
+        if suffix == ".gpkg":  # a copy of an existing file keeping its other layers
+            return GeoPackageLayers(self.run_outputs.partial(self.OUTPUT)).open_layer(
+                INVENTORY_LAYER, fields, QgsWkbTypes.PointZ, layer.crs(),
+                abstract=f"Sign Mapper: inventory of {layer.source()}")
+        path = self.parameterAsFileOutput(parameters, self.OUTPUT, context)  # the partial file; side files beside
         driver, layer_options = FORMATS[suffix]
         options = QgsVectorFileWriter.SaveVectorOptions()
         options.driverName = driver
         options.fileEncoding = "UTF-8"
         options.layerOptions = layer_options + ([f"SEPARATOR={CSV_SEPARATORS[language]}"] if suffix == ".csv" else [])
         geometry = QgsWkbTypes.NoGeometry if suffix == ".csv" else QgsWkbTypes.PointZ
-        writer = QgsVectorFileWriter.create(str(output.path), fields, geometry, layer.crs(),
-                                            context.transformContext(), options)
+        writer = QgsVectorFileWriter.create(path, fields, geometry, layer.crs(), context.transformContext(), options)
+        what = f"the inventory ({self.parameterDefinition(self.OUTPUT).description()})"
         if writer.hasError() != QgsVectorFileWriter.NoError:
-            output.discard()
-            raise QgsProcessingException(f"{target}: cannot write: {writer.errorMessage()}")
-        return writer, output
+            raise write_failure(target, what, writer.errorMessage())
+        return CheckedSink(writer, target, what, (path, None))

@@ -13,6 +13,7 @@ from qgis.core import (
     QgsProcessingParameterFileDestination,
 )
 
+from ..signmapper_core.partial_output import write_failure
 from .deliverable import DeliverableAlgorithm
 
 LAYOUT_NAME = "Sign Mapper inventory: {layer}"
@@ -56,16 +57,18 @@ class InventoryAtlasAlgorithm(DeliverableAlgorithm):
         )
         self.addOutput(QgsProcessingOutputNumber("PAGES", self.tr("Sheets")))
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
-        from ..layout.atlas import atlas_layout
-        from ..signmapper_core.catalogue import load_catalogue
-        from ..signmapper_core.partial_files import PartialFiles
-
-        self.check_outputs(parameters, context)
-        target = Path(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
-        if target.suffix.lower() != ".pdf":
+    def check_outputs(self, parameters, context) -> None:
+        target = Path(self.output_target(parameters, self.OUTPUT, context))
+        if target.suffix.lower() != ".pdf":  # said before any file is locked
             raise QgsProcessingException(f"{self.parameterDefinition(self.OUTPUT).description()}: {target}: give a "
                                          "file ending in .pdf")
+        super().check_outputs(parameters, context)
+
+    def process(self, parameters, context, feedback):
+        from ..layout.atlas import atlas_layout
+        from ..signmapper_core.catalogue import load_catalogue
+
+        target = Path(self.output_target(parameters, self.OUTPUT, context))
         layer, run, statuses, language = self.deliverable_inputs(parameters, context)
         folder = run.get("catalogue")
         catalogue = load_catalogue(folder if folder and (Path(folder) / "catalogue.json").is_file() else None)
@@ -76,21 +79,15 @@ class InventoryAtlasAlgorithm(DeliverableAlgorithm):
             raise QgsProcessingException(f"{layer.name()}: no sign with status {', '.join(statuses)}: no atlas "
                                          "to print")
         feedback.pushInfo(f"{atlas.count()} sheets, in {language}")
-        output = PartialFiles(target)
-        try:
-            result, error = QgsLayoutExporter.exportToPdf(atlas, str(output.path),
-                                                          QgsLayoutExporter.PdfExportSettings(), feedback)
-            if feedback.isCanceled():
-                raise QgsProcessingException(f"Cancelled; {target} not written.")
-            if result != QgsLayoutExporter.Success:
-                raise QgsProcessingException(f"{target}: the atlas could not be written: {error}")
-            path = output.commit()
-        except BaseException:
-            output.discard()
-            raise
+        partial = self.parameterAsFileOutput(parameters, self.OUTPUT, context)  # moved in when the run succeeds
+        result, error = QgsLayoutExporter.exportToPdf(atlas, partial, QgsLayoutExporter.PdfExportSettings(), feedback)
+        if feedback.isCanceled():
+            raise QgsProcessingException(f"Cancelled; {target} not written.")
+        if result != QgsLayoutExporter.Success:
+            raise write_failure(target, "the atlas", error or f"QgsLayoutExporter error {result}")
         if self.parameterAsBoolean(parameters, self.ADD_LAYOUT, context):
             self.add_to_project(project, layer, layout, feedback)
-        return {self.OUTPUT: path, "PAGES": atlas.count()}
+        return {self.OUTPUT: str(target), "PAGES": atlas.count()}
 
     @staticmethod
     def add_to_project(project, layer, layout, feedback) -> None:

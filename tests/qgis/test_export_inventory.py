@@ -30,10 +30,12 @@ SIGNS = [
 def run_gpkg(tmp_path, sign_mapper):
     """A reviewed mapping run written in French, with an image crop beside it."""
     from sign_mapper.gpkg.fields import layer_fields
-    from sign_mapper.gpkg.output import AtomicGeoPackage
+    from sign_mapper.gpkg.output import GeoPackageLayers
+    from sign_mapper.signmapper_core.geopackage_file import PartialGeoPackage
 
     fields = layer_fields("signs")
-    gpkg = AtomicGeoPackage(str(tmp_path / "run.gpkg"))
+    output = PartialGeoPackage(tmp_path / "run.gpkg")
+    gpkg = GeoPackageLayers(output)
     writer = gpkg.open_layer("signs", fields, QgsWkbTypes.PointZ, QgsCoordinateReferenceSystem("EPSG:2056"))
     for sign_id, template_id, status, plate_of, text, xyz, crop in SIGNS:
         feature = QgsFeature(fields)
@@ -46,11 +48,11 @@ def run_gpkg(tmp_path, sign_mapper):
             feature[name] = value
         feature.setGeometry(QgsGeometry(QgsPoint(*xyz)))
         writer.addFeature(feature, QgsFeatureSink.FastInsert)
-    del writer
+    writer.close()
     gpkg.write_run_table({"drive": str(tmp_path / "drive"), "language": "fr", "run_id": "r1"})
     (tmp_path / "run_crops").mkdir()
     (tmp_path / "run_crops" / "sign_00001.jpg").write_bytes(b"\xff\xd8\xff")
-    return Path(gpkg.commit())
+    return Path(output.commit())
 
 
 def export(run, run_gpkg, output, **extra):
@@ -68,18 +70,19 @@ def rows_of(path, layer="inventory"):
 
 
 def test_a_geopackage_deliverable_in_french_keeps_the_files_other_layers(run, run_gpkg, tmp_path):
-    from sign_mapper.gpkg.output import AtomicGeoPackage
+    from sign_mapper.gpkg.output import GeoPackageLayers
+    from sign_mapper.signmapper_core.geopackage_file import PartialGeoPackage
 
     target = tmp_path / "out" / "livrable.gpkg"
     target.parent.mkdir()
-    other = AtomicGeoPackage(str(target), ours=("notes",))  # the user's own layer in the file
+    other = PartialGeoPackage(target, ("notes",))  # the user's own layer in the file
     from qgis.core import QgsField, QgsFields
     from qgis.PyQt.QtCore import QVariant
 
     note_fields = QgsFields()
     note_fields.append(QgsField("note", QVariant.String))
-    writer = other.open_layer("notes", note_fields, QgsWkbTypes.NoGeometry, QgsCoordinateReferenceSystem())
-    del writer
+    GeoPackageLayers(other).open_layer("notes", note_fields, QgsWkbTypes.NoGeometry,
+                                       QgsCoordinateReferenceSystem()).close()
     other.commit()
 
     result, feedback = export(run, run_gpkg, target)

@@ -45,7 +45,8 @@ def signs_gpkg(path, drive_dir):
     """A signs layer as mapsigns writes it, one sign per surveyed sign at its true place seen from its best pair:
     the first ten (in driving order) to review, the misread ones with their true id as first next choice."""
     from sign_mapper.gpkg.fields import layer_fields
-    from sign_mapper.gpkg.output import AtomicGeoPackage
+    from sign_mapper.gpkg.output import GeoPackageLayers
+    from sign_mapper.signmapper_core.geopackage_file import PartialGeoPackage
 
     drive, catalogue = open_drive(drive_dir), load_catalogue()
     rows = []
@@ -61,7 +62,8 @@ def signs_gpkg(path, drive_dir):
     rows.sort(key=lambda row: row[0])
     assert len(rows) >= len(DECISIONS)
     fields = layer_fields("signs")
-    gpkg = AtomicGeoPackage(str(path))
+    output = PartialGeoPackage(path)
+    gpkg = GeoPackageLayers(output)
     writer = gpkg.open_layer("signs", fields, QgsWkbTypes.PointZ, QgsCoordinateReferenceSystem("EPSG:2056"))
     expected = {}
     for k, (_, truth, record, box) in enumerate(rows):
@@ -86,10 +88,10 @@ def signs_gpkg(path, drive_dir):
         feature.setGeometry(QgsGeometry(QgsPoint(*(float(c) for c in truth.position))))
         writer.addFeature(feature, QgsFeatureSink.FastInsert)
         expected[k + 1] = (decision, entry.id, record.id)
-    del writer
+    writer.close()
     gpkg.write_run_table({"drive": str(drive_dir), "crs": "EPSG:2056", "near_m": 4.0, "far_m": 14.0,
                           "language": "de"})
-    return gpkg.commit(), expected
+    return output.commit(), expected
 
 
 def settle(*controllers, timeout_s=20.0):
