@@ -144,3 +144,29 @@ def test_a_wrong_suffix_is_refused_and_a_cancelled_run_leaves_the_earlier_file(r
         run("signmapper:exportinventory", {"SIGNS": f"{run_gpkg}|layername=signs", "OUTPUT": str(target)},
             feedback=CancelAtOnce())
     assert target.read_text(encoding="utf-8") == "earlier\n" and not list(tmp_path.glob(".*partial*"))
+
+
+def test_the_inventory_is_written_under_its_lock_and_a_second_export_into_the_geopackage_replaces_only_it(
+        run, run_gpkg, tmp_path):
+    """The one output mechanism (issue 46): a file another run is writing is refused, the earlier file as it was;
+    an export into a GeoPackage holding an earlier inventory replaces that layer and keeps the others."""
+    from qgis.core import QgsProcessingException
+    from sign_mapper.signmapper_core.geopackage_file import geopackage_tables
+    from sign_mapper.signmapper_core.target_lock import TargetLock
+
+    target = tmp_path / "inventory.csv"
+    target.write_text("earlier\n", encoding="utf-8")
+    with TargetLock(target):  # another run writing it now
+        with pytest.raises(QgsProcessingException, match="another run is writing this output right now"):
+            export(run, run_gpkg, target)
+    assert target.read_text(encoding="utf-8") == "earlier\n"
+    export(run, run_gpkg, target)
+    assert target.read_text(encoding="utf-8-sig").startswith("N° signal;")  # the run's language: French
+    assert sorted(p.name for p in tmp_path.iterdir() if p.name.startswith(".")) == []  # no partial, no lock
+
+    both = tmp_path / "both.gpkg"
+    export(run, run_gpkg, both)
+    export(run, run_gpkg, both, INCLUDE_REVIEW=True)  # again, with the signs still to review
+    _, rows = rows_of(both)
+    assert len(rows) == 5
+    assert "inventory" in geopackage_tables(both)

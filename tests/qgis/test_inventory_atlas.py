@@ -102,3 +102,21 @@ def test_a_layer_outside_the_project_gives_the_pdf_only_and_nothing_to_print_is_
     with pytest.raises(QgsProcessingException, match="no sign with status accepted, manual"):
         run("signmapper:inventoryatlas", {"SIGNS": f"{copy}|layername=signs", "OUTPUT": str(tmp_path / "no.pdf")})
     assert not (tmp_path / "no.pdf").exists()
+
+
+def test_an_atlas_is_written_under_its_lock_and_a_failed_run_leaves_the_earlier_pdf(run, mapped, tmp_path):
+    """The one output mechanism (issue 46): the PDF is moved in when the run succeeds; a file another run is
+    writing is refused, the earlier PDF as it was, nothing left beside it."""
+    from sign_mapper.signmapper_core.target_lock import TargetLock
+
+    out = tmp_path / "atlas.pdf"
+    out.write_bytes(b"%PDF earlier")
+    with TargetLock(out):
+        with pytest.raises(QgsProcessingException, match="another run is writing this output right now"):
+            run("signmapper:inventoryatlas", {"SIGNS": f"{mapped}|layername=signs", "OUTPUT": str(out)})
+    assert out.read_bytes() == b"%PDF earlier"
+    with pytest.raises(QgsProcessingException, match=r"atlas\.txt: give a file ending in \.pdf"):
+        run("signmapper:inventoryatlas", {"SIGNS": f"{mapped}|layername=signs", "OUTPUT": str(tmp_path / "atlas.txt")})
+    result = run("signmapper:inventoryatlas", {"SIGNS": f"{mapped}|layername=signs", "OUTPUT": str(out)})
+    assert result["OUTPUT"] == str(out) and pdf_pages(out) == result["PAGES"] > 0
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
