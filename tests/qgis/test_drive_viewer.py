@@ -309,5 +309,11 @@ def test_a_signs_photo_and_the_action_that_opens_the_viewer_at_it(sign_mapper, q
     finally:
         del qgis.utils.plugins["sign_mapper_under_test"]
         plugin.unload()
+        # as the viewer fixture: no map render may still read the layer removed below
+        canvas = qgis_iface.mapCanvas()
+        canvas.setLayers([])
+        canvas.waitWhileRendering()
+        assert QThreadPool.globalInstance().waitForDone(60000), "map renders still running after 60 s"
+        QApplication.processEvents()
         QgsProject.instance().removeMapLayer(layer)
         QApplication.processEvents()
