@@ -247,7 +247,8 @@ def test_table_2_in_the_log_labels_every_figure(run, tmp_path):
     assert "  across: n 4, mean 0.050, empirical σ 0.000, RMS 0.050, max |d| 0.050" in text
 
 
-def test_temporary_outputs_loaded_on_completion_are_only_layers_that_exist(run, tmp_path):
+@pytest.mark.parametrize("temporary", ["TEMPORARY_OUTPUT", "memory:"])
+def test_temporary_outputs_loaded_on_completion_are_only_layers_that_exist(run, tmp_path, temporary):
     """As the dialog and a model run it: temporary outputs to be loaded into the project. Every layer the run
     asks Processing to load must load (a stray 'memory:Matches' once ended a model run with a red error)."""
     from qgis.core import (
@@ -264,8 +265,8 @@ def test_temporary_outputs_loaded_on_completion_are_only_layers_that_exist(run, 
     params = {"SIGNS": point_layer(REF, "mapped"), "REFERENCE": point_layer(REF, "ref"),
               "REFERENCE_ID_FIELD": "template_id", "RADIUS": 1.0, "TRAJECTORY": eastward_trajectory(),
               "REPORT": str(tmp_path / "report.html"),
-              "STATISTICS": QgsProcessingOutputLayerDefinition("TEMPORARY_OUTPUT", QgsProject.instance()),
-              "MATCHES": QgsProcessingOutputLayerDefinition("TEMPORARY_OUTPUT", QgsProject.instance())}
+              "STATISTICS": QgsProcessingOutputLayerDefinition(temporary, QgsProject.instance()),
+              "MATCHES": QgsProcessingOutputLayerDefinition(temporary, QgsProject.instance())}
     alg = QgsApplication.processingRegistry().createAlgorithmById("signmapper:evaluate")
     result, ok = alg.run(params, context, QgsProcessingFeedback())  # what the dialog runs; the layers stay
     assert ok
