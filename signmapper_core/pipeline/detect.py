@@ -221,6 +221,18 @@ def segment_candidates(seg: Segment, shape, catalogue, config: PipelineConfig):
     return out
 
 
+def _off_format(match, entry) -> bool:
+    """Whether ``match`` sizes a sign of standard formats at a size none of them has."""
+    return match.format == MEASURED and entry.sizing == STANDARD
+
+
+def _in_format_first(readings: list, catalogue) -> list:
+    """``readings`` ((match, face, classification) each) in a standard format of their sign or sized as measured
+    signs, where there are any; else all of them (off-format ones)."""
+    kept = [r for r in readings if not _off_format(r[0], catalogue[r[2].template_id])]
+    return kept or readings
+
+
 def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Optional[Detection]:
     """Steps 4-8 for one segment; None when it is rejected (cut, no shape, no format, not planar).
 
@@ -266,6 +278,9 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
             panels.append((match, face, cls))
         elif cls.template_id in zone_panels and inside_white_panel(left, depth, seg.bbox, size.depth_m, config):
             held_panels.append((match, face, cls))
+    # a reading in one of its sign's standard formats comes before any read at a size no standard format has
+    # (a small stop sign, nearly round at 36 px, is not an off-format round sign)
+    readings, panels, held_panels = (_in_format_first(found, catalogue) for found in (readings, panels, held_panels))
     good_panels = [r for r in panels + held_panels if r[2].score >= accept]
     # each reading's indicator is a probability over its own candidates, so readings of other shapes are not
     # ranked by it: the outline's best-fitting shape decides (a stop sign, its octagon the best fit, read as
@@ -289,7 +304,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     if best is None or best[2].score < floor:
         return None
     match, face, cls = best
-    off_format = match.format == MEASURED and catalogue[cls.template_id].sizing == STANDARD
+    off_format = _off_format(match, catalogue[cls.template_id])
     if off_format and cls.score < accept:  # a size no standard sign has needs a clear reading
         return None
     by_depth = any(best is r for r in held_panels)

@@ -61,7 +61,8 @@ def test_progress_rises_to_one_with_a_message_per_pair(mapped, drive_dir):
 def test_run_record_names_drive_catalogue_and_settings(mapped, drive_dir):
     record = mapped[0].run_record()
     assert Path(record["drive"]) == drive_dir.resolve() and record["crs"] == "EPSG:2056"
-    assert (record["near_m"], record["far_m"], record["colours"]) == (4.0, 14.0, ["red", "blue", "yellow"])
+    assert (record["near_m"], record["far_m"]) == (4.0, 14.0)
+    assert record["colours"] == ["red", "blue", "yellow", "green", "brown", "orange"]  # every coloured family
     settings = run_settings(json.loads(json.dumps(record)), "record")  # the whole configuration, as JSON
     assert settings.config == mapped[0].config and settings.fusion == mapped[0].fusion
     assert settings.fusion.accept_classification == record["classification_threshold"]
