@@ -297,6 +297,21 @@ def test_warnings_are_no_errors_and_an_error_is_shown_once(cli_env, tmp_path):
     assert f"ERROR:\t{message}" in done.stderr
 
 
+def test_mapsigns_warnings_reach_qgis_process_as_warnings(cli_env, tmp_path):
+    """The drive's warnings (here case 11: an image whose poses.csv row is missing) while mapping with workers."""
+    drive = make_drive(tmp_path / "drive", n_pairs=4)
+    lines = (drive / "poses.csv").read_text().splitlines()
+    (drive / "poses.csv").write_text("\n".join(lines[:3] + lines[4:]) + "\n")
+    done = subprocess.run([QGIS_PROCESS, "run", "signmapper:mapsigns", "--", f"DRIVE={drive}",
+                           f"OUTPUT={tmp_path / 'signs.gpkg'}", "WORKERS=2"], env=cli_env, capture_output=True,
+                          text=True, timeout=600)
+    log = done.stdout + done.stderr
+    assert done.returncode == 0, log
+    assert f"WARNING:\t{drive / 'left'}/: 1 image has no row in poses.csv and is not mapped (first: 000002.png)" \
+        in log, log
+    assert "ERROR" not in log and "Traceback" not in log, log
+
+
 def test_an_output_error_in_processing_run_names_the_file(run, tmp_path, monkeypatch):
     from sign_mapper.gpkg import output
 
