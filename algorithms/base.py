@@ -11,6 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from qgis.core import (
+    Qgis,
     QgsApplication,
     QgsProcessingAlgorithm,
     QgsProcessingException,
@@ -137,7 +138,8 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         output or file error (``written``: what became of the outputs), any other exception as it is.
 
         In ``qgis_process`` the message is shown once: it echoes every error of the message log to the console,
-        where Processing logs a failed run's error twice more after printing it.
+        where Processing logs a failed run's error twice more after printing it. With ``--json`` it prints no
+        feedback of a failed run, so there the message goes to the log once, as the only one echoed.
         """
         from ..signmapper_core.errors import OutputFileError
 
@@ -146,7 +148,10 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         elif isinstance(exc, OSError) and exc.filename:
             exc = QgsProcessingException(f"{file_error(exc)}{written}")
         if isinstance(exc, QgsProcessingException) and QgsApplication.platform() == "qgis_process":
-            QgsApplication.messageLog().blockSignals(True)  # the process ends with this error
+            log = QgsApplication.messageLog()
+            if "--json" in QCoreApplication.arguments():
+                log.logMessage(str(exc), "Processing", Qgis.Critical)
+            log.blockSignals(True)  # the process ends with this error
         return exc
 
     def process(self, parameters, context, feedback) -> dict:

@@ -195,6 +195,28 @@ def test_kills_at_random_moments_never_damage_the_earlier_output(cli_env, run, s
     assert sorted(p.name for p in tmp_path.iterdir()) == ["signs.gpkg", "signs_crops", "trajectory.gpkg"]
 
 
+def test_what_killed_runs_left_is_cleared_by_the_next_run_into_the_folder_a_live_runs_files_stay(cli_env, tmp_path):
+    """What a kill leaves (here as earlier versions and this one name it), cleared by a run to another file of the
+    folder; the files of a run still writing (its lock held, here by this test) are left alone."""
+    from signmapper_core.target_lock import TargetLock
+
+    drive = make_drive(tmp_path / "drive", n_pairs=2)
+    (tmp_path / ".signs.partial.gpkg").write_bytes(b"\0" * 4 * 1024 * 1024)
+    (tmp_path / ".signs.partial.gpkg-journal").write_bytes(b"\0")
+    (tmp_path / ".drive2.partial-99999999").mkdir()
+    (tmp_path / ".drive2.partial-99999999" / "poses.csv").write_text("id,time\n")
+    (tmp_path / ".old.gpkg.signmapper-partial").mkdir()
+    (tmp_path / ".old.gpkg.signmapper-lock").write_text("process 99999999, since 2026-12-06 09:00:00")
+    (tmp_path / ".notes").write_text("the user's own hidden file")
+    with TargetLock(tmp_path / "live.gpkg"):
+        (tmp_path / ".live.gpkg.signmapper-partial").mkdir()
+        code, _data, log = run_algorithm(cli_env, "signmapper:drivetrajectory", DRIVE=drive,
+                                         OUTPUT=tmp_path / "trajectory.gpkg")
+        assert code == 0, log
+        assert sorted(p.name for p in tmp_path.iterdir()) == [
+            ".live.gpkg.signmapper-lock", ".live.gpkg.signmapper-partial", ".notes", "drive", "trajectory.gpkg"]
+
+
 # 6. paths too long for the file system: a message, never a traceback or an abort
 
 @pytest.mark.parametrize("algorithm", ["signmapper:mapsigns", "signmapper:drivetrajectory"])
@@ -289,12 +311,14 @@ def test_warnings_are_no_errors_and_an_error_is_shown_once(cli_env, tmp_path):
     log = done.stdout + done.stderr
     assert "WARNING:\t" + str(drive / "truth.csv") in log and "ERROR:" not in log
     missing = tmp_path / "missing"
-    done = subprocess.run([QGIS_PROCESS, "run", "signmapper:drivetrajectory", "--", f"DRIVE={missing}",
-                           f"OUTPUT={tmp_path / 'u.gpkg'}"], env=cli_env, capture_output=True, text=True, timeout=300)
-    assert done.returncode == 1
     message = f"Invalid drive: {missing}: drive folder does not exist or is not a folder"
-    assert (done.stdout + done.stderr).count(message) == 1, done.stdout + done.stderr
-    assert f"ERROR:\t{message}" in done.stderr
+    for json_mode in ([], ["--json"]):  # --json prints no feedback of a failed run: the message is still there once
+        done = subprocess.run([QGIS_PROCESS, *json_mode, "run", "signmapper:drivetrajectory", "--", f"DRIVE={missing}",
+                               f"OUTPUT={tmp_path / 'u.gpkg'}"], env=cli_env, capture_output=True, text=True,
+                              timeout=300)
+        assert done.returncode == 1
+        assert (done.stdout + done.stderr).count(message) == 1, done.stdout + done.stderr
+        assert (f"ERROR:\t{message}" if not json_mode else message) in done.stderr
 
 
 def test_mapsigns_warnings_reach_qgis_process_as_warnings(cli_env, tmp_path):
