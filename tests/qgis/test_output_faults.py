@@ -4,6 +4,12 @@ An existing GeoPackage given to any algorithm keeps what the algorithm does not 
 output at once, what a killed run left behind, a kill at random moments (14, 15); long paths (6); a full disk
 (7); what qgis_process prints (16). Each test runs the algorithm as a user does (``processing.run`` or
 ``qgis_process.bin``) and checks the message and the files.
+
+The issue's other cases have their tests beside the code they exercise: a script without a main guard (4)
+test_standalone_script.py; schedulers that are no Dask scheduler (5) tests/core/test_dask_mapping.py; recorded
+settings of the wrong type or contradicting rows (8, 13) test_map_signs_settings.py and
+tests/core/test_run_settings.py; duplicate and geometry-less reference rows (9, 10) test_reference_rows.py; images
+without a pose row and unused image times (11, 12) tests/core/test_drive_reader.py and test_import_drive.py.
 """
 
 import hashlib
