@@ -201,11 +201,9 @@ def test_kills_at_random_moments_never_damage_the_earlier_output(cli_env, run, s
     assert sorted(p.name for p in tmp_path.iterdir()) == ["signs.gpkg", "signs_crops", "trajectory.gpkg"]
 
 
-def test_what_killed_runs_left_is_cleared_by_the_next_run_into_the_folder_a_live_runs_files_stay(cli_env, tmp_path):
-    """What a kill leaves (here as earlier versions and this one name it), cleared by a run to another file of the
-    folder; the files of a run still writing (its lock held, here by this test) are left alone."""
-    from signmapper_core.target_lock import TargetLock
-
+def test_what_killed_runs_left_is_cleared_by_the_next_run_into_the_folder(cli_env, tmp_path):
+    """What a kill leaves, as earlier versions and this one name it, cleared by a run to another file of the
+    folder (before: kept until a run to the same path); the user's own hidden files stay."""
     drive = make_drive(tmp_path / "drive", n_pairs=2)
     (tmp_path / ".signs.partial.gpkg").write_bytes(b"\0" * 4 * 1024 * 1024)
     (tmp_path / ".signs.partial.gpkg-journal").write_bytes(b"\0")
@@ -214,13 +212,24 @@ def test_what_killed_runs_left_is_cleared_by_the_next_run_into_the_folder_a_live
     (tmp_path / ".old.gpkg.signmapper-partial").mkdir()
     (tmp_path / ".old.gpkg.signmapper-lock").write_text("process 99999999, since 2026-12-06 09:00:00")
     (tmp_path / ".notes").write_text("the user's own hidden file")
+    code, _data, log = run_algorithm(cli_env, "signmapper:drivetrajectory", DRIVE=drive,
+                                     OUTPUT=tmp_path / "trajectory.gpkg")
+    assert code == 0, log
+    assert sorted(p.name for p in tmp_path.iterdir()) == [".notes", "drive", "trajectory.gpkg"]
+
+
+def test_a_live_runs_partial_output_is_left_alone(cli_env, tmp_path):
+    """The files of a run still writing (its lock held, here by this test) are not stale."""
+    from signmapper_core.target_lock import TargetLock
+
+    drive = make_drive(tmp_path / "drive", n_pairs=2)
     with TargetLock(tmp_path / "live.gpkg"):
         (tmp_path / ".live.gpkg.signmapper-partial").mkdir()
         code, _data, log = run_algorithm(cli_env, "signmapper:drivetrajectory", DRIVE=drive,
                                          OUTPUT=tmp_path / "trajectory.gpkg")
         assert code == 0, log
         assert sorted(p.name for p in tmp_path.iterdir()) == [
-            ".live.gpkg.signmapper-lock", ".live.gpkg.signmapper-partial", ".notes", "drive", "trajectory.gpkg"]
+            ".live.gpkg.signmapper-lock", ".live.gpkg.signmapper-partial", "drive", "trajectory.gpkg"]
 
 
 # 6. paths too long for the file system: a message, never a traceback or an abort
