@@ -12,6 +12,7 @@ import html
 from pathlib import Path
 
 from qgis.core import (
+    Qgis,
     QgsApplication,
     QgsProcessingAlgorithm,
     QgsProcessingException,
@@ -159,8 +160,8 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         output or file error (``written``: what became of the outputs), any other exception as it is.
 
         In ``qgis_process`` the message is shown once: it echoes every error of the message log to the console,
-        where Processing logs a failed run's error twice more after printing it. Not with ``--json``: there the
-        log's echo is the only place the error is shown.
+        where Processing logs a failed run's error twice more after printing it. With ``--json`` it prints no
+        feedback of a failed run, so there the message goes to the log once, as the only one echoed.
         """
         from ..signmapper_core.errors import OutputFileError
 
@@ -168,9 +169,11 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
             exc = QgsProcessingException(f"{exc}{written}")
         elif isinstance(exc, OSError) and exc.filename:
             exc = QgsProcessingException(f"{file_error(exc)}{written}")
-        if (isinstance(exc, QgsProcessingException) and QgsApplication.platform() == "qgis_process"
-                and "--json" not in QgsApplication.arguments()):  # with --json the log is all that says it
-            QgsApplication.messageLog().blockSignals(True)  # the process ends with this error
+        if isinstance(exc, QgsProcessingException) and QgsApplication.platform() == "qgis_process":
+            log = QgsApplication.messageLog()
+            if "--json" in QCoreApplication.arguments():
+                log.logMessage(str(exc), "Processing", Qgis.Critical)
+            log.blockSignals(True)  # the process ends with this error
         return exc
 
     def process(self, parameters, context, feedback) -> dict:

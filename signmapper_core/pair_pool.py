@@ -154,10 +154,26 @@ class TemplateHandoff:
                 pass
 
 
-def _start_worker(drive, catalogue, config, detect: Optional[Callable], opencv_threads: int,
-                  templates: Optional[TemplateHandoff] = None, started=None) -> None:
+def _run_file(drive, catalogue, config, detect: Optional[Callable]) -> str:
+    """The run's drive, catalogue, settings and detector in a file the workers read as they start.
+
+    Not in the workers' start arguments: ``spawn`` writes those into a pipe the
+    parent also holds open, and a worker that dies before reading them all (its
+    Python lacks OpenCV) would leave the parent waiting forever. What is sent at
+    the start stays small; a worker that fails reading this file fails its start.
+    """
+    handle, path = tempfile.mkstemp(prefix="signmapper-run-", suffix=".pickle")
+    with os.fdopen(handle, "wb") as out:
+        pickle.dump((drive, catalogue, config, detect), out, protocol=pickle.HIGHEST_PROTOCOL)
+    return path
+
+
+def _start_worker(run_file: str, opencv_threads: int, templates: Optional[TemplateHandoff] = None,
+                  started=None) -> None:
     import cv2
 
+    with open(run_file, "rb") as source:
+        drive, catalogue, config, detect = pickle.load(source)
     cv2.setNumThreads(opencv_threads)
     from . import mapping  # noqa: F401  the pipeline's imports, while the parent still renders the templates
     from .pipeline.classifiers import classifier_for
@@ -212,10 +228,10 @@ def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[
     pairs = drive.pairs
     # the workers read pairs: the ground truth and what was wrong with it (an exception) stay here
     pairs_only = replace(drive, truth=None, truth_error=None, warnings=[])
+    run_file = _run_file(pairs_only, catalogue, config, detect)
     handoff = TemplateHandoff(context) if _is_project_catalogue(catalogue) else None
     executor = ProcessPoolExecutor(workers, mp_context=context, initializer=_start_worker,
-                                   initargs=(pairs_only, catalogue, config, detect, OPENCV_THREADS_PER_WORKER,
-                                             handoff, started))
+                                   initargs=(run_file, OPENCV_THREADS_PER_WORKER, handoff, started))
     pending, submitted = {}, 0
 
     def queue_up_to(index: int) -> None:
@@ -258,5 +274,6 @@ def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[
         if handoff is not None:
             handoff.ready.set()  # workers still waiting for templates (a failed rendering, cancel) go on and stop
         executor.shutdown(wait=True, cancel_futures=True)
+        os.unlink(run_file)
         if handoff is not None:
             handoff.close()

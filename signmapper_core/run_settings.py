@@ -219,7 +219,6 @@ def _note_contradictions(record: dict, config, where: str, warn: Optional[WarnCa
                                "settings are used (they are what that run was mapped with)")
 
 
-
 def load_run_settings(path, warn: Optional[WarnCallback] = None) -> RunSettings:
     """The settings an earlier output at ``path`` was mapped with; :class:`RunRecordError` says what is wrong."""
     return run_settings(read_run_record(path), str(path), warn)

@@ -14,7 +14,13 @@ from qgis.core import QgsVectorLayer
 SCRIPT = """\
 import sys
 
-from qgis.core import QgsApplication
+from qgis.core import QgsApplication, QgsProcessingFeedback
+
+
+class Printed(QgsProcessingFeedback):
+    def pushWarning(self, warning):
+        print("WARNING", warning, flush=True)
+
 
 app = QgsApplication([], False)
 app.initQgis()
@@ -29,7 +35,8 @@ plugin = sign_mapper.classFactory(None)
 plugin.initProcessing()
 {call}
 """
-RUN = 'result = processing.run("signmapper:mapsigns", {{"DRIVE": {drive!r}, "OUTPUT": {out!r}, "WORKERS": 2}})\n' \
+RUN = 'result = processing.run("signmapper:mapsigns", {{"DRIVE": {drive!r}, "OUTPUT": {out!r}, "WORKERS": 2}}, ' \
+      'feedback=Printed())\n' \
       'print("RESULT", result["OUTPUT"])'
 
 
@@ -48,5 +55,7 @@ def test_script_maps_a_drive_with_worker_processes(plugin_dir, small_drive, tmp_
     log = done.stdout + done.stderr
     assert done.returncode == 0, log
     assert f"RESULT {out}" in done.stdout
+    # the workers mapped: no worker ran the script again (it would fail, and the run fall back to one process)
+    assert "WARNING" not in done.stdout and "Traceback" not in log, log
     assert "bootstrapping phase" not in log and "ended abruptly" not in log and "could not start" not in log
     assert QgsVectorLayer(f"{out}|layername=signs", "signs", "ogr").featureCount() >= 2
