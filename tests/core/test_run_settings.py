@@ -46,8 +46,15 @@ RECORD_V2_A6850FD = Path(__file__).parent.parent / "data" / "run_record_v2_a6850
 
 # defaults changed since those records were written: the records' own values stand for them
 # no blue circles yet; zone panels' surround at 0.5
+# the records hold the colours segmented then (red, blue and yellow; green, brown and orange came with the whole
+# catalogue), the white step's and the plates' settings of their day where they have those sections
+THREE_COLOURS = ("red", "blue", "yellow")
 DEFAULTS_THEN = PipelineConfig(scene=SceneConfig(weak_shapes={"yellow": ("diamond",)}),
-                               classification=ClassificationConfig(min_surround_score=0.5))
+                               classification=ClassificationConfig(min_surround_score=0.5),
+                               colour=ColourConfig(colours=THREE_COLOURS, hsv_ranges={
+                                   c: ColourConfig().hsv_ranges[c] for c in THREE_COLOURS}))
+V2_DEFAULTS_THEN = dataclasses.replace(DEFAULTS_THEN, white=WhiteConfig(white_signs=False, white_scan_side_px=24.0),
+                           plates=PlateConfig(plate_pictogram_min_score=0.6))
 
 # every kind of field changed: numbers, None, tuples, dicts of tuples, booleans
 CHANGED = PipelineConfig(
@@ -142,7 +149,7 @@ def test_a_version_2_record_written_before_settings_were_added_reads_them_as_the
     warnings = []
     settings = load_run_settings(path, warnings.append)
     assert warnings == []
-    assert settings.config == DEFAULTS_THEN  # the constants had the values their settings defaulted to then
+    assert settings.config == V2_DEFAULTS_THEN  # the constants had the values their settings defaulted to then
     assert settings.config.plates.plate_compare_insets == (0.0, 0.06, 0.12)
     assert settings.fusion == FusionConfig(accept_classification=0.8512)
 

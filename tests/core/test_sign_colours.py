@@ -6,8 +6,11 @@ from signmapper_core.sign_colours import DISPLAY_COLOURS, HOUGH_TINT_HUES, HSV_R
 
 def test_each_segmented_colour_has_its_bands_in_every_table():
     assert SIGN_COLOURS == tuple(HSV_RANGES)
-    for table in (WEAK_HUES, HOUGH_TINT_HUES, DISPLAY_COLOURS):
-        assert set(SIGN_COLOURS) <= set(table)
+    assert set(SIGN_COLOURS) <= set(DISPLAY_COLOURS)
+    # the weak pass and the Hough tint name the colours faded faces of which are sought (the weak pass takes the
+    # strong bands of the others: scene_colour.weak_ranges); none they name is unsegmented
+    assert {"red", "blue", "yellow"} <= set(WEAK_HUES) <= set(SIGN_COLOURS)
+    assert {"red", "blue", "yellow"} <= set(HOUGH_TINT_HUES) <= set(SIGN_COLOURS)
 
 
 def test_each_catalogue_colour_is_drawn_in_its_own_colour_on_the_map():
