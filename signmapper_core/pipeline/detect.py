@@ -226,11 +226,11 @@ def _off_format(match, entry) -> bool:
     return match.format == MEASURED and entry.sizing == STANDARD
 
 
-def _in_format_first(readings: list, catalogue) -> list:
-    """``readings`` ((match, face, classification) each) in a standard format of their sign or sized as measured
-    signs, where there are any; else all of them (off-format ones)."""
-    kept = [r for r in readings if not _off_format(r[0], catalogue[r[2].template_id])]
-    return kept or readings
+def _without_unclear_off_format(readings: list, catalogue, accept: float) -> list:
+    """``readings`` ((match, face, classification) each) without those of a standard sign at a size none of its
+    formats has that are not clear (below ``accept``): such a reading maps nothing, so it must not hide another
+    (a small stop sign, nearly round at 36 px, behind the round signs read off-format)."""
+    return [r for r in readings if not (_off_format(r[0], catalogue[r[2].template_id]) and r[2].score < accept)]
 
 
 def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Optional[Detection]:
@@ -278,9 +278,8 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
             panels.append((match, face, cls))
         elif cls.template_id in zone_panels and inside_white_panel(left, depth, seg.bbox, size.depth_m, config):
             held_panels.append((match, face, cls))
-    # a reading in one of its sign's standard formats comes before any read at a size no standard format has
-    # (a small stop sign, nearly round at 36 px, is not an off-format round sign)
-    readings, panels, held_panels = (_in_format_first(found, catalogue) for found in (readings, panels, held_panels))
+    readings, panels, held_panels = (_without_unclear_off_format(found, catalogue, accept)
+                                     for found in (readings, panels, held_panels))
     good_panels = [r for r in panels + held_panels if r[2].score >= accept]
     # each reading's indicator is a probability over its own candidates, so readings of other shapes are not
     # ranked by it: the outline's best-fitting shape decides (a stop sign, its octagon the best fit, read as
