@@ -1,6 +1,6 @@
 """Processing algorithms of Sign Mapper: thin wrappers around ``signmapper_core``.
 
-Algorithm modules import the core lazily inside ``processAlgorithm`` so the
+Algorithm modules import the core lazily inside ``process`` so the
 provider loads (and explains what to install) even when OpenCV is missing.
 """
 

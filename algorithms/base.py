@@ -1,10 +1,18 @@
-"""Shared idioms of Sign Mapper's algorithms: groups, help, dependency check, feedback."""
+"""Shared idioms of Sign Mapper's algorithms: groups, help, dependency check, safe outputs, feedback.
+
+Every algorithm implements :meth:`SignMapperAlgorithm.process`; the base class's
+``processAlgorithm`` checks the paths, runs it inside :class:`.run_outputs.RunOutputs`
+(every file output written whole or not at all) and turns the core's output and
+file errors into messages.
+"""
 
 from __future__ import annotations
 
 from pathlib import Path
 
 from qgis.core import (
+    Qgis,
+    QgsApplication,
     QgsProcessingAlgorithm,
     QgsProcessingException,
     QgsProcessingParameterDefinition,
@@ -16,16 +24,25 @@ from qgis.PyQt.QtGui import QIcon
 from ..dependencies import install_hint, missing_modules
 
 ICONS = Path(__file__).resolve().parents[1] / "icons"
+OUTPUTS_HELP = (
+    "<p><b>Outputs</b> are written whole or not at all: a failed or cancelled run leaves earlier files as they were, "
+    "and a second run writing the same file at the same time is refused. A layer written into an existing "
+    "GeoPackage keeps the file's other layers; a layer of the same name is replaced only when Sign Mapper wrote "
+    "it. To add a layer under a name of your own, choose 'Save to GeoPackage…' or give FILE.gpkg|layername=NAME.</p>"
+)
 
 
 class SignMapperAlgorithm(QgsProcessingAlgorithm):
-    """Base class: subclasses set NAME, DISPLAY_NAME, GROUP_ID, HELP and add parameters."""
+    """Base class: subclasses set NAME, DISPLAY_NAME, GROUP_ID, HELP, add parameters and implement
+    :meth:`process`."""
 
     NAME = ""
     DISPLAY_NAME = ""
     GROUP_ID = "mapping"
     HELP = ""
     ICON = ""  # file in icons/
+    OWNED_LAYERS: dict = {}  # GeoPackage file output -> the layers it (re)writes; the file's others are kept
+    run_outputs = None  # the RunOutputs of the run in progress
 
     GROUPS = {"mapping": "Mapping", "tools": "Tools", "quality": "Quality", "inventory": "Inventory"}
 
@@ -51,12 +68,14 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         return self.GROUP_ID
 
     def shortHelpString(self):  # noqa: N802
-        """The algorithm's help followed by every parameter's own help text."""
+        """The algorithm's help followed by every parameter's own help text and how outputs are written."""
         lines = [self.tr(self.HELP), "", "<b>Parameters</b>", "<ul>"]
         for param in self.parameterDefinitions():
             help_text = param.help() if hasattr(param, "help") else ""
             lines.append(f"<li><b>{param.description()}</b>: {help_text}</li>")
         lines.append("</ul>")
+        if self.destinationParameterDefinitions():
+            lines.append(self.tr(OUTPUTS_HELP))
         return "\n".join(lines)
 
     def add_parameter(self, param, help_text: str, advanced: bool = False):
@@ -82,11 +101,83 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         ok, message = super().checkParameterValues(parameters, context)
         if not ok:
             return ok, message
+        from .output_paths import path_problems
+
         try:
+            problem = path_problems(self, parameters, context)  # first: Python's own checks raise on such a path
+            if problem:
+                return False, problem
             self.check_inputs(parameters, context)
         except QgsProcessingException as exc:
             return False, str(exc)
+        except OSError as exc:  # a file the checks read: named, never a traceback (qgis_process would abort)
+            return False, file_error(exc)
         return True, ""
+
+    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+        """:meth:`process` with its file outputs written as partial outputs, moved in only when it returns."""
+        from .run_outputs import RunOutputs
+
+        try:
+            self.check_outputs(parameters, context)
+            self.run_outputs = outputs = RunOutputs(self, parameters, context)
+        except BaseException as exc:
+            raise self.user_error(exc) from None
+        try:
+            return outputs.commit(self.process(parameters, context, feedback))
+        except BaseException as exc:
+            unchanged = outputs.unchanged()
+            outputs.discard()
+            raise self.user_error(exc, f". Nothing written{unchanged}.") from None
+        finally:
+            self.run_outputs = None
+
+    @staticmethod
+    def user_error(exc: BaseException, written: str = "") -> BaseException:
+        """What a run that failed with ``exc`` tells the user: a QgsProcessingException naming the file for an
+        output or file error (``written``: what became of the outputs), any other exception as it is.
+
+        In ``qgis_process`` the message is shown once: it echoes every error of the message log to the console,
+        where Processing logs a failed run's error twice more after printing it. With ``--json`` it prints no
+        feedback of a failed run, so there the message goes to the log once, as the only one echoed.
+        """
+        from ..signmapper_core.errors import OutputFileError
+
+        if isinstance(exc, OutputFileError):
+            exc = QgsProcessingException(f"{exc}{written}")
+        elif isinstance(exc, OSError) and exc.filename:
+            exc = QgsProcessingException(f"{file_error(exc)}{written}")
+        if isinstance(exc, QgsProcessingException) and QgsApplication.platform() == "qgis_process":
+            log = QgsApplication.messageLog()
+            if "--json" in QCoreApplication.arguments():
+                log.logMessage(str(exc), "Processing", Qgis.Critical)
+            log.blockSignals(True)  # the process ends with this error
+        return exc
+
+    def process(self, parameters, context, feedback) -> dict:
+        """The algorithm's work (what ``processAlgorithm`` is elsewhere); its outputs are committed after it."""
+        raise NotImplementedError
+
+    def parameterAsSink(self, parameters, name, context, *args, **kwargs):  # noqa: N802 - QGIS's name
+        """QGIS's sink; during a run, for an output given as a file, one that writes the run's partial output and
+        raises when a write fails (:mod:`.run_outputs`). The id returned is the final layer's."""
+        def create(params):
+            return super(SignMapperAlgorithm, self).parameterAsSink(params, name, context, *args, **kwargs)
+
+        if self.run_outputs is None:
+            return create(parameters)
+        return self.run_outputs.sink(name, parameters, create)
+
+    def parameterAsFileOutput(self, parameters, name, context):  # noqa: N802 - QGIS's name
+        """QGIS's file; during a run, for an output given as a file, where the run's partial output is written
+        (committed under the file's name when the run succeeds)."""
+        path = self.run_outputs.file_output(name) if self.run_outputs is not None else None
+        return path if path is not None else super().parameterAsFileOutput(parameters, name, context)
+
+    def output_target(self, parameters, name, context) -> str:
+        """The file an output becomes once the run has succeeded (for messages and results)."""
+        target = self.run_outputs.target(name) if self.run_outputs is not None else None
+        return str(target) if target is not None else super().parameterAsFileOutput(parameters, name, context)
 
     def check_inputs(self, parameters, context) -> None:
         """QgsProcessingException naming what is wrong: the outputs (no folder, writable, not an input,
@@ -94,9 +185,12 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         self.check_outputs(parameters, context)
 
     def check_outputs(self, parameters, context) -> None:
-        """The output check of ``checkParameterValues`` at the start of a run (models may skip the former)."""
+        """The output check of ``checkParameterValues`` at the start of a run (models may skip the former); done
+        once per run: once the run holds its outputs, another check would find them busy."""
         from .output_paths import output_problem
 
+        if self.run_outputs is not None:
+            return
         problem = output_problem(self, parameters, context)
         if problem:
             raise QgsProcessingException(problem)
@@ -113,7 +207,7 @@ class CoreFeedback:
 
     The core reports fractions 0..1 of its operation; they fill ``span`` percent
     of the algorithm's bar from ``start``. Cancel is the feedback's; warnings are
-    logged as non-fatal errors.
+    warnings (``qgis_process`` prints them as WARNING, never as ERROR).
     """
 
     def __init__(self, feedback, start: float = 0.0, span: float = 100.0):
@@ -128,4 +222,12 @@ class CoreFeedback:
         return self.feedback.isCanceled()
 
     def warn(self, message: str) -> None:
-        self.feedback.reportError(message, fatalError=False)
+        self.feedback.pushWarning(message)
+
+
+def file_error(exc: OSError) -> str:
+    """An OSError as a message naming the file (shortened when very long) and what the system said."""
+    from ..signmapper_core.file_paths import shown
+
+    where = f"{shown(exc.filename)}: " if exc.filename else ""
+    return f"{where}{exc.strerror or exc}"

@@ -32,7 +32,8 @@ from qgis.core import (
 )
 
 from ..gpkg.fields import QT_TYPES
-from ..gpkg.output import AtomicGeoPackage, layer_uri
+from ..gpkg.output import GeoPackageLayers, layer_uri
+from ..signmapper_core.output_schema import RUN_TABLE
 from .base import SignMapperAlgorithm
 from .drive_input import qgis_crs
 from .signalo_connection import HELP as SIGNALO_HELP
@@ -57,6 +58,7 @@ def _feature(fields: QgsFields, values: dict, geometry) -> QgsFeature:
 
 class ChangesAlgorithm(SignMapperAlgorithm):
     NAME = "changes"
+    OWNED_LAYERS = {"OUTPUT": ("changes", "displacements", RUN_TABLE)}
     DISPLAY_NAME = "Compare with inventory"
     GROUP_ID = "inventory"
     ICON = "changes.svg"
@@ -179,10 +181,11 @@ class ChangesAlgorithm(SignMapperAlgorithm):
         except DriveFormatError as exc:
             raise QgsProcessingException(f"Drive of the mapped signs: {exc}") from exc
 
-    def inventory_from_layer(self, parameters, context, drive_crs, catalogue):
+    def inventory_from_layer(self, parameters, context, drive_crs, catalogue, feedback):
         import numpy as np
 
         from ..signmapper_core.changes import InventorySign
+        from ..signmapper_core.reference_rows import no_geometry_note
 
         source = self.parameterAsSource(parameters, self.INVENTORY, context)
         type_field = self.parameterAsString(parameters, self.TYPE_FIELD, context) or "template_id"
@@ -193,10 +196,11 @@ class ChangesAlgorithm(SignMapperAlgorithm):
             if name and name not in names:
                 raise QgsProcessingException(f"{source.sourceName()}: no field '{name}'")
         transform = QgsCoordinateTransform(source.sourceCrs(), drive_crs, context.transformContext())
-        signs = []
+        signs, no_geometry = [], []
         for feature in source.getFeatures():
             geom = QgsGeometry(feature.geometry())
             if geom.isNull():
+                no_geometry.append(f"fid {feature.id()}")
                 continue
             if transform.sourceCrs() != transform.destinationCrs():
                 geom.transform(transform)
@@ -210,7 +214,20 @@ class ChangesAlgorithm(SignMapperAlgorithm):
             signs.append(InventorySign(str(feature.id()), type_id, np.array([point.x(), point.y(), z]),
                                        None if facing in (None, NULL) else float(facing),
                                        size[0] if size else None, size[1] if size else None, label=type_id))
-        return signs, f"layer {source.sourceName()} ({len(signs)} signs)"
+        if no_geometry:
+            feedback.pushWarning(no_geometry_note(source.sourceName(), no_geometry))
+        return signs, f"layer {source.sourceName()}"
+
+    @staticmethod
+    def without_repeats(inventory: list, where: str, row: str, feedback) -> list:
+        """The inventory with each sign that repeats another exactly left out, with a warning (``row``: what the
+        inventory's keys are, "fid" or "sign")."""
+        from ..signmapper_core.reference_rows import exact_duplicates, repeats_note
+
+        repeats = exact_duplicates([s.template_id for s in inventory], [s.position for s in inventory])
+        if repeats:
+            feedback.pushWarning(repeats_note(where, repeats, [f"{row} {s.key}" for s in inventory]))
+        return [sign for i, sign in enumerate(inventory) if i not in repeats]
 
     def inventory_from_signalo(self, parameters, context, drive_crs, catalogue, feedback):
         import numpy as np
@@ -238,10 +255,10 @@ class ChangesAlgorithm(SignMapperAlgorithm):
                                            sign.facing, sign.width_m, sign.height_m, sign.height_above_road_m,
                                            sign.label))
             signs = moved
-        return signs, f"Signalo {where} ({len(signs)} signs)"
+        return signs, f"Signalo {where}"
 
     # run --------------------------------------------------------------------------------------------------
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+    def process(self, parameters, context, feedback):
         import numpy as np
 
         from ..signmapper_core.catalogue import load_catalogue
@@ -272,9 +289,11 @@ class ChangesAlgorithm(SignMapperAlgorithm):
             raise QgsProcessingException(str(exc)) from exc
 
         if has_layer:
-            inventory, described = self.inventory_from_layer(parameters, context, drive_crs, catalogue)
+            inventory, where = self.inventory_from_layer(parameters, context, drive_crs, catalogue, feedback)
         else:
-            inventory, described = self.inventory_from_signalo(parameters, context, drive_crs, catalogue, feedback)
+            inventory, where = self.inventory_from_signalo(parameters, context, drive_crs, catalogue, feedback)
+        inventory = self.without_repeats(inventory, where, "fid" if has_layer else "sign", feedback)
+        described = f"{where} ({len(inventory)} signs)"
         mapped = []
         for values, xyz in read_signs(layer, drive_crs, context):
             if values.get("plate_of") is not None:
@@ -289,7 +308,8 @@ class ChangesAlgorithm(SignMapperAlgorithm):
                          mappable_types={e.id for e in catalogue if e.id not in excluded})
         feedback.pushInfo(report.summary())
 
-        path = self.write(parameters, context, report, drive, run, layer, described)
+        self.write(parameters, context, report, drive, run, layer, described)
+        path = self.output_target(parameters, self.OUTPUT, context)
         html_path = self.parameterAsFileOutput(parameters, self.REPORT, context)
         if html_path:
             track = [(r.pose.easting, r.pose.northing) for r in drive.pairs]
@@ -306,44 +326,39 @@ class ChangesAlgorithm(SignMapperAlgorithm):
             results[verdict.upper().replace(" ", "_")] = count
         return results
 
-    def write(self, parameters, context, report, drive, run, layer, described) -> str:
+    def write(self, parameters, context, report, drive, run, layer, described) -> None:
         from ..signmapper_core import changes_schema
         from ..signmapper_core.changes import CHANGED, CONFIRMED, MOVED, with_height
 
         crs, _note = qgis_crs(drive.crs)
-        output = AtomicGeoPackage(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
+        output = GeoPackageLayers(self.run_outputs.partial(self.OUTPUT))
         centres = [r.pose.centre for r in drive.pairs]
-        try:
-            fields = schema_fields(changes_schema.FIELDS)
-            writer = output.open_layer("changes", fields, QgsWkbTypes.PointZ, crs,
-                                       abstract=f"Sign Mapper: {layer.source()} against {described}")
-            import numpy as np
+        fields = schema_fields(changes_schema.FIELDS)
+        writer = output.open_layer("changes", fields, QgsWkbTypes.PointZ, crs,
+                                   abstract=f"Sign Mapper: {layer.source()} against {described}")
+        import numpy as np
 
-            for change in report.changes:
-                if change.inventory is not None:
-                    east, north, up = with_height(change.inventory, np.array(centres), report.config)
-                else:
-                    east, north, up = change.mapped.position
-                up = up if math.isfinite(up) else 0.0
-                point = QgsGeometry(QgsPoint(east, north, up))
-                writer.addFeature(_feature(fields, changes_schema.values(change), point), QgsFeatureSink.FastInsert)
-            del writer
-            fields = schema_fields(changes_schema.LINE_FIELDS)
-            writer = output.open_layer("displacements", fields, QgsWkbTypes.LineStringZ, crs,
-                                       abstract="Sign Mapper: inventory position to mapped position")
-            for change in report.changes:
-                if change.verdict not in (CONFIRMED, MOVED, CHANGED):
-                    continue
-                start = with_height(change.inventory, np.array(centres), report.config)
-                end = change.mapped.position
-                line = QgsLineString([QgsPoint(*(float(c) for c in start)), QgsPoint(*(float(c) for c in end))])
-                writer.addFeature(_feature(fields, changes_schema.values(change, changes_schema.DISPLACEMENTS),
-                                           QgsGeometry(line)), QgsFeatureSink.FastInsert)
-            del writer
-            table = dict(run)
-            table.update(drive=str(drive.root.resolve()), signs=layer.source(), inventory=described)
-            output.write_run_table(table)
-            return output.commit()
-        except BaseException:
-            output.discard()
-            raise
+        for change in report.changes:
+            if change.inventory is not None:
+                east, north, up = with_height(change.inventory, np.array(centres), report.config)
+            else:
+                east, north, up = change.mapped.position
+            up = up if math.isfinite(up) else 0.0
+            point = QgsGeometry(QgsPoint(east, north, up))
+            writer.addFeature(_feature(fields, changes_schema.values(change), point), QgsFeatureSink.FastInsert)
+        writer.close()
+        fields = schema_fields(changes_schema.LINE_FIELDS)
+        writer = output.open_layer("displacements", fields, QgsWkbTypes.LineStringZ, crs,
+                                   abstract="Sign Mapper: inventory position to mapped position")
+        for change in report.changes:
+            if change.verdict not in (CONFIRMED, MOVED, CHANGED):
+                continue
+            start = with_height(change.inventory, np.array(centres), report.config)
+            end = change.mapped.position
+            line = QgsLineString([QgsPoint(*(float(c) for c in start)), QgsPoint(*(float(c) for c in end))])
+            writer.addFeature(_feature(fields, changes_schema.values(change, changes_schema.DISPLACEMENTS),
+                                       QgsGeometry(line)), QgsFeatureSink.FastInsert)
+        writer.close()
+        table = dict(run)
+        table.update(drive=str(drive.root.resolve()), signs=layer.source(), inventory=described)
+        output.write_run_table(table)

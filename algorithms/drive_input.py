@@ -24,7 +24,7 @@ def open_drive_or_raise(folder: str, feedback=None):
     except DriveFormatError as exc:
         raise QgsProcessingException(f"Invalid drive: {exc}") from exc
     for warning in drive.warnings:
-        feedback.warn(f"Warning: {warning}")
+        feedback.warn(warning)
     return drive
 
 

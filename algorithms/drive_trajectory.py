@@ -20,7 +20,6 @@ from qgis.PyQt.QtCore import QVariant
 from ..signmapper_core.progress import Cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise, qgis_crs
-from .output_paths import remove_written
 
 
 def trajectory_fields() -> QgsFields:
@@ -66,9 +65,8 @@ class DriveTrajectoryAlgorithm(SignMapperAlgorithm):
             "Optional LineStringZ layer joining the pairs in driving order.",
         )
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+    def process(self, parameters, context, feedback):
         self.require_dependencies()
-        self.check_outputs(parameters, context)
         folder = self.parameterAsFile(parameters, self.DRIVE, context)
         feedback.pushInfo(self.tr(f"Validating drive {folder}"))
         try:
@@ -92,30 +90,21 @@ class DriveTrajectoryAlgorithm(SignMapperAlgorithm):
             )
             features.append(feature)
             feedback.setProgress(50 + 40 * (record.index + 1) / len(drive.pairs))
-        written = []  # files of the outputs, deleted when the run fails or is cancelled after writing them
-        try:
-            sink, dest_id = self.parameterAsSink(parameters, self.OUTPUT, context, fields, QgsWkbTypes.PointZ, crs)
-            if sink is None:
-                raise QgsProcessingException(self.invalidSinkError(parameters, self.OUTPUT))
-            written.append(dest_id)
-            if not sink.addFeatures(features, QgsFeatureSink.FastInsert):
-                raise QgsProcessingException(f"{dest_id}: cannot write the trajectory points")
-            results = {self.OUTPUT: dest_id}
-            track_sink, track_id = self.parameterAsSink(
-                parameters, self.TRACK, context, QgsFields(), QgsWkbTypes.LineStringZ, crs
-            )
-            if track_sink is not None:
-                written.append(track_id)
-                line = QgsFeature()
-                line.setGeometry(QgsGeometry(QgsLineString(vertices)))
-                track_sink.addFeature(line, QgsFeatureSink.FastInsert)
-                results[self.TRACK] = track_id
-            del sink, track_sink  # closes the files
-            if feedback.isCanceled():
-                raise QgsProcessingException(self.tr("Cancelled; nothing written."))
-        except BaseException:
-            remove_written(written)
-            raise
+        sink, dest_id = self.parameterAsSink(parameters, self.OUTPUT, context, fields, QgsWkbTypes.PointZ, crs)
+        if sink is None:
+            raise QgsProcessingException(self.invalidSinkError(parameters, self.OUTPUT))
+        sink.addFeatures(features, QgsFeatureSink.FastInsert)
+        results = {self.OUTPUT: dest_id}
+        track_sink, track_id = self.parameterAsSink(
+            parameters, self.TRACK, context, QgsFields(), QgsWkbTypes.LineStringZ, crs
+        )
+        if track_sink is not None:
+            line = QgsFeature()
+            line.setGeometry(QgsGeometry(QgsLineString(vertices)))
+            track_sink.addFeature(line, QgsFeatureSink.FastInsert)
+            results[self.TRACK] = track_id
+        if feedback.isCanceled():
+            raise QgsProcessingException(self.tr("Cancelled; nothing written."))
         feedback.setProgress(100)
         feedback.pushInfo(self.tr(f"{len(features)} of {len(drive.pairs)} pairs written"))
         return results

@@ -31,7 +31,6 @@ from qgis.PyQt.QtCore import QVariant
 from ..gpkg.output import read_run_table
 from ..signmapper_core.output_schema import REJECTED
 from .base import SignMapperAlgorithm
-from .output_paths import remove_written
 
 
 def facing_value(source, feature, field: str):
@@ -148,10 +147,8 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
                             ("SIGMA_3D", "Empirical σ 3D [m]")):
             self.addOutput(QgsProcessingOutputNumber(name, self.tr(title)))
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+    def process(self, parameters, context, feedback):
         import numpy as np
-
-        self.check_outputs(parameters, context)
 
         from ..signmapper_core.evaluation import COMPONENTS, evaluate, format_report
         from ..signmapper_core.report_html import missed_rows, report_html, sign_rows
@@ -165,13 +162,15 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         height_field = self.parameterAsString(parameters, self.REFERENCE_HEIGHT_FIELD, context)
         radius = self.parameterAsDouble(parameters, self.RADIUS, context)
 
-        mapped = self.read_points(signs, sign_field, None, None, context, skip_rejected=True)
+        mapped = self.read_points(signs, sign_field, None, None, context, skip_rejected=True, feedback=feedback)
         to_signs = QgsCoordinateTransform(reference.sourceCrs(), signs.sourceCrs(), context.transformContext())
         facing_field = self.parameterAsString(parameters, self.REFERENCE_FACING_FIELD, context)
-        refs = self.read_points(reference, ref_field, height_field, to_signs, context, facing_field=facing_field)
+        refs = self.read_points(reference, ref_field, height_field, to_signs, context, facing_field=facing_field,
+                                feedback=feedback)
         if reference.fields().field(ref_field).isNumeric():
             refs["ids"] = self.ids_from_numbers(refs["ids"], mapped["ids"], parameters, context, feedback,
                                                 reference, ref_field)
+        refs = self.without_repeats(refs, reference, feedback)
         if not refs["xyz"]:
             raise QgsProcessingException("The reference layer has no points.")
         trajectory = self.trajectory_xy(parameters, context, signs, to_signs)
@@ -191,19 +190,12 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         run = self.report_run(parameters, context, signs, reference, radius, facing_field)
         sign_list = sign_rows(report, mapped["ids"], [f"fid {f}" for f in mapped["fids"]])
         missed = missed_rows(report, refs["xyz"], [f"fid {f}" for f in refs["fids"]])
-        written = [html_path]  # deleted again when the run fails or is cancelled while writing
-        try:
-            Path(html_path).write_text(report_html(report, "Sign Mapper: evaluation against reference", notes, run,
-                                                   sign_list, missed), encoding="utf-8")
-            stats_id = self.write_statistics(parameters, context, report, COMPONENTS)
-            written.append(stats_id)
-            matches_id = self.write_matches(parameters, context, signs, report, mapped, refs)
-            written.append(matches_id)
-            if feedback.isCanceled():
-                raise QgsProcessingException("Cancelled; nothing written.")
-        except BaseException:
-            remove_written(written)
-            raise
+        Path(html_path).write_text(report_html(report, "Sign Mapper: evaluation against reference", notes, run,
+                                               sign_list, missed), encoding="utf-8")
+        stats_id = self.write_statistics(parameters, context, report, COMPONENTS)
+        matches_id = self.write_matches(parameters, context, signs, report, mapped, refs)
+        if feedback.isCanceled():
+            raise QgsProcessingException("Cancelled; nothing written.")
         t1 = report.table1
         return {
             self.REPORT: html_path, self.STATISTICS: stats_id, self.MATCHES: matches_id,
@@ -253,7 +245,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             text += f" Numbers were read back as the catalogue ids they stand for (e.g. {example})."
         if unresolved:
             text += f" {len(unresolved)} stand for no single catalogue id and stay numbers (e.g. {unresolved[0]})."
-        feedback.reportError(text, fatalError=False)
+        feedback.pushWarning(text)
         return ids
 
     @staticmethod
@@ -267,17 +259,22 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
 
     @staticmethod
     def read_points(source, id_field, height_field, transform, context, skip_rejected=False,
-                    facing_field=None) -> dict:
+                    facing_field=None, feedback=None) -> dict:
+        """Position, id, fid and facing of every feature; those without geometry are left out with a warning."""
+        from ..signmapper_core.reference_rows import no_geometry_note
+
         names = source.fields().names()
         if id_field not in names:
             raise QgsProcessingException(f"{source.sourceName()}: no field '{id_field}'")
         has_status = skip_rejected and "status" in names
         out = {"xyz": [], "ids": [], "fids": [], "facing": []}
+        no_geometry = []
         for feature in source.getFeatures(QgsFeatureRequest()):
             if has_status and feature["status"] == REJECTED:
                 continue
             geom = QgsGeometry(feature.geometry())
             if geom.isNull():
+                no_geometry.append(f"fid {feature.id()}")
                 continue
             if transform is not None and transform.sourceCrs() != transform.destinationCrs():
                 geom.transform(transform)
@@ -293,7 +290,20 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             out["ids"].append(str(feature[id_field]))
             out["fids"].append(feature.id())
             out["facing"].append(facing_value(source, feature, facing_field) if facing_field else None)
+        if no_geometry and feedback is not None:
+            feedback.pushWarning(no_geometry_note(source.sourceName(), no_geometry))
         return out
+
+    @staticmethod
+    def without_repeats(points: dict, source, feedback) -> dict:
+        """``points`` (:meth:`read_points`) with each row that repeats another exactly left out, with a warning."""
+        from ..signmapper_core.reference_rows import exact_duplicates, repeats_note
+
+        repeats = exact_duplicates(points["ids"], points["xyz"])
+        if not repeats:
+            return points
+        feedback.pushWarning(repeats_note(source.sourceName(), repeats, [f"fid {f}" for f in points["fids"]]))
+        return {key: [v for i, v in enumerate(values) if i not in repeats] for key, values in points.items()}
 
     def report_run(self, parameters, context, signs, reference, radius, facing_field) -> dict:
         """What the report says about the run: drive, date, the evaluation's and the mapping's parameters."""

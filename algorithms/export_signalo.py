@@ -92,7 +92,7 @@ class ExportToSignaloAlgorithm(SignMapperAlgorithm):
                 found[int(feature["sign_id"])] = (str(feature["inventory_id"]), feature["verdict"] == "moved")
         return found
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+    def process(self, parameters, context, feedback):
         import numpy as np
 
         from ..signmapper_core.signalo import SignaloError
@@ -139,12 +139,10 @@ class ExportToSignaloAlgorithm(SignMapperAlgorithm):
             connection.close()
         feedback.pushInfo(f"Signalo {result.version or '(version not recorded)'}: {result.summary()}")
         for sign_id, type_id in result.unknown:
-            feedback.reportError(f"Sign {sign_id}: type {type_id} has no official sign in Signalo; not written",
-                                 fatalError=False)
+            feedback.pushWarning(f"Sign {sign_id}: type {type_id} has no official sign in Signalo; not written")
         for plate_id, sign_id in result.plates_without_sign:
-            feedback.reportError(f"Plate {plate_id}: its sign {sign_id} is not written by this export (left out by "
-                                 "status, unknown type, already exported or updated); the plate is not written",
-                                 fatalError=False)
+            feedback.pushWarning(f"Plate {plate_id}: its sign {sign_id} is not written by this export (left out by "
+                                 "status, unknown type, already exported or updated); the plate is not written")
         return {"ADDED": len(result.added), "UPDATED": len(result.updated), "ALREADY": len(result.already),
                 "UNKNOWN": len(result.unknown), "SUPPORTS": result.supports,
                 "SIGNALO_VERSION": result.version or ""}

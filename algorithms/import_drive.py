@@ -257,7 +257,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
             raise QgsProcessingException(f"Import drive: {exc}") from exc
         return source, options, self.parameterAsString(parameters, self.OUTPUT, context)
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+    def process(self, parameters, context, feedback):
         source, options, out_dir = self.settings(parameters, context, check=False)
         from ..signmapper_core.errors import DriveFormatError, ImportInputError
         from ..signmapper_core.importdrive import import_drive
@@ -267,7 +267,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
         steps = CoreFeedback(feedback)
         try:
             summary = import_drive(out_dir, source, options, progress=steps.progress,
-                                   is_cancelled=steps.is_cancelled, warn=lambda m: steps.warn(f"Warning: {m}"))
+                                   is_cancelled=steps.is_cancelled, warn=steps.warn)
         except Cancelled:
             raise QgsProcessingException("Cancelled; no drive written.") from None
         except (ImportInputError, DriveFormatError, ValueError, OSError) as exc:

@@ -21,10 +21,11 @@ from qgis.core import (
 
 from ..gpkg.fields import layer_feature, layer_fields
 from ..gpkg.language import qgis_language
-from ..gpkg.output import AtomicGeoPackage, geopackage_tables, layer_uri
+from ..gpkg.output import GeoPackageLayers, layer_uri
 from ..gpkg.styles import OutputStyler, embed_default_styles
 from ..signmapper_core import output_schema as schema
 from ..signmapper_core.errors import ClusterError, MappingError
+from ..signmapper_core.geopackage_file import OUR_TABLES
 from ..signmapper_core.output_schema import DETECTIONS, LANGUAGES, SIGNS, OutputContext
 from ..signmapper_core.pipeline.config import default, with_settings
 from ..signmapper_core.progress import Cancelled, check_cancelled
@@ -42,6 +43,7 @@ LANGUAGE_CHOICES = ["QGIS language"] + list(LANGUAGES)
 
 class MapSignsAlgorithm(SignMapperAlgorithm):
     NAME = "mapsigns"
+    OWNED_LAYERS = {"OUTPUT": OUR_TABLES}
     DISPLAY_NAME = "Map traffic signs"
     GROUP_ID = "mapping"
     ICON = "map_signs.svg"
@@ -238,13 +240,12 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         if not folder or not (Path(folder) / "drive.json").is_file():
             raise QgsProcessingException(f"Drive folder {folder or '(none)'}: no drive.json, not a stereo-drive/1 "
                                          "folder")
-        output = self.parameterAsFileOutput(parameters, self.OUTPUT, context)
+        output = self.output_target(parameters, self.OUTPUT, context)
         if not output.lower().endswith(".gpkg"):
             label = self.parameterDefinition(self.OUTPUT).description()
             raise QgsProcessingException(f"{label}: {output}: the output must be a GeoPackage file ending in .gpkg")
-        self.check_outputs(parameters, context)
+        self.check_outputs(parameters, context)  # an existing file that is no GeoPackage is refused, not replaced
         self.scheduler(parameters, context)  # a malformed address is said before the run
-        geopackage_tables(output)  # an existing file that is no GeoPackage is refused, not replaced
         earlier = self.earlier_settings(parameters, context, notes)
         colours = [COLOURS[i] for i in self.parameterAsEnums(parameters, self.COLOURS, context)]
         if not colours:
@@ -337,7 +338,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             return None
         return self.parameterAsDouble(parameters, name, context)
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+    def process(self, parameters, context, feedback):
         notes = []
         folder, catalogue, config, fusion = self.settings(parameters, context, notes)
         for note in notes:
@@ -355,13 +356,15 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         self.report_classifier(catalogue, config, feedback)
 
         language = self.language(parameters, context)
-        output = AtomicGeoPackage(self.parameterAsFileOutput(parameters, self.OUTPUT, context))
-        unchanged = f"; {output.target} is as it was" if output.target.exists() else ""
+        path = self.output_target(parameters, self.OUTPUT, context)
+        output = self.run_outputs.partial(self.OUTPUT)
+        unchanged = self.run_outputs.unchanged()
         crops = None
         if self.parameterAsBoolean(parameters, self.CROPS, context):
             from ..signmapper_core.sign_crops import CropFolder  # OpenCV: imported only when a run needs it
 
-            crops = CropFolder(output.target)
+            crops = CropFolder(path)
+            self.run_outputs.add(crops.output)
         max_skipped = self.parameterAsDouble(parameters, self.MAX_SKIPPED, context) / 100.0
         workers = self.parameterAsInt(parameters, self.WORKERS, context) if parameters.get(self.WORKERS) else 0
         scheduler = self.scheduler(parameters, context)
@@ -370,28 +373,21 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         try:
             result = self.map(drive, catalogue, config, feedback, max_skipped, fusion, workers, scheduler)
             out = self.output_context(drive, catalogue, language, result, crops, feedback)
-            self.write_layers(output, result, out, feedback)
-            output.write_run_table(schema.run_record(result, out))
-            without_svg = embed_default_styles(str(output.partial), catalogue, language)
+            layers = GeoPackageLayers(output)
+            self.write_layers(layers, result, out, feedback)
+            layers.write_run_table(schema.run_record(result, out))
+            without_svg = embed_default_styles(str(output.path), catalogue, language, output.target)
             check_cancelled(feedback.isCanceled, "writing")
-            if crops is not None:
-                crops.commit()
-            path = output.commit()
-        except BaseException as exc:
-            output.discard()
-            if crops is not None:
-                crops.discard()
-            if isinstance(exc, Cancelled):
-                raise QgsProcessingException(f"Cancelled; no output written{unchanged}.") from None
-            if isinstance(exc, MappingError):
-                label = self.parameterDefinition(self.MAX_SKIPPED).description()
-                remedy = f", or raise '{label}'" if exc.limit_exceeded else ""  # no share helps when none maps
-                raise QgsProcessingException(f"Mapping failed: {exc}. Nothing written{unchanged}. Repair or remove "
-                                             f"the unreadable files{remedy}.") from None
-            if isinstance(exc, ClusterError):
-                label = self.parameterDefinition(self.SCHEDULER).description()
-                raise QgsProcessingException(f"{label}: {exc}. Nothing written{unchanged}.") from None
-            raise
+        except Cancelled:
+            raise QgsProcessingException(f"Cancelled; no output written{unchanged}.") from None
+        except MappingError as exc:
+            label = self.parameterDefinition(self.MAX_SKIPPED).description()
+            remedy = f", or raise '{label}'" if exc.limit_exceeded else ""  # no share helps when none maps
+            raise QgsProcessingException(f"Mapping failed: {exc}. Nothing written{unchanged}. Repair or remove "
+                                         f"the unreadable files{remedy}.") from None
+        except ClusterError as exc:
+            label = self.parameterDefinition(self.SCHEDULER).description()
+            raise QgsProcessingException(f"{label}: {exc}. Nothing written{unchanged}.") from None
         if without_svg:
             feedback.pushWarning(f"{len(without_svg)} of {len(catalogue)} templates have no SVG pictogram (e.g. "
                                  f"{without_svg[0]}): their signs are drawn with a plain marker of their shape and "
@@ -421,13 +417,13 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         try:
             start = drive_start(drive)
         except DriveFormatError as exc:
-            feedback.reportError(f"{exc}; timestamps left empty", fatalError=False)
+            feedback.pushWarning(f"{exc}; timestamps left empty")
             start = None
         written = {}
         if crops is not None:
             feedback.setProgressText(f"Writing {len(result.signs)} sign crops")
             written = crops.write(drive, result.signs, feedback.isCanceled,
-                                  lambda m: feedback.reportError(m, fatalError=False))
+                                  feedback.pushWarning)
         return OutputContext(language=language, catalogue=catalogue, start=start, first_time=first_time(drive),
                              crops=written)
 
@@ -458,10 +454,11 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         return result
 
     @staticmethod
-    def write_layers(output, result, out: OutputContext, feedback=None) -> None:
+    def write_layers(output: GeoPackageLayers, result, out: OutputContext, feedback=None) -> None:
         """The layers signs (fused signs) and detections (observations), fields as output_schema declares.
 
-        A cancel while writing raises ``Cancelled``; the caller discards the partial file.
+        A cancel while writing raises ``Cancelled``, a failed write ``OutputWriteError``; the run's partial
+        output is then discarded.
         """
         crs, note = qgis_crs(result.drive.crs)
         if note and feedback is not None:
@@ -474,7 +471,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             for item in items:
                 check_cancelled(feedback.isCanceled if feedback is not None else None, "writing")
                 writer.addFeature(layer_feature(fields, layer, item, out), QgsFeatureSink.FastInsert)
-            del writer
+            writer.close()
 
 
 def _is_default(setting, value) -> bool:

@@ -22,7 +22,6 @@ from qgis.PyQt.QtCore import QVariant
 
 from ..signmapper_core.progress import Cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
-from .output_paths import remove_written
 
 
 class SyntheticDriveAlgorithm(SignMapperAlgorithm):
@@ -83,9 +82,8 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
                            "The signs of truth.csv as a PointZ layer (sign face centres), e.g. as the reference "
                            "of Evaluate against reference.")
 
-    def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
+    def process(self, parameters, context, feedback):
         self.require_dependencies()
-        self.check_outputs(parameters, context)
         from ..signmapper_core.simulate import SimulationConfig, generate_drive
 
         out_dir = self.parameterAsString(parameters, self.OUTPUT, context)
@@ -101,26 +99,20 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
             angle_sigma_deg=self.parameterAsDouble(parameters, self.ANGLE_SIGMA, context),
         )
         # The truth layer is opened first (a bad destination fails before any rendering) and written before
-        # the drive takes its name: all outputs or none.
+        # the drive takes its name: all outputs or none (the truth's file is committed after the drive).
         truth = self.truth_sink(parameters, context, config.crs)
         steps = CoreFeedback(feedback)
         try:
             summary = generate_drive(out_dir, config, progress=steps.progress, is_cancelled=steps.is_cancelled,
                                      before_commit=None if truth is None else truth.write)
         except Cancelled:
-            self.remove_truth(truth)
             raise QgsProcessingException("Cancelled; no drive written.") from None
         except (ValueError, OSError) as exc:
-            self.remove_truth(truth)
             raise QgsProcessingException(f"Synthetic drive: {exc}") from exc
-        except BaseException:
-            self.remove_truth(truth)
-            raise
         feedback.pushInfo(f"{summary.pairs} pairs and {len(summary.signs)} signs written to {out_dir} "
                           f"in {summary.seconds:.1f} s")
         results = {self.OUTPUT: out_dir}
         if truth is not None:
-            truth.close()
             results[self.TRUTH] = truth.dest
         return results
 
@@ -138,12 +130,6 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
             return None
         return TruthLayer(sink, dest, fields)
 
-    @staticmethod
-    def remove_truth(truth) -> None:
-        if truth is not None:
-            truth.close()
-            remove_written([truth.dest])
-
 
 class TruthLayer:
     """The truth sink of a run, written once the drive's signs are known."""
@@ -159,7 +145,3 @@ class TruthLayer:
                                    sign.plate_of or None, sign.text or None])
             if not self.sink.addFeature(feature, QgsFeatureSink.FastInsert):
                 raise QgsProcessingException(f"{self.dest}: cannot write the ground truth signs")
-
-    def close(self) -> None:
-        """Release the sink: its file is complete (or can be deleted)."""
-        self.sink = None

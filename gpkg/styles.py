@@ -47,6 +47,7 @@ from ..signmapper_core import output_schema as schema
 from ..signmapper_core.catalogue.families import by_family, family_name
 from ..signmapper_core.catalogue.names import sign_name
 from ..signmapper_core.output_schema import DETECTIONS, MANUAL, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
+from ..signmapper_core.partial_output import write_failure
 from ..signmapper_core.plate_formats import PLATE_ID, PLATE_NAMES
 from ..signmapper_core.sign_colours import DISPLAY_COLOURS
 
@@ -243,20 +244,22 @@ def apply_style(layer: QgsVectorLayer, kind: str, catalogue, language: str = "en
     layer.triggerRepaint()
 
 
-def embed_default_styles(gpkg_path: str, catalogue, language: str = "en") -> list[str]:
+def embed_default_styles(gpkg_path: str, catalogue, language: str = "en", target=None) -> list[str]:
     """Save the styles into the GeoPackage's layer_styles table, used when the layers are opened.
 
-    Returns the ids of the templates drawn with a plain marker (``templates_without_pictogram``).
+    Returns the ids of the templates drawn with a plain marker (``templates_without_pictogram``). A style that
+    cannot be saved is an ``OutputWriteError`` naming ``target`` (the file ``gpkg_path`` becomes) and a full
+    disk, which QGIS's own words ("Error looking for style") do not.
     """
     for kind, description in ((SIGNS, "Sign Mapper: pictograms by family, review state, face direction, ids"),
                               (DETECTIONS, "Sign Mapper: detections by status")):
         layer = QgsVectorLayer(f"{gpkg_path}|layername={kind}", kind, "ogr")
-        if not layer.isValid():
-            raise RuntimeError(f"cannot open {layer.source()} to store its style")
-        apply_style(layer, kind, catalogue, language)
-        error = layer.saveStyleToDatabase("default", description, True, "")
+        error = "" if layer.isValid() else "the layer cannot be opened"
+        if not error:
+            apply_style(layer, kind, catalogue, language)
+            error = layer.saveStyleToDatabase("default", description, True, "")
         if error:
-            raise RuntimeError(f"{layer.source()}: style not saved: {error}")
+            raise write_failure(target or gpkg_path, f"the style of the layer '{kind}'", error)
     return templates_without_pictogram(catalogue)
 
 

@@ -77,6 +77,7 @@ def connect(address: str, timeout_s: Optional[float] = None):
     timeout_s = CONNECT_TIMEOUT_S if timeout_s is None else timeout_s
     address = scheduler_address(address)
     distributed = require_distributed()
+    probe_scheduler(address, timeout_s)
     try:
         client = distributed.Client(address, timeout=timeout_s, set_as_default=False)
     except (OSError, TimeoutError) as exc:
@@ -89,6 +90,70 @@ def connect(address: str, timeout_s: Optional[float] = None):
         client.close()
         raise
     return client
+
+
+def probe_scheduler(address: str, timeout_s: float) -> None:
+    """``ClusterError`` unless a Dask scheduler answers at ``address`` within ``timeout_s``.
+
+    Asked before ``distributed.Client``, which waits forever for a program that accepts the connection and never
+    answers, and reads an HTTP server's reply as the length of a message (exabytes). The question runs on an
+    event loop of its own in a thread of its own, so a caller's running loop (a Jupyter kernel) is no obstacle.
+    """
+    import asyncio
+    from concurrent.futures import ThreadPoolExecutor
+
+    from distributed.comm import connect as open_comm
+
+    _wait_for_listener(address, timeout_s)
+
+    async def identity():
+        comm = await open_comm(address, timeout=timeout_s)
+        try:
+            await comm.write({"op": "identity", "reply": True})
+            return await comm.read()
+        finally:
+            comm.abort()
+
+    async def within_time():
+        return await asyncio.wait_for(identity(), timeout_s)
+
+    not_dask = (f"the address {address} is no Dask scheduler's: check the port ('dask scheduler' prints its address "
+                "as 'Scheduler at')")
+    try:
+        with ThreadPoolExecutor(1, thread_name_prefix="signmapper-dask-probe") as thread:
+            answer = thread.submit(asyncio.run, within_time()).result()
+    except (asyncio.TimeoutError, TimeoutError):  # something listens there (it accepted), but answers nothing
+        raise ClusterError(f"{not_dask}; a program there accepts connections but does not answer as one (waited "
+                           f"{timeout_s:g} s)") from None
+    except Exception as exc:  # noqa: BLE001 - whatever else answered, its reply is no Dask message
+        raise ClusterError(f"{not_dask}; a program there answers in another protocol ({type(exc).__name__}: "
+                           f"{exc})") from None
+    kind = answer.get("type") if isinstance(answer, dict) else None
+    if kind != "Scheduler":
+        raise ClusterError(f"{not_dask}; a Dask {kind or 'program'} answers there, not the scheduler")
+
+
+def _wait_for_listener(address: str, timeout_s: float) -> None:
+    """``ClusterError`` unless a program accepts connections at ``address`` within ``timeout_s``.
+
+    Asked apart from the Dask question, whose own connect hangs in its handshake with a program that accepts and
+    never answers: a timeout then means "no Dask there", never "nothing there". A refused connection is tried
+    again until the time is up (a scheduler may be starting).
+    """
+    import socket
+
+    host, port = ADDRESS.fullmatch(address).group(2, 3)
+    deadline = time.monotonic() + timeout_s
+    while True:
+        try:
+            socket.create_connection((host.strip("[]"), int(port)), max(0.1, deadline - time.monotonic())).close()
+            return
+        except OSError as exc:
+            if time.monotonic() + 0.2 >= deadline:
+                raise ClusterError(f"the Dask scheduler {address} cannot be reached (waited {timeout_s:g} s: "
+                                   f"{exc.strerror or exc or 'no answer'}); start it with 'dask scheduler' on that "
+                                   "machine and check the address, the port and the firewall") from None
+            time.sleep(0.2)
 
 
 def check_workers(client, timeout_s: Optional[float] = None) -> None:

@@ -351,8 +351,20 @@ def _attach_files(root: Path, rows, camera: Camera, check_images: bool, progress
         pairs.append(PairRecord(index, pair_id, time, pose, left, right, depth))
         report(progress, (index + 1) / len(rows), f"checked pair {pair_id} ({index + 1} of {len(rows)})")
     if warnings is not None:
-        warnings += greyscale_warning(left_dir, grey, len(pairs))
+        warnings += greyscale_warning(left_dir, grey, len(pairs)) + _unlisted_images(left_dir, pairs)
     return pairs
+
+
+def _unlisted_images(left_dir: Path, pairs: list[PairRecord]) -> list[str]:
+    """The warning for left images that no row of poses.csv names: they are not mapped, and the user should
+    know (a row lost when the poses were exported)."""
+    listed = {record.left_path.name for record in pairs}
+    unlisted = sorted(p.name for p in left_dir.iterdir() if p.suffix.lower() in IMAGE_SUFFIXES
+                      and p.name not in listed and not p.name.startswith("."))
+    if not unlisted:
+        return []
+    return [f"{left_dir}/: {len(unlisted)} image{'s have' if len(unlisted) > 1 else ' has'} no row in poses.csv and "
+            f"{'are' if len(unlisted) > 1 else 'is'} not mapped (first: {unlisted[0]})"]
 
 
 def _check_headers(left: Path, right: Path | None, depth: Path | None, expected: tuple[int, int]) -> bool:

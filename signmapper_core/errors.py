@@ -50,3 +50,17 @@ class ImportInputError(InputFileError):
 class ClusterError(RuntimeError):
     """A Dask cluster cannot map the drive: Dask missing, no scheduler at the address, no worker or a worker
     without the core, the scheduler lost; the message names the address and what to do."""
+
+
+class OutputFileError(ValueError):
+    """An output cannot be written as asked (not .gpkg, an existing file that is no GeoPackage, a layer of the
+    user's in the way); the message names the file and what to do."""
+
+
+class OutputBusyError(OutputFileError):
+    """Another run (a live process, or another task of this one) is writing the same output right now."""
+
+
+class OutputWriteError(OutputFileError):
+    """Writing an output failed part way (disk full, the file system refused): the partial output was dropped,
+    an earlier output is as it was; the message names the file, what was being written and why."""

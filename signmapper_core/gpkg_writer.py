@@ -13,7 +13,9 @@ from contextlib import contextmanager
 from typing import Optional
 
 from . import output_schema as schema
-from .geopackage_file import OutputFileError, PartialGeoPackage
+from .errors import OutputFileError
+from .geopackage_file import PartialGeoPackage
+from .partial_output import write_failure
 from .progress import CancelCheck, check_cancelled
 
 OGR_TYPES = {schema.TEXT: "OFTString", schema.INTEGER: "OFTInteger", schema.REAL: "OFTReal"}
@@ -57,19 +59,18 @@ def write_geopackage(target, result, context: Optional[schema.OutputContext] = N
 
     Layers ``signs`` and ``detections`` (PointZ in the drive's CRS) and the run table; an existing GeoPackage
     keeps its other layers. A failure or cancel (``Cancelled``, asked between features) leaves the target as
-    it was.
+    it was; a failed write is an ``OutputWriteError`` naming the file (and a full disk).
     """
     from osgeo import ogr
 
     context = context or schema.OutputContext()
     output = PartialGeoPackage(target)
-    output.partial.parent.mkdir(parents=True, exist_ok=True)
     try:
         with _ogr_exceptions():
             if output.starts_empty:
-                source = ogr.GetDriverByName("GPKG").CreateDataSource(str(output.partial))
+                source = ogr.GetDriverByName("GPKG").CreateDataSource(str(output.path))
             else:
-                source = ogr.Open(str(output.partial), update=1)
+                source = ogr.Open(str(output.path), update=1)
             srs = spatial_reference(result.drive.crs)
             for layer_name, items in ((schema.SIGNS, result.signs), (schema.DETECTIONS, result.detections)):
                 _write_layer(source, layer_name, items, srs, context, is_cancelled)
@@ -77,11 +78,13 @@ def write_geopackage(target, result, context: Optional[schema.OutputContext] = N
             source.FlushCache()
             source = None
         check_cancelled(is_cancelled, "writing")
-        return output.commit()
-    except BaseException:
+    except BaseException as exc:
         source = None
         output.discard()
+        if isinstance(exc, RuntimeError):  # OGR's own error (exceptions on): a full disk, a refused write
+            raise write_failure(output.target, "the layers", exc) from exc
         raise
+    return output.commit()
 
 
 def _write_layer(source, name: str, items, srs, context, is_cancelled) -> None:

@@ -119,12 +119,13 @@ def map_pair(drive: Drive, record: PairRecord, catalogue, config, detect=None) -
 
 
 def map_pairs(drive: Drive, catalogue, config, is_cancelled: Optional[CancelCheck] = None, workers: int = 1,
-              detect=None, scheduler=None) -> Iterator[PairResult]:
+              detect=None, scheduler=None, warn: Optional[WarnCallback] = None) -> Iterator[PairResult]:
     """Yield a :class:`PairResult` per pair in driving order; raises ``Cancelled`` between pairs.
 
     ``scheduler`` (a Dask scheduler address or a connected ``distributed.Client``)
     maps the pairs on that cluster (:mod:`dask_pairs`); else ``workers`` > 1 maps
-    them in that many processes (:mod:`pair_pool`); the results are in driving
+    them in that many processes (:mod:`pair_pool`), or, when no worker process can
+    start, here with a warning through ``warn``; the results are in driving
     order either way. ``detect`` replaces ``pipeline.detect_pair`` (a
     module-level function, so worker processes can import it).
     """
@@ -134,10 +135,14 @@ def map_pairs(drive: Drive, catalogue, config, is_cancelled: Optional[CancelChec
         yield from dask_pairs(drive, catalogue, config, scheduler, is_cancelled, detect)
         return
     if workers > 1:
-        from .pair_pool import pooled_pairs
+        from .pair_pool import PoolNotStarted, pooled_pairs
 
-        yield from pooled_pairs(drive, catalogue, config, workers, is_cancelled, detect)
-        return
+        try:
+            yield from pooled_pairs(drive, catalogue, config, workers, is_cancelled, detect)
+            return
+        except PoolNotStarted as exc:  # raised before the first pair: every pair is still to be mapped
+            send_warning(warn, f"The {workers} worker processes could not start ({exc}); mapping the pairs in this "
+                               "process instead, on one core")
     for record in drive.pairs:
         check_cancelled(is_cancelled, f"mapping drive {drive.root}")
         yield map_pair(drive, record, catalogue, config, detect)
@@ -191,7 +196,7 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     fusion = replace(fusion or FusionConfig(), accept_classification=accept, far_m=config.depth.far_m)
     detections, skipped, seconds, load_seconds, total = [], [], 0.0, 0.0, len(drive.pairs)
     workers = worker_count(workers, total)
-    with closing(map_pairs(drive, catalogue, config, is_cancelled, workers, detect, scheduler)) as results:
+    with closing(map_pairs(drive, catalogue, config, is_cancelled, workers, detect, scheduler, warn)) as results:
         for done, result in enumerate(results, start=1):  # closing: a pool stops when the loop raises
             seconds += result.seconds
             load_seconds += result.load_seconds

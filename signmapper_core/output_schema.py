@@ -324,6 +324,7 @@ class RunKey:
     help: str
     read: Callable[[Any], Any]  # MappingResult -> value
     text: bool = False  # written and read back as plain text (paths, names), else as JSON
+    setting: Optional[tuple] = None  # (section, name) of the pipeline setting this row repeats for readers
 
 
 RUN_KEYS = (
@@ -332,16 +333,21 @@ RUN_KEYS = (
            lambda r: str(r.drive.root.resolve()), True),
     RunKey("crs", "CRS of the drive and the layers.", lambda r: r.drive.crs, True),
     RunKey("catalogue", "Template catalogue folder.", lambda r: str(r.catalogue.folder), True),
-    RunKey("near_m", "Near limit of the depth range [m].", lambda r: r.config.depth.near_m),
-    RunKey("far_m", "Far limit of the depth range [m].", lambda r: r.config.depth.far_m),
-    RunKey("colours", "Sign colours segmented.", lambda r: list(r.config.colour.colours)),
-    RunKey("exclude", "Template ids never assigned.", lambda r: list(r.config.classification.exclude)),
-    RunKey("detection_threshold", "Minimum detection indicator.", lambda r: r.config.planarity.detection_threshold),
+    RunKey("near_m", "Near limit of the depth range [m].", lambda r: r.config.depth.near_m,
+           setting=("depth", "near_m")),
+    RunKey("far_m", "Far limit of the depth range [m].", lambda r: r.config.depth.far_m, setting=("depth", "far_m")),
+    RunKey("colours", "Sign colours segmented.", lambda r: list(r.config.colour.colours),
+           setting=("colour", "colours")),
+    RunKey("exclude", "Template ids never assigned.", lambda r: list(r.config.classification.exclude),
+           setting=("classification", "exclude")),
+    RunKey("detection_threshold", "Minimum detection indicator.", lambda r: r.config.planarity.detection_threshold,
+           setting=("planarity", "detection_threshold")),
     RunKey("classifier", "Classifier that ran: cnn (learned network) or ncc (template matching).",
            lambda r: r.classifier_name, True),
     RunKey("classification_threshold", "Classification indicator for a detection's status accepted (the "
            "classifier's own calibrated one unless set); a sign's voters need a mean the fusion setting "
-           "accept_margin of the way from it to 1.", lambda r: r.classification_threshold),
+           "accept_margin of the way from it to 1.", lambda r: r.classification_threshold,
+           setting=("classification", "classification_threshold")),
     RunKey("run_id", "Identifier of this run (a UUID): exports record it, so the same run is never written twice.",
            lambda r: r.run_id, True),
     RunKey("settings_version", "Version of the recorded settings' meaning (run_settings.SETTINGS_VERSION).",

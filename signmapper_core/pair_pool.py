@@ -15,7 +15,11 @@ rendering instead of waiting for it.
 Workers are started with ``spawn`` (not ``fork``): a QGIS process has Qt and
 OpenCV threads that a forked child would inherit half-locked. Inside QGIS,
 ``sys.executable`` is the QGIS binary, so the workers' Python is looked up
-(:func:`python_executable`).
+(:func:`python_executable`). ``spawn`` would also run the caller's main script
+again in each worker, which a PyQGIS script without a main guard cannot
+survive; the workers need nothing of it, so it is kept from them
+(:func:`_main_kept_from_workers`). When no worker starts at all, ``PoolNotStarted``
+says so before any pair, and the caller maps in its own process.
 """
 
 from __future__ import annotations
@@ -25,9 +29,11 @@ import os
 import pickle
 import sys
 import tempfile
+import threading
 from concurrent.futures import ProcessPoolExecutor
 from concurrent.futures import TimeoutError as FutureTimeout
 from concurrent.futures.process import BrokenProcessPool
+from contextlib import contextmanager
 from dataclasses import replace
 from pathlib import Path
 from typing import Callable, Iterator, Optional
@@ -40,6 +46,31 @@ POLL_S = 0.1  # how often the cancel button is asked while waiting for a pair
 OPENCV_THREADS_PER_WORKER = 1  # n workers x 1 thread: the cores are shared out by processes, not threads
 
 _worker_state: dict = {}  # in a worker process: drive, catalogue, config and detector of the run
+_MAIN_LOCK = threading.Lock()  # runs side by side in one process (QGIS) hide and restore __main__ in turn
+
+
+class PoolNotStarted(RuntimeError):
+    """No worker process could start (no Python found, the start failed, every worker died before its first
+    pair): the pairs can still be mapped in the calling process."""
+
+
+@contextmanager
+def _main_kept_from_workers():
+    """While workers are started: the caller's ``__main__`` names no file or module, so ``spawn`` does not run
+    it again in each worker (a script without ``if __name__ == "__main__":`` would map again in each worker and
+    fail). The pool's functions and ``detect`` are imported by their own module names."""
+    main = sys.modules.get("__main__")
+    with _MAIN_LOCK:
+        hidden = {name: vars(main).pop(name) for name in ("__file__", "__spec__")
+                  if main is not None and name in vars(main)}
+        if main is not None:
+            main.__spec__ = None
+        try:
+            yield
+        finally:
+            if main is not None:
+                vars(main).pop("__spec__", None)
+                vars(main).update(hidden)
 
 
 def available_cores() -> int:
@@ -123,10 +154,26 @@ class TemplateHandoff:
                 pass
 
 
-def _start_worker(drive, catalogue, config, detect: Optional[Callable], opencv_threads: int,
-                  templates: Optional[TemplateHandoff] = None) -> None:
+def _run_file(drive, catalogue, config, detect: Optional[Callable]) -> str:
+    """The run's drive, catalogue, settings and detector in a file the workers read as they start.
+
+    Not in the workers' start arguments: ``spawn`` writes those into a pipe the
+    parent also holds open, and a worker that dies before reading them all (its
+    Python lacks OpenCV) would leave the parent waiting forever. What is sent at
+    the start stays small; a worker that fails reading this file fails its start.
+    """
+    handle, path = tempfile.mkstemp(prefix="signmapper-run-", suffix=".pickle")
+    with os.fdopen(handle, "wb") as out:
+        pickle.dump((drive, catalogue, config, detect), out, protocol=pickle.HIGHEST_PROTOCOL)
+    return path
+
+
+def _start_worker(run_file: str, opencv_threads: int, templates: Optional[TemplateHandoff] = None,
+                  started=None) -> None:
     import cv2
 
+    with open(run_file, "rb") as source:
+        drive, catalogue, config, detect = pickle.load(source)
     cv2.setNumThreads(opencv_threads)
     from . import mapping  # noqa: F401  the pipeline's imports, while the parent still renders the templates
     from .pipeline.classifiers import classifier_for
@@ -142,6 +189,8 @@ def _start_worker(drive, catalogue, config, detect: Optional[Callable], opencv_t
 
         seed_canonical_templates(catalogue, rendered)
     _worker_state.update(drive=drive, catalogue=catalogue, config=config, detect=detect)
+    if started is not None:
+        started.set()  # a worker ran: a broken pool from now on is a crash while mapping, not a failed start
 
 
 def _map_in_worker(index: int):
@@ -167,27 +216,36 @@ def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[
     fresh process (a module-level function). ``Cancelled`` is raised between pairs
     and while waiting for one; queued pairs are dropped, the pairs being mapped
     finish and the workers stop before it propagates (so nothing runs on).
+    ``PoolNotStarted`` before the first pair when no worker could start.
     """
-    context = multiprocessing.get_context("spawn")
-    context.set_executable(python_executable())
+    try:
+        context = multiprocessing.get_context("spawn")
+        context.set_executable(python_executable())
+        started = context.Event()
+    except (RuntimeError, OSError) as exc:
+        raise PoolNotStarted(str(exc)) from exc
     what = f"mapping drive {drive.root}"
     pairs = drive.pairs
     # the workers read pairs: the ground truth and what was wrong with it (an exception) stay here
     pairs_only = replace(drive, truth=None, truth_error=None, warnings=[])
+    run_file = _run_file(pairs_only, catalogue, config, detect)
     handoff = TemplateHandoff(context) if _is_project_catalogue(catalogue) else None
     executor = ProcessPoolExecutor(workers, mp_context=context, initializer=_start_worker,
-                                   initargs=(pairs_only, catalogue, config, detect, OPENCV_THREADS_PER_WORKER,
-                                             handoff))
+                                   initargs=(run_file, OPENCV_THREADS_PER_WORKER, handoff, started))
     pending, submitted = {}, 0
 
     def queue_up_to(index: int) -> None:
         nonlocal submitted
-        while submitted < len(pairs) and submitted < index + workers * (1 + AHEAD):
-            pending[submitted] = executor.submit(_map_in_worker, submitted)
-            submitted += 1
+        with _main_kept_from_workers():  # submitting starts the workers
+            while submitted < len(pairs) and submitted < index + workers * (1 + AHEAD):
+                pending[submitted] = executor.submit(_map_in_worker, submitted)
+                submitted += 1
 
     try:
-        queue_up_to(0)  # starts the workers
+        try:
+            queue_up_to(0)
+        except (OSError, BrokenProcessPool) as exc:  # the system refused new processes
+            raise PoolNotStarted(str(exc)) from exc
         if handoff is not None:
             from .pipeline.classify import canonical_templates
 
@@ -204,6 +262,8 @@ def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[
                 except FutureTimeout:
                     continue
                 except BrokenProcessPool as exc:  # killed (out of memory) or crashed inside native code
+                    if not started.is_set():
+                        raise PoolNotStarted(f"{exc}; the workers' own error is in the log above") from exc
                     # every unfinished future fails alike: the pair that killed its worker is one of those in flight
                     raise MappingError(f"a worker process ended abruptly while mapping pairs {pairs[index].id} to "
                                        f"{pairs[submitted - 1].id} of {drive.root} (out of memory, or a crash: see "
@@ -214,5 +274,6 @@ def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[
         if handoff is not None:
             handoff.ready.set()  # workers still waiting for templates (a failed rendering, cancel) go on and stop
         executor.shutdown(wait=True, cancel_futures=True)
+        os.unlink(run_file)
         if handoff is not None:
             handoff.close()

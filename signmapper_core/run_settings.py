@@ -18,13 +18,14 @@ from __future__ import annotations
 import dataclasses
 import json
 import sqlite3
+import typing
 from contextlib import closing
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Optional
 
-from .output_schema import RUN_TABLE, decode_run_value
-from .progress import WarnCallback
+from .output_schema import RUN_KEYS, RUN_TABLE, decode_run_value
+from .progress import WarnCallback, send_warning
 
 # raise when a setting changes its meaning or unit, or the record its layout: older records are then refused
 # unless read_versions learns them (version 1: the pipeline settings flat, before the sections)
@@ -51,12 +52,60 @@ def _frozen(value):
     return value
 
 
+def _describe(hint, many: bool = False) -> str:
+    """A type as a record's reader would say it ("a list of 6 whole numbers"); ``many``: in the plural."""
+    origin, args = typing.get_origin(hint), typing.get_args(hint)
+    if origin is typing.Union:
+        return " or ".join("null" if a is type(None) else _describe(a, many) for a in args)
+    a_list = "lists" if many else "a list"
+    if origin is tuple and args[-1:] == (Ellipsis,) or origin is list:
+        return f"{a_list} of {_describe(args[0], True)}"
+    if origin is tuple:
+        kinds = {_describe(a, True) for a in args}
+        return f"{a_list} of {len(args)} {kinds.pop() if len(kinds) == 1 else 'values'}"
+    if origin is dict:
+        return f"{'objects' if many else 'an object'} of {_describe(args[1], True)}"
+    words = {float: ("a number", "numbers"), int: ("a whole number", "whole numbers"), bool: ("true or false",) * 2,
+             str: ("a text", "texts")}.get(hint, (str(hint),) * 2)
+    return words[many]
+
+
+def _misfit(value, hint, path: str = ""):
+    """(where in ``value``, the type expected, the value found there) where a JSON value does not fit the type
+    ``hint``; None if it fits.
+
+    A record is only used once every setting has the type its class declares: a wrong one (a text for an HSV
+    range) would otherwise fail pair after pair with an IndexError, blamed on the images.
+    """
+    origin, args = typing.get_origin(hint), typing.get_args(hint)
+    if origin is typing.Union:
+        misfits = [_misfit(value, a, path) for a in args]
+        return None if None in misfits else (path, _describe(hint), value)
+    if origin is tuple or origin is list:
+        if not isinstance(value, (list, tuple)):
+            return path, _describe(hint), value
+        items = args[:1] * len(value) if origin is list or args[-1:] == (Ellipsis,) else args
+        if len(items) != len(value):
+            return path, _describe(hint), value
+        return next(filter(None, (_misfit(v, h, f"{path}[{i}]") for i, (v, h) in enumerate(zip(value, items)))),
+                    None)
+    if origin is dict:
+        if not isinstance(value, dict):
+            return path, _describe(hint), value
+        return next(filter(None, (_misfit(v, args[1], f"{path}[{k!r}]") for k, v in value.items())), None)
+    fits = {float: lambda v: isinstance(v, (int, float)) and not isinstance(v, bool),
+            int: lambda v: isinstance(v, int) and not isinstance(v, bool),
+            bool: lambda v: isinstance(v, bool), str: lambda v: isinstance(v, str),
+            type(None): lambda v: v is None}.get(hint)
+    return None if fits is None or fits(value) else (path, _describe(hint), value)
+
+
 def settings_of(cls, data: dict, where: str, warn: Optional[WarnCallback] = None):
     """An instance of the settings dataclass ``cls`` from ``data`` (a :func:`settings_dict`).
 
     Keys ``cls`` does not have are passed to ``warn`` and ignored; missing ones
-    keep their defaults. Values the class refuses raise :class:`RunRecordError`
-    naming ``where``.
+    keep their defaults. Values of another type than the class declares, or that
+    the class refuses, raise :class:`RunRecordError` naming ``where`` and the setting.
     """
     if not isinstance(data, dict):
         raise RunRecordError(f"{where}: expected a JSON object of settings, found {type(data).__name__}")
@@ -64,6 +113,12 @@ def settings_of(cls, data: dict, where: str, warn: Optional[WarnCallback] = None
     unknown = sorted(set(data) - known)
     if unknown and warn is not None:
         warn(f"{where}: ignored settings this version does not know: {', '.join(unknown)}")
+    hints = typing.get_type_hints(cls)
+    for name in sorted(set(data) & known):
+        misfit = _misfit(data[name], hints[name])
+        if misfit is not None:
+            path, expected, found = misfit
+            raise RunRecordError(f"{where}: setting {name}{path} must be {expected}, found {json.dumps(found)}")
     try:
         return cls(**{k: _frozen(v) for k, v in data.items() if k in known})
     except (TypeError, ValueError) as exc:
@@ -145,8 +200,23 @@ def run_settings(record: dict, where: str, warn: Optional[WarnCallback] = None) 
                              f"Mapper reads versions {FLAT_PIPELINE_VERSION} and {SETTINGS_VERSION} only")
     config = pipeline_config_of(record["pipeline"], f"{where}, pipeline settings", warn, version)
     fusion = settings_of(FusionConfig, record.get("fusion", {}), f"{where}, fusion settings", warn)
+    _note_contradictions(record, config, where, warn)
     catalogue = record.get("catalogue")
     return RunSettings(config, fusion, str(catalogue) if catalogue else None, str(software))
+
+
+def _note_contradictions(record: dict, config, where: str, warn: Optional[WarnCallback]) -> None:
+    """Tell ``warn`` where the run table's own rows (near_m, …) contradict its pipeline settings: those win, being
+    what the run was mapped with (the rows repeat them for readers of the table)."""
+    for key in RUN_KEYS:
+        if key.setting is None or key.key not in record:
+            continue
+        section, name = key.setting
+        used = getattr(getattr(config, section), name)
+        if used is not None and _frozen(record[key.key]) != used:  # None: the classifier's own threshold
+            send_warning(warn, f"{where}: its run table says {key.key} {json.dumps(record[key.key])}, its pipeline "
+                               f"settings {section}.{name} {json.dumps(used)}; the pipeline "
+                               "settings are used (they are what that run was mapped with)")
 
 
 def load_run_settings(path, warn: Optional[WarnCallback] = None) -> RunSettings:

@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-import os
-import shutil
 from pathlib import Path
 from typing import Dict, Optional, Tuple
 
 import cv2
 
+from .partial_output import PartialOutput
 from .progress import CancelCheck, WarnCallback, check_cancelled, send_warning
 
 Rect = Tuple[int, int, int, int]  # x, y, w, h
@@ -64,27 +63,24 @@ def write_sign_crops(drive, signs, folder: Path, is_cancelled: Optional[CancelCh
 
 
 class CropFolder:
-    """The crops folder beside a GeoPackage (``<name>_crops``), written as a hidden partial folder and moved
-    in at the end, so a failed or cancelled run leaves the crops of an earlier run as they were."""
+    """The crops folder beside a GeoPackage (``<name>_crops``), written as a partial output
+    (:class:`~signmapper_core.partial_output.PartialOutput`): a failed or cancelled run leaves the crops of an
+    earlier run as they were."""
 
     def __init__(self, target: Path):
         target = Path(target)
         self.folder = target.with_name(f"{target.stem}_crops")
-        self.partial = target.with_name(f".{target.stem}_crops.partial")
-        self.discard()
+        self.output = PartialOutput(self.folder, folder=True, replace_folder=True)  # holds only our crops
 
     def write(self, drive, signs, is_cancelled: Optional[CancelCheck] = None,
               warn: Optional[WarnCallback] = None) -> Dict[int, str]:
         """The crops of ``signs`` (:func:`write_sign_crops`) into the partial folder; sign_id -> path
         relative to the GeoPackage (the ``crop_path`` field)."""
-        names = write_sign_crops(drive, signs, self.partial, is_cancelled, warn)
+        names = write_sign_crops(drive, signs, self.output.path, is_cancelled, warn)
         return {sign_id: f"{self.folder.name}/{name}" for sign_id, name in names.items()}
 
     def commit(self) -> None:
-        if self.folder.exists():
-            shutil.rmtree(self.folder)
-        os.replace(self.partial, self.folder)
+        self.output.commit()
 
     def discard(self) -> None:
-        if self.partial.exists():
-            shutil.rmtree(self.partial)
+        self.output.discard()

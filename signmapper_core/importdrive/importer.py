@@ -203,6 +203,8 @@ def _camera_poses(source: DriveSource, steps: CrsSteps, mount: Mount, rectifier:
         where = f"image times from {source.image_times_source}" if source.image_times_source else "image times"
         centres, rotations = interpolate(sub.times, epoch_centres, epoch_rotations, times,
                                          [p.id for p in source.pairs], table.path, where, options.max_gap_s)
+    if source.image_times is not None:
+        _note_unused_image_times(source, note)
     order = np.argsort(times, kind="stable")
     times = times[order]
     same = np.flatnonzero(np.diff(times) <= 0)
@@ -212,6 +214,17 @@ def _camera_poses(source: DriveSource, steps: CrsSteps, mount: Mount, rectifier:
                                f"time {times[same[0]]:.6f} s; every pair needs its own time", field="time")
     poses = drive_poses(centres[order], rotations[order], mount, rectifier.rotation)
     return [source.pairs[i] for i in order], [float(t) for t in times], poses
+
+
+def _note_unused_image_times(source: DriveSource, note) -> None:
+    """Tell ``note`` of image times that name no image: a row for a file that does not exist (renamed, left
+    out) would otherwise be ignored without a word."""
+    names = {name for pair in source.pairs for name in (pair.id, pair.left.name, pair.left.stem)}
+    unused = [key for key in source.image_times if key not in names]
+    if unused:
+        where = source.image_times_source or "the image times"
+        note(f"{where}: {len(unused)} row(s) name no image found among the images and are not used (first: id "
+             f"{unused[0]!r})")
 
 
 def _image_time(source: DriveSource, pair: ImagePair) -> float:

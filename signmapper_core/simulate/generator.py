@@ -1,10 +1,10 @@
 """Driver of a synthetic drive: poses along the street, pair-by-pair rendering, files.
 
-The drive is written into a hidden sibling folder ``.<name>.partial-<pid>`` and
-renamed when complete, so a cancelled or failed run leaves no half-written drive;
-the folder of a run that was killed (its process is gone) is removed by the next
-run for the same drive. Memory stays flat with the length of the drive: only
-textures near the vehicle are kept.
+The drive is written as a partial output (``atomic_folder``): moved in when
+complete, so a cancelled or failed run leaves no half-written drive; what a
+killed run left is removed by the next run writing into the same folder.
+Memory stays flat with the length of the drive: only textures near the
+vehicle are kept.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ from typing import Callable
 
 import numpy as np
 
-from ..atomic_folder import remove_stale_partials, writing_folder  # noqa: F401 (re-exported)
+from ..atomic_folder import writing_folder
 from ..drive_writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
 from ..geometry import Pose
 from ..progress import CancelCheck, ProgressCallback, check_cancelled, report

@@ -148,6 +148,42 @@ def test_an_unreachable_scheduler_is_a_clear_error_before_any_work(drive_dir, ca
     assert not out.exists() and not list(tmp_path.iterdir())
 
 
+@pytest.fixture(params=["an HTTP server", "a listener that never answers"])
+def not_a_scheduler(request):
+    """The port of a program that accepts connections but is no Dask scheduler (an HTTP server's reply is no
+    Dask message either: Dask reads its first bytes as a length and waits for the rest)."""
+    import http.server
+    import threading
+
+    if request.param == "an HTTP server":
+        server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), http.server.SimpleHTTPRequestHandler)
+        thread = threading.Thread(target=server.serve_forever, daemon=True)
+        thread.start()
+        yield server.server_address[1]
+        server.shutdown()
+        server.server_close()
+    else:
+        with socket.socket() as silent:  # the system accepts the connections; the program never reads them
+            silent.bind(("127.0.0.1", 0))
+            silent.listen(8)
+            yield silent.getsockname()[1]
+
+
+def test_an_address_where_no_scheduler_answers_is_a_clear_error_not_a_hang(drive_dir, tmp_path, not_a_scheduler):
+    """Issue 46, case 5: before, the run waited forever (killed at 180 s); a closed port already said so in 10 s."""
+    port = not_a_scheduler
+    out = tmp_path / "signs.gpkg"
+    start = time.monotonic()
+    done = _command("-m", "signmapper_core.map", str(drive_dir), "--out", str(out), "--scheduler",
+                    f"127.0.0.1:{port}", "--connect-timeout", "2", timeout=120)
+    assert time.monotonic() - start < 60
+    assert done.returncode == 1, done.stderr
+    assert f"error: the address tcp://127.0.0.1:{port} is no Dask scheduler's: check the port ('dask scheduler' " \
+           "prints its address as 'Scheduler at'); a program there accepts connections but does not answer as one " \
+           "(waited 2 s)" in done.stderr, done.stderr
+    assert "Traceback" not in done.stderr and not out.exists() and not list(tmp_path.iterdir())
+
+
 def test_a_malformed_scheduler_address_is_refused_naming_the_expected_form():
     from signmapper_core.dask_pairs import scheduler_address
 

@@ -274,3 +274,16 @@ def test_input_errors_name_the_place_the_same_way_and_stay_apart():
     # an import's input is not the drive folder: catching one does not catch the other
     assert not isinstance(ImportInputError("a", "b"), DriveFormatError)
     assert not isinstance(ManifestError("a", "b"), DriveFormatError)
+
+
+def test_images_without_a_row_in_poses_csv_are_said(drive_dir):
+    """Issue 46, case 11: a pair whose images exist but whose poses.csv row is missing is not dropped silently."""
+    lines = (drive_dir / "poses.csv").read_text().splitlines()
+    (drive_dir / "poses.csv").write_text("\n".join(lines[:3] + lines[4:]) + "\n")  # the row of 000002
+    drive = open_drive(drive_dir)
+    assert [p.id for p in drive.pairs] == ["000000", "000001", "000003"]
+    assert drive.warnings == [f"{drive_dir / 'left'}/: 1 image has no row in poses.csv and is not mapped "
+                              "(first: 000002.png)"]
+    (drive_dir / "poses.csv").write_text("\n".join(lines[:2]) + "\n")
+    assert open_drive(drive_dir).warnings == [f"{drive_dir / 'left'}/: 3 images have no row in poses.csv and are "
+                                              "not mapped (first: 000001.png)"]

@@ -295,3 +295,15 @@ def test_kitti_frames_without_oxts_are_named(tmp_path):
     (folder / "oxts" / "data" / "0000000001.txt").unlink()
     with pytest.raises(ImportInputError, match=r"0000000001\.txt: the poses do not cover frame 0000000001"):
         kitti_source(folder)
+
+
+def test_image_times_of_images_that_do_not_exist_are_said(survey, tmp_path):
+    """Issue 46, case 12: an image_times.csv row for an image that is not there is not ignored silently."""
+    times = tmp_path / "image_times.csv"
+    times.write_text(survey.image_times.read_text() + "img_017,1000.8750\n")
+    warnings = []
+    summary = import_drive(tmp_path / "drive", generic_source(trajectory_inputs(survey, image_times=times)),
+                           warn=warnings.append)
+    assert summary.pairs == 3
+    assert f"{times}: 1 row(s) name no image found among the images and are not used (first: id 'img_017')" \
+        in warnings, warnings

@@ -142,3 +142,44 @@ def test_templates_that_cannot_be_rendered_end_the_run_with_that_error_and_relea
     with pytest.raises(OSError, match="template PNG unreadable"):
         map_drive(open_drive(stereo_drive), catalogue, PipelineConfig(), workers=2)
     assert multiprocessing.active_children() == []  # the workers waiting for the templates did not hang
+
+
+# issue 46: a pool that cannot start maps in the calling process, with a warning
+
+@pytest.mark.parametrize("cause", ["no python", "no OpenCV in the workers"])
+def test_a_pool_that_cannot_start_maps_in_this_process_with_a_warning(stereo_drive, catalogue, one_worker,
+                                                                      monkeypatch, tmp_path, cause):
+    from signmapper_core import pair_pool
+
+    if cause == "no python":
+        def missing():
+            raise RuntimeError("no Python interpreter found for worker processes")
+        monkeypatch.setattr(pair_pool, "python_executable", missing)
+    else:  # every worker fails as it starts, before its first pair (workers take this process's sys.path)
+        import cv2  # noqa: F401 - here it is imported already: only the workers meet the one below
+
+        (tmp_path / "cv2.py").write_text("raise ImportError('no OpenCV for this Python')\n")
+        monkeypatch.syspath_prepend(str(tmp_path))
+    result, _progress, warnings = _run(stereo_drive, catalogue, workers=2)
+    (warning,) = warnings
+    assert warning.startswith("The 2 worker processes could not start (")
+    assert warning.endswith("); mapping the pairs in this process instead, on one core")
+    assert not result.skipped and [(o.pair_id, o.template_id) for o in result.detections] == \
+        [(o.pair_id, o.template_id) for o in one_worker.detections]
+
+
+def test_starting_workers_leaves_the_callers_main_module_as_it_was(monkeypatch):
+    import sys
+    import types
+
+    from signmapper_core.pair_pool import _main_kept_from_workers
+
+    main = types.ModuleType("__main__")
+    main.__file__, main.__spec__ = "/somewhere/script.py", None
+    monkeypatch.setitem(sys.modules, "__main__", main)
+    with _main_kept_from_workers():
+        from multiprocessing import spawn
+
+        data = spawn.get_preparation_data("worker")
+        assert "init_main_from_path" not in data and "init_main_from_name" not in data
+    assert main.__file__ == "/somewhere/script.py" and main.__spec__ is None

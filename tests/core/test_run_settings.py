@@ -211,3 +211,45 @@ def test_a_record_of_another_settings_version_or_an_older_program_is_refused():
 
 def test_a_record_without_fusion_settings_gets_the_default_fusion():
     assert run_settings(_record(fusion=None), "out.gpkg").fusion == FusionConfig()
+
+
+# issue 46, case 8: a recorded setting of the wrong type is refused before the first pair, naming the setting
+
+@pytest.mark.parametrize("section, name, value, message", [
+    ("colour", "hsv_ranges", {"red": "x"},
+     "section colour: setting hsv_ranges['red'] must be a list of lists of 6 whole numbers, found \"x\""),
+    ("colour", "hsv_ranges", {"red": [[1, 2, 3]]},
+     "section colour: setting hsv_ranges['red'][0] must be a list of 6 whole numbers, found [1, 2, 3]"),
+    ("depth", "near_m", "5", "section depth: setting near_m must be a number, found \"5\""),
+    ("classification", "exclude", "2.01", "section classification: setting exclude must be a list of texts, "
+                                          "found \"2.01\""),
+])
+def test_a_setting_of_the_wrong_type_is_refused_naming_it(section, name, value, message):
+    pipeline = settings_dict(PipelineConfig())
+    pipeline[section][name] = value
+    with pytest.raises(RunRecordError) as info:
+        run_settings(_record(pipeline=pipeline), "out.gpkg")
+    assert str(info.value) == f"out.gpkg, pipeline settings, {message}"
+
+
+def test_a_wrong_type_in_the_fusion_settings_is_refused_too():
+    with pytest.raises(RunRecordError, match=r"^out.gpkg, fusion settings: setting gate_m must be a number, "
+                                             r"found \[1\]$"):
+        run_settings(_record(fusion={"gate_m": [1]}), "out.gpkg")
+
+
+# issue 46, case 13: run-table rows that contradict the pipeline settings are said; the pipeline settings win
+
+def test_rows_that_contradict_the_pipeline_settings_are_said_and_the_pipeline_settings_win():
+    warnings = []
+    settings = run_settings(_record(near_m=7.0, far_m=CHANGED.depth.far_m, exclude=["1.01"]), "out.gpkg",
+                            warnings.append)
+    assert settings.config == CHANGED
+    assert warnings == [
+        "out.gpkg: its run table says near_m 7.0, its pipeline settings depth.near_m 5.5; the pipeline settings are "
+        "used (they are what that run was mapped with)",
+        "out.gpkg: its run table says exclude [\"1.01\"], its pipeline settings classification.exclude [\"4.17\"]; "
+        "the pipeline settings are used (they are what that run was mapped with)"]
+    agreeing = []
+    run_settings(_record(), "out.gpkg", agreeing.append)
+    assert agreeing == []

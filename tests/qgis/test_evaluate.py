@@ -117,14 +117,16 @@ def test_truth_csv_as_reference_and_trajectory_from_the_recorded_drive(run, tmp_
     assert truth.isValid() and truth.featureCount() == 1
     gpkg = tmp_path / "signs.gpkg"
     mapped = point_layer([("s", "2.30-50", 2600005.0, 1200003.0, 401.6)], "signs")
-    from sign_mapper.gpkg.output import AtomicGeoPackage
+    from sign_mapper.gpkg.output import GeoPackageLayers
+    from sign_mapper.signmapper_core.geopackage_file import PartialGeoPackage
 
-    out = AtomicGeoPackage(str(gpkg))
-    writer = out.open_layer("signs", mapped.fields(), mapped.wkbType(), mapped.crs())
+    out = PartialGeoPackage(gpkg)
+    layers = GeoPackageLayers(out)
+    writer = layers.open_layer("signs", mapped.fields(), mapped.wkbType(), mapped.crs())
     for f in mapped.getFeatures():
         writer.addFeature(f)
-    del writer
-    out.write_run_table({"drive": str(drive)})
+    writer.close()
+    layers.write_run_table({"drive": str(drive)})
     out.commit()
     result = run("signmapper:evaluate", {
         "SIGNS": f"{gpkg}|layername=signs", "REFERENCE": truth, "REFERENCE_ID_FIELD": "template_id",

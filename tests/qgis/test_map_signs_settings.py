@@ -135,6 +135,10 @@ def test_an_output_of_settings_version_1_maps_again_with_its_settings(run_mapsig
      "recorded only some of its settings"),
     ("UPDATE signmapper_run SET value = ? WHERE key = 'pipeline'", ('{"depth": {"near_m": 9, "far_m": 3}}',),
      "pipeline settings, section depth: need 0 < near_m < far_m"),
+    # issue 46, case 8: a wrong type is said before the first pair, not as per-pair IndexErrors blamed on images
+    ("UPDATE signmapper_run SET value = ? WHERE key = 'pipeline'", ('{"colour": {"hsv_ranges": {"red": "x"}}}',),
+     "pipeline settings, section colour: setting hsv_ranges['red'] must be a list of lists of 6 whole numbers, "
+     "found \"x\""),
 ])
 def test_records_that_cannot_give_the_settings_are_refused_naming_the_file(
         run_mapsigns, earlier, small_drive, tmp_path, sql, args, message):
@@ -143,6 +147,19 @@ def test_records_that_cannot_give_the_settings_are_refused_naming_the_file(
         run_mapsigns({"DRIVE": str(small_drive), "OUTPUT": str(tmp_path / "x.gpkg"), "SETTINGS_FROM": str(edited)})
     assert f"Settings from an earlier output: {edited}" in str(raised.value) and message in str(raised.value)
     assert not (tmp_path / "x.gpkg").exists()
+
+
+def test_a_run_table_row_contradicting_the_pipeline_settings_is_warned_about_and_the_pipeline_wins(
+        run_mapsigns, earlier, small_drive, tmp_path):
+    """Issue 46, case 13: the rows near_m, far_m, … repeat the pipeline settings for readers; edited apart, the
+    run says which it uses."""
+    edited = _edited(earlier, tmp_path, "UPDATE signmapper_run SET value = '9.5' WHERE key = 'near_m'")
+    feedback = Recorder()
+    out = tmp_path / "again.gpkg"
+    run_mapsigns({"DRIVE": str(small_drive), "OUTPUT": str(out), "SETTINGS_FROM": str(edited)}, feedback)
+    assert f"{edited}: its run table says near_m 9.5, its pipeline settings depth.near_m 5.0; the pipeline " \
+           "settings are used (they are what that run was mapped with)" in feedback.warnings, feedback.warnings
+    assert read_run_record(out)["pipeline"] == settings_dict(EXPECTED) and read_run_record(out)["near_m"] == 5.0
 
 
 def test_a_file_that_is_no_geopackage_is_refused(run_mapsigns, small_drive, tmp_path):

@@ -74,12 +74,13 @@ def _write_layer(gpkg, name, rows, crs):
                 feature[key] = value.item() if isinstance(value, np.generic) else value
         feature.setGeometry(QgsGeometry(QgsPoint(*(float(c) for c in position))))
         writer.addFeature(feature, QgsFeatureSink.FastInsert)
-    del writer
+    writer.close()
 
 
 def build_gpkg(path: Path, drive_dir: Path, detections, recorded_drive=None, skip=()) -> Path:
     """A GeoPackage like mapsigns writes: detections, signs fused by template, and the run table."""
-    from sign_mapper.gpkg.output import AtomicGeoPackage
+    from sign_mapper.gpkg.output import GeoPackageLayers
+    from sign_mapper.signmapper_core.geopackage_file import PartialGeoPackage
 
     crs = QgsCoordinateReferenceSystem("EPSG:2056")
     sign_ids = {t: i + 1 for i, t in enumerate(sorted({d.template_id for _, d in detections}))}
@@ -97,12 +98,13 @@ def build_gpkg(path: Path, drive_dir: Path, detections, recorded_drive=None, ski
         values = _attrs(best, record, "review")
         values.update(sign_id=sign_id, n_obs=len(obs), vote_share=1.0, sigma_m=0.02, best_pair_id=record.id)
         signs.append((values, np.mean([d.position for _, d in obs], axis=0)))
-    gpkg = AtomicGeoPackage(str(path))
+    output = PartialGeoPackage(path)
+    gpkg = GeoPackageLayers(output)
     _write_layer(gpkg, "detections", rows, crs)
     _write_layer(gpkg, "signs", signs, crs)
     gpkg.write_run_table({"drive": str(recorded_drive or drive_dir), "crs": "EPSG:2056", "near_m": 4.0,
                           "far_m": 14.0, "colours": ["red", "blue", "yellow"]})
-    return Path(gpkg.commit())
+    return Path(output.commit())
 
 
 def wait_idle(controller, timeout_s=30.0):

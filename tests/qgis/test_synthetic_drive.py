@@ -54,13 +54,13 @@ def test_killed_run_leaves_no_partial_folder_behind(run, tmp_path):
     repo = Path(__file__).resolve().parents[2]
     process = subprocess.Popen([sys.executable, "-m", "signmapper_core.simulate", str(out), "--pairs", "200",
                                 "--width", "480", "--height", "270", "--fx", "437.5", "--quiet"], cwd=repo)
-    partial = tmp_path / f".drive.partial-{process.pid}"
+    partial = tmp_path / ".drive.signmapper-partial"
     deadline = time.monotonic() + 120
     while not (partial / "left").is_dir() and time.monotonic() < deadline and process.poll() is None:
         time.sleep(0.1)
     os.kill(process.pid, signal.SIGKILL)  # as the operating system kills a run (out of memory, logout)
     process.wait()
-    assert partial.is_dir() and not out.exists()
+    assert partial.is_dir() and (tmp_path / ".drive.signmapper-lock").is_file() and not out.exists()
     result = run("signmapper:syntheticdrive", {**SMALL, "OUTPUT": str(out)})
     assert open_drive(result["OUTPUT"]).pairs
     assert [p.name for p in tmp_path.iterdir()] == ["drive"]
