@@ -121,7 +121,7 @@ desktop-check: setup
 	env -u PYTHONPATH QT_QPA_PLATFORM=xcb QGIS_PLUGINPATH=$(CURDIR)/$(SCREEN_DIR)/plugins \
 	SIGNMAPPER_CHECK_DRIVE=$(CURDIR)/$(DEMO_DRIVE) SIGNMAPPER_CHECK_OUT=$(SHOTS_OUT) \
 	SIGNMAPPER_CHECK_GPKG=$(CURDIR)/$(SCREEN_DIR)/signs.gpkg SIGNMAPPER_CHECK_REPORT=$(CURDIR)/$(SCREEN_DIR)/report.json \
-		timeout 900 xvfb-run -a -s "-screen 0 1600x1000x24" qgis --profiles-path $(CURDIR)/$(SCREEN_DIR)/profiles \
+		timeout 1800 xvfb-run -a -s "-screen 0 1600x1000x24" qgis --profiles-path $(CURDIR)/$(SCREEN_DIR)/profiles \
 		--nologo --noversioncheck --code $(CURDIR)/scripts/desktop_check.py
 	@$(PY) -c "import json, sys; r = json.load(open('$(SCREEN_DIR)/report.json')); \
 		print(json.dumps(r, indent=1)); sys.exit(0 if r['ok'] else 1)"

@@ -26,6 +26,7 @@ class DockUi:
     tooltip = ""
     icon: Path
     area = Qt.RightDockWidgetArea
+    height = 0  # px the dock claims beside the other docks of its area (0: what Qt gives it)
     what = "The dock"  # for "... cannot start"
 
     def __init__(self, iface):
@@ -45,11 +46,14 @@ class DockUi:
         raise NotImplementedError
 
     def set_visible(self, visible: bool) -> None:
-        if visible and self.dock is None and not self._create_dock():
+        new = visible and self.dock is None
+        if new and not self._create_dock():
             self._set_checked(False)
             return
         if self.dock is not None:
             self.dock.setVisible(visible)
+        if new and self.height:
+            claim_height(self.iface.mainWindow(), self.dock, self.height)
 
     def _create_dock(self) -> bool:
         try:
@@ -87,3 +91,19 @@ class DockUi:
             self.dock.deleteLater()
             self.dock = None
         self.action.deleteLater()
+
+
+def claim_height(window, dock, height: int) -> None:
+    """Give ``dock`` ``height`` px (or what the window has) when it shares its area with other docks, and them
+    the rest: Qt splits an area evenly, which left the review 284 px beside QGIS's Layers panel."""
+    from qgis.PyQt.QtWidgets import QApplication, QDockWidget
+
+    QApplication.processEvents()  # the dock is laid out in its area before it is resized
+    area = window.dockWidgetArea(dock)
+    if area == Qt.NoDockWidgetArea:  # not in the window's layout (floating, or a test's stand-in window)
+        return
+    others = [d for d in window.findChildren(QDockWidget) if d is not dock and d.isVisible() and not d.isFloating()
+              and window.dockWidgetArea(d) == area and not window.tabifiedDockWidgets(d)]
+    total = dock.height() + sum(d.height() for d in others)
+    rest = max(total - height, 0) // max(len(others), 1)
+    window.resizeDocks([dock] + others, [height] + [rest] * len(others), Qt.Vertical)

@@ -46,6 +46,14 @@ class SignMapperPlugin:
             self.review_ui = ReviewUi(self.iface)
             self.viewer_ui = ViewerUi(self.iface, self.review_ui)
 
+    def open_viewer_at(self, layer_id: str, fid: int) -> None:
+        """The layer action "Open in the drive viewer" (gpkg/feature_actions): the viewer at the feature's pair."""
+        from qgis.core import QgsProject
+
+        layer = QgsProject.instance().mapLayer(layer_id)
+        if layer is not None and self.viewer_ui is not None:
+            self.viewer_ui.open_at_feature(layer, int(fid))
+
     def unload(self):
         if self.viewer_ui is not None:
             self.viewer_ui.unload()

@@ -11,6 +11,8 @@ ALGORITHMS = (
     ("map_signs", "MapSignsAlgorithm"),
     ("evaluate", "EvaluateAlgorithm"),
     ("changes", "ChangesAlgorithm"),
+    ("export_inventory", "ExportInventoryAlgorithm"),
+    ("inventory_atlas", "InventoryAtlasAlgorithm"),
     ("export_signalo", "ExportToSignaloAlgorithm"),
     ("import_drive", "ImportDriveAlgorithm"),
     ("drive_trajectory", "DriveTrajectoryAlgorithm"),

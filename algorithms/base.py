@@ -8,6 +8,7 @@ file errors into messages.
 
 from __future__ import annotations
 
+import html
 from pathlib import Path
 
 from qgis.core import (
@@ -69,14 +70,18 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
 
     def shortHelpString(self):  # noqa: N802
         """The algorithm's help followed by every parameter's own help text and how outputs are written."""
-        lines = [self.tr(self.HELP), "", "<b>Parameters</b>", "<ul>"]
+        lines = [self.help_html(self.HELP), "", "<b>Parameters</b>", "<ul>"]
         for param in self.parameterDefinitions():
             help_text = param.help() if hasattr(param, "help") else ""
-            lines.append(f"<li><b>{param.description()}</b>: {help_text}</li>")
+            lines.append(f"<li><b>{html.escape(param.description())}</b>: {html.escape(help_text, quote=False)}</li>")
         lines.append("</ul>")
         if self.destinationParameterDefinitions():
             lines.append(self.tr(OUTPUTS_HELP))
         return "\n".join(lines)
+
+    def help_html(self, text: str) -> str:
+        """Plain help text as the HTML the help panel shows: 'depth/<id>.npy' must not lose '<id>' as a tag."""
+        return html.escape(self.tr(text), quote=False)
 
     def add_parameter(self, param, help_text: str, advanced: bool = False):
         """Add a parameter with its help text (shown in the dialog and in shortHelpString).
@@ -88,6 +93,23 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
             param.setFlags(param.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
         self.addParameter(param)
         return param
+
+    def add_language_parameter(self, name: str, first: str, help_text: str, advanced: bool = False):
+        """The output language, offered by name after ``first`` (what an algorithm does when none is chosen)."""
+        from qgis.core import QgsProcessingParameterEnum
+
+        from ..signmapper_core.output_schema import LANGUAGE_NAMES, LANGUAGES
+
+        options = [first] + [LANGUAGE_NAMES[code] for code in LANGUAGES]
+        return self.add_parameter(QgsProcessingParameterEnum(name, self.tr("Language of the output"),
+                                                             options=options, defaultValue=0), help_text, advanced)
+
+    def chosen_language(self, parameters, name: str, context):
+        """The language code chosen, None for the first option (the algorithm's own default)."""
+        from ..signmapper_core.output_schema import LANGUAGES
+
+        choice = self.parameterAsEnum(parameters, name, context)
+        return LANGUAGES[choice - 1] if choice > 0 else None
 
     def add_drive_parameter(self, name: str):
         """The drive folder input every drive-reading algorithm starts with."""

@@ -26,7 +26,6 @@ from qgis.core import (
     QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterNumber,
-    QgsProcessingParameterString,
     QgsProcessingParameterVectorLayer,
     QgsWkbTypes,
 )
@@ -37,7 +36,7 @@ from ..signmapper_core.output_schema import RUN_TABLE
 from .base import SignMapperAlgorithm
 from .drive_input import qgis_crs
 from .signalo_connection import HELP as SIGNALO_HELP
-from .signalo_connection import open_signalo
+from .signalo_connection import open_signalo, signalo_parameter
 from .signs_input import read_signs, signs_layer_and_run
 
 
@@ -95,7 +94,7 @@ class ChangesAlgorithm(SignMapperAlgorithm):
         from ..signmapper_core import changes_schema
 
         lines = [super().shortHelpString(), "<b>Fields of 'changes'</b>", "<ul>"]
-        lines += [f"<li><b>{f.name}</b>: {self.tr(f.help)}</li>" for f in changes_schema.FIELDS]
+        lines += [f"<li><b>{f.name}</b>: {self.help_html(f.help)}</li>" for f in changes_schema.FIELDS]
         return "\n".join(lines + ["</ul>"])
 
     def initAlgorithm(self, config=None):  # noqa: N802
@@ -125,7 +124,7 @@ class ChangesAlgorithm(SignMapperAlgorithm):
             "Optional height of the face centre for a 2D layer; without heights distances are planimetric and a "
             "sign is placed at camera height to decide whether the drive could see it.",
         )
-        self.add_parameter(QgsProcessingParameterString(self.SIGNALO, self.tr("Signalo database"), optional=True),
+        self.add_parameter(signalo_parameter(self.SIGNALO, self.tr("Signalo database"), optional=True),
                            "Instead of a layer: " + SIGNALO_HELP)
         self.add_parameter(
             QgsProcessingParameterFile(self.DRIVE, self.tr("Drive folder"), behavior=QgsProcessingParameterFile.Folder,

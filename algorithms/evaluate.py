@@ -185,13 +185,15 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             raise QgsProcessingException("Cancelled; nothing written.")
 
         html_path = self.parameterAsFileOutput(parameters, self.REPORT, context)
-        notes = [f"Matching radius {radius} m (3D). Signs with status 'rejected' left out.",
-                 f"Mapped signs: {signs.sourceName()}; reference: {reference.sourceName()}."]
-        run = self.report_run(parameters, context, signs, reference, radius, facing_field)
-        sign_list = sign_rows(report, mapped["ids"], [f"fid {f}" for f in mapped["fids"]])
+        notes = [f"Matching radius {radius} m (3D). Signs with status 'rejected' left out."]
+        recorded = self.recorded_run(parameters, context)
+        about = self.report_about(recorded, signs, reference, radius, facing_field)
+        sign_list = sign_rows(report, mapped["ids"], mapped["labels"], mapped["statuses"])
         missed = missed_rows(report, refs["xyz"], [f"fid {f}" for f in refs["fids"]])
-        Path(html_path).write_text(report_html(report, "Sign Mapper: evaluation against reference", notes, run,
-                                               sign_list, missed), encoding="utf-8")
+        drive = Path(recorded["drive"]).name if recorded.get("drive") else ""
+        title = f"Sign Mapper: evaluation of drive {drive}" if drive else "Sign Mapper: evaluation against reference"
+        Path(html_path).write_text(report_html(report, title, notes, self.report_settings(recorded), sign_list,
+                                               missed, about), encoding="utf-8")
         stats_id = self.write_statistics(parameters, context, report, COMPONENTS)
         matches_id = self.write_matches(parameters, context, signs, report, mapped, refs)
         if feedback.isCanceled():
@@ -266,11 +268,12 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         names = source.fields().names()
         if id_field not in names:
             raise QgsProcessingException(f"{source.sourceName()}: no field '{id_field}'")
-        has_status = skip_rejected and "status" in names
-        out = {"xyz": [], "ids": [], "fids": [], "facing": []}
+        has_status = "status" in names
+        has_number = "sign_id" in names
+        out = {"xyz": [], "ids": [], "fids": [], "facing": [], "labels": [], "statuses": []}
         no_geometry = []
         for feature in source.getFeatures(QgsFeatureRequest()):
-            if has_status and feature["status"] == REJECTED:
+            if skip_rejected and has_status and feature["status"] == REJECTED:
                 continue
             geom = QgsGeometry(feature.geometry())
             if geom.isNull():
@@ -289,6 +292,9 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             out["xyz"].append((point.x(), point.y(), float(z)))
             out["ids"].append(str(feature[id_field]))
             out["fids"].append(feature.id())
+            number = feature["sign_id"] if has_number else None
+            out["labels"].append(f"sign {number}" if number not in (None, NULL) else f"fid {feature.id()}")
+            out["statuses"].append(str(feature["status"]) if has_status and feature["status"] != NULL else "")
             out["facing"].append(facing_value(source, feature, facing_field) if facing_field else None)
         if no_geometry and feedback is not None:
             feedback.pushWarning(no_geometry_note(source.sourceName(), no_geometry))
@@ -305,17 +311,25 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         feedback.pushWarning(repeats_note(source.sourceName(), repeats, [f"fid {f}" for f in points["fids"]]))
         return {key: [v for i, v in enumerate(values) if i not in repeats] for key, values in points.items()}
 
-    def report_run(self, parameters, context, signs, reference, radius, facing_field) -> dict:
-        """What the report says about the run: drive, date, the evaluation's and the mapping's parameters."""
+    @staticmethod
+    def report_about(recorded: dict, signs, reference, radius, facing_field) -> dict:
+        """What the report compared, at its head: the drive by its own folder (a model's temporary output path
+        says nothing), the layers, the radius, the date."""
         from datetime import datetime
 
-        run = {"date of this evaluation": datetime.now().astimezone().isoformat(timespec="seconds"),
-               "mapped signs": signs.sourceName(), "reference": reference.sourceName(),
-               "matching radius [m]": radius, "facing field": facing_field or "(none)"}
-        recorded = self.recorded_run(parameters, context)
-        for key, value in recorded.items():
-            run[f"mapping: {key}"] = ", ".join(map(str, value)) if isinstance(value, list) else value
-        return run
+        about = {}
+        if recorded.get("drive"):
+            about["drive"] = f"{Path(recorded['drive']).name} ({recorded['drive']})"
+        about.update({"mapped signs": signs.sourceName(), "reference": reference.sourceName(),
+                      "matching radius [m]": radius, "facing field": facing_field or "(none)",
+                      "date of this evaluation": datetime.now().astimezone().isoformat(timespec="seconds")})
+        return about
+
+    @staticmethod
+    def report_settings(recorded: dict) -> dict:
+        """The mapping's recorded settings for the report's folded last section."""
+        return {f"mapping: {key}": ", ".join(map(str, value)) if isinstance(value, list) else value
+                for key, value in recorded.items()}
 
     def trajectory_xy(self, parameters, context, signs, to_signs):
         import numpy as np

@@ -10,14 +10,13 @@ from qgis.core import (
     QgsProcessingOutputString,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterNumber,
-    QgsProcessingParameterString,
     QgsProcessingParameterVectorLayer,
 )
 
 from ..signmapper_core.output_schema import ACCEPTED, MANUAL, REVIEW
 from .base import SignMapperAlgorithm
 from .signalo_connection import HELP as SIGNALO_HELP
-from .signalo_connection import open_signalo
+from .signalo_connection import open_signalo, signalo_parameter
 from .signs_input import read_signs, signs_layer_and_run
 
 
@@ -52,7 +51,7 @@ class ExportToSignaloAlgorithm(SignMapperAlgorithm):
             QgsProcessingParameterVectorLayer(self.SIGNS, self.tr("Mapped signs"), [QgsProcessing.TypeVectorPoint]),
             "The 'signs' layer written by Map traffic signs (its run id makes the export repeatable).",
         )
-        self.add_parameter(QgsProcessingParameterString(self.SIGNALO, self.tr("Signalo database")), SIGNALO_HELP)
+        self.add_parameter(signalo_parameter(self.SIGNALO, self.tr("Signalo database")), SIGNALO_HELP)
         self.add_parameter(
             QgsProcessingParameterBoolean(self.INCLUDE_REVIEW, self.tr("Also signs awaiting review"), False),
             "Also write signs whose status is still 'review', with Signalo's 'needs validation' set.",

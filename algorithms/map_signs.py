@@ -26,7 +26,7 @@ from ..gpkg.styles import OutputStyler, embed_default_styles
 from ..signmapper_core import output_schema as schema
 from ..signmapper_core.errors import ClusterError, MappingError
 from ..signmapper_core.geopackage_file import OUR_TABLES
-from ..signmapper_core.output_schema import DETECTIONS, LANGUAGES, SIGNS, OutputContext
+from ..signmapper_core.output_schema import DETECTIONS, SIGNS, OutputContext
 from ..signmapper_core.pipeline.config import default, with_settings
 from ..signmapper_core.progress import Cancelled, check_cancelled
 from ..signmapper_core.sign_colours import SIGN_COLOURS
@@ -38,7 +38,6 @@ NEAR_M, FAR_M = ("depth", "near_m"), ("depth", "far_m")  # the settings the dept
 CLASSIFIERS = [("auto", "Automatic: the learned network where the catalogue has one, else template matching"),
                ("cnn", "Learned network (CNN trained on the official drawings)"),
                ("ncc", "Template matching (normalised cross-correlation, Cavegn 2011)")]
-LANGUAGE_CHOICES = ["QGIS language"] + list(LANGUAGES)
 
 
 class MapSignsAlgorithm(SignMapperAlgorithm):
@@ -51,8 +50,9 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         "Detects, classifies and positions the traffic signs of a stereo drive (Cavegn 2011). Per stereo pair: "
         "depth from the given depth map or by semi-global matching, search space cut to the depth range, HSV "
         "colour segmentation, shape, metric size rounded to the catalogue's standard formats, planarity "
-        "(detection indicator), template matching (classification indicator) and the 3D position of the sign "
-        "centre from the pair's pose. Writes a GeoPackage with the layer 'detections' (one PointZ per sign per "
+        "(detection indicator), classification by the learned network or by template matching (classification "
+        "indicator: the network's calibrated probability, or the correlation score) and the 3D position of the "
+        "sign centre from the pair's pose. Writes a GeoPackage with the layer 'detections' (one PointZ per sign per "
         "pair, in the drive's CRS), the layer 'signs' (the detections of each physical sign fused into one point with "
         "class by weighted vote, number of observations, position spread and face azimuth) and the table "
         "'signmapper_run' recording the drive folder and parameters. "
@@ -88,7 +88,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         lines = [super().shortHelpString(), "<b>Output fields</b>", "<ul>"]
         for field in schema.FIELDS:
             layers = " and ".join(layer for layer in schema.LAYERS if field.reader(layer) is not None)
-            lines.append(f"<li><b>{field.name}</b> ({layers}): {self.tr(field.help)}</li>")
+            lines.append(f"<li><b>{field.name}</b> ({layers}): {self.help_html(field.help)}</li>")
         lines.append("</ul>")
         return "\n".join(lines)
 
@@ -172,17 +172,18 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             "Folder with catalogue.json and template images; empty = the bundled Swiss (SSV) catalogue.",
             advanced=True,
         )
-        self.add_parameter(
-            QgsProcessingParameterEnum(self.LANGUAGE, self.tr("Language of sign names and field titles"),
-                                       options=LANGUAGE_CHOICES, defaultValue=0),
-            "Sign names and field titles in German, French, Italian or English; by default the language QGIS "
-            "runs in.",
+        self.add_language_parameter(
+            self.LANGUAGE, "The language QGIS runs in",
+            "Sign names, field titles and the words shown for coded values (status, format, colour, shape) in "
+            "English, German, French or Italian; by default the language QGIS runs in. The file keeps the codes "
+            "themselves, so expressions and other tools read the same values whatever the language.",
             advanced=True,
         )
         self.add_parameter(
-            QgsProcessingParameterBoolean(self.CROPS, self.tr("Write an image crop per sign"), defaultValue=False),
+            QgsProcessingParameterBoolean(self.CROPS, self.tr("Write an image crop per sign"), defaultValue=True),
             "A JPEG of each sign from its best pair, in a folder '<output name>_crops' beside the GeoPackage, its "
-            "path in the field crop_path: signs can then be checked without the drive.",
+            "path in the field crop_path: signs can be checked without the drive, the identify panel's form and "
+            "map tip show the photo, the inventory atlas prints it. Off: no crops (a little faster).",
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.MAX_SKIPPED, self.tr("Largest share of unreadable pairs [%]"),
@@ -405,8 +406,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         return results
 
     def language(self, parameters, context) -> str:
-        choice = self.parameterAsEnum(parameters, self.LANGUAGE, context)
-        return LANGUAGE_CHOICES[choice] if choice > 0 else qgis_language()
+        return self.chosen_language(parameters, self.LANGUAGE, context) or qgis_language()
 
     @staticmethod
     def output_context(drive, catalogue, language, result, crops, feedback) -> OutputContext:

@@ -26,6 +26,7 @@ from qgis.core import (
     QgsProcessingParameterFolderDestination,
     QgsProcessingParameterVectorDestination,
     QgsProcessingParameterVectorLayer,
+    QgsProperty,
     QgsProviderRegistry,
 )
 
@@ -57,6 +58,18 @@ def file_and_layer(text) -> tuple[Path, Optional[str]] | None:
     return Path(text.split("|")[0]), None
 
 
+def layer_destination(value, context) -> str:
+    """The file or URI a layer output is given as, read without ``parameterAsOutputLayer``: that one also asks
+    Processing to load the output when the run completes, under a name no layer will have for a temporary one
+    ('memory:Matches'), which ended dialog and model runs with "layers were not correctly generated"."""
+    if isinstance(value, QgsProcessingOutputLayerDefinition):
+        value = value.sink
+    if isinstance(value, QgsProperty):
+        value, _ok = value.valueAsString(context.expressionContext())
+    text = str(value or "")
+    return "" if text == QgsProcessing.TEMPORARY_OUTPUT else text
+
+
 def default_layer_name(path: Path) -> str:
     """The layer name QGIS gives a new file: its name up to the first dot."""
     return path.name.split(".", 1)[0]
@@ -82,13 +95,6 @@ class Destination:
         return self.layer or default_layer_name(self.path)
 
 
-def _raw_destination(parameters, name, context) -> str:
-    value = parameters.get(name)
-    if isinstance(value, QgsProcessingOutputLayerDefinition):
-        value = value.sink.valueAsString(context.expressionContext())[0]
-    return "" if value is None else str(value)
-
-
 def destinations(alg, parameters, context) -> list[Destination]:
     """Every output given as a plain file or folder (not temporary, memory or database outputs).
 
@@ -97,8 +103,8 @@ def destinations(alg, parameters, context) -> list[Destination]:
     out = []
     for param in alg.destinationParameterDefinitions():
         name = param.name()
-        raw = _raw_destination(parameters, name, context)
-        if not raw or raw == QgsProcessing.TEMPORARY_OUTPUT:
+        raw = layer_destination(parameters.get(name), context)
+        if not raw:
             continue  # an optional output not asked for, or a new temporary file
         if isinstance(param, QgsProcessingParameterFolderDestination):
             parsed, kind = file_and_layer(QgsProcessingAlgorithm.parameterAsString(alg, parameters, name, context)), \
@@ -107,8 +113,7 @@ def destinations(alg, parameters, context) -> list[Destination]:
             parsed, kind = file_and_layer(QgsProcessingAlgorithm.parameterAsFileOutput(alg, parameters, name,
                                                                                        context)), FILE
         elif isinstance(param, (QgsProcessingParameterFeatureSink, QgsProcessingParameterVectorDestination)):
-            parsed, kind = file_and_layer(QgsProcessingAlgorithm.parameterAsOutputLayer(alg, parameters, name,
-                                                                                        context)), SINK
+            parsed, kind = file_and_layer(raw), SINK  # not parameterAsOutputLayer: see layer_destination
         else:
             continue
         if parsed is not None:

@@ -2,10 +2,21 @@
 
 from __future__ import annotations
 
-from qgis.core import QgsDataSourceUri, QgsProcessingException, QgsProviderRegistry
+from qgis.core import (
+    QgsDataSourceUri,
+    QgsProcessingException,
+    QgsProcessingParameterProviderConnection,
+    QgsProviderRegistry,
+)
 
-HELP = ("Signalo database: the name of a PostgreSQL connection saved in QGIS (Browser ▸ PostgreSQL), a service "
-        "of pg_service.conf written service=NAME, or libpq parameters such as 'host=… dbname=signalo user=…'.")
+HELP = ("Signalo database: one of the PostgreSQL connections saved in QGIS (Browser ▸ PostgreSQL ▸ New "
+        "Connection; a connection may name a pg_service.conf service). From qgis_process, a script or a model it "
+        "may also be a service written service=NAME, or libpq parameters such as 'host=… dbname=signalo user=…'.")
+
+
+def signalo_parameter(name: str, description: str, optional: bool = False):
+    """The chooser of QGIS's saved PostgreSQL connections (its value stays text: see ``conninfo``)."""
+    return QgsProcessingParameterProviderConnection(name, description, "postgres", optional=optional)
 
 
 def conninfo(text: str) -> tuple[str, str]:

@@ -2,14 +2,15 @@
 
 Signs show their catalogue pictogram (SVG embedded as base64, so the style
 does not depend on where the plugin is installed), a small arrow turned to the
-face azimuth and the template id as label; the legend groups the pictograms by
-sign family. The review state is part of every symbol and follows decisions
-live (data-defined on ``status``): a sign to review has an orange halo and a
+face azimuth and the template id as label; signs on one pole are stacked by
+height. The review state is drawn by status rules that follow decisions live:
+an accepted sign has a thin green ring, a sign to review an orange halo and a
 "?" label, a rejected sign is faded and crossed out, a manual one carries a
-blue mark. SVG pictograms are optional in a catalogue: an entry without one (or
-whose file is missing) gets a plain marker of its shape and colour instead.
-Detections show a dot coloured by status. Field aliases are in the output
-language (``output_schema.ALIASES``).
+blue mark; the legend lists these classes by status, then the pictograms by
+sign family. SVG pictograms are optional in a catalogue: an entry without one
+(or whose file is missing) gets a plain marker of its shape and colour instead.
+Detections show a dot coloured by status. Field titles and coded values are in
+the output language (``output_schema`` aliases, ``value_names``).
 
 The styles are embedded in the GeoPackage as its default (opening the file
 shows them) and applied by a Processing layer post-processor to the layers a
@@ -46,13 +47,28 @@ from qgis.PyQt.QtGui import QColor
 from ..signmapper_core import output_schema as schema
 from ..signmapper_core.catalogue.families import by_family, family_name
 from ..signmapper_core.catalogue.names import sign_name
-from ..signmapper_core.output_schema import DETECTIONS, MANUAL, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
+from ..signmapper_core.output_schema import ACCEPTED, DETECTIONS, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
 from ..signmapper_core.partial_output import write_failure
 from ..signmapper_core.plate_formats import PLATE_ID, PLATE_NAMES
 from ..signmapper_core.sign_colours import DISPLAY_COLOURS
+from ..signmapper_core.value_names import LOCALISED_FIELDS, value_map, value_name
+from . import feature_actions
 
 PICTOGRAM_MM = 7.0
 REJECTED_OPACITY = 35  # percent: a rejected sign stays visible, faded under its cross
+# Signs on one pole share a point: their pictograms are stacked on the map, the highest on top, one step apart,
+# each with its own label. A pole is the signs within POLE_RADIUS_M (planimetric, the layer's units), found live
+# (a sign added or moved in the review takes its place at the next repaint).
+POLE_RADIUS_M = 0.3
+STACK_STEP_MM = PICTOGRAM_MM + 1.5
+STACK_MAX_SCALE = 5000  # farther out a pole is no longer told from its neighbours, and finding poles costs time
+_HEIGHT = 'coalesce(z($geometry), "elevation", 0)'
+_POLE = (f"overlay_nearest(@layer, array({_HEIGHT}, $id), limit:=32, max_distance:={POLE_RADIUS_M}, cache:=true)")
+# mm below the pole's point (negative: above): rank from the top, the stack centred on the point
+STACK_Y_MM = (f"CASE WHEN @map_scale > {STACK_MAX_SCALE} THEN 0 ELSE "
+              f"with_variable('pole', {_POLE}, (array_length(array_filter(@pole, array_get(@element, 0) > {_HEIGHT} "
+              f"OR (array_get(@element, 0) = {_HEIGHT} AND array_get(@element, 1) < $id))) "
+              f"- array_length(@pole) / 2.0) * {STACK_STEP_MM}) END")
 SIGNS_LABEL = (f"\"template_id\" || CASE WHEN \"status\" = '{REVIEW}' THEN ' ?' "
                f"WHEN \"status\" = '{REJECTED}' THEN ' ✗' ELSE '' END")
 # catalogue shape -> the plain marker drawn where a template has no SVG pictogram
@@ -60,14 +76,18 @@ PLAIN_SHAPES = {"circle": "Circle", "triangle": "EquilateralTriangle", "triangle
                 "octagon": "Octagon", "diamond": "Diamond", "square": "Square", "rectangle": "Square"}
 
 
-def _when(status: str) -> QgsProperty:
-    return QgsProperty.fromExpression(f"\"status\" = '{status}'")
+def _stacked(layer, dx_mm: float = 0.0, dy_mm: float = 0.0):
+    """``layer`` offset by (dx, dy) mm and by its sign's place in the stack of its pole."""
+    layer.setOffset(QPointF(dx_mm, dy_mm))
+    layer.setDataDefinedProperty(QgsSymbolLayer.PropertyOffset, QgsProperty.fromExpression(
+        f"concat({dx_mm}, ',', {dy_mm} + {STACK_Y_MM})"))
+    return layer
 
 
 def _svg_layer(svg_bytes: bytes, size_mm: float) -> QgsSvgMarkerSymbolLayer:
     layer = QgsSvgMarkerSymbolLayer("base64:" + base64.b64encode(svg_bytes).decode("ascii"))
     layer.setSize(size_mm)
-    return layer
+    return _stacked(layer)
 
 
 def _azimuth_arrow() -> QgsSimpleMarkerSymbolLayer:
@@ -80,41 +100,65 @@ def _azimuth_arrow() -> QgsSimpleMarkerSymbolLayer:
     arrow = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.ArrowHeadFilled, 2.6)
     arrow.setColor(QColor("#222222"))
     arrow.setStrokeColor(QColor("white"))
-    arrow.setOffset(QPointF(PICTOGRAM_MM / 2 + 1.6, 0.0))
+    side = PICTOGRAM_MM / 2 + 1.6
+    arrow.setOffset(QPointF(side, 0.0))
     arrow.setDataDefinedProperty(QgsSymbolLayer.PropertyAngle, QgsProperty.fromExpression('"azimuth" - 90'))
+    # the stack's offset is straight down the map, so it is turned back by the angle QGIS turns offsets by
+    turn = 'radians("azimuth" - 90)'
+    arrow.setDataDefinedProperty(QgsSymbolLayer.PropertyOffset, QgsProperty.fromExpression(
+        f"with_variable('down', {STACK_Y_MM}, concat({side} + @down * sin({turn}), ',', @down * cos({turn})))"))
     arrow.setDataDefinedProperty(
         QgsSymbolLayer.PropertyLayerEnabled, QgsProperty.fromExpression('"azimuth" is not null')
     )
     return arrow
 
 
-def _review_halo() -> QgsSimpleMarkerSymbolLayer:
-    halo = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Circle, PICTOGRAM_MM + 3.0)
-    colour = QColor(STATUS_COLOURS[REVIEW])
-    colour.setAlpha(150)
-    halo.setColor(colour)
-    halo.setStrokeColor(QColor(STATUS_COLOURS[REVIEW]))
-    halo.setStrokeWidth(0.6)
-    halo.setDataDefinedProperty(QgsSymbolLayer.PropertyLayerEnabled, _when(REVIEW))
-    return halo
+# the passes a sign is drawn in: status marks under (ring, halo) or over (cross, mark) every pictogram
+UNDER, PICTOGRAM, OVER = 0, 1, 2
 
 
-def _rejected_cross() -> QgsSimpleMarkerSymbolLayer:
-    cross = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Cross2, PICTOGRAM_MM + 1.0)
-    cross.setStrokeColor(QColor("#212121"))
-    cross.setColor(QColor("#212121"))
-    cross.setStrokeWidth(0.8)
-    cross.setDataDefinedProperty(QgsSymbolLayer.PropertyLayerEnabled, _when(REJECTED))
-    return cross
-
-
-def _manual_mark() -> QgsSimpleMarkerSymbolLayer:
-    mark = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Square, 2.2)
-    mark.setColor(QColor(STATUS_COLOURS[MANUAL]))
+def _status_mark(status: str) -> QgsSimpleMarkerSymbolLayer:
+    """The mark of a review status around or on a sign's pictogram (what its legend class shows)."""
+    colour = QColor(STATUS_COLOURS[status])
+    if status == ACCEPTED:  # a thin ring in the accepted green
+        mark = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Circle, PICTOGRAM_MM + 1.6)
+        mark.setColor(QColor(0, 0, 0, 0))
+        mark.setStrokeColor(colour)
+        mark.setStrokeWidth(0.5)
+        mark.setRenderingPass(UNDER)
+        return _stacked(mark)
+    if status == REVIEW:  # an orange halo
+        mark = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Circle, PICTOGRAM_MM + 3.0)
+        fill = QColor(colour)
+        fill.setAlpha(150)
+        mark.setColor(fill)
+        mark.setStrokeColor(colour)
+        mark.setStrokeWidth(0.6)
+        mark.setRenderingPass(UNDER)
+        return _stacked(mark)
+    if status == REJECTED:  # crossed out (the pictogram fades: sign_symbol)
+        mark = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Cross2, PICTOGRAM_MM + 1.0)
+        mark.setStrokeColor(QColor("#212121"))
+        mark.setColor(QColor("#212121"))
+        mark.setStrokeWidth(0.8)
+        mark.setRenderingPass(OVER)
+        return _stacked(mark)
+    mark = QgsSimpleMarkerSymbolLayer(QgsSimpleMarkerSymbolLayerBase.Square, 2.2)  # manual: a blue corner mark
+    mark.setColor(colour)
     mark.setStrokeColor(QColor("white"))
-    mark.setOffset(QPointF(-PICTOGRAM_MM / 2, -PICTOGRAM_MM / 2))
-    mark.setDataDefinedProperty(QgsSymbolLayer.PropertyLayerEnabled, _when(MANUAL))
-    return mark
+    mark.setRenderingPass(OVER)
+    return _stacked(mark, -PICTOGRAM_MM / 2, -PICTOGRAM_MM / 2)
+
+
+def status_rules(language: str) -> QgsRuleBasedRenderer.Rule:
+    """The legend's classes by status: one rule per status drawing its mark, grouped under the field's title."""
+    group = QgsRuleBasedRenderer.Rule(None, 0, 0, "", schema.field(SIGNS, "status").alias(language))
+    for status in STATUS_COLOURS:
+        symbol = QgsMarkerSymbol()
+        symbol.changeSymbolLayer(0, _status_mark(status))
+        group.appendChild(QgsRuleBasedRenderer.Rule(symbol, 0, 0, f"\"status\" = '{status}'",
+                                                    value_name("status", status, language)))
+    return group
 
 
 def _plain_layer(entry, size_mm: float) -> QgsSimpleMarkerSymbolLayer:
@@ -125,8 +169,8 @@ def _plain_layer(entry, size_mm: float) -> QgsSimpleMarkerSymbolLayer:
     layer.setColor(QColor(DISPLAY_COLOURS.get(entry.colour, DISPLAY_COLOURS["red"])))
     layer.setStrokeColor(QColor("#222222"))
     if entry.shape == "triangle-down":
-        layer.setAngle(180.0)
-    return layer
+        layer.setAngle(180.0)  # no offset to turn: the stack's stays straight down
+    return _stacked(layer)
 
 
 def pictogram_svg(catalogue, entry) -> bytes | None:
@@ -145,16 +189,19 @@ def templates_without_pictogram(catalogue) -> list[str]:
 
 
 def pictogram_symbol(svg_bytes: bytes) -> QgsMarkerSymbol:
-    """Halo (review), pictogram, face arrow, cross (rejected), mark (manual); faded when rejected."""
+    """A pictogram and its face arrow, faded when rejected."""
     return sign_symbol(_svg_layer(svg_bytes, PICTOGRAM_MM))
 
 
 def sign_symbol(face) -> QgsMarkerSymbol:
-    """The symbol of one sign type around its ``face`` layer (pictogram or plain marker)."""
+    """The symbol of one sign type: its ``face`` (pictogram or plain marker) and the face arrow, faded when
+    rejected; the status marks are the status rules' (``status_rules``)."""
     symbol = QgsMarkerSymbol()
-    symbol.changeSymbolLayer(0, _review_halo())
-    for layer in (face, _azimuth_arrow(), _rejected_cross(), _manual_mark()):
-        symbol.appendSymbolLayer(layer)
+    face.setRenderingPass(PICTOGRAM)
+    symbol.changeSymbolLayer(0, face)
+    arrow = _azimuth_arrow()
+    arrow.setRenderingPass(PICTOGRAM)
+    symbol.appendSymbolLayer(arrow)
     symbol.setDataDefinedProperty(
         QgsSymbol.PropertyOpacity,
         QgsProperty.fromExpression(f"CASE WHEN \"status\" = '{REJECTED}' THEN {REJECTED_OPACITY} ELSE 100 END"),
@@ -167,8 +214,10 @@ def _quoted(text: str) -> str:
 
 
 def signs_renderer(catalogue, language: str = "en") -> QgsRuleBasedRenderer:
-    """Rule-based: one group per sign family, one pictogram rule per catalogue entry; an 'other' rule last."""
+    """Rule-based: the status marks (the legend's classes by status), one group per sign family with one
+    pictogram rule per catalogue entry, the plates; an 'other' rule last."""
     root = QgsRuleBasedRenderer.Rule(None)
+    root.appendChild(status_rules(language))
     for name, entries in by_family(catalogue).items():
         if not entries:
             continue
@@ -192,21 +241,29 @@ def signs_renderer(catalogue, language: str = "en") -> QgsRuleBasedRenderer:
     return QgsRuleBasedRenderer(root)
 
 
-def detections_renderer() -> QgsCategorizedSymbolRenderer:
+def detections_renderer(language: str = "en") -> QgsCategorizedSymbolRenderer:
+    """A dot per detection in its status colour, the legend's classes named in ``language``."""
     renderer = QgsCategorizedSymbolRenderer("status")
     for status, colour in STATUS_COLOURS.items():
         symbol = QgsMarkerSymbol.createSimple({"name": "circle", "color": colour, "size": "1.6",
                                                "outline_color": "white"})
-        renderer.addCategory(QgsRendererCategory(status, symbol, status))
+        renderer.addCategory(QgsRendererCategory(status, symbol, value_name("status", status, language)))
     return renderer
 
 
 def id_labels(expression: str) -> QgsVectorLayerSimpleLabeling:
+    """Each sign's label to the left of its own pictogram (in its pole's stack), every one shown."""
     settings = QgsPalLayerSettings()
     settings.fieldName = expression
     settings.isExpression = True
     settings.placement = QgsPalLayerSettings.OverPoint
-    settings.yOffset = PICTOGRAM_MM / 2 + 2.5
+    settings.quadOffset = QgsPalLayerSettings.QuadrantLeft
+    settings.xOffset = -(PICTOGRAM_MM / 2 + 0.8)
+    settings.displayAll = True  # a pole's labels sit close together: none may be dropped as a collision
+    settings.scaleVisibility = True  # farther out than the stacks, thousands of ids would only cost time
+    settings.minimumScale = STACK_MAX_SCALE
+    settings.dataDefinedProperties().setProperty(QgsPalLayerSettings.OffsetXY, QgsProperty.fromExpression(
+        f"concat({settings.xOffset}, ',', {STACK_Y_MM})"))
     text = QgsTextFormat()
     text.setSize(8)
     buffer = text.buffer()
@@ -218,16 +275,17 @@ def id_labels(expression: str) -> QgsVectorLayerSimpleLabeling:
 
 
 def set_aliases(layer: QgsVectorLayer, kind: str, language: str) -> None:
-    """Field aliases in ``language``; a crop path field opens as an image in the attribute form."""
+    """Field aliases and coded values (status, shape, ...) in ``language``."""
     fields = layer.fields()
     for field in schema.fields(kind):
         index = fields.indexOf(field.name)
         if index >= 0:
             layer.setFieldAlias(index, field.alias(language))
-    index = fields.indexOf("crop_path")
-    if index >= 0:
-        layer.setEditorWidgetSetup(index, QgsEditorWidgetSetup("ExternalResource", {
-            "DocumentViewer": 1, "RelativeStorage": 1, "FileWidget": True, "UseLink": True}))
+    for name in LOCALISED_FIELDS:
+        index = fields.indexOf(name)
+        if index >= 0:  # the file keeps the code; tables, forms, identify and represent_value() show the word
+            words = [{word: code} for word, code in value_map(name, language).items()]
+            layer.setEditorWidgetSetup(index, QgsEditorWidgetSetup("ValueMap", {"map": words}))
 
 
 def apply_style(layer: QgsVectorLayer, kind: str, catalogue, language: str = "en") -> None:
@@ -237,10 +295,11 @@ def apply_style(layer: QgsVectorLayer, kind: str, catalogue, language: str = "en
         layer.setLabeling(id_labels(SIGNS_LABEL))
         layer.setLabelsEnabled(True)
     elif kind == DETECTIONS:
-        layer.setRenderer(detections_renderer())
+        layer.setRenderer(detections_renderer(language))
     else:
         raise ValueError(f"no style for layer kind '{kind}'")
     set_aliases(layer, kind, language)
+    feature_actions.apply(layer, kind)  # the photo in form and map tip; open in the viewer
     layer.triggerRepaint()
 
 

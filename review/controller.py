@@ -11,6 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Optional
 
+from qgis.PyQt.QtCore import pyqtSignal
 from qgis.PyQt.sip import isdeleted
 
 from ..gpkg.output import read_run_table
@@ -28,7 +29,13 @@ from .session import ReviewSession
 
 
 class ReviewController(DockController):
-    """Connects the review dock to the current Sign Mapper layer, its drive and the catalogue."""
+    """Connects the review dock to the current Sign Mapper layer, its drive and the catalogue.
+
+    With Follow on, each feature shown brings the map to it and emits ``featureFollowed(layer, pair id)``: the
+    drive viewer opens that pair (``viewer.plugin_ui``).
+    """
+
+    featureFollowed = pyqtSignal(object, str)  # noqa: N815 - the layer, the best pair of the feature shown
 
     def __init__(self, iface, dock, ask_drive_folder=None, settings=None, parent=None):
         super().__init__(iface, dock, parent)
@@ -51,6 +58,7 @@ class ReviewController(DockController):
             (dock.addSignClicked, d.add_sign), (dock.nextRequested, n.next), (dock.previousRequested, n.previous),
             (dock.nextReviewRequested, n.next_review), (dock.zoomRequested, n.zoom_to_feature),
             (dock.pairRequested, self.images.show_pair), (dock.observationRequested, self.images.show_observation),
+            (dock.followToggled, self._follow_toggled),
         ])
 
     # what tests and the plugin read
@@ -187,3 +195,18 @@ class ReviewController(DockController):
         session.item = item = read_item(session, feature)
         self.dock.show_item(item)
         self.images.show_item(item)
+        if self.dock.following():
+            self.follow()
+
+    def follow(self) -> None:
+        """The map to the feature shown, and its best pair to whoever shows pairs (the drive viewer)."""
+        item = self.session.item
+        if item is None:
+            return
+        self.navigator.follow()
+        if item.pair_id:
+            self.featureFollowed.emit(self.session.layer, item.pair_id)
+
+    def _follow_toggled(self, on: bool) -> None:
+        if on:
+            self.follow()

@@ -176,7 +176,8 @@ class DecisionTaker:
             self.dock.show_message(str(exc), error=True)
             return
         self._taken(decision)
-        self.dock.show_message(f"Added {observation.template_id} {observation.name} at {observation.depth_m:.1f} m "
+        name = self.session.output_context().name(observation.template_id, observation.name)  # the layer's language
+        self.dock.show_message(f"Added {observation.template_id} {name} at {observation.depth_m:.1f} m "
                                f"(pair {observation.pair_id})")
         self.navigator.select(decision.fid)
 

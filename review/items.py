@@ -15,6 +15,7 @@ from ..gpkg.fields import feature_values
 from ..signmapper_core.changes_schema import CHANGES
 from ..signmapper_core.classifier_alternatives import parse_alternatives
 from ..signmapper_core.output_schema import DETECTIONS, REVIEW, SIGNS
+from ..signmapper_core.plate_catalogue import pictogram_png
 from ..ui.review_item import ObservationView, ReviewItem
 from .imaging import crop_rect
 from .layers import detections_layer_for, features_where
@@ -69,26 +70,15 @@ def read_item(session, feature) -> ReviewItem:
         alternatives=parse_alternatives(values["alternatives"]), review_reason=values["review_reason"] or "",
     )
     catalogue = session.catalogue
-    if item.template_id and catalogue is not None and item.template_id in catalogue:
-        item.pictogram_path = str(catalogue.pictogram_path(item.template_id, "png"))
+    if catalogue is not None and (kind == SIGNS or item.template_id in catalogue):
+        item.pictogram_path = pictogram_png(catalogue, item.template_id)
     if kind == SIGNS:
         item.extra = [(label, fmt.format(values[key])) for key, label, fmt in SIGN_FIGURES if values[key] is not None]
         item.observations = observations_of(layer, values["sign_id"]) or own_observation(values)
         item.plate_of, item.text, item.text_confidence = values["plate_of"], values["text"], values["text_confidence"]
-        if item.is_plate and not item.pictogram_path and catalogue is not None:
-            item.pictogram_path = plate_pictogram_path(catalogue, item.template_id)
     if item.bbox is not None and session.drive is not None:
         item.crop = crop_rect(item.bbox, session.drive.image_size)
     return item
-
-
-def plate_pictogram_path(catalogue, template_id: str) -> str:
-    """The rendering of a pictogram plate's drawing (German version first), "" for a text plate."""
-    from ..signmapper_core.plate_catalogue import plates_folder
-
-    for path in sorted((plates_folder(catalogue.folder) / "png").glob(f"{template_id}_*.png")):
-        return str(path)
-    return ""
 
 
 def own_observation(values: dict) -> List[ObservationView]:

@@ -8,6 +8,8 @@ from ..signmapper_core.output_schema import REVIEW
 from .items import driving_order
 
 ZOOM_HALF_SIZE_M = 20.0
+FOLLOW_MARGIN = 0.15  # Follow pans when the feature comes this close (share of the extent) to the map's edge
+FOLLOW_WIDEST_M = 300.0  # and zooms in to ±ZOOM_HALF_SIZE_M when the map shows more than this across
 
 
 class Navigator:
@@ -57,21 +59,50 @@ class Navigator:
         self.dock.show_message(f"{session.layer.name()}: no other feature needs review")
         return False
 
-    def zoom_to_feature(self) -> None:
-        """Centre the map on the shown feature, ±20 m, and flash it."""
+    def _shown_point(self):
+        """(layer, fid, point in the map's CRS) of the shown feature; None without one or without a geometry."""
         layer, fid = self.session.layer, self.session.fid
         if layer is None or fid is None:
-            return
+            return None
         feature = layer.getFeature(fid)
         if not feature.hasGeometry():
-            return
+            return None
         point = feature.geometry().asPoint()
+        return layer, fid, self._to_canvas(layer).transform(point)
+
+    def _to_canvas(self, layer) -> QgsCoordinateTransform:
+        target = self.iface.mapCanvas().mapSettings().destinationCrs()
+        return QgsCoordinateTransform(layer.crs(), target if target.isValid() else layer.crs(),
+                                      QgsProject.instance())
+
+    def zoom_to_feature(self) -> None:
+        """Centre the map on the shown feature, ±20 m, and flash it."""
+        shown = self._shown_point()
+        if shown is None:
+            return
+        layer, fid, _ = shown
+        point = layer.getFeature(fid).geometry().asPoint()
         d = ZOOM_HALF_SIZE_M
         extent = QgsRectangle(point.x() - d, point.y() - d, point.x() + d, point.y() + d)
         canvas = self.iface.mapCanvas()
-        target = canvas.mapSettings().destinationCrs()
-        if target.isValid() and target != layer.crs():
-            extent = QgsCoordinateTransform(layer.crs(), target, QgsProject.instance()).transformBoundingBox(extent)
-        canvas.setExtent(extent)
+        canvas.setExtent(self._to_canvas(layer).transformBoundingBox(extent))
         canvas.refresh()
+        canvas.flashFeatureIds(layer, [fid])
+
+    def follow(self) -> None:
+        """Keep the shown feature in view: pan when it is near or beyond the map's edge, zoom in to ±20 m when the
+        map shows a wide area (a sign there is a dot among dozens); a map already close by is left alone."""
+        shown = self._shown_point()
+        if shown is None:
+            return
+        layer, fid, point = shown
+        canvas = self.iface.mapCanvas()
+        extent = canvas.extent()
+        across_m = self._to_canvas(layer).transformBoundingBox(extent, QgsCoordinateTransform.ReverseTransform)
+        if extent.isEmpty() or max(across_m.width(), across_m.height()) > FOLLOW_WIDEST_M:
+            self.zoom_to_feature()
+            return
+        if not extent.buffered(-FOLLOW_MARGIN * min(extent.width(), extent.height())).contains(point):
+            canvas.setCenter(point)
+            canvas.refresh()
         canvas.flashFeatureIds(layer, [fid])

@@ -42,10 +42,9 @@ class ReviewSession:
     @property
     def language(self) -> str:
         """The language the run wrote its names in (German for files from before it was recorded)."""
-        from ..signmapper_core.output_schema import DEFAULT_LANGUAGE, LANGUAGES
+        from ..signmapper_core.output_schema import run_language
 
-        language = self.run.get("language")
-        return language if language in LANGUAGES else DEFAULT_LANGUAGE
+        return run_language(self.run)
 
     def output_context(self):
         """How the run wrote its rows (language, drive clock): what an added sign is written with."""

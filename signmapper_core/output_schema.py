@@ -37,9 +37,16 @@ TEXT, INTEGER, REAL = "text", "integer", "real"
 
 # Languages of names and field aliases: the Swiss catalogue's three and English (catalogue.names).
 LANGUAGES = ("en", "de", "fr", "it")
+LANGUAGE_NAMES = {"en": "English", "de": "Deutsch", "fr": "Français", "it": "Italiano"}  # as people choose them
 DEFAULT_LANGUAGE = "de"
 
 Reader = Callable[..., Any]
+
+
+def run_language(run: dict) -> str:
+    """The language a run table says its output was written in (German for files from before it was recorded)."""
+    language = run.get("language")
+    return language if language in LANGUAGES else DEFAULT_LANGUAGE
 
 
 def language_of(locale: str) -> str:

@@ -49,6 +49,16 @@ def plates_folder(catalogue_folder) -> Path:
     return Path(catalogue_folder) / "plates"
 
 
+def pictogram_png(catalogue, template_id: str) -> str:
+    """The PNG a person sees for a type (review dock, atlas): its catalogue drawing, else a pictogram plate's
+    (German version first); "" for a text plate or an id the catalogue lacks."""
+    if template_id and template_id in catalogue:
+        return str(catalogue.pictogram_path(template_id, "png"))
+    for path in sorted((plates_folder(catalogue.folder) / "png").glob(f"{template_id}_*.png")):
+        return str(path)
+    return ""
+
+
 @lru_cache(maxsize=4)
 def load_plate_templates(catalogue_folder) -> tuple:
     """The pictogram plate templates of the catalogue in ``catalogue_folder`` (empty without ``plates/``)."""

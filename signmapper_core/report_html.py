@@ -1,4 +1,6 @@
-"""The evaluation report as a self-contained HTML page: Tables 1 and 2 and a plot of the error vectors.
+"""The evaluation report as a self-contained HTML page, for people: what was compared, Tables 1 and 2 and a plot
+of the error vectors first, then every mapped sign with its status and verdict and the missed reference signs;
+the run's settings last, folded away.
 
 The plot is inline SVG drawn here (no plotting library, no scripts, no WebKit
 needed to show it): each matched sign's planimetric error as an arrow in the
@@ -45,17 +47,18 @@ def error_plot_svg(differences: np.ndarray, size_px: int = 360) -> str:
     return "\n".join(parts)
 
 
-def sign_rows(report: EvaluationReport, mapped_ids, mapped_labels=None) -> list[tuple]:
-    """One row per mapped sign: (label, mapped id, reference id or '', verdict, 3D difference or None)."""
+def sign_rows(report: EvaluationReport, mapped_ids, mapped_labels=None, statuses=None) -> list[tuple]:
+    """One row per mapped sign: (label, status, mapped id, reference id or '', verdict, 3D difference or None)."""
     rows, k = [], 0
     labels = list(mapped_labels) if mapped_labels is not None else [str(i + 1) for i in range(len(mapped_ids))]
+    statuses = list(statuses) if statuses is not None else [""] * len(mapped_ids)
     for i, ref in enumerate(report.match):
         if ref < 0:
-            rows.append((labels[i], mapped_ids[i], "", "false positive", None))
+            rows.append((labels[i], statuses[i], mapped_ids[i], "", "false positive", None))
             continue
         reference = report.reference_ids[ref] if ref < len(report.reference_ids) else ""
         verdict = "correct" if str(mapped_ids[i]) == str(reference) else "misclassified"
-        rows.append((labels[i], mapped_ids[i], reference, verdict, float(report.differences[k][4])))
+        rows.append((labels[i], statuses[i], mapped_ids[i], reference, verdict, float(report.differences[k][4])))
         k += 1
     return rows
 
@@ -68,31 +71,42 @@ def missed_rows(report: EvaluationReport, reference_xyz, reference_labels=None) 
     return [(labels[j], report.reference_ids[j], *xyz[j]) for j in range(len(xyz)) if j not in matched]
 
 
-def _details(run: dict | None, signs: list | None, missed: list | None) -> str:
-    parts = []
-    if run:
-        rows = "".join(f"<tr><td>{html.escape(str(k))}</td><td>{html.escape(str(v))}</td></tr>" for k, v in run.items())
-        parts.append(f"<h2>Run and parameters</h2><table>{rows}</table>")
-    if signs is not None:
-        rows = "".join(
-            f"<tr><td>{html.escape(str(label))}</td><td>{html.escape(str(mapped))}</td>"
-            f"<td>{html.escape(str(reference)) or '–'}</td><td>{verdict}</td><td>{_m(d3) if d3 is not None else '–'}"
-            "</td></tr>" for label, mapped, reference, verdict, d3 in signs)
-        parts.append("<h2>Mapped signs</h2><table><tr><th>feature</th><th>mapped</th><th>reference</th>"
-                     f"<th>verdict</th><th>3D difference [m]</th></tr>{rows}</table>")
-    if missed is not None:
-        rows = "".join(f"<tr><td>{html.escape(str(label))}</td><td>{html.escape(str(rid))}</td><td>{e:.3f}</td>"
-                       f"<td>{n:.3f}</td><td>{h:.3f}</td></tr>" for label, rid, e, n, h in missed)
-        body = (f"<table><tr><th>reference</th><th>type</th><th>E</th><th>N</th><th>H</th></tr>{rows}</table>"
-                if missed else "<p>None: every reference sign was mapped.</p>")
-        parts.append(f"<h2>Missed reference signs ({len(missed)})</h2>{body}")
-    return "\n".join(parts)
+def _esc(value) -> str:
+    return html.escape(str(value))
+
+
+def _signs_table(signs: list) -> str:
+    rows = "".join(
+        f"<tr><td>{_esc(label)}</td><td>{_esc(status) or '–'}</td><td>{_esc(mapped)}</td>"
+        f"<td>{_esc(reference) or '–'}</td><td class=\"{verdict.replace(' ', '-')}\">{verdict}</td>"
+        f"<td>{_m(d3) if d3 is not None else '–'}</td></tr>" for label, status, mapped, reference, verdict, d3 in signs)
+    return ("<h2>Mapped signs</h2><table><tr><th>sign</th><th>status</th><th>mapped</th><th>reference</th>"
+            f"<th>verdict</th><th>3D difference [m]</th></tr>{rows}</table>")
+
+
+def _missed_table(missed: list) -> str:
+    rows = "".join(f"<tr><td>{_esc(label)}</td><td>{_esc(rid)}</td><td>{e:.3f}</td><td>{n:.3f}</td><td>{h:.3f}</td>"
+                   "</tr>" for label, rid, e, n, h in missed)
+    body = (f"<table><tr><th>reference</th><th>type</th><th>E</th><th>N</th><th>H</th></tr>{rows}</table>"
+            if missed else "<p>None: every reference sign was mapped.</p>")
+    return f"<h2>Missed reference signs ({len(missed)})</h2>{body}"
+
+
+def _settings(run: dict) -> str:
+    """The run and its settings, folded: long values (the pipeline's and the fusion's JSON) set as code."""
+    rows = []
+    for key, value in run.items():
+        text = str(value)
+        shown = f"<pre>{_esc(text)}</pre>" if len(text) > 120 else _esc(text)
+        rows.append(f"<tr><td>{_esc(key)}</td><td>{shown}</td></tr>")
+    return (f"<details><summary><b>Run and parameters</b> ({len(run)} entries)</summary><table>{''.join(rows)}"
+            "</table></details>")
 
 
 def report_html(report: EvaluationReport, title: str, notes: list[str] | None = None, run: dict | None = None,
-                signs: list | None = None, missed: list | None = None) -> str:
-    """The page; ``run`` (parameter -> value), ``signs`` (:func:`sign_rows`) and ``missed`` (:func:`missed_rows`)
-    add the run's description, the per-sign list and the reference signs no mapped sign matched."""
+                signs: list | None = None, missed: list | None = None, about: dict | None = None) -> str:
+    """The page; ``about`` (what was compared: label -> value) heads it, ``signs`` (:func:`sign_rows`) and
+    ``missed`` (:func:`missed_rows`) follow the figures, ``run`` (parameter -> value) closes it, folded."""
     texts = table1_texts(report.table1)
     rows1 = [
         ("Reference signs", texts["reference signs"]),
@@ -113,21 +127,30 @@ def report_html(report: EvaluationReport, title: str, notes: list[str] | None = 
         )
     confusions = "".join(f"<li>{html.escape(a)} → {html.escape(b)}</li>" for a, b in report.confusions)
     notes_html = "".join(f"<li>{html.escape(n)}</li>" for n in (notes or []))
+    about_html = "".join(f"<tr><td>{_esc(k)}</td><td>{_esc(v)}</td></tr>" for k, v in (about or {}).items())
     return f"""<!DOCTYPE html>
 <html><head><meta charset="utf-8"><title>{html.escape(title)}</title>
-<style>body{{font-family:sans-serif;margin:2em}} table{{border-collapse:collapse;margin-bottom:1.5em}}
+<style>body{{font-family:sans-serif;margin:2em;max-width:64em}} table{{border-collapse:collapse;margin-bottom:1.5em}}
 td,th{{border:1px solid #bbb;padding:4px 10px;text-align:right}} td:first-child,th:first-child{{text-align:left}}
+.figures{{display:flex;flex-wrap:wrap;gap:2em;align-items:flex-start}} .misclassified,.false-positive{{color:#c62828}}
+pre{{text-align:left;white-space:pre-wrap;max-width:50em;margin:0}} summary{{cursor:pointer;margin:1em 0}}
 </style></head><body>
 <h1>{html.escape(title)}</h1>
+{f'<table class="about">{about_html}</table>' if about_html else ""}
+<div class="figures"><div>
 <h2>Table 1: detection and classification</h2>
 <table>{"".join(f"<tr><td>{html.escape(k)}</td><td>{v}</td></tr>" for k, v in rows1)}</table>
 <h2>Table 2: coordinate differences, mapped − reference [m]</h2>
 <table><tr><th>component</th><th>n</th><th>mean</th><th>empirical σ</th><th>RMS</th><th>max |d|</th></tr>
 {rows2}</table>
+</div><div>
 <h2>Error vectors (across / along track)</h2>
 {error_plot_svg(report.differences)}
+</div></div>
 {f"<h2>Misclassified (reference → assigned)</h2><ul>{confusions}</ul>" if confusions else ""}
+{_signs_table(signs) if signs is not None else ""}
+{_missed_table(missed) if missed is not None else ""}
 {f"<h2>Notes</h2><ul>{notes_html}</ul>" if notes_html else ""}
-{_details(run, signs, missed)}
+{_settings(run) if run else ""}
 </body></html>
 """

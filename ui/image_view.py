@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import List, Optional, Sequence, Tuple
 
-from qgis.PyQt.QtCore import QPointF, QRectF, Qt, pyqtSignal
+from qgis.PyQt.QtCore import QPointF, QRectF, QSize, Qt, pyqtSignal
 from qgis.PyQt.QtGui import QBrush, QColor, QFont, QImage, QPainter, QPen, QPixmap
 from qgis.PyQt.QtWidgets import QGraphicsItem, QGraphicsScene, QGraphicsView
 
@@ -54,6 +54,11 @@ class ImageView(QGraphicsView):
         self._boxes: List[Tuple[OverlayBox, object]] = []  # (box, its graphics items)
         self._user_view = False  # the user zoomed or panned: keep their view
         self._picking = False
+
+    def sizeHint(self):  # noqa: N802 - Qt override
+        """As small as allowed: a dock's other widgets come first, the image takes whatever height is left
+        (a scroll area sizes its content by the preferred heights, which would push the buttons out of view)."""
+        return QSize(400, self.minimumHeight())
 
     # content -------------------------------------------------------------------------------------------
     def clear_image(self) -> None:

@@ -14,10 +14,10 @@ from qgis.PyQt.QtCore import QSize, Qt, pyqtSignal
 from qgis.PyQt.QtGui import QIcon, QKeySequence, QPixmap
 from qgis.PyQt.QtWidgets import (
     QAction,
+    QApplication,
     QCheckBox,
     QComboBox,
     QDockWidget,
-    QFormLayout,
     QFrame,
     QGridLayout,
     QGroupBox,
@@ -40,7 +40,7 @@ from ..signmapper_core.output_schema import ACCEPTED, REJECTED, STATUS_COLOURS
 from .hover_focus import FocusOnHover
 from .image_view import ImageView
 from .review_item import ObservationView, ReviewItem
-from .template_picker import TemplateChoice, TemplatePicker
+from .template_picker import CHOICE_KEYS, TemplateChoice, TemplatePicker
 
 # action name -> (button text, shortcut); the shortcuts act while the pointer is over the dock (or it has the focus)
 SHORTCUTS = {
@@ -54,9 +54,19 @@ SHORTCUTS = {
     "add_sign": ("Add missed", "M"),
     "undo": ("Undo", "U"),
 }
+CLOSE_PICKER_KEY = "Escape"
 REJECT_COLOUR = "#c62828"
 TOOLTIPS = {"next_review": "Next feature to review", "add_sign": "Add a missed sign: then click the centre of the "
-            "sign in the image", "undo": "Undo the last decision"}
+            "sign in the image", "undo": "Undo the last decision",
+            "reclassify": "Choose another sign type: keys 1-3 take the classifier's next choices, typing (or '/') "
+            "searches, Escape closes"}
+PICTOGRAM_PX = 56
+# the lines of facts under the image: key -> what the line shows (its tooltip)
+INFO_LINES = (("template", "Sign type (SSV) and name"), ("status", "Status and why the mapping left it for review"),
+              ("format", "Colour, shape, format and size"), ("indicators", "Detection and classification indicators"),
+              ("pair", "Best pair, its time and the depth"), ("extra", "Fusion: observations, vote share, spread"),
+              ("plate", "Text read: a plate's, or a speed limit's digits"))
+IMAGE_MIN_PX = 150  # the image gives way first: the dock lays out in 700 px with the picker open
 
 
 def _fmt(value, digits=2) -> str:
@@ -78,6 +88,7 @@ class ReviewDock(QDockWidget):
     pairRequested = pyqtSignal(str)  # noqa: N815 - show a pair's image (to add a sign where nothing was found)
     observationRequested = pyqtSignal(int)  # noqa: N815 - index into the item's observations
     textEdited = pyqtSignal(str)  # noqa: N815 - a plate's text as a person set it
+    followToggled = pyqtSignal(bool)  # noqa: N815 - Follow switched on or off
 
     def __init__(self, parent=None):
         super().__init__("Sign Mapper review", parent)
@@ -92,8 +103,10 @@ class ReviewDock(QDockWidget):
         scroll.setHorizontalScrollBarPolicy(Qt.ScrollBarAlwaysOff)
         scroll.setWidget(body)
         self.setWidget(scroll)
+        self.scroll = scroll
         layout = QVBoxLayout(body)
         layout.setContentsMargins(4, 4, 4, 4)
+        layout.setSpacing(4)
 
         self.title = QLabel("Select a feature of a Sign Mapper signs or detections layer")
         self.title.setWordWrap(True)
@@ -105,23 +118,35 @@ class ReviewDock(QDockWidget):
         self.progress.setVisible(False)
         layout.addWidget(self.progress)
 
-        self.image_caption = QLabel("")
+        self.image_caption = QLabel("")  # shown only for an image that is not the feature's own pair's
         self.image_caption.setWordWrap(True)
+        self.image_caption.setVisible(False)
         layout.addWidget(self.image_caption)
         self.image_view = ImageView()
+        self.image_view.setMinimumHeight(IMAGE_MIN_PX)
         self.image_view.imageClicked.connect(self._image_clicked)
         layout.addWidget(self.image_view, 4)
 
         layout.addLayout(self._build_info())
+
+        # the picker opens here, in place of the observations, right under the sign it reclassifies
+        self.picker_box = QGroupBox("Reclassify  ·  [Esc] closes")
+        self.picker = TemplatePicker(icon_px=32)
+        self.picker.templateChosen.connect(self._template_chosen)
+        picker_layout = QVBoxLayout(self.picker_box)
+        picker_layout.setContentsMargins(2, 2, 2, 2)
+        picker_layout.addWidget(self.picker)
+        self.picker_box.setVisible(False)
+        layout.addWidget(self.picker_box, 2)
 
         self.strip_box = QGroupBox("Observations")
         self.strip = QListWidget()
         self.strip.setViewMode(QListView.IconMode)
         self.strip.setFlow(QListView.LeftToRight)
         self.strip.setWrapping(False)
-        self.strip.setIconSize(QSize(72, 72))
-        self.strip.setFixedHeight(140)
-        self.strip.setGridSize(QSize(96, 120))
+        self.strip.setIconSize(QSize(64, 64))
+        self.strip.setFixedHeight(122)
+        self.strip.setGridSize(QSize(88, 102))
         self.strip.setTextElideMode(Qt.ElideNone)
         self.strip.setWordWrap(True)
         self.strip.setMovement(QListView.Static)
@@ -135,15 +160,6 @@ class ReviewDock(QDockWidget):
         layout.addLayout(self._build_buttons())
         layout.addWidget(self._build_plate_text())
 
-        self.picker_box = QGroupBox("Reclassify")
-        self.picker = TemplatePicker()
-        self.picker.templateChosen.connect(self.reclassifyRequested)
-        picker_layout = QVBoxLayout(self.picker_box)
-        picker_layout.setContentsMargins(2, 2, 2, 2)
-        picker_layout.addWidget(self.picker)
-        self.picker_box.setVisible(False)
-        layout.addWidget(self.picker_box, 2)
-
         self.message = QLabel("Keys (in brackets on the buttons) act while the pointer is over this panel.")
         self.message.setWordWrap(True)
         layout.addWidget(self.message)
@@ -154,24 +170,26 @@ class ReviewDock(QDockWidget):
 
     # construction -------------------------------------------------------------------------------------
     def _build_info(self) -> QHBoxLayout:
+        """The pictogram beside one line per fact; no title column (each line says what it is, its tooltip
+        names it), so the lines rarely wrap and the dock stays short. Lines with nothing to say are hidden."""
         row = QHBoxLayout()
         self.pictogram = QLabel()
-        self.pictogram.setFixedSize(72, 72)
+        self.pictogram.setFixedSize(PICTOGRAM_PX, PICTOGRAM_PX)
         self.pictogram.setAlignment(Qt.AlignCenter)
         row.addWidget(self.pictogram, 0, Qt.AlignTop)
-        form = QFormLayout()
-        form.setVerticalSpacing(1)
+        lines = QVBoxLayout()
+        lines.setSpacing(0)
         self.info = {}
-        for key, label in (("template", "Template"), ("status", "Status"), ("format", "Format"),
-                           ("indicators", "Indicators"), ("pair", "Pair"), ("extra", "Fusion"),
-                           ("plate", "Text")):
+        for key, label in INFO_LINES:
             value = QLabel("–")
+            value.setToolTip(label)
             value.setTextInteractionFlags(Qt.TextSelectableByMouse)
             value.setWordWrap(True)
             value.setSizePolicy(QSizePolicy.Expanding, QSizePolicy.Preferred)
             self.info[key] = value
-            form.addRow(label, value)
-        row.addLayout(form, 1)
+            lines.addWidget(value)
+        lines.addStretch(1)
+        row.addLayout(lines, 1)
         return row
 
     def _build_plate_text(self) -> QGroupBox:
@@ -222,11 +240,19 @@ class ReviewDock(QDockWidget):
         self.pair_box = QComboBox()
         self.pair_box.setToolTip("Show another pair of the drive, e.g. to add a sign no detection points to")
         self.pair_box.activated.connect(lambda i: self.pairRequested.emit(self.pair_box.itemText(i)))
-        grid.addWidget(self.pair_box, 3, 0, 1, 2)
+        grid.addWidget(self.pair_box, 3, 0)
         self.advance_box = QCheckBox("Advance")
         self.advance_box.setToolTip("After a decision, go to the next feature needing review")
         self.advance_box.setChecked(True)
-        grid.addWidget(self.advance_box, 3, 2)
+        grid.addWidget(self.advance_box, 3, 1)
+        self.follow_box = QCheckBox("Follow")
+        self.follow_box.setToolTip("Pan the map to each feature shown (zooming in when it is far out) and open its "
+                                   "best pair in the drive viewer")
+        self.follow_box.setChecked(True)
+        self.follow_box.toggled.connect(self.followToggled)
+        grid.addWidget(self.follow_box, 3, 2)
+        for box in (self.pair_box, self.advance_box, self.follow_box):
+            box.setFocusPolicy(Qt.TabFocus)  # a click must not take the keys from the dock's shortcuts
 
         b = self.buttons
         b["accept"].clicked.connect(self.acceptRequested)
@@ -252,12 +278,20 @@ class ReviewDock(QDockWidget):
             "add_sign": lambda: self._if_enabled("add_sign"),
             "undo": lambda: self._if_enabled("undo"),
         }
+        keys = {name: SHORTCUTS[name] for name in handlers}
+        for i, key in enumerate(CHOICE_KEYS):  # the picker's next choices, while it is open
+            handlers[f"choice{i + 1}"] = lambda i=i: self.picker_box.isVisible() and self.picker.choose_suggestion(i)
+            keys[f"choice{i + 1}"] = (f"Next choice {key}", key)
+        handlers["close_picker"] = lambda: self.picker_box.isVisible() and self.show_picker(False)
+        keys["close_picker"] = ("Close the picker", CLOSE_PICKER_KEY)
+        self.picker.set_reserved(QKeySequence(key).toString() for _text, key in keys.values())
         for name, handler in handlers.items():
-            text, key = SHORTCUTS[name]
+            text, key = keys[name]
             action = QAction(text, self)
+            action.setObjectName(name)
             action.setShortcut(QKeySequence(key))
             action.setShortcutContext(Qt.WidgetWithChildrenShortcut)
-            action.triggered.connect(handler)
+            action.triggered.connect(lambda _checked=False, h=handler: h())
             self.addAction(action)
 
     def _if_enabled(self, name: str) -> None:
@@ -316,6 +350,10 @@ class ReviewDock(QDockWidget):
     def advance_after_decision(self) -> bool:
         return self.advance_box.isChecked()
 
+    def following(self) -> bool:
+        """Follow: the map and the drive viewer go to each feature shown."""
+        return self.follow_box.isChecked()
+
     def show_message(self, text: str, error: bool = False) -> None:
         self.message.setText(text)
         self.message.setStyleSheet("color: #c62828" if error else "")
@@ -349,14 +387,17 @@ class ReviewDock(QDockWidget):
             f"detection {_fmt(item.detection_indicator)} · classification {_fmt(item.classification_indicator)}"
         )
         depth = f" · depth {item.depth_m:.1f} m" if item.depth_m is not None else ""
-        self.info["pair"].setText(f"{item.pair_id or '–'} · t = {_fmt(item.time, 2)} s{depth}")
+        self.info["pair"].setText(f"pair {item.pair_id or '–'} · t = {_fmt(item.time, 2)} s{depth}")
         self.info["extra"].setText(" · ".join(f"{k} {v}" for k, v in item.extra))
         self.show_plate(item)
+        for key in ("extra", "plate"):
+            self.info[key].setVisible(self.info[key].text() not in ("", "–"))
         pix = QPixmap(item.pictogram_path) if item.pictogram_path else QPixmap()
         if pix.isNull():
             self.pictogram.setText("no\npictogram")
         else:
-            self.pictogram.setPixmap(pix.scaled(68, 68, Qt.KeepAspectRatio, Qt.SmoothTransformation))
+            self.pictogram.setPixmap(pix.scaled(PICTOGRAM_PX - 4, PICTOGRAM_PX - 4, Qt.KeepAspectRatio,
+                                                Qt.SmoothTransformation))
         self.picker.set_filter(item.colour, item.shape, "")
         self.picker.select(item.template_id)
         self.picker.set_suggestions([a for a in item.alternatives if a[0] != item.template_id])  # after a reclassify
@@ -391,19 +432,21 @@ class ReviewDock(QDockWidget):
         if self.item is None:
             self.image_caption.setText(f"Image: pair {pair_id} (no feature selected)")
         elif pair_id == self.item.pair_id:
-            self.image_caption.setText(f"Image: pair {pair_id}")
+            self.image_caption.setText(f"Image: pair {pair_id}")  # as the Pair line says: no caption needed
         else:
             self.image_caption.setText(f"<b>Image: pair {pair_id}</b> — the feature below is from pair "
                                        f"{self.item.pair_id or '–'}")
+        self.image_caption.setVisible(self.item is None or pair_id != self.item.pair_id)
 
     def clear_image(self) -> None:
         self.pair_id = ""
         self.image_view.clear_image()
         self.image_caption.setText("")
+        self.image_caption.setVisible(False)
 
     def set_observations(self, observations: Optional[List[ObservationView]]) -> None:
         self.strip.clear()
-        self.strip_box.setVisible(observations is not None)
+        self.strip_box.setVisible(observations is not None and not self.picker_box.isVisibleTo(self))
         if observations is None:
             return
         self.strip_box.setTitle(f"Observations ({len(observations)})")
@@ -414,14 +457,26 @@ class ReviewDock(QDockWidget):
             self.strip.addItem(entry)
 
     def show_picker(self, visible: bool) -> None:
+        """The picker in place of the observations, the keyboard on its choices; closed, the keys are the dock's."""
+        had_focus = self.picker_box.isAncestorOf(QApplication.focusWidget())
         self.picker_box.setVisible(visible)
+        self.strip_box.setVisible(not visible and self.item is not None and self.item.observations is not None)
         if self.buttons["reclassify"].isChecked() != visible:
             self.buttons["reclassify"].setChecked(visible)
         if visible:
-            self.picker.search.setFocus()
+            self.picker.search.clear()
+            self.picker.focus_choices()
+            self.scroll.ensureWidgetVisible(self.picker_box, 0, 0)
+        elif had_focus:
+            self.image_view.setFocus()  # the focus must not fall to a button, out of the shortcuts' reach
 
     def adding_sign(self) -> bool:
         return self.buttons["add_sign"].isChecked()
+
+    def _template_chosen(self, template_id: str) -> None:
+        """A choice closes the picker (the keys are the dock's again), then asks for the reclassification."""
+        self.show_picker(False)
+        self.reclassifyRequested.emit(template_id)
 
     # clicks -----------------------------------------------------------------------------------------
     def _image_clicked(self, u: float, v: float) -> None:

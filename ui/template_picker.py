@@ -12,12 +12,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Iterable, List, Optional, Sequence, Tuple
 
-from qgis.PyQt.QtCore import QSize, Qt, pyqtSignal
+from qgis.PyQt.QtCore import QEvent, QSize, Qt, pyqtSignal
 from qgis.PyQt.QtGui import QIcon
 from qgis.PyQt.QtWidgets import (
     QComboBox,
     QHBoxLayout,
-    QLabel,
     QLineEdit,
     QListView,
     QListWidget,
@@ -30,6 +29,8 @@ from qgis.PyQt.QtWidgets import (
 
 ANY = ""
 ID_ROLE = Qt.UserRole
+CHOICE_KEYS = ("1", "2", "3")  # the classifier's next choices, best first (the review dock binds them)
+SEARCH_KEY = "/"  # opens the search box without typing into it
 
 
 @dataclass(frozen=True)
@@ -48,22 +49,41 @@ class TemplateChoice:
                 and (not text or text in self.id.lower() or text in self.name.lower()))
 
 
+class _Grid(QListWidget):
+    """The grid of types: it asks for no more height than one row, so the dock around it (a scroll area sizing
+    its content by preferred heights) fits a short screen; any height left over goes to it by stretch."""
+
+    def sizeHint(self):  # noqa: N802 - Qt override
+        return QSize(super().sizeHint().width(), self.minimumHeight())
+
+
 class TemplatePicker(QWidget):
-    """Emits ``templateChosen(id)`` on double click or on the Reclassify button."""
+    """Emits ``templateChosen(id)`` on a next choice, a double click, Enter or the Reclassify button.
+
+    Keyboard first: it opens with the focus on the grid, where the arrow keys move
+    and Enter chooses; the first character typed that is none of the dock's keys
+    (``reserved``) goes to the search box ('/' only opens it: an id starts with a
+    digit, and 1-3 choose), so a decision key never lands in it as text, and QGIS's
+    own one-letter shortcuts (S toggles snapping) do not take a search's first letter.
+    """
 
     templateChosen = pyqtSignal(str)  # noqa: N815
 
     def __init__(self, parent=None, icon_px: int = 40):
         super().__init__(parent)
         self._choices: List[TemplateChoice] = []
+        self._reserved = set(CHOICE_KEYS)
         self.colour_box = QComboBox()
         self.colour_box.setToolTip("Show only templates of this dominant colour")
         self.shape_box = QComboBox()
         self.shape_box.setToolTip("Show only templates of this shape")
         self.search = QLineEdit()
-        self.search.setPlaceholderText("Search id or name…")
+        self.search.setPlaceholderText("Type to search id or name…")
+        self.search.setToolTip("Start typing (or '/') to search; Enter reclassifies as the first match, "
+                               "Escape closes the picker")
         self.search.setClearButtonEnabled(True)
-        self.grid = QListWidget()
+        self.search.setFocusPolicy(Qt.ClickFocus)  # Tab never lands here: typing does (see eventFilter)
+        self.grid = _Grid()
         self.grid.setViewMode(QListView.IconMode)
         self.grid.setIconSize(QSize(icon_px, icon_px))
         self._icon_px = icon_px
@@ -74,12 +94,15 @@ class TemplatePicker(QWidget):
         self.grid.setTextElideMode(Qt.ElideNone)  # ids are short: show them whole, never "2…."
         self.grid.setUniformItemSizes(False)  # a uniform size is the first item's, its id wrapped: "2.…" for all
         self.grid.setMinimumHeight(icon_px + 38)  # one row; the grid scrolls
-        self.grid.setMaximumHeight(4 * (icon_px + 30) + 8)
-        self.choose_button = QPushButton("Reclassify as selected")
+        self.grid.setMaximumHeight(3 * (icon_px + 30) + 8)
+        self.choose_button = QPushButton("Choose")
+        self.choose_button.setToolTip("Reclassify as the type selected in the grid (or double click it, or Enter)")
+        self.choose_button.setFocusPolicy(Qt.TabFocus)
         self.choose_button.setEnabled(False)
         self._suggested: List[Tuple[str, float]] = []
         self._suggestion_buttons: List[QToolButton] = []
         self.suggestions = QWidget()
+        self.suggestions.setToolTip("The classifier's next choices after the current id, with their scores")
         self._suggestion_row = QHBoxLayout(self.suggestions)
         self._suggestion_row.setContentsMargins(0, 0, 0, 0)
         self.suggestions.setVisible(False)
@@ -88,19 +111,64 @@ class TemplatePicker(QWidget):
         filters.addWidget(self.colour_box)
         filters.addWidget(self.shape_box)
         filters.addWidget(self.search, 1)
+        filters.addWidget(self.choose_button)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
+        layout.setSpacing(2)
         layout.addWidget(self.suggestions)
         layout.addLayout(filters)
         layout.addWidget(self.grid, 1)
-        layout.addWidget(self.choose_button)
 
         self.colour_box.currentIndexChanged.connect(self._refilter)
         self.shape_box.currentIndexChanged.connect(self._refilter)
         self.search.textChanged.connect(self._refilter)
         self.grid.itemDoubleClicked.connect(lambda item: self.templateChosen.emit(item.data(ID_ROLE)))
+        self.grid.activated.connect(lambda _index: self._choose_current())  # Enter on the grid
         self.grid.currentItemChanged.connect(lambda cur, _prev: self.choose_button.setEnabled(cur is not None))
         self.choose_button.clicked.connect(self._choose_current)
+        self.search.returnPressed.connect(self._choose_first_match)
+        self.grid.installEventFilter(self)
+        self.search.installEventFilter(self)
+
+    # keyboard ------------------------------------------------------------------------------------------
+    def focus_choices(self) -> None:
+        """Where the keyboard starts when the picker opens: the grid, not the search box."""
+        self.grid.setFocus()
+
+    def set_reserved(self, keys) -> None:
+        """The keys that stay the dock's while the grid has the focus (its shortcuts): they never start a search."""
+        self._reserved = {str(k).lower() for k in keys}
+
+    def eventFilter(self, watched, event):  # noqa: N802 - Qt override
+        if watched is self.grid and event.type() == QEvent.ShortcutOverride and self._starts_typing(event):
+            event.accept()  # a search's first letter: no window shortcut of QGIS may take it
+            return True
+        if event.type() != QEvent.KeyPress:
+            return False
+        if watched is self.grid and self._starts_typing(event):
+            self.search.setFocus()
+            if event.text() != SEARCH_KEY:
+                self.search.insert(event.text())
+            return True
+        if watched is self.search and event.key() == Qt.Key_Down and self.grid.count():
+            self.grid.setFocus()  # from the search to the matches
+            if self.grid.currentRow() < 0:
+                self.grid.setCurrentRow(0)
+            return True
+        return False
+
+    def _starts_typing(self, event) -> bool:
+        """A character typed on the grid that is none of the dock's keys starts a search."""
+        text = event.text()
+        return bool(text) and text.isprintable() and not text.isspace() and text.lower() not in self._reserved \
+            and not event.modifiers() & (Qt.ControlModifier | Qt.AltModifier)
+
+    def choose_suggestion(self, index: int) -> bool:
+        """Reclassify as the ``index``-th next choice (0 = best); False when there is none."""
+        if 0 <= index < len(self._suggestion_buttons):
+            self._suggestion_buttons[index].click()
+            return True
+        return False
 
     def set_choices(self, choices: Iterable[TemplateChoice]) -> None:
         self._choices = list(choices)
@@ -152,23 +220,19 @@ class TemplatePicker(QWidget):
         self._suggestion_buttons = []
         known = {c.id: c for c in self._choices}
         offered = [(known[tid], score) for tid, score in self._suggested if tid in known]
-        if offered:
-            label = QLabel("Next choices:")
-            label.setToolTip("What the classifier ranked after the current id, with its scores")
-            self._suggestion_row.addWidget(label)
-        for choice, score in offered:
+        for key, (choice, score) in zip(CHOICE_KEYS, offered):
             button = QToolButton()
             button.setProperty("template_id", choice.id)
-            button.setToolButtonStyle(Qt.ToolButtonTextUnderIcon)
+            button.setToolButtonStyle(Qt.ToolButtonTextBesideIcon)
+            button.setFocusPolicy(Qt.TabFocus)
             if choice.icon_path:
                 button.setIcon(QIcon(choice.icon_path))
                 button.setIconSize(QSize(self._icon_px, self._icon_px))
-            button.setText(f"{choice.id}\n{score:.2f}")
-            button.setToolTip(f"Reclassify as {choice.id} {choice.name} (classifier score {score:.2f})")
+            button.setText(f"[{key}] {choice.id}\n{score:.2f}")
+            button.setToolTip(f"Reclassify as {choice.id} {choice.name} (classifier score {score:.2f}; key {key})")
             button.clicked.connect(lambda _checked=False, tid=choice.id: self.templateChosen.emit(tid))
             self._suggestion_row.addWidget(button)
             self._suggestion_buttons.append(button)
-        self._suggestion_row.addStretch(1)
         self.suggestions.setVisible(bool(offered))
 
     def visible_ids(self) -> List[str]:
@@ -195,5 +259,11 @@ class TemplatePicker(QWidget):
 
     def _choose_current(self) -> None:
         item = self.grid.currentItem()
+        if item is not None:
+            self.templateChosen.emit(item.data(ID_ROLE))
+
+    def _choose_first_match(self) -> None:
+        """Enter in the search box: the selected match, else the first one."""
+        item = self.grid.currentItem() or (self.grid.item(0) if self.grid.count() else None)
         if item is not None:
             self.templateChosen.emit(item.data(ID_ROLE))

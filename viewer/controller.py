@@ -16,6 +16,7 @@ from qgis.core import QgsCoordinateReferenceSystem, QgsCoordinateTransform, QgsP
 from qgis.PyQt.QtCore import QTimer
 from qgis.PyQt.sip import isdeleted
 
+from ..gpkg.fields import feature_values
 from ..gpkg.output import layer_uri, read_run_table
 from ..review.background import BackgroundRunner
 from ..review.dock_controller import DockController
@@ -29,6 +30,8 @@ from .overlays import detection_boxes, parse_key, sign_boxes
 
 PLAY_INTERVAL_MS = 100  # 10 frames/s, twice the 5 pairs/s a vehicle records
 PICK_TOLERANCE_PX = 8  # a click this close to a trajectory point opens that pair
+# a layer's features changed: an edit in its buffer, or a commit (review decisions repaint the layer)
+CHANGED_SIGNALS = ("layerModified", "repaintRequested")
 
 
 class DriveViewerController(DockController):
@@ -65,6 +68,7 @@ class DriveViewerController(DockController):
         self.vehicle.hide()
 
     def release(self) -> None:
+        self._watch({})
         if self.frames is not None:
             self.frames.clear()
         self.runner.shutdown()
@@ -81,16 +85,33 @@ class DriveViewerController(DockController):
             return
         path = gpkg_source(layer)[0]
         if path and path == self.gpkg and self.drive is not None:
-            self.layers[kind] = layer
+            self._watch({**self.layers, kind: layer})
             return
         self.gpkg = path
         self.run = read_run_table(path) if path else {}
-        self.layers = {kind: layer}
+        layers = {kind: layer}
         other = DETECTIONS if kind == SIGNS else SIGNS
         found = self._layer_of(path, other)
         if found is not None:
-            self.layers[other] = found
+            layers[other] = found
+        self._watch(layers)
         self._open_drive(self.run.get("drive", ""))
+
+    def _watch(self, layers: dict) -> None:
+        """Show ``layers``; a change to them (a sign added, a decision) redraws the frame shown."""
+        for layer in self.layers.values():
+            if not isdeleted(layer):
+                for signal in CHANGED_SIGNALS:
+                    getattr(layer, signal).disconnect(self.redraw)
+        self.layers = layers
+        for layer in layers.values():
+            for signal in CHANGED_SIGNALS:
+                getattr(layer, signal).connect(self.redraw)
+
+    def redraw(self) -> None:
+        """The shown frame again with the layers as they are now (its image is in the cache)."""
+        if self.drive is not None and self.index >= 0 and self.wanted == self.index:
+            self.frames.get(self.index, lambda image, i=self.index: self._show(i, image))
 
     @staticmethod
     def _layer_of(path: str, kind: str):
@@ -131,6 +152,30 @@ class DriveViewerController(DockController):
         self.frames.get(index, lambda image, i=index: self._show(i, image))
         step = 1 if index >= self.index else -1
         self.frames.prefetch(index + step * k for k in range(1, PREFETCH + 1))
+
+    def show_feature(self, layer, fid: int) -> None:
+        """Select a feature of ``layer`` and open the pair it was seen best in (a sign) or detected in."""
+        kind = layer_kind(layer)
+        feature = layer.getFeature(fid) if kind in (SIGNS, DETECTIONS) else None
+        if feature is None or not feature.isValid():
+            self.dock.show_message(f"{layer.name()}: no Sign Mapper feature {fid}", error=True)
+            return
+        values = feature_values(feature, kind)
+        layer.selectByIds([fid])
+        self.show_pair(layer, values["best_pair_id"] if kind == SIGNS else values["pair_id"])
+
+    def show_pair(self, layer, pair_id: str) -> None:
+        """Open ``pair_id`` of ``layer``'s drive (the review's Follow); a pair the drive lacks is said."""
+        self.set_layer(layer)
+        if self.drive is None:
+            return
+        try:
+            index = self.drive.pair(pair_id).index
+        except KeyError:
+            self.dock.show_message(f"Pair {pair_id} is not in drive {self.drive.root}", error=True)
+            return
+        if index != self.wanted:
+            self.go_to(index)
 
     def step(self, delta: int) -> None:
         self.go_to(max(0, min(len(self.drive.pairs) - 1, (self.wanted if self.wanted >= 0 else 0) + delta)))

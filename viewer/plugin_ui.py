@@ -22,6 +22,19 @@ class ViewerUi(DockUi):
     def __init__(self, iface, review_ui=None, ask_drive_folder=None):
         self.review_ui, self.ask_drive_folder = review_ui, ask_drive_folder
         super().__init__(iface)
+        if review_ui is not None:
+            review_ui.followers.append(self.follow_review)
+
+    def open_at_feature(self, layer, fid: int) -> None:
+        """Open the viewer (if closed) at the best pair of a feature, selected (a layer action)."""
+        self.action.setChecked(True)
+        if self.controller is not None:
+            self.controller.show_feature(layer, fid)
+
+    def follow_review(self, layer, pair_id: str) -> None:
+        """The review's Follow: an open viewer shows the best pair of the feature under review."""
+        if self.controller is not None and self.dock is not None and self.dock.isVisible():
+            self.controller.show_pair(layer, pair_id)
 
     def build(self):
         from ..ui.drive_viewer import DriveViewerDock

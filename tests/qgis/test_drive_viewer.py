@@ -2,10 +2,12 @@
 opening a pair from the map, selecting a sign by its box, a zoom that stays."""
 
 import time
+from pathlib import Path
 
 import cv2
 import numpy as np
 import pytest
+from mapping_runs import map_drive
 from qgis.core import QgsPointXY, QgsProject, QgsVectorLayer
 from qgis.PyQt.QtCore import QThreadPool
 from qgis.PyQt.QtGui import QImage
@@ -28,14 +30,7 @@ def drive_dir(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def mapped(drive_dir, tmp_path_factory, sign_mapper, qgis_processing):
-    import processing
-
-    plugin = sign_mapper.classFactory(None)
-    plugin.initProcessing()
-    out = tmp_path_factory.mktemp("viewer-run") / "run.gpkg"
-    processing.run("signmapper:mapsigns", {"DRIVE": str(drive_dir), "OUTPUT": str(out), "LANGUAGE": 2})
-    plugin.unload()
-    return out
+    return map_drive(sign_mapper, drive_dir, tmp_path_factory.mktemp("viewer-run") / "run.gpkg", LANGUAGE=2)
 
 
 def wait(condition, timeout_s=20.0):
@@ -249,3 +244,76 @@ def test_pick_on_map_opens_the_pair_of_a_clicked_trajectory_point(viewer, drive_
     assert dock.pair_id == drive.pairs[5].id
     dock.buttons["pick"].click()  # off again: the map tool is handed back
     assert canvas.mapTool() is not controller.pick_tool and not dock.buttons["pick"].isChecked()
+
+
+def test_a_sign_added_while_a_frame_is_shown_is_drawn_at_once(viewer):
+    """Add missed sign writes into the signs layer; the viewer shows it without stepping (it once kept saying
+    '1 mapped sign in view')."""
+    from qgis.core import QgsFeature, QgsGeometry, QgsPoint
+
+    controller, dock, layers, _ = viewer
+    controller.go_to(7)
+    wait(lambda: dock.index == 7)
+    before = [b.key for b in dock.view.boxes() if b.key.startswith("signs:")]
+    assert before and f"{len(before)} mapped sign" in dock.caption.text()
+    signs = layers["signs"]
+    shown = signs.getFeature(int(before[0].split(":")[1]))
+    p = shown.geometry().constGet()
+    added = QgsFeature(shown)
+    added.setAttribute("fid", None)  # a new row
+    added.setGeometry(QgsGeometry(QgsPoint(p.x(), p.y(), p.z() + 1.0)))  # a second sign on its pole
+    signs.startEditing()
+    assert signs.addFeature(added)
+    assert signs.commitChanges()
+    QApplication.processEvents()
+    after = [b.key for b in dock.view.boxes() if b.key.startswith("signs:")]
+    assert dock.index == 7 and len(after) == len(before) + 1
+    assert f"{len(after)} mapped signs in view" in dock.caption.text()
+
+
+def test_a_signs_photo_and_the_action_that_opens_the_viewer_at_it(sign_mapper, qgis_iface, mapped, drive_dir):
+    """Crops are written by default; the layer as opened from its file shows each sign's photo (form, map tip)
+    and its action 'Open in the drive viewer' opens the viewer at the sign's best pair, the sign selected."""
+    import qgis.utils
+    from plugin_iface import RecordingIface
+    from qgis.core import QgsExpression
+
+    layer = QgsVectorLayer(f"{mapped}|layername=signs", "signs", "ogr")  # the embedded default style
+    QgsProject.instance().addMapLayer(layer)
+    feature = max(layer.getFeatures(), key=lambda f: int(f["best_pair_id"]))
+    context = layer.createExpressionContext()
+    context.setFeature(feature)
+    crop = mapped.parent / feature["crop_path"]
+    assert crop.is_file() and crop.parent.name == f"{mapped.stem}_crops"
+    # the form's image widget finds the crop from the GeoPackage's folder
+    setup = layer.editorWidgetSetup(layer.fields().indexOf("crop_path"))
+    root = setup.config()["PropertyCollection"]["properties"]["propertyRootPath"]["expression"]
+    assert setup.type() == "ExternalResource" and setup.config()["DocumentViewer"] == 1
+    assert Path(QgsExpression(root).evaluate(context)) / feature["crop_path"] == crop
+    tip = QgsExpression.replaceExpressionText(layer.mapTipTemplate(), context)
+    assert f'src="file://{crop}"' in tip and feature["template_id"] in tip
+    actions = {a.name(): a for a in layer.actions().actions()}
+    assert {"Open in the drive viewer", "Show the image crop"} <= set(actions)
+
+    plugin = sign_mapper.classFactory(RecordingIface(qgis_iface))
+    plugin.initGui()
+    qgis.utils.plugins["sign_mapper_under_test"] = plugin
+    try:
+        code = QgsExpression.replaceExpressionText(actions["Open in the drive viewer"].command(), context)
+        exec(compile(code, "action", "exec"), {})  # what QGIS runs when the action is clicked
+        dock = plugin.viewer_ui.dock
+        assert dock is not None and plugin.viewer_ui.action.isChecked()
+        wait(lambda: dock.pair_id == feature["best_pair_id"])
+        assert layer.selectedFeatureIds() == [feature.id()]
+        assert f"signs:{feature.id()}" in [b.key for b in dock.view.boxes()]
+    finally:
+        del qgis.utils.plugins["sign_mapper_under_test"]
+        plugin.unload()
+        # as the viewer fixture: no map render may still read the layer removed below
+        canvas = qgis_iface.mapCanvas()
+        canvas.setLayers([])
+        canvas.waitWhileRendering()
+        assert QThreadPool.globalInstance().waitForDone(60000), "map renders still running after 60 s"
+        QApplication.processEvents()
+        QgsProject.instance().removeMapLayer(layer)
+        QApplication.processEvents()

@@ -169,6 +169,16 @@ def test_modeler_chain_synthetic_drive_map_signs_evaluate(run, tmp_path):
     assert "Table 1" in html and "Detected signs" in html
     reference_row = html.split("Reference signs</td><td>")[1].split("<")[0]
     assert int(reference_row) == len(open_drive(tmp_path / "drive").truth)
+    # for people: the drive by its folder, the figures first, each sign with its status, the settings last, folded
+    drive = (tmp_path / "drive").resolve()
+    assert "<h1>Sign Mapper: evaluation of drive drive</h1>" in html
+    assert f"<td>drive</td><td>drive ({drive})</td>" in html
+    order = [html.index(marker) for marker in ("Table 1", "Table 2", "<svg", "<h2>Mapped signs</h2>",
+                                               "<h2>Missed reference signs", "<details>", "mapping: pipeline")]
+    assert order == sorted(order)
+    assert "<th>sign</th><th>status</th><th>mapped</th>" in html
+    assert "<tr><td>sign 1</td><td>accepted</td>" in html or "<tr><td>sign 1</td><td>review</td>" in html
+    assert html.index("</details>") > html.index("mapping: fusion")  # the dumps are inside the fold
 
 
 def test_facing_as_text_radius_default_and_a_report_with_signs_missed_and_parameters(run, tmp_path):
@@ -194,7 +204,7 @@ def test_facing_as_text_radius_default_and_a_report_with_signs_missed_and_parame
     result = run("signmapper:evaluate", params)  # RADIUS left at its default
     assert result["FALSE_POSITIVES"] == 0
     html = Path(result["REPORT"]).read_text()
-    assert "<h2>Mapped signs</h2>" in html and html.count("misclassified") == 1 and html.count(">correct<") == 2
+    assert "<h2>Mapped signs</h2>" in html and html.count(">misclassified<") == 1 and html.count(">correct<") == 2
     # s4 is not mapped: the one missed sign
     assert "<h2>Missed reference signs (1)</h2>" in html and ">1.22<" in html
     assert "date of this evaluation" in html and "matching radius [m]</td><td>0.75" in html
@@ -235,3 +245,32 @@ def test_table_2_in_the_log_labels_every_figure(run, tmp_path):
         "STATISTICS": "memory:", "MATCHES": "memory:"}, feedback=feedback)
     text = "\n".join(feedback.lines)
     assert "  across: n 4, mean 0.050, empirical σ 0.000, RMS 0.050, max |d| 0.050" in text
+
+
+@pytest.mark.parametrize("temporary", ["TEMPORARY_OUTPUT", "memory:"])
+def test_temporary_outputs_loaded_on_completion_are_only_layers_that_exist(run, tmp_path, temporary):
+    """As the dialog and a model run it: temporary outputs to be loaded into the project. Every layer the run
+    asks Processing to load must load (a stray 'memory:Matches' once ended a model run with a red error)."""
+    from qgis.core import (
+        QgsApplication,
+        QgsProcessingContext,
+        QgsProcessingFeedback,
+        QgsProcessingOutputLayerDefinition,
+        QgsProcessingUtils,
+        QgsProject,
+    )
+
+    context = QgsProcessingContext()
+    context.setProject(QgsProject.instance())
+    params = {"SIGNS": point_layer(REF, "mapped"), "REFERENCE": point_layer(REF, "ref"),
+              "REFERENCE_ID_FIELD": "template_id", "RADIUS": 1.0, "TRAJECTORY": eastward_trajectory(),
+              "REPORT": str(tmp_path / "report.html"),
+              "STATISTICS": QgsProcessingOutputLayerDefinition(temporary, QgsProject.instance()),
+              "MATCHES": QgsProcessingOutputLayerDefinition(temporary, QgsProject.instance())}
+    alg = QgsApplication.processingRegistry().createAlgorithmById("signmapper:evaluate")
+    result, ok = alg.run(params, context, QgsProcessingFeedback())  # what the dialog runs; the layers stay
+    assert ok
+    to_load = context.layersToLoadOnCompletion()
+    assert sorted(to_load) == sorted([result["STATISTICS"], result["MATCHES"]])
+    for source in to_load:
+        assert QgsProcessingUtils.mapLayerFromString(source, context) is not None, source

@@ -241,3 +241,25 @@ def test_export_to_another_signalo_version_writes_nothing(run, mapped, signalo_d
     with pytest.raises(QgsProcessingException, match=r"Signalo data model 1\.0"):
         run("signmapper:exporttosignalo", {"SIGNS": f"{path}|layername=signs", "SIGNALO": dsn})
     assert read_signalo(dsn) == ([], [])
+
+
+def test_the_signalo_database_is_chosen_from_qgis_saved_connections(run, mapped, signalo_database, registered_plugin):
+    """The dialog offers QGIS's saved PostgreSQL connections; the export writes through the one chosen by name."""
+    from qgis.core import QgsApplication, QgsProcessingParameterProviderConnection, QgsProviderRegistry
+
+    for algorithm in ("signmapper:exporttosignalo", "signmapper:changes"):
+        parameter = QgsApplication.processingRegistry().algorithmById(algorithm).parameterDefinition("SIGNALO")
+        assert isinstance(parameter, QgsProcessingParameterProviderConnection) and parameter.providerId() == \
+            "postgres"
+    path, _ = mapped
+    dsn = signalo_database("qgis_saved_connection")
+    metadata = QgsProviderRegistry.instance().providerMetadata("postgres")
+    connection = metadata.createConnection(QgsDataSourceUri(dsn).uri(False), {"saveUsername": True,
+                                                                            "savePassword": True})
+    metadata.saveConnection(connection, "Signalo (test)")
+    try:
+        result = run("signmapper:exporttosignalo", {"SIGNS": f"{path}|layername=signs", "SIGNALO": "Signalo (test)",
+                                                    "INCLUDE_REVIEW": True})
+        assert result["ADDED"] == len(signs_of(path)) and len(read_signalo(dsn)[1]) == result["ADDED"]
+    finally:
+        metadata.deleteConnection("Signalo (test)")

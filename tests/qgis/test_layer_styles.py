@@ -7,10 +7,14 @@ import numpy as np
 import pytest
 from model_chain import synthetic_drive_then_map_signs
 from qgis.core import (
+    QgsExpressionContext,
+    QgsExpressionContextScope,
+    QgsExpressionContextUtils,
     QgsFeature,
     QgsGeometry,
     QgsMapRendererParallelJob,
     QgsMapSettings,
+    QgsPoint,
     QgsPointXY,
     QgsProject,
     QgsRectangle,
@@ -54,16 +58,21 @@ def memory_signs(statuses, template_id="2.30-50"):
     return layer
 
 
-def render(layer, n):
+def render(layer, n, extent=None, size=None):
+    """The layer drawn as RGB: ``n`` test signs SPACING_M apart, or ``extent`` at ``size`` pixels (96 dpi, the
+    map's expression context as the canvas sets it)."""
     settings = QgsMapSettings()
     settings.setLayers([layer])
     settings.setDestinationCrs(layer.crs())
     width = int(SPACING_M * n * PX_PER_M)
-    settings.setOutputSize(QSize(width, int(SPACING_M * PX_PER_M)))
-    settings.setExtent(QgsRectangle(2600000.0 - SPACING_M / 2, 1200000.0 - SPACING_M / 2,
-                                    2600000.0 + SPACING_M * (n - 0.5), 1200000.0 + SPACING_M / 2))
+    settings.setOutputSize(size or QSize(width, int(SPACING_M * PX_PER_M)))
+    settings.setExtent(extent or QgsRectangle(2600000.0 - SPACING_M / 2, 1200000.0 - SPACING_M / 2,
+                                              2600000.0 + SPACING_M * (n - 0.5), 1200000.0 + SPACING_M / 2))
     settings.setBackgroundColor(QColor("white"))
     settings.setOutputDpi(96)
+    map_context = QgsExpressionContext()
+    map_context.appendScope(QgsExpressionContextUtils.mapSettingsScope(settings))
+    settings.setExpressionContext(map_context)
     job = QgsMapRendererParallelJob(settings)
     job.start()
     job.waitForFinished()
@@ -108,10 +117,16 @@ def test_review_state_shows_in_the_symbol_and_follows_decisions(styles):
     assert share_near(decided, STATUS_COLOURS["review"], 60) < 0.002 and share_near(decided, "#212121", 60) > 0.002
 
 
-def test_legend_groups_the_pictograms_by_sign_family(styles):
+def test_legend_has_classes_by_status_then_the_pictograms_by_sign_family(styles):
     catalogue = load_catalogue()
     renderer = styles.signs_renderer(catalogue, "fr")
-    groups = renderer.rootRule().children()
+    status, *groups = renderer.rootRule().children()
+    assert status.label() == "Statut"
+    assert [(r.label(), r.filterExpression()) for r in status.children()] == [
+        ("accepté", "\"status\" = 'accepted'"), ("à contrôler", "\"status\" = 'review'"),
+        ("rejeté", "\"status\" = 'rejected'"), ("ajouté à la main", "\"status\" = 'manual'")]
+    legend = [item.label() for item in renderer.legendSymbolItems()]
+    assert legend[:5] == ["Statut", "accepté", "à contrôler", "rejeté", "ajouté à la main"]
     labels = [g.label() for g in groups]
     assert labels == ["Signaux de danger", "Signaux de priorité", "Interdictions", "Prescriptions",
                       "Signaux d'indication", "Plaque complémentaire", "other"]
@@ -135,6 +150,20 @@ def test_fields_get_aliases_in_the_output_language(styles, small_drive, register
     names = {f["template_id"]: f["name"] for f in layer.getFeatures()}
     catalogue = load_catalogue()
     assert names and all(name == catalogue[tid].name("fr") for tid, name in names.items())
+    # coded values read in French where people read them (table, identify, forms, labels); the file keeps codes
+    from qgis.core import QgsExpression, QgsExpressionContext, QgsExpressionContextUtils
+
+    context = QgsExpressionContext(QgsExpressionContextUtils.globalProjectLayerScopes(layer))
+    shown = QgsExpression("represent_value(\"status\") || ' | ' || represent_value(\"reviewed\") || ' | ' || "
+                          "represent_value(\"shape\") || ' | ' || represent_value(\"format\")")
+    for feature in layer.getFeatures():
+        context.setFeature(feature)
+        status = {"accepted": "accepté", "review": "à contrôler"}[feature["status"]]
+        shape = {"circle": "cercle", "triangle": "triangle", "rectangle": "rectangle", "square": "carré",
+                 "diamond": "losange", "octagon": "octogone"}[feature["shape"]]
+        fmt = {"normal": "normal", "large": "grand", "small": "petit", "intermediate": "intermédiaire"}.get(
+            feature["format"], feature["format"])
+        assert shown.evaluate(context) == f"{status} | non | {shape} | {fmt}"
 
 
 
@@ -168,6 +197,8 @@ def test_without_a_language_chosen_the_output_speaks_the_language_qgis_is_set_to
         assert algorithm.language({}, context) == language, locale  # LANGUAGE left at its default
     qgis_locale("fr_CH")
     assert algorithm.language({"LANGUAGE": 3}, context) == "fr" and algorithm.language({"LANGUAGE": 1}, context) != "fr"
+    choices = algorithm.parameterDefinition("LANGUAGE").options()  # offered by name, in the order of the codes
+    assert choices[1:] == ["English", "Deutsch", "Français", "Italiano"]
 
 
 def _assert_styled(layer, language_alias):
@@ -200,3 +231,71 @@ def test_a_model_run_loads_styled_layers(registered_plugin, tmp_path, clean_proj
     assert signs, [layer.source() for layer in clean_project.mapLayers().values()]
     for layer in signs:
         _assert_styled(layer, "Sign type (SSV)")
+
+
+def pole_layer():
+    """Three signs on one pole (2.30-50 at the top, 2.37, 3.03 at the bottom, a few cm apart) and one alone."""
+    layer = QgsVectorLayer("PointZ?crs=EPSG:2056&field=template_id:string&field=status:string&field=azimuth:double"
+                           "&field=elevation:double", "signs", "memory")
+    features = []
+    for template_id, status, dx, z in (("2.37", "review", 0.04, 401.3), ("2.30-50", "accepted", 0.0, 402.0),
+                                       ("3.03", "accepted", 0.02, 400.6), ("2.30-50", "accepted", 20.0, 402.0)):
+        feature = QgsFeature(layer.fields())
+        feature.setAttributes([template_id, status, 180.0, z])
+        feature.setGeometry(QgsGeometry(QgsPoint(2600000.0 + dx, 1200000.0, z)))
+        features.append(feature)
+    layer.dataProvider().addFeatures(features)
+    return layer
+
+
+def test_every_sign_on_a_pole_is_drawn_and_labelled_apart_highest_on_top(styles, clean_project):
+    """Signs on one pole once hid each other (13 signs showed as 8 symbols): stacked by height on the map."""
+    from qgis.core import QgsRenderContext
+
+    layer = pole_layer()
+    clean_project.addMapLayer(layer)
+    styles.apply_style(layer, "signs", load_catalogue(), "de")
+    # the offsets QGIS draws with, per sign: its face, its label
+    context = QgsRenderContext()
+    context.setExpressionContext(layer.createExpressionContext())
+    rules = {}
+    for group in layer.renderer().rootRule().children():
+        for rule in group.children():
+            rules[rule.filterExpression()] = rule
+    face_y, label_y = {}, {}
+    label_settings = layer.labeling().settings()  # a copy: kept while its properties are read
+    label_offset = label_settings.dataDefinedProperties().property(styles.QgsPalLayerSettings.OffsetXY)
+    for feature in layer.getFeatures():
+        context.expressionContext().setFeature(feature)
+        face = rules[f"\"template_id\" = '{feature['template_id']}'"].symbol().symbolLayer(0)
+        offset, _ = face.dataDefinedProperties().property(styles.QgsSymbolLayer.PropertyOffset).valueAsString(
+            context.expressionContext())
+        face_y[feature.id()] = float(offset.split(",")[1])
+        text, _ = label_offset.valueAsString(context.expressionContext())
+        label_y[feature.id()] = float(text.split(",")[1])
+    by_height = sorted((f for f in layer.getFeatures() if f.geometry().asPoint().x() < 2600010),
+                       key=lambda f: -f["elevation"])
+    ys = [face_y[f.id()] for f in by_height]
+    step = styles.STACK_STEP_MM
+    assert ys == pytest.approx([-step, 0.0, step])  # the highest on top, the stack centred on the pole
+    alone = next(f for f in layer.getFeatures() if f.geometry().asPoint().x() > 2600010)
+    assert face_y[alone.id()] == 0.0
+    assert label_y == face_y  # each label beside its own pictogram
+    assert label_settings.displayAll  # none dropped as a collision
+    far = QgsExpressionContextScope()
+    far.setVariable("map_scale", 2 * styles.STACK_MAX_SCALE)  # zoomed out: poles are not told apart, not stacked
+    context.expressionContext().appendScope(far)
+    context.expressionContext().setFeature(by_height[0])
+    assert label_offset.valueAsString(context.expressionContext())[0].endswith(",0")
+
+    # drawn: the red disc above the blue one above the yellow diamond, each a pictogram's height apart
+    rgb = render(layer, 1, QgsRectangle(2599998.0, 1199998.0, 2600002.0, 1200002.0), QSize(200, 200))  # 1:~75
+    r, g, b = (rgb[..., i].astype(int) for i in range(3))
+    rows = {"red": np.nonzero((r > 180) & (g < 80) & (b < 80))[0], "blue": np.nonzero((b > 150) & (r < 60))[0],
+            "yellow": np.nonzero((r > 200) & (g > 170) & (b < 60))[0]}
+    assert all(len(found) > 20 for found in rows.values()), {k: len(v) for k, v in rows.items()}
+    centres = {colour: float(np.median(found)) for colour, found in rows.items()}
+    px_per_mm = 96 / 25.4
+    assert centres["red"] < centres["blue"] < centres["yellow"]
+    assert centres["blue"] - centres["red"] == pytest.approx(step * px_per_mm, abs=4)
+    assert centres["yellow"] - centres["blue"] == pytest.approx(step * px_per_mm, abs=4)

@@ -88,7 +88,10 @@ def test_layers_open_with_the_embedded_pictogram_style(run, small_drive, tmp_pat
     assert renderer.type() == "RuleRenderer"
     rules = {r.filterExpression(): r for r in renderer.rootRule().descendants()}
     assert all(f""""template_id" = '{f["template_id"]}'""" in rules for f in signs.getFeatures())
-    svg = renderer.rootRule().children()[0].children()[0].symbol().symbolLayer(1)
+    status, families = renderer.rootRule().children()[0], renderer.rootRule().children()[1:]
+    assert [r.filterExpression() for r in status.children()] == [f'"status" = \'{s}\'' for s in
+                                                                 ("accepted", "review", "rejected", "manual")]
+    svg = families[0].children()[0].symbol().symbolLayer(0)
     assert svg.layerType() == "SvgMarker" and svg.path().startswith("base64:")
     assert signs.labelsEnabled()
     detections = QgsVectorLayer(f"{out}|layername=detections", "d", "ogr")

@@ -25,7 +25,8 @@ def cluster():
 
 def test_mapsigns_on_the_cluster_writes_the_same_geopackage_as_on_this_computer(run, small_drive, cluster,
                                                                                tmp_path):
-    here, there = tmp_path / "here.gpkg", tmp_path / "there.gpkg"
+    # the same file name in two folders: crops are written by default, their paths name the GeoPackage
+    here, there = tmp_path / "here" / "signs.gpkg", tmp_path / "there" / "signs.gpkg"
     run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(here), "WORKERS": 1, "LANGUAGE": GERMAN})
     result = run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(there), "LANGUAGE": GERMAN,
                                          "SCHEDULER": cluster.scheduler_address})

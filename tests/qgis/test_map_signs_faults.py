@@ -177,11 +177,12 @@ def catalogue_copy(tmp_path: Path, svg: bool) -> Path:
 
 
 def pictogram_faces(signs) -> dict:
-    """Template id -> (type, colour) of the face layer of its symbol (layer 1: after the review halo)."""
+    """Template id -> (type, colour) of the face layer of its symbol (layer 0; the status group's rules draw
+    the status marks, not faces)."""
     faces = {}
-    for group in signs.renderer().rootRule().children():
+    for group in signs.renderer().rootRule().children()[1:]:
         for rule in group.children():
-            face = rule.symbol().symbolLayer(1)
+            face = rule.symbol().symbolLayer(0)
             faces[rule.label().split(" ", 1)[0]] = (face.layerType(), face.color().name())
     return faces
 

@@ -1,5 +1,6 @@
 """The plugin constructs without a GUI, registers its provider once and unloads cleanly."""
 
+import html
 import subprocess
 import sys
 import textwrap
@@ -76,7 +77,8 @@ def test_map_signs_help_lists_every_output_field(registered_plugin):
 
     help_text = QgsApplication.processingRegistry().algorithmById("signmapper:mapsigns").shortHelpString()
     for field in output_schema.FIELDS:
-        assert f"<b>{field.name}</b>" in help_text and field.help in help_text
+        assert f"<b>{field.name}</b>" in help_text and html.escape(field.help, quote=False) in help_text
+    assert "'-&lt;value&gt;' for a sign with a number" in help_text  # shown, not swallowed as a tag
     assert "<b>mount_height_m</b> (signs):" in help_text and "<b>u</b> (signs and detections):" in help_text
 
 
@@ -94,3 +96,14 @@ def test_every_algorithm_has_its_own_icon(registered_plugin):
     assert len(icons) == len(ALGORITHMS)
     images = list(icons.values())
     assert all(images[i] != images[j] for i in range(len(images)) for j in range(i + 1, len(images)))
+
+
+def test_help_texts_keep_their_angle_brackets_and_name_the_classifier(registered_plugin):
+    """The help panel renders HTML: 'depth/<id>.npy' once lost '<id>' as an unknown tag."""
+    registry = QgsApplication.processingRegistry()
+    synthetic = registry.algorithmById("signmapper:syntheticdrive").shortHelpString()
+    assert "depth/&lt;id&gt;.npy" in synthetic and "depth/.npy" not in synthetic
+    mapsigns = registry.algorithmById("signmapper:mapsigns").shortHelpString()
+    assert "'&lt;output name&gt;_crops'" in mapsigns
+    assert "template matching (classification indicator)" not in mapsigns
+    assert "learned network or by template matching (classification indicator" in mapsigns

@@ -13,6 +13,7 @@ from qgis.core import (
     QgsFeatureSink,
     QgsGeometry,
     QgsPoint,
+    QgsPointXY,
     QgsProject,
     QgsSettings,
     QgsVectorLayer,
@@ -77,7 +78,7 @@ def _write_layer(gpkg, name, rows, crs):
     writer.close()
 
 
-def build_gpkg(path: Path, drive_dir: Path, detections, recorded_drive=None, skip=()) -> Path:
+def build_gpkg(path: Path, drive_dir: Path, detections, recorded_drive=None, skip=(), language=None) -> Path:
     """A GeoPackage like mapsigns writes: detections, signs fused by template, and the run table."""
     from sign_mapper.gpkg.output import GeoPackageLayers
     from sign_mapper.signmapper_core.geopackage_file import PartialGeoPackage
@@ -103,7 +104,8 @@ def build_gpkg(path: Path, drive_dir: Path, detections, recorded_drive=None, ski
     _write_layer(gpkg, "detections", rows, crs)
     _write_layer(gpkg, "signs", signs, crs)
     gpkg.write_run_table({"drive": str(recorded_drive or drive_dir), "crs": "EPSG:2056", "near_m": 4.0,
-                          "far_m": 14.0, "colours": ["red", "blue", "yellow"]})
+                          "far_m": 14.0, "colours": ["red", "blue", "yellow"], **({"language": language}
+                                                                                   if language else {})})
     return Path(output.commit())
 
 
@@ -430,7 +432,7 @@ def test_dock_screenshot(review, gpkg, tmp_path):
     import os
 
     controller, dock, layer = review(gpkg, "signs")
-    dock.resize(460, 1400)  # tall enough for the picker with the sign's next choices
+    dock.resize(460, 760)  # about what it gets beside the map on a 1000 px screen: the open picker fits
     dock.show()
     feature = next(iter(layer.getFeatures()))
     near = [e.id for e in load_catalogue() if e.colour == feature["colour"] and e.shape == feature["shape"]
@@ -523,12 +525,14 @@ def test_an_added_sign_shows_its_one_observation_and_undo_leaves_no_stale_image(
                   and min(np.linalg.norm(t.position - d.position) for t in drive.truth) < 0.1)
     record, missed = detections[target]
     others = [d for i, d in enumerate(detections) if d[1].template_id != missed.template_id]
-    gpkg = build_gpkg(tmp_path / "one.gpkg", drive_dir, others)  # the sign is in neither layer
+    gpkg = build_gpkg(tmp_path / "one.gpkg", drive_dir, others, language="fr")  # the sign is in neither layer
     controller, dock, layer = review(gpkg, "signs")
     truth = min(drive.truth, key=lambda s: np.linalg.norm(s.position - missed.position))
     dock.addSignClicked.emit(record.id, *_truth_click(drive, record, truth))
     wait_idle(controller)
     assert dock.item.template_id == truth.template_id
+    assert dock.item.name == load_catalogue()[truth.template_id].name("fr")  # the layer's language, as written
+    assert f"Added {truth.template_id} {dock.item.name} at" in dock.message.text()  # and as said
     assert dock.strip_box.title() == "Observations (1)" and dock.strip.count() == 1
     assert dock.item.observations[0].pair_id == record.id
     dock.undoRequested.emit()
@@ -614,3 +618,36 @@ def test_a_pictogram_plate_shows_its_drawing_and_a_sign_no_plate_text(review, tm
     sign = next(f for f in layer.getFeatures() if f["sign_id"] == host)
     select(controller, layer, sign.id())
     assert dock.plate_box.isHidden() and dock.info["plate"].text() == "–"
+
+
+def test_follow_moves_the_map_only_as_far_as_needed(review, gpkg, qgis_iface):
+    from qgis.core import QgsRectangle
+
+    controller, dock, layer = review(gpkg)
+    assert dock.following()  # on by default
+    canvas = qgis_iface.mapCanvas()
+    canvas.resize(600, 400)
+    canvas.setDestinationCrs(layer.crs())
+    fid = next(iter(layer.getFeatures())).id()
+    point = layer.getFeature(fid).geometry().asPoint()
+    canvas.setExtent(QgsRectangle(point.x() - 30, point.y() - 20, point.x() + 30, point.y() + 20))
+    before = canvas.extent()
+    select(controller, layer, fid)  # in the middle of the map: left alone
+    assert canvas.extent() == before
+    width = canvas.extent().width()
+    canvas.setCenter(QgsPointXY(point.x() - (width / 2 - 1.0), point.y()))  # 1 m inside the right edge
+    QApplication.processEvents()
+    assert canvas.extent().contains(point)
+    layer.removeSelection()
+    select(controller, layer, fid)  # at the edge: panned to it, the scale kept
+    assert canvas.extent().center().distance(point) < 0.5 and canvas.extent().width() == pytest.approx(width)
+    canvas.setExtent(QgsRectangle(point.x() - 5000, point.y() - 5000, point.x() + 5000, point.y() + 5000))
+    layer.removeSelection()
+    select(controller, layer, fid)  # 10 km across: zoomed in to ±20 m
+    assert canvas.extent().center().distance(point) < 0.5
+    assert min(canvas.extent().width(), canvas.extent().height()) == pytest.approx(40.0, abs=1.0)
+    dock.follow_box.setChecked(False)
+    canvas.setExtent(QgsRectangle(point.x() - 5000, point.y() - 5000, point.x() + 5000, point.y() + 5000))
+    layer.removeSelection()
+    select(controller, layer, fid)  # Follow off: the map stays
+    assert canvas.extent().width() > 9000

@@ -135,7 +135,7 @@ def test_the_classifiers_next_choices_are_one_click_reclassifications(dock, ui):
     assert dock.picker.suggested_ids() == ["2.30-80", "1.01"]  # 9.99 is no catalogue entry: not offered
     assert dock.picker.suggestions.isVisible()
     buttons = dock.picker.suggestions.findChildren(QToolButton)
-    assert buttons[0].text() == "2.30-80\n0.31"
+    assert buttons[0].text() == "[1] 2.30-80\n0.31"  # its key, its id, its score
     QTest.mouseClick(buttons[1], Qt.LeftButton)
     assert rec.calls == [("reclassifyRequested", "1.01")]
     dock.show_empty("nothing selected")
@@ -312,3 +312,130 @@ def test_wheel_zoom_in_the_full_frame_stays_when_the_dock_changes_size(dock):
     assert view.transform().m11() == pytest.approx(zoomed)
     QTest.mouseDClick(view.viewport(), Qt.LeftButton)  # double click: back to the crop
     assert view.transform().m11() < zoomed
+
+
+def press(key, modifier=Qt.NoModifier):
+    """A key press where the keyboard is: the widget with the focus, as a user's key reaches it."""
+    QTest.keyClick(QApplication.focusWidget(), key, modifier)
+
+
+def reclassifiable(dock, ui):
+    _, review_item, _, _ = ui
+    dock.show_item(review_item.ReviewItem(
+        "signs", 5, "signs · sign 5", template_id="2.30-50", colour="red", shape="circle", status="review",
+        alternatives=[("2.30-80", 0.31), ("1.01", 0.05)], observations=[]))
+    dock.image_view.setFocus()
+    QApplication.processEvents()
+
+
+def test_reclassify_by_keys_c_then_1_takes_the_first_next_choice(dock, ui):
+    rec = Recorder(dock)
+    reclassifiable(dock, ui)
+    press(Qt.Key_C)
+    assert dock.picker_box.isVisible() and dock.buttons["reclassify"].isChecked()
+    assert QApplication.focusWidget() is dock.picker.grid  # not the search box: keys stay keys
+    press(Qt.Key_2)
+    assert rec.calls == [("reclassifyRequested", "1.01")]
+    press(Qt.Key_C)
+    press(Qt.Key_3)  # no third choice: nothing
+    press(Qt.Key_1)
+    assert rec.calls == [("reclassifyRequested", "1.01"), ("reclassifyRequested", "2.30-80")]
+    dock.show_picker(False)
+    press(Qt.Key_1)  # the picker closed: 1 reclassifies nothing
+    assert len(rec.calls) == 2
+
+
+def test_escape_closes_the_picker_and_the_decision_keys_act_while_it_is_open(dock, ui):
+    rec = Recorder(dock)
+    reclassifiable(dock, ui)
+    press(Qt.Key_C)
+    press(Qt.Key_A)  # a decision, not text in the search box
+    press(Qt.Key_R)
+    assert rec.calls == [("acceptRequested",), ("rejectRequested",)] and dock.picker.search.text() == ""
+    assert dock.picker_box.isVisible()
+    press(Qt.Key_Escape)
+    assert not dock.picker_box.isVisible() and not dock.buttons["reclassify"].isChecked()
+    assert dock.isAncestorOf(QApplication.focusWidget())  # the keys still reach the dock
+    press(Qt.Key_N)
+    assert rec.calls[-1] == ("nextRequested",)
+    press(Qt.Key_C)  # C toggles: open, then closed again
+    press(Qt.Key_C)
+    assert not dock.picker_box.isVisible()
+
+
+def test_typing_in_the_open_picker_searches_and_enter_reclassifies_as_the_match(dock, ui):
+    rec = Recorder(dock)
+    reclassifiable(dock, ui)
+    press(Qt.Key_C)
+    dock.picker.set_filter("", "", "")
+    for key in (Qt.Key_K, Qt.Key_U, Qt.Key_R, Qt.Key_V, Qt.Key_E):  # U and R are shortcuts once typing started
+        press(key)
+    assert QApplication.focusWidget() is dock.picker.search and dock.picker.search.text() == "kurve"
+    assert dock.picker.visible_ids() == ["1.01"] and rec.calls == []
+    press(Qt.Key_Return)
+    assert rec.calls == [("reclassifyRequested", "1.01")]
+    dock.show_picker(False)
+    press(Qt.Key_C)
+    press(Qt.Key_Slash)  # to search for an id starting with a digit (1-3 choose)
+    assert QApplication.focusWidget() is dock.picker.search and dock.picker.search.text() == ""
+    QTest.keyClicks(dock.picker.search, "2.37")
+    assert dock.picker.visible_ids() == ["2.37"]
+    press(Qt.Key_Escape)  # closes the picker from the search box too
+    assert not dock.picker_box.isVisible()
+
+
+def test_a_search_starting_with_a_letter_qgis_binds_is_a_search(dock, ui):
+    """QGIS binds S (toggle snapping), T (tracing) and Ctrl+F (a modal filter dialog) in its main window: a
+    search's first letter must not reach them."""
+    from qgis.PyQt.QtWidgets import QAction, QMainWindow
+
+    window = QMainWindow()
+    snapping = QAction("Toggle Snapping", window)
+    snapping.setShortcut("S")  # as QGIS has it: a window shortcut
+    window.addAction(snapping)
+    toggled = []
+    snapping.triggered.connect(lambda: toggled.append(True))
+    window.addDockWidget(Qt.RightDockWidgetArea, dock)
+    window.show()
+    QApplication.setActiveWindow(window)
+    reclassifiable(dock, ui)
+    press(Qt.Key_S)  # the picker closed: S is QGIS's
+    assert toggled == [True]
+    press(Qt.Key_C)
+    dock.picker.set_filter("", "", "")
+    for key in (Qt.Key_S, Qt.Key_T, Qt.Key_O, Qt.Key_P):
+        press(key)
+    assert dock.picker.search.text() == "stop" and toggled == [True]
+    window.removeDockWidget(dock)
+    dock.setParent(None)  # the fixture closes it
+    window.close()
+
+
+def _inside_viewport(dock, widget) -> bool:
+    viewport = dock.scroll.viewport()
+    top_left = widget.mapTo(viewport, QPoint(0, 0))
+    return top_left.y() >= 0 and top_left.y() + widget.height() <= viewport.height()
+
+
+def test_the_dock_lays_out_in_700_px_with_the_picker_open(dock, ui):
+    """On a 1000 px screen the dock gets about 700 px: everything, the open picker included, is in view."""
+    _, review_item, _, _ = ui
+    dock.resize(420, 700)
+    dock.show_item(review_item.ReviewItem(
+        "signs", 5, "signs · sign 5 · 3 of 13 · 2 to review", template_id="2.30-50", name="Höchstgeschwindigkeit",
+        colour="red", shape="circle", format="normal", status="review", pair_id="000004", time=0.8,
+        review_reason="seen in one pair only", alternatives=[("2.30-80", 0.31), ("1.01", 0.05), ("2.37", 0.02)],
+        extra=[("observations", "4"), ("vote share", "0.90")],
+        observations=[review_item.ObservationView(f"00000{i}", f"00000{i}\n0.8") for i in range(4)]))
+    dock.set_progress(2, 1, 13)
+    QApplication.processEvents()
+    scroll = dock.scroll.verticalScrollBar()
+    assert scroll.maximum() == 0  # nothing below the fold
+    assert all(_inside_viewport(dock, dock.buttons[name]) for name in dock.buttons)
+    dock.show_picker(True)
+    QApplication.processEvents()
+    assert scroll.maximum() == 0
+    for widget in (dock.picker.suggestions, dock.picker.search, dock.picker.grid, dock.buttons["accept"],
+                   dock.image_view):
+        assert widget.isVisible() and _inside_viewport(dock, widget), widget
+    assert dock.image_view.height() >= 150

@@ -1,37 +1,9 @@
 """The review dock's wiring into QGIS: toolbar and menu action, lazy dock, clean unload."""
 
 import pytest
+from plugin_iface import RecordingIface
 from qgis.core import QgsApplication, QgsProject, QgsVectorLayer
 from qgis.PyQt.QtWidgets import QApplication
-
-
-class RecordingIface:
-    """The pytest-qgis stub iface plus the removal calls it lacks, recording what the plugin adds and removes."""
-
-    def __init__(self, iface):
-        self._iface = iface
-        self.added, self.removed = [], []
-
-    def __getattr__(self, name):
-        return getattr(self._iface, name)
-
-    def addToolBarIcon(self, action):  # noqa: N802
-        self.added.append(("toolbar", action))
-
-    def removeToolBarIcon(self, action):  # noqa: N802
-        self.removed.append(("toolbar", action))
-
-    def addPluginToMenu(self, menu, action):  # noqa: N802
-        self.added.append(("menu", menu, action))
-
-    def removePluginMenu(self, menu, action):  # noqa: N802
-        self.removed.append(("menu", menu, action))
-
-    def addDockWidget(self, area, dock):  # noqa: N802
-        self.added.append(("dock", dock))
-
-    def removeDockWidget(self, dock):  # noqa: N802
-        self.removed.append(("dock", dock))
 
 
 @pytest.fixture
@@ -113,3 +85,42 @@ def test_add_missed_sign_from_the_viewer_opens_the_review_on_the_viewers_layer(s
     assert calls == [(None, "000004", 120.0, 80.0)]  # a plain memory layer is no Sign Mapper layer: no session
     plugin.unload()
     QgsProject.instance().removeAllMapLayers()
+
+
+def test_the_review_dock_claims_700_px_beside_another_dock(sign_mapper, qgis_processing):
+    """Qt splits a dock area evenly: beside QGIS's Layers panel on a 1000 px screen the review got 284 px."""
+    from qgis.PyQt.QtCore import Qt
+    from qgis.PyQt.QtWidgets import QDockWidget, QLabel, QMainWindow, QTreeView
+
+    window = QMainWindow()
+    window.setCentralWidget(QLabel("map canvas"))
+    window.setGeometry(0, 0, 1600, 1000)
+    layers = QDockWidget("Layers")
+    layers.setWidget(QTreeView())
+    window.addDockWidget(Qt.RightDockWidgetArea, layers)
+    window.show()
+    QApplication.processEvents()
+
+    class Iface:
+        def __init__(self):
+            self.added = []
+
+        def mainWindow(self):  # noqa: N802
+            return window
+
+        def addDockWidget(self, area, dock):  # noqa: N802
+            window.addDockWidget(area, dock)
+
+        def __getattr__(self, name):  # toolbar and menu: not what this test looks at
+            return lambda *args: None
+
+    from sign_mapper.review.plugin_ui import ReviewUi
+
+    ui = ReviewUi(Iface())
+    ui.build = lambda: (QDockWidget("Sign Mapper review"), type("Controller", (), {
+        "activate": lambda self: None, "deactivate": lambda self: None})())
+    ui.action.setChecked(True)
+    QApplication.processEvents()
+    assert ui.dock.isVisible() and layers.isVisible()
+    assert ui.dock.height() >= 700 - 10  # a title bar's rounding
+    window.close()
