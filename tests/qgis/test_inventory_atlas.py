@@ -30,6 +30,7 @@ def project_signs(mapped):
     QgsProject.instance().addMapLayer(layer)
     yield layer
     for layout in QgsProject.instance().layoutManager().layouts():
+        layout.atlas().endRender()  # a test may leave it rendering; removing it then crashed QGIS
         QgsProject.instance().layoutManager().removeLayout(layout)
     QgsProject.instance().removeAllMapLayers()
 
