@@ -21,9 +21,9 @@ from .face_wear import colour_masks, smooth_field
 
 # Pictograms whose mirror image means the same and is no other sign of the catalogue (not the curves
 # 1.01-1.04, narrowing 1.08/1.09, descent and climb 1.10/1.11, oncoming traffic 1.26, overtaking
-# 2.44/2.45, turns 2.42/2.43/2.46, entries 3.07/3.08 or the blue arrows).
+# 2.44/2.45, turns 2.42/2.43/2.46, entries 3.07/3.08, falling rocks 1.13/1.13a or the blue arrows).
 MIRROR_SAFE = frozenset({
-    "1.05", "1.06", "1.12", "1.13", "1.14", "1.15", "1.16", "1.18", "1.22", "1.23", "1.24",
+    "1.05", "1.06", "1.12", "1.14", "1.15", "1.16", "1.18", "1.22", "1.23", "1.24",
     "1.25", "1.27", "1.30", "1.31", "1.32",
     "2.03", "2.04", "2.05", "2.06", "2.07", "2.08", "2.09", "2.12", "2.13", "2.14", "2.15",
     "2.48", "2.60", "2.61", "2.62",

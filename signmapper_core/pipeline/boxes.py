@@ -32,6 +32,13 @@ def box_iou(a, b) -> float:
     return inter / float(aw * ah + bw * bh - inter) if inter else 0.0
 
 
+def smaller_box_cover(a, b) -> float:
+    """The share of the smaller of two boxes that lies inside the other (1.0: one holds the other)."""
+    iw = max(0, min(a[0] + a[2], b[0] + b[2]) - max(a[0], b[0]))
+    ih = max(0, min(a[1] + a[3], b[1] + b[3]) - max(a[1], b[1]))
+    return iw * ih / float(min(a[2] * a[3], b[2] * b[3]) or 1)
+
+
 def nonzero_box(mask: np.ndarray):
     """``cv2.boundingRect`` of a uint8 mask's nonzero pixels, (0, 0, 0, 0) when there are none.
 

@@ -600,6 +600,8 @@ class PlateConfig:
     """Supplementary plates (plates.py): white rectangles of a plate format right below or above a sign."""
 
     find_plates: bool = True
+    plate_min_cover: float = 0.6  # a white-step rectangle reading this much covered by a plate of another sign is
+    # that plate (the smaller box's share inside the other)
     plate_max_gap_m: float = 0.12  # between the sign's edge and the plate (both clamped to one pole)
     plate_min_gap_m: float = 0.03  # a white region reaching further into the sign's box is part of its panel
     plate_box_overshoot: float = 0.1  # ...or further than this share of the sign's box height: a face box grown

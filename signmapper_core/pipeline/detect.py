@@ -23,7 +23,7 @@ from ..geometry import Camera, Pose
 from ..printed_numbers import number_band, printed_number
 from ..review_reasons import FAINT_HOUGH_RING, NO_ENTRY_MATCHES, OFF_FORMAT, ZONE_PANEL_BY_DEPTH, ZONE_PANEL_DISC
 from ..zone_panels import may_be_a_panels_disc
-from .boxes import box_iou, centre_inside
+from .boxes import box_iou, centre_inside, smaller_box_cover
 from .classifiers import accept_threshold, marginal_min_score, min_score
 from .classify import surround_score
 from .colour import ColourFrame, Segment, find_colour_segments, merge_candidates, split_face_merges
@@ -491,8 +491,27 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
         detections += _hough_detections(pair, depth, search, detections, panels)
     signs = [with_number_band(d, pair.left) for d in suppress_overlaps(
         detections, config.classification.same_sign_max_iou, config.classification.part_max_area_share)]
-    with timer("plates"):  # a window around a click looks for the sign alone
-        return signs + (find_plates(pair, depth, signs) if pair.is_whole_image else [])
+    if not pair.is_whole_image:  # a window around a click looks for the sign alone
+        return signs
+    with timer("plates"):
+        signs = _without_white_readings_of_plates(pair, depth, signs, config.plates.plate_min_cover)
+        return signs + find_plates(pair, depth, signs)
+
+
+def _without_white_readings_of_plates(pair: PairContext, depth: np.ndarray, signs: List[Detection],
+                                      min_cover: float) -> List[Detection]:
+    """``signs`` without the white step's rectangles that are a supplementary plate of another sign.
+
+    A text plate is a white rectangle, as are many white entries: read alone, the plate may resemble one of them
+    (a "Mo-Fr / 7-19 h" plate above a speed limit read as a police sign). Where the plate step, looking without
+    those readings, finds a plate covering at least ``min_cover`` of one, the plate is what it is.
+    """
+    readings = [s for s in signs if s.source == "white" and s.shape == "rectangle"]
+    if not readings:
+        return signs
+    plates = find_plates(pair, depth, [s for s in signs if all(s is not r for r in readings)])
+    taken = [r for r in readings if any(smaller_box_cover(p.bbox, r.bbox) >= min_cover for p in plates)]
+    return [s for s in signs if all(s is not t for t in taken)]
 
 
 def white_scan(pair: PairContext) -> Optional[WhiteScan]:

@@ -161,7 +161,7 @@ def test_design_variants_switch_the_pictogram_redrawing(catalogue, monkeypatch):
     monkeypatch.setattr(compose, "pictogram_scaled", counted("scaled"))
     monkeypatch.setattr(compose, "pictogram_variant", counted("variant"))
     maker = compose.SampleMaker.__new__(compose.SampleMaker)
-    maker.masters = {"1.31": small_master(catalogue, "1.31")}
+    maker.masters = {"1.31": [small_master(catalogue, "1.31")]}  # its drawings: one here
     for flag in (False, True):
         maker.design_variants = flag
         for s in range(200):
