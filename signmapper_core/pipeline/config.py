@@ -471,6 +471,8 @@ class WhiteConfig:
     # still cover the whole image, so a run without them is faster (docs/measurements.md)
     white_signs: bool = True
     white_max_side_m: float = 0.9  # formats up to this: the 1.2 m discs (motorways) would set the cost
+    white_min_side_m: float = 0.35  # shorter sides below this (text bands, 0.2 m hint squares) count as this: they
+    # are found where they are that large in the image, nearer, and the scan keeps its reduction
     white_scan_side_px: float = 20.0  # the image is scanned reduced by a whole factor so that the smallest face
     # sought keeps at least this side (Full HD, 4-14 m: by 2, the smallest 21 px)
     white_canny_low: int = 40  # Canny thresholds of the outline edges (grey levels of the reduced image)

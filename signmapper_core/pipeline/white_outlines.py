@@ -47,12 +47,13 @@ def white_formats(catalogue, config: PipelineConfig) -> List[Tuple[float, float]
 def face_side_range_px(camera: Camera, formats: Sequence[Tuple[float, float]], config: PipelineConfig
                        ) -> Tuple[float, float]:
     """(smallest shorter side, largest longer side) in pixels of the formats anywhere in near..far,
-    widened by the size tolerance."""
+    widened by the size tolerance; no shorter side counts as less than ``white_min_side_m``."""
     if not formats:
         return 0.0, 0.0
     f = min(camera.fx, camera.fy)
     tol = config.size.size_tolerance
-    lo = min(min(w, h) for w, h in formats) * f / config.depth.far_m * (1.0 - tol)
+    shortest = max(min(min(w, h) for w, h in formats), config.white.white_min_side_m)
+    lo = shortest * f / config.depth.far_m * (1.0 - tol)
     hi = max(max(w, h) for w, h in formats) * f / config.depth.near_m * (1.0 + tol)
     return lo, hi
 

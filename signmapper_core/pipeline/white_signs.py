@@ -17,6 +17,7 @@ from typing import List, Optional, Sequence, Tuple
 import cv2
 import numpy as np
 
+from ..catalogue.model import MEASURED
 from ..face_normal import world_face_normal
 from ..review_reasons import WHITE_UNREAD
 from .boxes import centre_inside
@@ -315,7 +316,10 @@ def _judge_face(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
         return None
     if cand.shape == "rectangle" and coloured_share(pair.left, seg.bbox, config) > white.white_max_coloured_share:
         return None  # a coloured zone panel (2.59.5's red ring) read by its outline: the colour step's sign
-    if panels is not None and cand.shape == "rectangle":
+    # a rectangle of a panel's standard format is a panel whatever its template scores; one of a size only a
+    # measured entry takes (any white rectangle: a disc above its plate) only where it is read as that entry
+    is_panel = panels is not None and cand.shape == "rectangle"
+    if is_panel and match.format != MEASURED:
         panels.append(seg.bbox)
     supported = support_share(depth, seg.bbox, z, config) >= config.white.white_min_support or \
         pole_share(grey, seg.bbox, config) >= config.white.white_min_pole_rows
@@ -331,6 +335,8 @@ def _judge_face(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
         cls, status, reason = read, "accepted", ""
     else:
         cls, status, reason = read_white_face(pair, seg.bbox, ids, cls)
+    if is_panel and match.format == MEASURED and status == "accepted":
+        panels.append(seg.bbox)
     entry = catalogue[cls.template_id]
     names = getattr(entry, "names", None) or {}
     return Detection(

@@ -63,8 +63,10 @@ def _pole_scene(catalogue, template_id, size, ahead=8.0, background_depth=30.0):
 
 def test_face_side_range_covers_every_white_format_in_the_search_space(catalogue):
     lo, hi = _sides(catalogue)
-    # the smallest white format (0.4 m disc) at 14 m, the largest up to 0.9 m (0.9 m disc) at 4 m, +-15 %
-    assert lo == pytest.approx(0.4 * 600 / 14 * 0.85)
+    # the smallest white side counted (0.35 m: narrower text bands are sought nearer) at 14 m, the largest up to
+    # 0.9 m (0.9 m disc) at 4 m, +-15 %
+    assert min(min(f) for f in white_formats(catalogue, CONFIG)) < CONFIG.white.white_min_side_m == 0.35
+    assert lo == pytest.approx(0.35 * 600 / 14 * 0.85)
     assert hi == pytest.approx(0.9 * 600 / 4 * 1.15)
     assert scan_scale(lo, CONFIG) == 1.0  # a small image is scanned as it is
     # a whole reduction that keeps the smallest face at least white_scan_side_px (20) wide
