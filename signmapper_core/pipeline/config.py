@@ -375,6 +375,9 @@ class ClassificationConfig:
     classification_threshold: Optional[float] = None  # indicator needed for "accepted"; None = the classifier's own
     exclude: Tuple[str, ...] = ()  # template ids never assigned
     min_surround_score: float = 0.3  # a panel reading needs its part outside the colour segment to match
+    min_face_part: float = 0.6  # a board (no standard size) whose colour segment is less of its face than this is
+    # read as a panel, its surround to match, though face and segment share their shape (a red piece of a ring
+    # grown into a blue board with a red symbol)
     # (and the classifier's reading at its acceptance threshold to win): dirty 2.59.1 zone panels matched 0.43-0.50
     # and were read as their 30 disc at 0.5; at 0.3 none of 3 on drives 809, 1050-1061 was, and drives 801-810,
     # 1040-1049 mapped exactly as at 0.5
@@ -406,6 +409,10 @@ class ClassificationConfig:
     # this probability of being no sign at all
     open_set: bool = True
     unknown_max_background: float = 0.5
+    unknown_min_print: float = 0.01  # ...and whose colour segment's inner part (unknown_print_inset cut off each
+    # side) has at least this share of its pixels on an edge (unknown_print_canny): a plain patch carries no sign
+    unknown_print_inset: float = 0.1
+    unknown_print_canny: Tuple[int, int] = (50, 150)
     same_sign_max_iou: float = 0.3  # detections of one pair overlapping more (or holding the other's centre) are
     # one sign found twice, or a part of it found as a sign: the best (detection x classification) is kept
     part_max_area_share: float = 0.7  # ...but a detection inside an accepted one's face covering at most this share

@@ -40,6 +40,7 @@ from .face_extent import (
     rim_face_bboxes,
     ring_edge_bbox,
 )
+from .face_print import print_share
 from .half_discs import with_half_discs
 from .hidden_apex import apex_completed_face
 from .hough import hough_scale, hough_segments, radius_range_px, ring_colour_share, ringed_field
@@ -271,8 +272,10 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         cls = classifier.classify(left, face, ids)
         if cls.template_id is None:
             continue
-        if catalogue[cls.template_id].shape in same_shapes:  # the face is the segment (maybe with a rim)
-            readings.append((match, face, cls))
+        # of a board without standard size, the share of its face the colour segment is
+        board_part = (ext[2] - ext[0]) * (ext[3] - ext[1]) if match.format == MEASURED else 1.0
+        if catalogue[cls.template_id].shape in same_shapes and board_part >= config.classification.min_face_part:
+            readings.append((match, face, cls))  # the face is the segment (maybe with a rim)
         elif surround_score(left, face, catalogue, cls.template_id, ext, config.classification.surround_grow) >= \
                 config.classification.min_surround_score:
             panels.append((match, face, cls))
@@ -298,7 +301,11 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     w, h = seg.bbox[2], seg.bbox[3]
     oblique = shape in ROUND_SHAPES and min(w, h) < (1.0 - config.size.size_tolerance) * max(w, h)
     floor = marginal_min_score(classifier, config) if marginal or oblique else min_score(classifier, config)
-    if best is not None and not (marginal or oblique) and matches_no_entry(best[2], classifier, config):
+    # a face no entry matches is the segment's own (a part grown into a board its surround does not match is none)
+    own_face = any(best is r for r in readings)
+    if best is not None and own_face and not (marginal or oblique) and matches_no_entry(best[2], classifier, config):
+        if not _carries_print(left, seg.bbox, config.classification):
+            return None
         return _unknown_detection(seg, best, shape, planarity, size, pair)
     if best is None or best[2].score < floor:
         return None
@@ -352,6 +359,13 @@ def matches_no_entry(cls, classifier, config: PipelineConfig) -> bool:
     if not config.classification.open_set or limit is None:
         return False
     return cls.fit < limit and cls.background < config.classification.unknown_max_background
+
+
+def _carries_print(left: np.ndarray, bbox, classification) -> bool:
+    """Whether the colour segment ``bbox`` shows print enough to be a sign no entry matches."""
+    low, high = classification.unknown_print_canny
+    share = print_share(left, bbox, classification.unknown_print_inset, low, high)
+    return share >= classification.unknown_min_print
 
 
 def _unknown_detection(seg: Segment, reading, shape: str, planarity, size, pair: PairContext) -> Detection:

@@ -83,18 +83,20 @@ def size_readings(catalogue, entries, width_m: float, height_m: float, tolerance
     if match is not None:
         out.append(match)
     elif standard and off_format_factor > 1.0:
-        out.append(off_format(standard, width_m, height_m, off_format_factor))
+        out.append(off_format(standard, width_m, height_m, off_format_factor, tolerance))
     if measured:
         out.append(catalogue.round_size(width_m, height_m, tolerance=tolerance, entries=measured))
     return [m for m in out if m is not None]
 
 
-def off_format(entries, width_m: float, height_m: float, factor: float):
+def off_format(entries, width_m: float, height_m: float, factor: float, aspect_tolerance: float):
     """A ``measured`` :class:`SizeMatch` of the standard-size entries with a format within ``factor`` of
-    ``width_m`` x ``height_m`` in both sides, or None."""
+    ``width_m`` x ``height_m`` in both sides and of its aspect within ``aspect_tolerance``, or None: a sign made
+    at another size keeps its proportions (a triangle with its top hidden does not)."""
     if not (width_m > 0 and height_m > 0):
         return None
-    limit = np.log(factor)
+    limit, aspect_limit = np.log(factor), np.log(1.0 + aspect_tolerance)
     ids = tuple(e.id for e in entries if e.sizing == STANDARD and any(
-        abs(np.log(width_m / w)) <= limit and abs(np.log(height_m / h)) <= limit for w, h in e.formats.values()))
+        abs(np.log(width_m / w)) <= limit and abs(np.log(height_m / h)) <= limit
+        and abs(np.log(width_m / height_m * h / w)) <= aspect_limit for w, h in e.formats.values()))
     return SizeMatch(MEASURED, width_m, height_m, 0.0, ids) if ids else None
