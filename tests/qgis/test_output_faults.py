@@ -164,7 +164,7 @@ def test_a_second_run_on_the_same_output_says_another_run_is_writing_it(cli_env,
     assert f"Trajectory points: {out}: another run is writing this output right now (process {first.pid}" in log
     assert "readonly database" not in log
     assert QgsVectorLayer(f"{out}|layername=signs", "s", "ogr").featureCount() >= 2
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["signs.gpkg"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["signs.gpkg", "signs_crops"]  # crops are on by default
 
 
 # 15. a kill at random moments: the earlier output survives, the next run clears what the killed ones left
@@ -181,6 +181,7 @@ def test_kills_at_random_moments_never_damage_the_earlier_output(cli_env, run, s
     assert probe.returncode == 0
     span = time.monotonic() - started
     (tmp_path / "probe.gpkg").unlink()
+    shutil.rmtree(tmp_path / "probe_crops")  # crops are on by default
     left_behind = set()
     for moment in moments:
         victim = subprocess.Popen([QGIS_PROCESS, "run", "signmapper:mapsigns", "--", f"DRIVE={small_drive}",
