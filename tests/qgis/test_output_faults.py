@@ -88,7 +88,8 @@ def test_drive_trajectory_into_an_existing_geopackage_keeps_its_layers(cli_env, 
         assert code == 0, log
         assert data["results"]["OUTPUT"] == f"{project}|layername=keep"
         assert_kept(project, before, {"keep": 2})
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["drive", "keep.gpkg"]
+    # no partial or lock file left; keep_crops holds the crops of the mapping run that made the file
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["drive", "keep.gpkg", "keep_crops"]
 
 
 def test_evaluate_outputs_into_an_existing_geopackage_keep_its_layers(run, project, tmp_path):
@@ -163,7 +164,7 @@ def test_a_second_run_on_the_same_output_says_another_run_is_writing_it(cli_env,
     assert f"Trajectory points: {out}: another run is writing this output right now (process {first.pid}" in log
     assert "readonly database" not in log
     assert QgsVectorLayer(f"{out}|layername=signs", "s", "ogr").featureCount() >= 2
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["signs.gpkg"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["signs.gpkg", "signs_crops"]  # crops are on by default
 
 
 # 15. a kill at random moments: the earlier output survives, the next run clears what the killed ones left
@@ -180,6 +181,7 @@ def test_kills_at_random_moments_never_damage_the_earlier_output(cli_env, run, s
     assert probe.returncode == 0
     span = time.monotonic() - started
     (tmp_path / "probe.gpkg").unlink()
+    shutil.rmtree(tmp_path / "probe_crops")  # crops are on by default
     left_behind = set()
     for moment in moments:
         victim = subprocess.Popen([QGIS_PROCESS, "run", "signmapper:mapsigns", "--", f"DRIVE={small_drive}",
