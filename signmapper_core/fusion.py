@@ -21,7 +21,7 @@ from typing import Mapping, Optional, Sequence
 import numpy as np
 
 from .output_schema import ACCEPTED, REVIEW
-from .review_reasons import sign_reason
+from .review_reasons import DOUBTFUL_READINGS, sign_reason
 from .zone_panels import may_be_disc_of
 
 
@@ -108,6 +108,11 @@ class FusionConfig:
     single_max_depth_share: float = 0.85
     far_m: float = 14.0  # the mapping's far limit of the search space (mapping passes it)
     min_obs_accepted: int = 2
+    # a sign whose every view reads it at a size no standard format of its sign has, or as no catalogue sign
+    # (review reasons OFF_FORMAT, NO_ENTRY_MATCHES) is mapped only when seen in at least this many pairs: read
+    # once, such a face was a sign beyond the range measured into it or street furniture (a traffic cone)
+    # in all 3 cases on drives 9001/9002 with the whole catalogue (2026-12-06)
+    doubtful_min_views: int = 2
     # supplementary plates' text (plate_fusion.py): read from the crops of a plate's this many largest (nearest)
     # observations; more add OCR time and rarely a better text
     plate_readings: int = 3
@@ -497,6 +502,13 @@ def fuse_track(sign_id: int, observations: Sequence[Observation], config: Fusion
     )
 
 
+def _doubtful(track: Sequence[Observation], min_views: int) -> bool:
+    """Whether a track is too little seen for what its views read: a size no standard format has, or no sign of
+    the catalogue, in fewer than ``min_views`` pairs."""
+    return len({o.pair_index for o in track}) < min_views and \
+        all(o.review_reason in DOUBTFUL_READINGS for o in track)
+
+
 def fuse_observations(observations: Sequence[Observation], config: Optional[FusionConfig] = None,
                       carried_discs: Optional[Mapping[str, str]] = None) -> list[FusedSign]:
     """One :class:`FusedSign` per physical sign, numbered from 1 in order of first sight.
@@ -506,6 +518,7 @@ def fuse_observations(observations: Sequence[Observation], config: Optional[Fusi
     """
     config = config or FusionConfig()
     tracks = _merge_tracks(build_tracks(observations, config), config)
+    tracks = [t for t in tracks if not _doubtful(t, config.doubtful_min_views)]
     tracks.sort(key=lambda t: (t[0].pair_index, t[0].position[0], t[0].position[1]))
     signs = [fuse_track(i, t, config, carried_discs) for i, t in enumerate(tracks, start=1)]
     for sign in signs:

@@ -21,6 +21,7 @@ FAINT_HOUGH_RING = "Hough circle without a full-colour ring"
 WHITE_UNREAD = "resembles a white sign the network reads as none"
 NO_ENTRY_MATCHES = "matches no catalogue sign well"
 OFF_FORMAT = "size fits no standard format"
+DOUBTFUL_READINGS = (OFF_FORMAT, NO_ENTRY_MATCHES)  # a sign read only so must be seen again (fusion)
 # a fused sign
 ONE_VIEW = "seen in one pair only"
 TOO_FEW_VIEWS = "too few views"

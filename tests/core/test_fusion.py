@@ -354,3 +354,24 @@ def test_a_zone_panels_disc_held_for_review_counts_for_the_panel_read_once():
     assert sign.template_id == "2.61"  # confident disc readings outvote the panel
     (sign,) = fuse_observations(doubtful(discs) + panel, carried_discs=ZONES)
     assert sign.template_id == "2.59.3" and sign.n_obs == 3 and sign.vote_share == pytest.approx(1.0)
+
+
+def _held(observations, reason):
+    for o in observations:
+        o.detection.status, o.detection.review_reason = "review", reason
+    return observations
+
+
+def test_a_sign_read_only_off_format_or_as_unknown_is_mapped_when_seen_twice():
+    from signmapper_core.review_reasons import NO_ENTRY_MATCHES, OFF_FORMAT
+
+    near, cone, other = np.array([20.0, 3.0, 2.5]), np.array([40.0, -3.0, 0.3]), np.array([60.0, 3.0, 2.5])
+    obs = (_held(seen_from(near, [3], fmt=("measured", 0.3, 0.3)), OFF_FORMAT)
+           + _held(seen_from(cone, [12], template_id="unknown", colour="orange"), NO_ENTRY_MATCHES)
+           + _held(seen_from(other, [22, 23], fmt=("measured", 0.3, 0.3)), OFF_FORMAT)
+           + _held(seen_from(near + [0, 40, 0], [30]), ""))  # another reading held once: mapped, in review
+    signs = fuse_observations(obs)
+    assert [(s.n_obs, s.status) for s in signs] == [(2, "review"), (1, "review")]
+    assert np.linalg.norm(signs[0].position - other) < 0.01
+    assert [o.sign_id for o in obs] == [None, None, 1, 1, 2]  # the views of no sign belong to none
+    assert len(fuse_observations(obs, FusionConfig(doubtful_min_views=1))) == 4

@@ -3,9 +3,12 @@
 Their faces are not copies of the templates: 70 % the official drawings printed worn, faded, dirty or with
 stickers, 30 % our procedural designs (``SimulationConfig`` defaults), on the signs of before the whole catalogue
 (``DRAWABLE_SIGNS``: the drives these figures were measured on). Seeds 9001 and 9002 were generated for this
-test and taken as they came. Thresholds sit a little below what was measured on them (2026-12-04, main 3b7009d:
-23 signs in view, 22 detected, 19 right, 20 accepted with 1 wrong, a procedural 2.41 read as 2.36; 3D RMS 3.0 cm);
-the figures of record are those of fresh drives measured once (README, "Measuring accuracy and speed").
+test and taken as they came. Thresholds sit a little below what was measured on them (2026-12-06, the whole
+catalogue and its network: 23 signs in view, 23 detected, 20 right, 17 accepted with none wrong, no false positive;
+3D RMS 3.8 cm. 2026-12-04 before it: 22 detected, 19 right, 20 accepted with 1 wrong). Since the single-view rule
+for off-format and unknown readings (FusionConfig.doubtful_min_views) was made looking at their three extra
+features, these drives are regression drives, no longer held out: the figures of record are those of fresh drives
+measured once (README, "Measuring accuracy and speed").
 """
 
 from __future__ import annotations
@@ -51,7 +54,7 @@ def test_held_out_drives_detect_and_classify_their_signs(figures):
     right = sum(r.table1.correctly_classified_signs for _, r, _ in figures)
     false_positives = sum(r.table1.false_positive_detections for _, r, _ in figures)
     assert in_view == 23, "the generator draws other drives now: measure them again and set the thresholds anew"
-    assert detected >= 21 and right >= 18 and false_positives <= 1
+    assert detected >= 22 and right >= 19 and false_positives <= 1
     assert all(r.table1.duplicates == 0 for _, r, _ in figures)  # one feature per sign
 
 
@@ -63,7 +66,7 @@ def test_held_out_drives_accept_few_wrong_ids(figures):
             if sign.status == "accepted":
                 accepted += 1
                 wrong += match < 0 or sign.template_id != reference[match].template_id
-    assert accepted >= 18 and wrong <= 1
+    assert accepted >= 16 and wrong <= 1
 
 
 @pytest.mark.slow
