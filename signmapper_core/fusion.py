@@ -20,6 +20,7 @@ from typing import Mapping, Optional, Sequence
 
 import numpy as np
 
+from .catalogue.model import UNKNOWN_ID
 from .output_schema import ACCEPTED, REVIEW
 from .review_reasons import DOUBTFUL_READINGS, sign_reason
 from .zone_panels import may_be_disc_of
@@ -323,7 +324,10 @@ def _vote(observations: Sequence[Observation], carried_discs: Optional[Mapping[s
         panel = next((p for p, disc in panels.items() if o.status != ACCEPTED and may_be_disc_of(disc, o.template_id)),
                      None)
         weights[panel or o.template_id] += weight
-    winner = max(weights, key=weights.get)
+    # a view that read no catalogue sign (unknown) outweighs none that read one: its score is its nearest
+    # candidate's, no vote for an id; its weight still lowers the winner's share
+    named = [k for k in weights if k != UNKNOWN_ID]
+    winner = max(named or weights, key=weights.get)
     return winner, weights[winner] / sum(weights.values())
 
 

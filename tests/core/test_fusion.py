@@ -375,3 +375,17 @@ def test_a_sign_read_only_off_format_or_as_unknown_is_mapped_when_seen_twice():
     assert np.linalg.norm(signs[0].position - other) < 0.01
     assert [o.sign_id for o in obs] == [None, None, 1, 1, 2]  # the views of no sign belong to none
     assert len(fuse_observations(obs, FusionConfig(doubtful_min_views=1))) == 4
+
+
+def test_views_reading_no_catalogue_sign_do_not_outvote_one_that_reads_an_id():
+    from signmapper_core.review_reasons import NO_ENTRY_MATCHES
+
+    truth = np.array([20.0, 3.0, 2.5])
+    unknown = _held(seen_from(truth, [3, 6], template_id="unknown", cls=0.94), NO_ENTRY_MATCHES)
+    named = seen_from(truth, [4, 5], template_id="3.07", colour="red", cls=0.8)
+    (sign,) = fuse_observations(unknown + named)
+    assert sign.template_id == "3.07" and sign.status == "review"
+    assert sign.vote_share == pytest.approx(0.8 / (0.8 + 0.94))  # the unknown views' weight kept in the share
+    (alone,) = fuse_observations(_held(seen_from(truth, [3, 6], template_id="unknown", cls=0.94),
+                                       NO_ENTRY_MATCHES))
+    assert alone.template_id == "unknown"

@@ -14,12 +14,17 @@ from signmapper_core.catalogue import load_catalogue
 
 @pytest.fixture(scope="module")
 def mapped(small_drive, tmp_path_factory, sign_mapper, qgis_processing):
-    """The small drive mapped once (crops are written by default), one sign rejected in the review."""
+    """The small drive mapped once (crops are written by default) and reviewed: its first sign rejected, the
+    others confirmed."""
     out = map_drive(sign_mapper, small_drive, tmp_path_factory.mktemp("atlas") / "signs.gpkg", LANGUAGE=2)
     layer = QgsVectorLayer(f"{out}|layername=signs", "signs", "ogr")
-    first = min(layer.getFeatures(), key=lambda f: f["sign_id"])
+    signs = sorted(layer.getFeatures(), key=lambda f: f["sign_id"])
+    assert len(signs) >= 3
+    status = layer.fields().indexOf("status")
     layer.startEditing()
-    layer.changeAttributeValue(first.id(), layer.fields().indexOf("status"), "rejected")
+    layer.changeAttributeValue(signs[0].id(), status, "rejected")
+    for feature in signs[1:]:
+        layer.changeAttributeValue(feature.id(), status, "accepted")
     assert layer.commitChanges()
     return out
 
