@@ -10,6 +10,7 @@ from __future__ import annotations
 from qgis.PyQt.sip import isdeleted
 
 from ..gpkg.fields import feature_values
+from ..signmapper_core.catalogue.model import UNKNOWN_ID
 from ..signmapper_core.changes_schema import CHANGES
 from ..signmapper_core.output_schema import MANUAL, SIGNS
 from .edits import DecisionLog, EditError, add_feature, change_attributes
@@ -184,13 +185,17 @@ class DecisionTaker:
 
     def _found_in_change(self, observation) -> None:
         """A person found the sign of a change (e.g. a 'missing' one) in the image: the verdict becomes what the
-        found sign says against the inventory type."""
+        found sign says against the inventory type. A sign the network reads as no catalogue sign is the
+        inventory's: the person pointed at it, and "unknown" says nothing against its type."""
         current = feature_values(self.session.layer.getFeature(self.session.fid), CHANGES)
-        verdict = "confirmed" if observation.template_id == current["inventory_type"] else "changed"
+        read = observation.template_id
+        found = current["inventory_type"] if read == UNKNOWN_ID and current["inventory_type"] else read
+        verdict = "confirmed" if found == current["inventory_type"] else "changed"
         x, y, w, h = observation.bbox
-        values = {"verdict": verdict, "template_id": observation.template_id, "status": MANUAL, "reviewed": 1,
+        reason = f"found by a person in pair {observation.pair_id}: {read}"
+        if found != read:
+            reason += f", the inventory's {found}"
+        values = {"verdict": verdict, "template_id": found, "status": MANUAL, "reviewed": 1,
                   "pair_id": observation.pair_id, "u": float(observation.u), "v": float(observation.v),
-                  "bbox_x": int(x), "bbox_y": int(y), "bbox_w": int(w), "bbox_h": int(h),
-                  "reason": f"found by a person in pair {observation.pair_id}: {observation.template_id}"}
-        self._decide(values, f"{verdict}: {observation.template_id} found in pair {observation.pair_id} "
-                             "for feature {fid}")
+                  "bbox_x": int(x), "bbox_y": int(y), "bbox_w": int(w), "bbox_h": int(h), "reason": reason}
+        self._decide(values, f"{verdict}: {found} found in pair {observation.pair_id} for feature {{fid}}")

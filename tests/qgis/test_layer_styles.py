@@ -129,10 +129,11 @@ def test_legend_has_classes_by_status_then_the_pictograms_by_sign_family(styles)
     assert legend[:5] == ["Statut", "accepté", "à contrôler", "rejeté", "ajouté à la main"]
     labels = [g.label() for g in groups]
     assert labels == ["Signaux de danger", "Signaux de priorité", "Interdictions", "Prescriptions",
-                      "Signaux d'indication", "Plaque complémentaire", "other"]
-    assert sum(len(g.children()) for g in groups[:-2]) == len(catalogue)
-    # supplementary plates: one rule, typed or not
-    assert groups[-2].filterExpression() == "\"plate_of\" IS NOT NULL OR \"template_id\" = 'plate'"
+                      "Signaux d'indication", "Plaque complémentaire", "Signal inconnu", "other"]
+    assert sum(len(g.children()) for g in groups[:-3]) == len(catalogue)
+    # supplementary plates: one rule, typed or not; the signs no catalogue entry matches: one rule
+    assert groups[-3].filterExpression() == "\"plate_of\" IS NOT NULL OR \"template_id\" = 'plate'"
+    assert groups[-2].filterExpression() == "\"template_id\" = 'unknown'"
     danger = {r.label().split(" ", 1)[0] for r in groups[0].children()}
     assert "1.01" in danger and "2.30-50" not in danger
     mandatory = {r.label().split(" ", 1)[0] for r in groups[3].children()}

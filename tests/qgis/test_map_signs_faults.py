@@ -193,8 +193,9 @@ def test_catalogue_without_svg_pictograms_styles_plain_markers(run, small_drive,
     out = tmp_path / "plain.gpkg"
     run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out), "CATALOGUE": str(folder)},
         feedback=feedback)
-    n = len(json.loads((folder / "catalogue.json").read_text())["entries"])
-    assert (f"{n} of {n} templates have no SVG pictogram (e.g. 1.01): their signs are drawn with a plain marker "
+    entries = json.loads((folder / "catalogue.json").read_text())["entries"]
+    n, first = len(entries), entries[0]["id"]  # the first entry is the example named
+    assert (f"{n} of {n} templates have no SVG pictogram (e.g. {first}): their signs are drawn with a plain marker "
             "of their shape and colour") in feedback.text()
     signs = QgsVectorLayer(f"{out}|layername=signs", "s", "ogr")
     assert signs.featureCount() >= 2
