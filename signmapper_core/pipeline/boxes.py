@@ -24,19 +24,25 @@ def centre_inside(a, b) -> bool:
 
 def box_iou(a, b) -> float:
     """Intersection over union of two boxes; 0.0 when they do not overlap."""
-    ax, ay, aw, ah = a
-    bx, by, bw, bh = b
-    iw = max(0, min(ax + aw, bx + bw) - max(ax, bx))
-    ih = max(0, min(ay + ah, by + bh) - max(ay, by))
-    inter = iw * ih
-    return inter / float(aw * ah + bw * bh - inter) if inter else 0.0
+    inter = intersection_area(a, b)
+    return inter / float(a[2] * a[3] + b[2] * b[3] - inter) if inter else 0.0
+
+
+def intersection_area(a, b) -> int:
+    """Pixels two boxes share; 0 when they do not overlap."""
+    iw = max(0, min(a[0] + a[2], b[0] + b[2]) - max(a[0], b[0]))
+    ih = max(0, min(a[1] + a[3], b[1] + b[3]) - max(a[1], b[1]))
+    return iw * ih
+
+
+def share_inside(a, b) -> float:
+    """Share of box ``a``'s area inside box ``b``."""
+    return intersection_area(a, b) / float(max(1, a[2] * a[3]))
 
 
 def smaller_box_cover(a, b) -> float:
     """The share of the smaller of two boxes that lies inside the other (1.0: one holds the other)."""
-    iw = max(0, min(a[0] + a[2], b[0] + b[2]) - max(a[0], b[0]))
-    ih = max(0, min(a[1] + a[3], b[1] + b[3]) - max(a[1], b[1]))
-    return iw * ih / float(min(a[2] * a[3], b[2] * b[3]) or 1)
+    return intersection_area(a, b) / float(min(a[2] * a[3], b[2] * b[3]) or 1)
 
 
 def nonzero_box(mask: np.ndarray):

@@ -20,7 +20,7 @@ import numpy as np
 from ..catalogue.model import MEASURED
 from ..face_normal import world_face_normal
 from ..review_reasons import WHITE_UNREAD
-from .boxes import centre_inside
+from .boxes import centre_inside, share_inside
 from .classifiers import accept_threshold
 from .classify import ClassificationResult, classify_segment
 from .colour import Segment, inscribed_disc
@@ -392,13 +392,6 @@ def ring_candidate(cand: WhiteCandidate, pair: PairContext) -> Optional[WhiteCan
     return WhiteCandidate(seg, "circle")
 
 
-def _inside_share(a, b) -> float:
-    """Share of box ``a``'s area inside box ``b``."""
-    iw = max(0, min(a[0] + a[2], b[0] + b[2]) - max(a[0], b[0]))
-    ih = max(0, min(a[1] + a[3], b[1] + b[3]) - max(a[1], b[1]))
-    return iw * ih / float(max(1, a[2] * a[3]))
-
-
 def without_panel_discs(detections: Sequence[Detection], panels: Sequence, config) -> List[Detection]:
     """``detections`` without the discs that lie inside a white panel (``white_disc_in_panel`` of their box),
     detected or only of a panel's format, planar and standing free (``panels``): an end-of-zone panel carries
@@ -406,4 +399,4 @@ def without_panel_discs(detections: Sequence[Detection], panels: Sequence, confi
     grey ring, 2.58) more than the panel its template."""
     panels = list(panels) + [d.bbox for d in detections if d.shape != "circle"]
     return [d for d in detections if d.shape != "circle"
-            or not any(_inside_share(d.bbox, p) >= config.white.white_disc_in_panel for p in panels)]
+            or not any(share_inside(d.bbox, p) >= config.white.white_disc_in_panel for p in panels)]
