@@ -57,7 +57,8 @@ from signmapper_core.family_evaluation import (  # noqa: E402
 from signmapper_core.fusion import sign_accept_threshold  # noqa: E402
 from signmapper_core.id_outcomes import id_outcomes, outcome_lines  # noqa: E402
 from signmapper_core.mapping import map_drive  # noqa: E402
-from signmapper_core.misread_evidence import false_positive_lines, misread_lines, missed_lines  # noqa: E402
+from signmapper_core.misread_evidence import (  # noqa: E402
+    false_positive_lines, misread_lines, missed_lines, position_lines)
 from signmapper_core.panel_evaluation import PanelFigures, evaluate_panels  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, WhiteConfig  # noqa: E402
@@ -235,6 +236,9 @@ def main(argv=None) -> int:
     parser.add_argument("--evidence", action="store_true",
                         help="per-observation readings of every fused sign mapped with a wrong id or matching no "
                              "reference sign")
+    parser.add_argument("--positions", type=float, default=None, metavar="METRES",
+                        help="list every fused sign whose 3D error is at least METRES, largest first, observation "
+                             "by observation")
     args = parser.parse_args(argv)
 
     folders = list(args.drives) + [generated_drive(s, args.pairs, args.depth, args.legacy_faces, args.white_share,
@@ -307,6 +311,10 @@ def main(argv=None) -> int:
             false = false_positive_lines(signs, report.match) if kind == "signs" and args.evidence else []
             if false:
                 print("\n".join(["False positives, observation by observation:"] + false))
+            far_off = (position_lines(signs, reference, report.match, report.differences, args.positions)
+                       if kind == "signs" and args.positions is not None else [])
+            if far_off:
+                print("\n".join([f"Fused signs at least {args.positions} m off:"] + far_off))
             print()
         print("\n".join(plates.lines(f"{head}: supplementary plates")))
         if plate_evidence:

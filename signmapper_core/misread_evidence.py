@@ -65,3 +65,25 @@ def missed_lines(reference: Sequence, match: Sequence[int]) -> list[str]:
     found = set(int(m) for m in match if m >= 0)
     return [f"  sign {ref.sign_id}: {ref.template_id} ({ref.width_m:.2f} x {ref.height_m:.2f} m) not detected"
             for k, ref in enumerate(reference) if k not in found]
+
+
+def position_lines(signs: Sequence, reference: Sequence, match: Sequence[int], differences, min_error_m: float = 0.0,
+                   ) -> list[str]:
+    """Every fused sign matched to a reference sign whose 3D error is at least ``min_error_m``, largest first:
+    true and mapped id, the error across, along and in height, and each observation's depth and face box.
+
+    ``differences``: the (n matched, 5) across/along/height/planimetric/3D rows of ``evaluation.evaluate`` in the
+    order of the matched signs. Shows where a position error comes from (one bad view, a depth that is off, a
+    face measured around the wrong outline, a sign matched to its neighbour on the pole)."""
+    matched = [(sign, ref) for sign, ref in zip(signs, match) if ref >= 0]
+    rows = sorted(zip(matched, differences), key=lambda row: -row[1][4])
+    lines = []
+    for (sign, ref), (across, along, height, _, error) in rows:
+        if error < min_error_m:
+            break
+        truth = reference[ref]
+        lines.append(f"  sign {sign.sign_id}: true {truth.template_id}, mapped {sign.template_id} ({sign.status}, "
+                     f"{sign.width_m:.2f} x {sign.height_m:.2f} m, {sign.n_obs} observations): 3D {error:.2f} m, "
+                     f"across {across:+.2f}, along {along:+.2f}, height {height:+.2f}")
+        lines += [observation_line(o, truth.template_id) for o in sorted(sign.observations, key=lambda o: o.pair_index)]
+    return lines

@@ -6,7 +6,7 @@ from signmapper_core.drive import PairRecord
 from signmapper_core.evaluation import evaluate
 from signmapper_core.fusion import Observation, fuse_observations
 from signmapper_core.geometry import Pose
-from signmapper_core.misread_evidence import NOT_A_CANDIDATE, false_positive_lines, misread_lines
+from signmapper_core.misread_evidence import NOT_A_CANDIDATE, false_positive_lines, misread_lines, position_lines
 from signmapper_core.pipeline.detection import Detection
 
 WEST = np.array([-1.0, 0.0, 0.0])
@@ -57,3 +57,27 @@ def test_false_positive_lists_its_observations_without_a_true_id_and_matched_sig
     assert "true id" not in lines[1] and lines[1].endswith("best: 2.30-50 0.93")
     assert "pair p031" in lines[2]
     assert misread_lines(signs, ["2.01"], report.match) == []
+
+
+class Truth:
+    def __init__(self, template_id, position):
+        self.template_id, self.position = template_id, position
+
+
+def test_position_lines_list_the_signs_off_by_more_than_the_limit_largest_first_with_their_views():
+    near, far_off, exact = [20.0, 3.0, 2.5], [40.0, 3.0, 2.5], [60.0, 3.0, 2.5]
+    obs = [observe([20.0, 3.1, 2.5], k, "2.01", {"2.01": 0.97}) for k in (3, 4)]
+    obs += [observe([40.0, 3.0, 2.9], k, "2.01", {"2.01": 0.97}) for k in (13, 14, 15)]
+    obs += [observe(exact, k, "2.01", {"2.01": 0.97}) for k in (23, 24)]
+    signs = fuse_observations(obs)
+    reference = [Truth("2.01", near), Truth("2.02", far_off), Truth("2.01", exact)]
+    report = evaluate([s.position for s in signs], [s.template_id for s in signs], [t.position for t in reference],
+                      [t.template_id for t in reference], np.array([[0.0, 0.0], [80.0, 0.0]]), 0.75)
+    lines = position_lines(signs, reference, report.match, report.differences, 0.05)
+    assert len(lines) == 1 + 3 + 1 + 2  # the exact sign is not listed; each listed sign has its views
+    assert lines[0].startswith("  sign 2: true 2.02, mapped 2.01") and "3D 0.40 m" in lines[0]
+    assert "height +0.40" in lines[0] and "across +0.00" in lines[0]
+    assert "true id 2.02: not a candidate" in lines[1]
+    assert lines[4].startswith("  sign 1: true 2.01") and "3D 0.10 m" in lines[4]
+    assert "across -0.10" in lines[4]  # 0.1 m further left of the driving direction (north is left going east)
+    assert len(position_lines(signs, reference, report.match, report.differences, 0.0)) == 1 + 3 + 1 + 2 + 1 + 2
