@@ -58,7 +58,11 @@ from signmapper_core.fusion import sign_accept_threshold  # noqa: E402
 from signmapper_core.id_outcomes import id_outcomes, outcome_lines  # noqa: E402
 from signmapper_core.mapping import map_drive  # noqa: E402
 from signmapper_core.misread_evidence import (  # noqa: E402
-    false_positive_lines, misread_lines, missed_lines, position_lines)
+    false_positive_lines,
+    misread_lines,
+    missed_lines,
+    position_lines,
+)
 from signmapper_core.panel_evaluation import PanelFigures, evaluate_panels  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, WhiteConfig  # noqa: E402

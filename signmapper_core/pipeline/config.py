@@ -413,6 +413,16 @@ class ClassificationConfig:
     # side) has at least this share of its pixels on an edge (unknown_print_canny): a plain patch carries no sign
     unknown_print_inset: float = 0.1
     unknown_print_canny: Tuple[int, int] = (50, 150)
+    # direction signs that differ by their lines of text get the count the face shows (pipeline.text_lines):
+    # faces at least text_lines_min_px high; text_lines_inset (of the width, of the height) cut off each side
+    # (border, a pointer's tip); text is a Lab distance above text_lines_contrast from the field; a row with
+    # text_lines_row_share of text pixels is text (a gap between lines holds none); a line is a band of text rows
+    # text_lines_min_height high
+    text_lines_min_px: int = 18
+    text_lines_inset: Tuple[float, float] = (0.2, 0.06)
+    text_lines_contrast: float = 60.0
+    text_lines_row_share: float = 0.03
+    text_lines_min_height: float = 0.08
     same_sign_max_iou: float = 0.3  # detections of one pair overlapping more (or holding the other's centre) are
     # one sign found twice, or a part of it found as a sign: the best (detection x classification) is kept
     part_max_area_share: float = 0.7  # ...but a detection inside an accepted one's face covering at most this share
@@ -707,6 +717,9 @@ class TemplateGeometry:
     # a face's bright part (white and light colours: a priority road's white frame with its yellow) is its pixels
     # at least this grey (0-255): the frame's edge line is black, its yellow ~190 grey
     template_bright_grey: int = 128
+    # an entry of another colour whose own colour falls in a segment colour's range over the same part (within
+    # this share of the face) looks like that colour to the segmentation: tourist brown is dark red
+    template_same_part_tolerance: float = 0.03
 
 
 TEMPLATE_GEOMETRY = TemplateGeometry()

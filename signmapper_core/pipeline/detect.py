@@ -37,6 +37,7 @@ from .face_extent import (
     face_bbox,
     frame_candidates,
     hole_candidates,
+    reads_as,
     rim_face_bboxes,
     ring_edge_bbox,
 )
@@ -50,6 +51,7 @@ from .plates import find_plates
 from .search_space import search_space_mask
 from .shape import IDEAL_FILL, catalogue_shape, catalogue_shapes, plausible_outlines
 from .sizing import measure_segment, metric_size, size_readings
+from .text_lines import typed_by_lines
 from .text_panels import context_boxes as panel_context_boxes
 from .text_panels import text_panel_detections, text_panel_fields
 from .white_outlines import (
@@ -310,6 +312,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     if best is None or best[2].score < floor:
         return None
     match, face, cls = best
+    cls = replace(cls, template_id=typed_by_lines(cls.template_id, left, face, catalogue, config.classification))
     off_format = _off_format(match, catalogue[cls.template_id])
     if off_format and cls.score < accept:  # a size no standard sign has needs a clear reading
         return None
@@ -331,8 +334,10 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
             inside_white_panel(left, depth, face, z, config):
         status, reason = "review", ZONE_PANEL_DISC
     entry = catalogue[cls.template_id]
+    # a sign whose colour the segmentation takes for another is reported, and fused, in its own colour
+    colour = entry.colour if reads_as(catalogue, entry, seg.colour, config.colour.hsv_ranges) else seg.colour
     return Detection(
-        template_id=cls.template_id, name=_entry_name(entry), colour=seg.colour, shape=entry.shape,
+        template_id=cls.template_id, name=_entry_name(entry), colour=colour, shape=entry.shape,
         width_m=match.width_m, height_m=match.height_m, format=match.format,
         detection_indicator=planarity.indicator, classification_indicator=cls.score, status=status,
         u=u, v=v, bbox=face, depth_m=float(z),

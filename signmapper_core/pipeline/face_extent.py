@@ -215,7 +215,20 @@ def _candidate_entries(catalogue, colour: str, shapes, hsv_ranges, allowed, excl
             out.append((entry, extent))
         elif entry.shape in ("rectangle", "square") and part_shape in shapes and _panel_part(extent):
             out.append((entry, extent))
+        elif entry.shape in shapes and part_shape in shapes and reads_as(catalogue, entry, colour, hsv_ranges):
+            out.append((entry, extent))  # its own colour reads as this one: the network tells them apart
     return out
+
+
+def reads_as(catalogue, entry, colour: str, hsv_ranges) -> bool:
+    """Whether the segmentation may take ``entry``'s own colour for ``colour``: the template's pixels in
+    ``colour``'s thresholds cover the same part of its face as its own colour's (tourist brown is dark red)."""
+    if entry.colour == colour:
+        return True
+    extent = colour_part(catalogue, entry.id, colour, hsv_ranges)[0]
+    own = colour_part(catalogue, entry.id, entry.colour, hsv_ranges)[0]
+    tolerance = TEMPLATE_GEOMETRY.template_same_part_tolerance
+    return extent is not None and own is not None and max(abs(a - b) for a, b in zip(extent, own)) <= tolerance
 
 
 def carried_discs(catalogue, hsv_ranges) -> Dict[str, str]:

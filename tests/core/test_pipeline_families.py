@@ -14,6 +14,7 @@ from pipeline_scenes import CAMERA, POSE, sign_scene
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.colour import is_cross
 from signmapper_core.pipeline.config import ClassificationConfig, SizeConfig
+from signmapper_core.pipeline.face_extent import candidate_entries
 
 FORWARD, RIGHT, DOWN = POSE.rotation[:, 2], POSE.rotation[:, 0], POSE.rotation[:, 1]
 NCC = ClassificationConfig(classifier="ncc")
@@ -76,3 +77,27 @@ def test_only_a_cross_keeps_its_outline_far_from_convex(catalogue):
     notch = np.full((60, 110), 255, np.uint8)
     cv2.fillPoly(notch, [np.array([(20, 0), (90, 0), (55, 45)])], 0)  # a ring opened from above
     assert not is_cross(notch, 0.6)
+
+
+@pytest.mark.parametrize("template_id", ["0.1-3.1", "0.1-3.2"])
+@pytest.mark.parametrize("ahead", [6.0, 10.0])
+def test_a_tourist_board_is_typed_by_its_lines_of_text(catalogue, template_id, ahead):
+    """The network reads a three-line board at 32 px as its two-line sibling; the lines counted in the image
+    type it (the shipped network reads here, as on a drive)."""
+    entry = catalogue[template_id]
+    sign = _world(ahead, -1.0, 0.3)
+    left, depth, _ = sign_scene(catalogue, template_id, _size(entry, 1.2), sign, seed=2)
+    dets = detect_pair(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig())
+    assert [d.template_id for d in dets] == [template_id]
+    assert np.linalg.norm(dets[0].position - sign) < 0.06
+
+
+def test_a_brown_board_segmented_as_red_is_offered_its_brown_entries(catalogue):
+    """Tourist brown lies inside red's thresholds (dark red): the colour cut must not decide between them."""
+    config = PipelineConfig()
+    allowed = tuple(config.colour.colours) + ("white",)
+    red = {e.id for e, _ in candidate_entries(catalogue, "red", ("rectangle",), config.colour.hsv_ranges, allowed)}
+    assert {"0.1-1.1", "0.1-3.1", "0.1-3.2"} <= red and "4.50.6" in red
+    brown = {e.id for e, _ in candidate_entries(catalogue, "brown", ("rectangle",), config.colour.hsv_ranges,
+                                                allowed)}
+    assert not {e.id for e in catalogue if e.colour == "red"} & brown  # bright red is no brown
