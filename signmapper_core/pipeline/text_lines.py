@@ -43,14 +43,19 @@ def text_line_count(bgr: np.ndarray, bbox, config) -> Optional[int]:
     return lines or None
 
 
-def typed_by_lines(template_id: str, bgr: np.ndarray, bbox, catalogue, config) -> str:
-    """``template_id``, or the entry of its line group (``catalogue.text_lines.line_groups``) whose line count
-    the face shows; unchanged when it is in no group, the lines cannot be counted or no entry has that count."""
+def line_member(template_id: str, bgr: np.ndarray, bbox, catalogue, config) -> Optional[str]:
+    """The entry of ``template_id``'s line group (``catalogue.text_lines.line_groups``) whose line count the face
+    ``bbox`` shows; None when it is in no group, the lines cannot be counted or no entry has that count."""
     hit = _groups.get(id(catalogue))
     if hit is None or hit[0] is not catalogue:
         hit = _groups[id(catalogue)] = (catalogue, line_groups(catalogue))
     groups = hit[1]
     if template_id not in groups:
-        return template_id
+        return None
     lines = text_line_count(bgr, bbox, config)
-    return (with_lines(groups, template_id, lines) or template_id) if lines else template_id
+    return with_lines(groups, template_id, lines) if lines else None
+
+
+def typed_by_lines(template_id: str, bgr: np.ndarray, bbox, catalogue, config) -> str:
+    """``template_id``, or the member of its line group the face's lines of text say (:func:`line_member`)."""
+    return line_member(template_id, bgr, bbox, catalogue, config) or template_id
