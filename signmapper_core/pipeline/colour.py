@@ -529,6 +529,34 @@ def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment
     return out
 
 
+def board_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment, int, int]]:
+    """(merged, i, j) for pairs of pieces of one wide board that a pole or post in front cut in two.
+
+    Each piece of a direction board is a good rectangle by itself, so the outline gains nothing by merging
+    (:func:`split_face_merges`): the pieces are one board when they stand side by side with their top and bottom
+    edges level (within ``config.colour.board_edge_align`` of their height), a gap of at most
+    ``board_max_gap`` of that height between them, and their merged box is a board's: at least
+    ``board_min_aspect`` times as wide as high (narrower faces are merged as split faces).
+    """
+    align, max_gap, min_aspect = (config.colour.board_edge_align, config.colour.board_max_gap,
+                                  config.colour.board_min_aspect)
+    out = []
+    for i, a in enumerate(segments):
+        ax, ay, aw, ah = a.bbox
+        for j in range(i + 1, len(segments)):
+            b = segments[j]
+            if a.colour != b.colour or a.touches_border or b.touches_border or not (is_piece(a) and is_piece(b)):
+                continue
+            bx, by, bw, bh = b.bbox
+            height = max(ay + ah, by + bh) - min(ay, by)
+            level = abs(ay - by) <= align * height and abs(ay + ah - by - bh) <= align * height
+            gap = max(ax, bx) - min(ax + aw, bx + bw)
+            width = max(ax + aw, bx + bw) - min(ax, bx)
+            if level and 0 <= gap <= max_gap * height and width >= min_aspect * height:
+                out.append((merge_segments(a, b), i, j))
+    return out
+
+
 def faces_with_split_pieces_merged(segments: Sequence[Segment], config) -> List[Segment]:
     """The segments with each pair of pieces of one split face replaced by the merged face."""
     merges = split_face_merges(segments, config)

@@ -62,6 +62,11 @@ class ColourConfig:
     # along both axes: their boxes overlap by about half along each (a clean 3.04: 0.48 and 0.48)
     split_min_diagonal_overlap: float = 0.3
     split_min_gain: float = 0.05  # ...and their hull fits an ideal outline this much better than either piece
+    # a pole in front of a direction board leaves two rectangles side by side, edges level within board_edge_align
+    # of their height, at most board_max_gap of it apart, together at least board_min_aspect times as wide as high
+    board_edge_align: float = 0.12
+    board_max_gap: float = 0.6
+    board_min_aspect: float = 2.0
 
     def __post_init__(self):
         unknown = set(self.colours) - set(self.hsv_ranges)
@@ -421,6 +426,7 @@ class ClassificationConfig:
     text_lines_min_px: int = 18
     text_lines_inset: Tuple[float, float] = (0.2, 0.06)
     text_lines_contrast: float = 60.0
+    text_lines_max_column_ink: float = 0.8  # a column this full of "text" is a pole or post in front
     text_lines_row_share: float = 0.03
     text_lines_min_height: float = 0.08
     same_sign_max_iou: float = 0.3  # detections of one pair overlapping more (or holding the other's centre) are

@@ -26,7 +26,14 @@ from ..zone_panels import may_be_a_panels_disc
 from .boxes import box_iou, centre_inside, smaller_box_cover
 from .classifiers import accept_threshold, marginal_min_score, min_score
 from .classify import surround_score
-from .colour import ColourFrame, Segment, find_colour_segments, merge_candidates, split_face_merges
+from .colour import (
+    ColourFrame,
+    Segment,
+    board_merges,
+    find_colour_segments,
+    merge_candidates,
+    split_face_merges,
+)
 from .config import PipelineConfig, with_settings
 from .depth_sources import depth_source_for
 from .detection import Detection
@@ -484,6 +491,11 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
         taken = set()
         for seg, i, j in split_face_merges(segments, config):
             det = evaluate_segment(seg, pair, depth)
+            if det is not None:
+                detections.append(det)
+                taken.update((i, j))
+        for seg, i, j in board_merges(segments, config):  # a wide board a pole in front cut in two
+            det = None if taken & {i, j} else evaluate_segment(seg, pair, depth)
             if det is not None:
                 detections.append(det)
                 taken.update((i, j))

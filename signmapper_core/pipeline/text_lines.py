@@ -23,8 +23,8 @@ def text_line_count(bgr: np.ndarray, bbox, config) -> Optional[int]:
 
     ``config``: the ``ClassificationConfig`` (``text_lines_*``): the share of the face cut off at the top and
     bottom (its border) and at each side (border and a pointer's tip), the Lab distance from the field that
-    counts as text, the share of a row's pixels that makes it a text row, and the least height of a line as a
-    share of the face's.
+    counts as text, the share of a column's pixels above which it is something in front (a pole), the share
+    of a row's pixels that makes it a text row, and the least height of a line as a share of the face's.
     """
     x, y, w, h = bbox
     if h < config.text_lines_min_px:
@@ -36,6 +36,9 @@ def text_line_count(bgr: np.ndarray, bbox, config) -> Optional[int]:
     lab = cv2.cvtColor(inner, cv2.COLOR_BGR2LAB).reshape(-1, 3).astype(np.float32)
     field = np.median(lab, axis=0)
     ink = (np.linalg.norm(lab - field, axis=1) > config.text_lines_contrast).reshape(inner.shape[:2])
+    ink = ink[:, ink.mean(axis=0) <= config.text_lines_max_column_ink]  # a pole in front is no text
+    if ink.shape[1] == 0:
+        return None
     rows = ink.mean(axis=1) >= config.text_lines_row_share
     edges = np.flatnonzero(np.diff(np.concatenate(([0], rows.astype(np.int8), [0]))))
     bands = edges[1::2] - edges[0::2]

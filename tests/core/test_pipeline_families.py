@@ -13,7 +13,7 @@ from pipeline_scenes import CAMERA, POSE, sign_scene
 
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.colour import is_cross
-from signmapper_core.pipeline.config import ClassificationConfig, SizeConfig
+from signmapper_core.pipeline.config import ClassificationConfig, ColourConfig, SizeConfig
 from signmapper_core.pipeline.face_extent import candidate_entries
 
 FORWARD, RIGHT, DOWN = POSE.rotation[:, 2], POSE.rotation[:, 0], POSE.rotation[:, 1]
@@ -101,3 +101,22 @@ def test_a_brown_board_segmented_as_red_is_offered_its_brown_entries(catalogue):
     brown = {e.id for e, _ in candidate_entries(catalogue, "brown", ("rectangle",), config.colour.hsv_ranges,
                                                 allowed)}
     assert not {e.id for e in catalogue if e.colour == "red"} & brown  # bright red is no brown
+
+
+@pytest.mark.parametrize("ahead, at", [(8.0, 0.4), (11.0, 0.6)])
+def test_a_board_cut_in_two_by_a_pole_in_front_is_one_board(catalogue, ahead, at):
+    """Each piece is a good rectangle alone: read apart they were two signs 0.2-0.4 m off, of the cycle-route
+    board's id; level edges and a pole's gap make them one board, typed by its three lines."""
+    entry = catalogue["0.1-3.1"]
+    face = _size(entry, 1.2)
+    sign = _world(ahead, -1.0, 0.3)
+    left, depth, (x, _, w, _) = sign_scene(catalogue, "0.1-3.1", face, sign, seed=2, background_depth=30.0)
+    pole_px, px = int(round(0.1 * CAMERA.fx / (ahead - 1.5))), int(x + at * w)
+    left[:, px : px + pole_px] = (150, 150, 150)
+    depth[:, px : px + pole_px] = ahead - 1.5
+    (det,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig())
+    assert det.template_id == "0.1-3.1" and det.width_m == pytest.approx(face[0], rel=0.05)
+    assert np.linalg.norm(det.position - sign) < 0.06
+    apart = detect_pair(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig(colour=ColourConfig(
+        board_min_aspect=99.0)))
+    assert len(apart) == 2 and all(np.linalg.norm(d.position - sign) > 0.2 for d in apart)
