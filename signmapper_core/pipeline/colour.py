@@ -506,27 +506,31 @@ def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment
         return fits[k]
 
     out = []
+    for i, a, j, b in _piece_pairs(segments):
+        (ax, ay, aw, ah), (bx, by, bw, bh) = a.bbox, b.bbox
+        x0, y0 = min(ax, bx), min(ay, by)
+        w, h = max(ax + aw, bx + bw) - x0, max(ay + ah, by + bh) - y0
+        if box_gap(a.bbox, b.bbox) > max_gap_fraction * max(w, h) or max(w, h) > max_aspect * min(w, h):
+            continue
+        across = _span_overlap(ax, ax + aw, bx, bx + bw)  # of the columns: one above the other
+        along = _span_overlap(ay, ay + ah, by, by + bh)  # of the rows: side by side
+        diagonal = min(across, along) >= min_diagonal
+        if not (across >= min_span_overlap or along >= min_span_overlap or diagonal):
+            continue
+        merged = merge_segments(a, b)
+        result = classify_shape(merged.mask, min_fit, fill_window)
+        if result.shape is not None and result.fit >= max(fit_of(i), fit_of(j)) + min_gain:
+            out.append((merged, i, j))
+    return out
+
+
+def _piece_pairs(segments: Sequence[Segment]):
+    """(i, a, j, b), i < j, for every two segments of one colour that may be pieces of one face."""
     for i, a in enumerate(segments):
-        ax, ay, aw, ah = a.bbox
         for j in range(i + 1, len(segments)):
             b = segments[j]
-            if a.colour != b.colour or a.touches_border or b.touches_border or not (is_piece(a) and is_piece(b)):
-                continue
-            bx, by, bw, bh = b.bbox
-            x0, y0 = min(ax, bx), min(ay, by)
-            w, h = max(ax + aw, bx + bw) - x0, max(ay + ah, by + bh) - y0
-            if box_gap(a.bbox, b.bbox) > max_gap_fraction * max(w, h) or max(w, h) > max_aspect * min(w, h):
-                continue
-            across = _span_overlap(ax, ax + aw, bx, bx + bw)  # of the columns: one above the other
-            along = _span_overlap(ay, ay + ah, by, by + bh)  # of the rows: side by side
-            diagonal = min(across, along) >= min_diagonal
-            if not (across >= min_span_overlap or along >= min_span_overlap or diagonal):
-                continue
-            merged = merge_segments(a, b)
-            result = classify_shape(merged.mask, min_fit, fill_window)
-            if result.shape is not None and result.fit >= max(fit_of(i), fit_of(j)) + min_gain:
-                out.append((merged, i, j))
-    return out
+            if a.colour == b.colour and not (a.touches_border or b.touches_border) and is_piece(a) and is_piece(b):
+                yield i, a, j, b
 
 
 def board_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment, int, int]]:
@@ -541,19 +545,14 @@ def board_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment, int
     align, max_gap, min_aspect = (config.colour.board_edge_align, config.colour.board_max_gap,
                                   config.colour.board_min_aspect)
     out = []
-    for i, a in enumerate(segments):
-        ax, ay, aw, ah = a.bbox
-        for j in range(i + 1, len(segments)):
-            b = segments[j]
-            if a.colour != b.colour or a.touches_border or b.touches_border or not (is_piece(a) and is_piece(b)):
-                continue
-            bx, by, bw, bh = b.bbox
-            height = max(ay + ah, by + bh) - min(ay, by)
-            level = abs(ay - by) <= align * height and abs(ay + ah - by - bh) <= align * height
-            gap = max(ax, bx) - min(ax + aw, bx + bw)
-            width = max(ax + aw, bx + bw) - min(ax, bx)
-            if level and 0 <= gap <= max_gap * height and width >= min_aspect * height:
-                out.append((merge_segments(a, b), i, j))
+    for i, a, j, b in _piece_pairs(segments):
+        (ax, ay, aw, ah), (bx, by, bw, bh) = a.bbox, b.bbox
+        height = max(ay + ah, by + bh) - min(ay, by)
+        level = abs(ay - by) <= align * height and abs(ay + ah - by - bh) <= align * height
+        gap = max(ax, bx) - min(ax + aw, bx + bw)
+        width = max(ax + aw, bx + bw) - min(ax, bx)
+        if level and 0 <= gap <= max_gap * height and width >= min_aspect * height:
+            out.append((merge_segments(a, b), i, j))
     return out
 
 
