@@ -525,24 +525,28 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
     if not pair.is_whole_image:  # a window around a click looks for the sign alone
         return signs
     with timer("plates"):
-        signs = _without_white_readings_of_plates(pair, depth, signs, config.plates.plate_min_cover)
-        return signs + find_plates(pair, depth, signs)
+        return _signs_and_plates(pair, depth, signs, config.plates.plate_min_cover)
 
 
-def _without_white_readings_of_plates(pair: PairContext, depth: np.ndarray, signs: List[Detection],
-                                      min_cover: float) -> List[Detection]:
-    """``signs`` without the white step's rectangles that are a supplementary plate of another sign.
+def _signs_and_plates(pair: PairContext, depth: np.ndarray, signs: List[Detection],
+                      min_cover: float) -> List[Detection]:
+    """``signs`` and their supplementary plates, without the white step's rectangles that are such a plate.
 
     A text plate is a white rectangle, as are many white entries: read alone, the plate may resemble one of them
     (a "Mo-Fr / 7-19 h" plate above a speed limit read as a police sign). Where the plate step, looking without
-    those readings, finds a plate covering at least ``min_cover`` of one, the plate is what it is.
+    those readings, finds a plate covering at least ``min_cover`` of one, the plate is what it is. The plates are
+    looked for again only when some of those readings stay signs (their plates count too).
     """
     readings = [s for s in signs if s.source == "white" and s.shape == "rectangle"]
     if not readings:
-        return signs
-    plates = find_plates(pair, depth, [s for s in signs if all(s is not r for r in readings)])
+        return signs + find_plates(pair, depth, signs)
+    others = [s for s in signs if all(s is not r for r in readings)]
+    plates = find_plates(pair, depth, others)
     taken = [r for r in readings if any(smaller_box_cover(p.bbox, r.bbox) >= min_cover for p in plates)]
-    return [s for s in signs if all(s is not t for t in taken)]
+    if len(taken) == len(readings):
+        return others + plates
+    kept = [s for s in signs if all(s is not t for t in taken)]
+    return kept + find_plates(pair, depth, kept)
 
 
 def white_scan(pair: PairContext) -> Optional[WhiteScan]:

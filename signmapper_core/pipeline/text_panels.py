@@ -28,7 +28,7 @@ from .pair_context import PairContext
 from .scene_colour import median_u8
 from .sizing import measure_segment, metric_size
 from .white_outlines import bright_achromatic, filled
-from .white_signs import coloured_share, pole_share, side_shares, support_share
+from .white_signs import coloured_share, network_reading, pole_share, side_shares, support_share
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
 PAPER = 230  # the paper of a 4.30's two fields, evened out before they are set one over the other
@@ -382,8 +382,9 @@ def judge_panel(field: PanelField, pair: PairContext, depth: np.ndarray, grey: n
         return None
     accepted = supported and indicator >= white.panel_accept_frame
     step = white.panel_size_step_m
+    template_id = _specific_pointer(pair, box, kind.id) if field.layout == DIRECTION else kind.id
     return Detection(
-        template_id=kind.id, name=pair.catalogue[kind.id].name("de"), colour="white", shape="rectangle",
+        template_id=template_id, name=pair.catalogue[template_id].name("de"), colour="white", shape="rectangle",
         width_m=round(width_m / step) * step, height_m=round(height_m / step) * step, format="measured",
         detection_indicator=planarity.indicator, classification_indicator=indicator,
         status="accepted" if accepted else "review", u=u, v=v, bbox=box, depth_m=float(z),
@@ -391,6 +392,15 @@ def judge_panel(field: PanelField, pair: PairContext, depth: np.ndarray, grey: n
         normal_world=world_face_normal(camera, pair.pose, planarity.plane),
         crop=reading_crop(pair.left, field),
     )
+
+
+def _specific_pointer(pair: PairContext, box: Box, generic: str) -> str:
+    """The white pointer a direction panel's face shows: a catalogued pointer with a pictogram or fixed text
+    (parking 4.46, lorries 4.45, a company 4.49, ...) where the network reads one clearly among them and the
+    generic panel ``generic``; else ``generic``, the panel told by its layout."""
+    ids = [e.id for e in pair.catalogue if e.colour == "white" and e.shape == "pointer"] + [generic]
+    reading = network_reading(pair, box, ids)
+    return reading.template_id if reading is not None else generic
 
 
 def plate_of(box: Box, signs: Sequence[Detection], config) -> bool:
