@@ -382,7 +382,7 @@ def judge_panel(field: PanelField, pair: PairContext, depth: np.ndarray, grey: n
         return None
     accepted = supported and indicator >= white.panel_accept_frame
     step = white.panel_size_step_m
-    template_id = _specific_pointer(pair, box, kind.id) if field.layout == DIRECTION else kind.id
+    template_id = specific_pointer(pair, box, kind.id) if field.layout == DIRECTION else kind.id
     return Detection(
         template_id=template_id, name=pair.catalogue[template_id].name("de"), colour="white", shape="rectangle",
         width_m=round(width_m / step) * step, height_m=round(height_m / step) * step, format="measured",
@@ -394,7 +394,7 @@ def judge_panel(field: PanelField, pair: PairContext, depth: np.ndarray, grey: n
     )
 
 
-def _specific_pointer(pair: PairContext, box: Box, generic: str) -> str:
+def specific_pointer(pair: PairContext, box: Box, generic: str) -> str:
     """The white pointer a direction panel's face shows: a catalogued pointer with a pictogram or fixed text
     (parking 4.46, lorries 4.45, a company 4.49, ...) where the network reads one clearly among them and the
     generic panel ``generic``; else ``generic``, the panel told by its layout."""

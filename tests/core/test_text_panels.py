@@ -204,3 +204,20 @@ def test_a_text_panel_seen_in_three_pairs_is_one_feature_with_its_text(tmp_path)
     figures = evaluate_panels(drive, result.signs, reference, report.match, evidence=evidence)
     assert (figures.reference, figures.detected, figures.kinds_right, figures.texts_right) == (1, 1, 1, 1)
     assert evidence == []
+
+
+@pytest.mark.parametrize("template_id, size", [("4.49", (222, 40)), ("4.45", (156, 41))])
+def test_a_white_pointer_with_a_pictogram_is_read_as_its_own_sign_not_the_generic_panel(template_id, size):
+    """Found by its layout as a direction panel, a catalogued pointer (a company's 4.49, the lorries' 4.45) is what
+    the network reads among the white pointers; they were mapped and accepted as 4.33 (crops of tune drive 600)."""
+    from pathlib import Path
+
+    from signmapper_core.pipeline.pair_context import PairContext
+    from signmapper_core.pipeline.text_panels import specific_pointer
+
+    crop = cv2.imread(str(Path(__file__).parents[1] / "data" / "white-pointers" / f"{template_id}.png"))
+    pair = PairContext.whole(crop, CAMERA, POSE, _catalogue(), PipelineConfig(), None)
+    assert specific_pointer(pair, (40, 40) + size, "4.33") == template_id
+    centre, left, depth, box = _panel_scene("4.33", ["Bellinzona", "Airolo"], ahead=8.0)
+    generic = PairContext.whole(left, CAMERA, POSE, _catalogue(), PipelineConfig(), None)
+    assert specific_pointer(generic, box, "4.33") == "4.33"  # a destination panel stays the generic one
