@@ -542,11 +542,14 @@ def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config
                          config.white.white_max_aspect, config.white.white_join_gap * lo * scale,
                          config.white.white_join_steps)
     in_reach = outlines_in_reach(gradients, [box for box, _ in groups], config)
+    labels = int(scan.labels.max()) + 1 if groups else 0
     for (box, members), reached in zip(groups, in_reach):
         if not reached:
             continue
         x, y, w, h = box
-        mask = np.isin(scan.labels[y : y + h, x : x + w], ids[list(members)]).astype(np.uint8) * 255
+        member = np.zeros(labels, np.uint8)  # a table of the group's labels: a lookup instead of np.isin
+        member[ids[list(members)]] = 255
+        mask = member[scan.labels[y : y + h, x : x + w]]
         faces += [face for face in read_face(mask, box, gradients, config)
                   if lo * scale <= min(face[1][2:]) and max(face[1][2:]) <= hi * scale]
     faces.sort(key=lambda f: f[1][2] * f[1][3], reverse=True)
