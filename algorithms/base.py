@@ -98,7 +98,7 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         """The output language, offered by name after ``first`` (what an algorithm does when none is chosen)."""
         from qgis.core import QgsProcessingParameterEnum
 
-        from ..signmapper_core.output_schema import LANGUAGE_NAMES, LANGUAGES
+        from ..signmapper_core.output.schema import LANGUAGE_NAMES, LANGUAGES
 
         options = [first] + [LANGUAGE_NAMES[code] for code in LANGUAGES]
         return self.add_parameter(QgsProcessingParameterEnum(name, self.tr("Language of the output"),
@@ -106,7 +106,7 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
 
     def chosen_language(self, parameters, name: str, context):
         """The language code chosen, None for the first option (the algorithm's own default)."""
-        from ..signmapper_core.output_schema import LANGUAGES
+        from ..signmapper_core.output.schema import LANGUAGES
 
         choice = self.parameterAsEnum(parameters, name, context)
         return LANGUAGES[choice - 1] if choice > 0 else None
@@ -249,7 +249,7 @@ class CoreFeedback:
 
 def file_error(exc: OSError) -> str:
     """An OSError as a message naming the file (shortened when very long) and what the system said."""
-    from ..signmapper_core.file_paths import shown
+    from ..signmapper_core.output.file_paths import shown
 
     where = f"{shown(exc.filename)}: " if exc.filename else ""
     return f"{where}{exc.strerror or exc}"

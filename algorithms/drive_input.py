@@ -12,7 +12,7 @@ def open_drive_or_raise(folder: str, feedback=None):
     ``feedback`` (a ``CoreFeedback``) shows progress, cancels (``progress.Cancelled``) and logs the
     drive's warnings (implausible values, an ignored truth.csv).
     """
-    from ..signmapper_core.drive import open_drive
+    from ..signmapper_core.drive.reader import open_drive
     from ..signmapper_core.errors import DriveFormatError
 
     if not folder:

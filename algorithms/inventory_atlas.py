@@ -13,7 +13,7 @@ from qgis.core import (
     QgsProcessingParameterFileDestination,
 )
 
-from ..signmapper_core.partial_output import write_failure
+from ..signmapper_core.output.partial_output import write_failure
 from .deliverable import DeliverableAlgorithm
 
 LAYOUT_NAME = "Sign Mapper inventory: {layer}"

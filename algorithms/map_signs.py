@@ -23,10 +23,10 @@ from ..gpkg.fields import layer_feature, layer_fields
 from ..gpkg.language import qgis_language
 from ..gpkg.output import GeoPackageLayers, layer_uri
 from ..gpkg.styles import OutputStyler, embed_default_styles
-from ..signmapper_core import output_schema as schema
 from ..signmapper_core.errors import ClusterError, MappingError
-from ..signmapper_core.geopackage_file import OUR_TABLES
-from ..signmapper_core.output_schema import DETECTIONS, SIGNS, OutputContext
+from ..signmapper_core.output import schema
+from ..signmapper_core.output.geopackage_file import OUR_TABLES
+from ..signmapper_core.output.schema import DETECTIONS, SIGNS, OutputContext
 from ..signmapper_core.pipeline.config import default, with_settings
 from ..signmapper_core.progress import Cancelled, check_cancelled
 from ..signmapper_core.sign_colours import SIGN_COLOURS
@@ -235,7 +235,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         of an earlier output; QgsProcessingException says what is wrong. Notes on the record go to ``notes``."""
         self.require_dependencies()
         from ..signmapper_core.catalogue import load_catalogue
-        from ..signmapper_core.fusion import FusionConfig
+        from ..signmapper_core.fusion.signs import FusionConfig
         from ..signmapper_core.pipeline import PipelineConfig
 
         folder = self.parameterAsFile(parameters, self.DRIVE, context)
@@ -303,8 +303,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         text = (self.parameterAsString(parameters, self.SCHEDULER, context) or "").strip()
         if not text:
             return None
-        from ..signmapper_core.dask_pairs import scheduler_address  # no Dask import: only the address is read
         from ..signmapper_core.errors import ClusterError
+        from ..signmapper_core.run.dask_pairs import scheduler_address  # no Dask import: only the address is read
 
         try:
             return scheduler_address(text)
@@ -317,7 +317,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         path = self.parameterAsFile(parameters, self.SETTINGS_FROM, context)
         if not path:
             return None
-        from ..signmapper_core.run_settings import RunRecordError, load_run_settings
+        from ..signmapper_core.output.run_settings import RunRecordError, load_run_settings
 
         label = self.parameterDefinition(self.SETTINGS_FROM).description()
         try:
@@ -363,7 +363,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         unchanged = self.run_outputs.unchanged()
         crops = None
         if self.parameterAsBoolean(parameters, self.CROPS, context):
-            from ..signmapper_core.sign_crops import CropFolder  # OpenCV: imported only when a run needs it
+            from ..signmapper_core.output.sign_crops import CropFolder  # OpenCV: imported only when a run needs it
 
             crops = CropFolder(path)
             self.run_outputs.add(crops.output)
@@ -412,7 +412,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
     @staticmethod
     def output_context(drive, catalogue, language, result, crops, feedback) -> OutputContext:
         """Language, the drive's clock and, when asked for, the crops written (in the partial folder)."""
-        from ..signmapper_core.drive_clock import drive_start, first_time
+        from ..signmapper_core.drive.clock import drive_start, first_time
         from ..signmapper_core.errors import DriveFormatError
 
         try:
@@ -445,7 +445,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         discards its output. ``workers``: processes mapping the pairs (0 = all cores); ``scheduler``: a Dask
         scheduler address instead (the cancel button cancels the cluster's tasks).
         """
-        from ..signmapper_core.mapping import map_drive
+        from ..signmapper_core.run.mapping import map_drive
 
         steps = CoreFeedback(feedback, 5, 92)
         result = map_drive(drive, catalogue, config, steps.progress, steps.is_cancelled, steps.warn,

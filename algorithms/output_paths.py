@@ -31,9 +31,9 @@ from qgis.core import (
 )
 
 from ..signmapper_core.errors import OutputBusyError, OutputFileError
-from ..signmapper_core.file_paths import path_problem
-from ..signmapper_core.geopackage_file import geopackage_contents, is_ours
-from ..signmapper_core.target_lock import TargetLock
+from ..signmapper_core.output.file_paths import path_problem
+from ..signmapper_core.output.geopackage_file import geopackage_contents, is_ours
+from ..signmapper_core.output.target_lock import TargetLock
 
 NOT_FILES = ("memory:", "postgres:", "postgis:", "mssql:", "oracle:", "hana:", "spatialite:")
 SINK, FILE, FOLDER = "layer", "file", "folder"  # what a destination parameter writes

@@ -3,7 +3,7 @@
 :class:`~.base.SignMapperAlgorithm` runs each algorithm inside :class:`RunOutputs`.
 Every output the user gave as a file (a feature sink, a file destination; drive
 folders are the core writers' own, the same mechanism) becomes a partial output
-of the core (``signmapper_core.partial_output``): locked against a second run,
+of the core (``signmapper_core.output.partial_output``): locked against a second run,
 written beside its target, moved in only when the algorithm has returned, and
 dropped, the earlier file as it was, when it fails or is cancelled. A layer
 written into an existing GeoPackage keeps the file's other layers
@@ -19,8 +19,8 @@ from pathlib import Path
 from qgis.core import QgsDataSourceUri, QgsProcessingOutputLayerDefinition, QgsProperty
 
 from ..gpkg.output import CheckedSink, layer_uri
-from ..signmapper_core.geopackage_file import PartialGeoPackage
-from ..signmapper_core.partial_output import PartialOutput
+from ..signmapper_core.output.geopackage_file import PartialGeoPackage
+from ..signmapper_core.output.partial_output import PartialOutput
 from .output_paths import FILE, FOLDER, SINK, destinations
 
 

@@ -7,7 +7,7 @@ from qgis.core import QgsCoordinateTransform, QgsGeometry, QgsProcessingExceptio
 from ..gpkg.fields import feature_values
 from ..gpkg.output import read_run_table
 from ..review.layers import gpkg_source
-from ..signmapper_core.output_schema import SIGNS, required_names
+from ..signmapper_core.output.schema import SIGNS, required_names
 
 
 def signs_layer_and_run(layer) -> tuple:

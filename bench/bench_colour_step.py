@@ -29,7 +29,7 @@ def real_images(data: Path, split: str, count: int):
 
 
 def synthetic_images(count: int):
-    from signmapper_core.drive import open_drive
+    from signmapper_core.drive.reader import open_drive
     from signmapper_core.simulate import SimulationConfig, generate_drive
 
     out = REPO / "build" / "drives" / f"seed2001-{count}"

@@ -102,9 +102,9 @@ def run_dask(mode: str, folder: Path, scheduler: str = "") -> dict:
     from distributed import Client, LocalCluster
 
     from signmapper_core.catalogue import load_catalogue
-    from signmapper_core.drive import open_drive
-    from signmapper_core.mapping import map_drive
+    from signmapper_core.drive.reader import open_drive
     from signmapper_core.pipeline import PipelineConfig
+    from signmapper_core.run.mapping import map_drive
 
     drive = open_drive(folder)
     cluster = None
@@ -132,10 +132,10 @@ def run_mode(mode: str, folder: Path, long_pairs: int = 0) -> dict:
     from bench_mapping import baseline_detect as baseline  # by module name, so worker processes can import it
 
     from signmapper_core.catalogue import load_catalogue
-    from signmapper_core.drive import open_drive
-    from signmapper_core.mapping import map_drive
-    from signmapper_core.pair_pool import available_cores
+    from signmapper_core.drive.reader import open_drive
     from signmapper_core.pipeline import PipelineConfig
+    from signmapper_core.run.mapping import map_drive
+    from signmapper_core.run.pair_pool import available_cores
 
     drive = open_drive(folder)
     if long_pairs:

@@ -26,7 +26,7 @@ def main() -> None:
     args = parser.parse_args()
     from drive_fixtures import make_drive
 
-    from signmapper_core.drive import open_drive
+    from signmapper_core.drive.reader import open_drive
 
     folder = args.folder or Path(tempfile.mkdtemp()) / "drive"
     if not (folder / "poses.csv").exists():

@@ -68,7 +68,7 @@ def main() -> int:
     args = parser.parse_args()
 
     from signmapper_core.catalogue import load_catalogue
-    from signmapper_core.drive import open_drive
+    from signmapper_core.drive.reader import open_drive
     from signmapper_core.pipeline import PipelineConfig, detect_pair
     from signmapper_core.pipeline.config import with_settings
 

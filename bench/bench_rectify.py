@@ -87,7 +87,7 @@ def main() -> None:
     args = parser.parse_args()
     import cv2
 
-    from signmapper_core.image_files import read_image
+    from signmapper_core.drive.images import read_image
     from signmapper_core.importdrive import GenericInputs, ImportOptions, Orientation, generic_source, import_drive
     from signmapper_core.importdrive.calibration import read_calibrations
     from signmapper_core.importdrive.rectify import Rectifier

@@ -46,9 +46,9 @@ def main() -> int:
     parser.add_argument("--out", type=Path, required=True)
     args = parser.parse_args()
     from signmapper_core.catalogue import load_catalogue
-    from signmapper_core.drive import open_drive
-    from signmapper_core.mapping import map_drive
+    from signmapper_core.drive.reader import open_drive
     from signmapper_core.pipeline import PipelineConfig
+    from signmapper_core.run.mapping import map_drive
 
     catalogue, config = load_catalogue(), PipelineConfig()
     lines, pairs = [], 0

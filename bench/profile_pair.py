@@ -31,9 +31,9 @@ def main() -> int:
     import cv2
 
     from signmapper_core.catalogue import load_catalogue
-    from signmapper_core.drive import open_drive
-    from signmapper_core.mapping import map_pair
+    from signmapper_core.drive.reader import open_drive
     from signmapper_core.pipeline import PipelineConfig
+    from signmapper_core.run.mapping import map_pair
 
     cv2.setNumThreads(1)
     drive, catalogue, config = open_drive(args.drive), load_catalogue(), PipelineConfig()

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from qgis.core import QgsAction, QgsEditorWidgetSetup, QgsVectorLayer
 
-from ..signmapper_core.output_schema import SIGNS
+from ..signmapper_core.output.schema import SIGNS
 
 GPKG_FOLDER = "file_path(layer_property(@layer, 'path'))"
 CROP_FILE = f"CASE WHEN \"crop_path\" IS NULL THEN '' ELSE {GPKG_FOLDER} || '/' || \"crop_path\" END"

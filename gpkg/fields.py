@@ -1,11 +1,11 @@
-"""QGIS fields and features of the output layers, derived from ``signmapper_core.output_schema``."""
+"""QGIS fields and features of the output layers, derived from ``signmapper_core.output.schema``."""
 
 from __future__ import annotations
 
 from qgis.core import NULL, QgsFeature, QgsField, QgsFields, QgsGeometry, QgsPoint
 from qgis.PyQt.QtCore import QVariant
 
-from ..signmapper_core import output_schema as schema
+from ..signmapper_core.output import schema
 
 QT_TYPES = {schema.TEXT: QVariant.String, schema.INTEGER: QVariant.Int, schema.REAL: QVariant.Double}
 
@@ -38,7 +38,7 @@ def layer_feature(fields: QgsFields, layer: str, item, context=None) -> QgsFeatu
 
 def declared_fields(layer: str) -> tuple:
     """The declared fields of one of our layers: a mapping run's (``output_schema``) or ``changes``."""
-    from ..signmapper_core import changes_schema
+    from ..signmapper_core.changes import schema as changes_schema
 
     return changes_schema.FIELDS if layer == changes_schema.CHANGES else schema.fields(layer)
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from qgis.core import QgsSettings
 from qgis.PyQt.QtCore import QLocale
 
-from ..signmapper_core.output_schema import language_of
+from ..signmapper_core.output.schema import language_of
 
 
 def qgis_language() -> str:

@@ -1,8 +1,8 @@
 """Writing Sign Mapper's layers from QGIS: into a partial output, every failed write said where it happens.
 
 The partial file, its commit and the layers of an existing file that are kept
-are the core's (``signmapper_core.geopackage_file``, shared with the QGIS-free
-writer ``signmapper_core.gpkg_writer``); QGIS writes the layers into it.
+are the core's (``signmapper_core.output.geopackage_file``, shared with the QGIS-free
+writer ``signmapper_core.output.gpkg_writer``); QGIS writes the layers into it.
 QGIS's writers answer a failed write (a full disk) with ``False``, or not at
 all when the last features are committed as the file closes: :class:`CheckedSink`
 raises instead, and counts the features in the file once it is closed.
@@ -25,8 +25,8 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QVariant
 
-from ..signmapper_core.output_schema import RUN_TABLE, encode_run_value
-from ..signmapper_core.partial_output import write_failure
+from ..signmapper_core.output.partial_output import write_failure
+from ..signmapper_core.output.schema import RUN_TABLE, encode_run_value
 
 
 class CheckedSink:
@@ -131,7 +131,7 @@ def layer_uri(path: str, layer: str) -> str:
 
 def read_run_table(path: str) -> dict:
     """The run table of the GeoPackage ``path`` as written (``output_schema.RUN_KEYS``); {} where there is none."""
-    from ..signmapper_core.run_settings import RunRecordError, read_run_record
+    from ..signmapper_core.output.run_settings import RunRecordError, read_run_record
 
     if not path:
         return {}

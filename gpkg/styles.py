@@ -44,15 +44,15 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QPointF
 from qgis.PyQt.QtGui import QColor
 
-from ..signmapper_core import output_schema as schema
 from ..signmapper_core.catalogue.families import by_family, family_name
 from ..signmapper_core.catalogue.model import UNKNOWN_ID
 from ..signmapper_core.catalogue.names import sign_name, unknown_name
-from ..signmapper_core.output_schema import ACCEPTED, DETECTIONS, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
-from ..signmapper_core.partial_output import write_failure
-from ..signmapper_core.plate_formats import PLATE_ID, PLATE_NAMES
+from ..signmapper_core.output import schema
+from ..signmapper_core.output.partial_output import write_failure
+from ..signmapper_core.output.schema import ACCEPTED, DETECTIONS, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
+from ..signmapper_core.output.value_names import LOCALISED_FIELDS, value_map, value_name
+from ..signmapper_core.plates.formats import PLATE_ID, PLATE_NAMES
 from ..signmapper_core.sign_colours import DISPLAY_COLOURS
-from ..signmapper_core.value_names import LOCALISED_FIELDS, value_map, value_name
 from . import feature_actions
 
 PICTOGRAM_MM = 7.0

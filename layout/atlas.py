@@ -25,9 +25,9 @@ from qgis.core import (
 )
 from qgis.PyQt.QtGui import QFont
 
-from ..signmapper_core.output_schema import SIGNS, OutputContext, field
-from ..signmapper_core.plate_catalogue import pictogram_png
-from ..signmapper_core.value_names import VALUE_NAMES, value_name
+from ..signmapper_core.output.schema import SIGNS, OutputContext, field
+from ..signmapper_core.output.value_names import VALUE_NAMES, value_name
+from ..signmapper_core.plates.catalogue import pictogram_png
 
 MAP_SCALE = 250  # the map on each sheet: the sign's surroundings (45 × 31 m), its pole's stack readable
 MARGIN_MM = 15.0

@@ -11,8 +11,8 @@ from qgis.PyQt.sip import isdeleted
 
 from ..gpkg.fields import feature_values
 from ..signmapper_core.catalogue.model import UNKNOWN_ID
-from ..signmapper_core.changes_schema import CHANGES
-from ..signmapper_core.output_schema import MANUAL, SIGNS
+from ..signmapper_core.changes.schema import CHANGES
+from ..signmapper_core.output.schema import MANUAL, SIGNS
 from .edits import DecisionLog, EditError, add_feature, change_attributes
 from .layers import features_where
 from .values import accept_values, manual_feature, plate_text_values, reclassify_values, reject_values
@@ -115,7 +115,7 @@ class DecisionTaker:
         if session.layer is None or record is None or session.catalogue is None:
             self.dock.show_message("Adding a sign needs a Sign Mapper layer and its drive's images", error=True)
             return
-        from ..signmapper_core.mapping import detect_at
+        from ..signmapper_core.run.mapping import detect_at
 
         drive, catalogue, config, layer = session.drive, session.catalogue, session.pipeline_config(), session.layer
 
@@ -152,7 +152,7 @@ class DecisionTaker:
 
     def _add(self, observation) -> None:
         """A feature for the clicked sign: the observation itself, or in a signs layer a new sign numbered last."""
-        from ..signmapper_core.mapping import manual_sign
+        from ..signmapper_core.run.mapping import manual_sign
 
         layer, kind = self.session.layer, self.session.kind
         if kind == CHANGES:

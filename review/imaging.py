@@ -11,7 +11,7 @@ import numpy as np
 from qgis.PyQt.QtCore import Qt
 from qgis.PyQt.QtGui import QImage
 
-from ..signmapper_core.sign_crops import crop_box as crop_rect  # noqa: F401 - the review's name for it
+from ..signmapper_core.output.sign_crops import crop_box as crop_rect  # noqa: F401 - the review's name for it
 
 Rect = Tuple[int, int, int, int]  # x, y, w, h
 

@@ -7,8 +7,8 @@ from typing import Optional, Tuple
 from qgis.core import QgsExpression, QgsFeatureRequest, QgsProject, QgsProviderRegistry, QgsVectorLayer
 
 from ..gpkg.output import layer_uri
-from ..signmapper_core import changes_schema
-from ..signmapper_core.output_schema import DETECTIONS, LAYERS, RUN_TABLE, SIGNS, required_names
+from ..signmapper_core.changes import schema as changes_schema
+from ..signmapper_core.output.schema import DETECTIONS, LAYERS, RUN_TABLE, SIGNS, required_names
 
 
 def gpkg_source(layer) -> Tuple[str, str]:

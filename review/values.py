@@ -1,6 +1,6 @@
 """Attribute values of review decisions: accept, reject, reclassify, and a manually added sign.
 
-What each writes follows ``signmapper_core.output_schema``: statuses, the
+What each writes follows ``signmapper_core.output.schema``: statuses, the
 fields a catalogue entry gives (reclassify) and the fields of a new feature.
 """
 
@@ -9,7 +9,7 @@ from __future__ import annotations
 from typing import Optional
 
 from ..gpkg.fields import layer_feature
-from ..signmapper_core.output_schema import ACCEPTED, DEFAULT_LANGUAGE, MANUAL, REJECTED, OutputContext, template_values
+from ..signmapper_core.output.schema import ACCEPTED, DEFAULT_LANGUAGE, MANUAL, REJECTED, OutputContext, template_values
 
 DEFAULT_FORMAT = "normal"
 
@@ -28,8 +28,8 @@ def plate_text_values(text: str, current_status: str, current_template_id: str =
     Spelt as the mapping writes texts (``plate_text``): lines joined by " / ". A text plate (or one mapped
     untyped) is typed again by what it now says (``plate_types``), named in ``context``'s language."""
     from ..signmapper_core.catalogue.plates_ch import TEXT, kind_of
-    from ..signmapper_core.plate_text import normalise_text
-    from ..signmapper_core.plate_types import text_plate_id
+    from ..signmapper_core.plates.text import normalise_text
+    from ..signmapper_core.plates.types import text_plate_id
 
     lines = [line for line in text.replace("\n", " / ").split("/")]
     written = normalise_text(lines)

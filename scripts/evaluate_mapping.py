@@ -41,10 +41,9 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
 from signmapper_core.catalogue import load_catalogue  # noqa: E402
-from signmapper_core.classifier_alternatives import sign_alternatives  # noqa: E402
-from signmapper_core.drive import open_drive  # noqa: E402
-from signmapper_core.evaluation import combine_reports, evaluate, format_report, majority_id  # noqa: E402
-from signmapper_core.family_evaluation import (  # noqa: E402
+from signmapper_core.drive.reader import open_drive  # noqa: E402
+from signmapper_core.evaluation.accuracy import combine_reports, evaluate, format_report, majority_id  # noqa: E402
+from signmapper_core.evaluation.families import (  # noqa: E402
     COLOURED,
     WHITE,
     FamilyFigures,
@@ -54,23 +53,24 @@ from signmapper_core.family_evaluation import (  # noqa: E402
     group_figures,
     group_lines,
 )
-from signmapper_core.fusion import sign_accept_threshold  # noqa: E402
-from signmapper_core.id_outcomes import id_outcomes, outcome_lines  # noqa: E402
-from signmapper_core.mapping import map_drive  # noqa: E402
-from signmapper_core.misread_evidence import (  # noqa: E402
+from signmapper_core.evaluation.id_outcomes import id_outcomes, outcome_lines  # noqa: E402
+from signmapper_core.evaluation.misread_evidence import (  # noqa: E402
     false_positive_lines,
     misread_lines,
     missed_lines,
     position_lines,
 )
-from signmapper_core.panel_evaluation import PanelFigures, evaluate_panels  # noqa: E402
+from signmapper_core.evaluation.panels import PanelFigures, evaluate_panels  # noqa: E402
+from signmapper_core.evaluation.plates import PlateFigures, evaluate_plates  # noqa: E402
+from signmapper_core.evaluation.visibility import mappable_signs  # noqa: E402
+from signmapper_core.fusion.signs import sign_accept_threshold  # noqa: E402
+from signmapper_core.output.classifier_alternatives import sign_alternatives  # noqa: E402
+from signmapper_core.output.review_reasons import reason_shown  # noqa: E402
 from signmapper_core.pipeline import PipelineConfig  # noqa: E402
 from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, WhiteConfig  # noqa: E402
-from signmapper_core.plate_evaluation import PlateFigures, evaluate_plates  # noqa: E402
-from signmapper_core.plate_fusion import is_plate  # noqa: E402
-from signmapper_core.review_reasons import reason_shown  # noqa: E402
+from signmapper_core.plates.fusion import is_plate  # noqa: E402
+from signmapper_core.run.mapping import map_drive  # noqa: E402
 from signmapper_core.simulate.face_artwork import OFFICIAL_PICTOGRAM, pictogram_group  # noqa: E402
-from signmapper_core.visibility import mappable_signs  # noqa: E402
 
 
 def drive_config(seed: int, pairs: int, depth: bool, legacy_faces: bool = False, white_share: float = 0.0,

@@ -112,9 +112,9 @@ def breakdowns(records: list, columns: Callable[[list], List[str]], header: Sequ
 def check_digits(records: list, catalogue) -> None:
     """The mapping's digits check (``number_check``) on each accepted speed-limit reading, from its one view:
     a reading whose digits say another speed limit's number is no longer accepted. Prints what it changed."""
-    from signmapper_core.number_check import judge_numbers
-    from signmapper_core.ocr import read_numbers
-    from signmapper_core.printed_numbers import number_band, prepared_band, printed_number, printed_numbers
+    from signmapper_core.plates.number_check import judge_numbers
+    from signmapper_core.plates.ocr import read_numbers
+    from signmapper_core.plates.printed_numbers import number_band, prepared_band, printed_number, printed_numbers
 
     known = printed_numbers(catalogue.ids())
     checked, bands = [], []
@@ -136,7 +136,7 @@ def check_digits(records: list, catalogue) -> None:
 
 
 def run_classify(args, catalogue, config: PipelineConfig) -> int:
-    from signmapper_core.classifier_alternatives import ranked_alternatives
+    from signmapper_core.output.classifier_alternatives import ranked_alternatives
     from signmapper_core.pipeline.classifiers import NccClassifier, accept_threshold
 
     clf = make_classifier(args.classifier, catalogue, args.model)

@@ -34,7 +34,7 @@ def main(argv=None) -> int:
     parser.add_argument("--far", type=float, default=20.0, help="farthest point used for the spread, m")
     parser.add_argument("--map", action="store_true", help="also map the drive's signs")
     args = parser.parse_args(argv)
-    from signmapper_core.drive import open_drive
+    from signmapper_core.drive.reader import open_drive
     from signmapper_core.importdrive.consistency import static_point_spread
     from signmapper_core.importdrive.epipolar import match_features
 
@@ -60,8 +60,8 @@ def main(argv=None) -> int:
               f"90 % within {100 * np.percentile(s3, 90):.1f} cm")
     if args.map:
         from signmapper_core.catalogue import load_catalogue
-        from signmapper_core.mapping import map_drive
         from signmapper_core.pipeline import PipelineConfig
+        from signmapper_core.run.mapping import map_drive
 
         started = time.perf_counter()
         result = map_drive(drive, load_catalogue(), PipelineConfig())

@@ -35,7 +35,7 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
 from signmapper_core.catalogue import load_catalogue  # noqa: E402
-from signmapper_core.changes import (  # noqa: E402
+from signmapper_core.changes.compare import (  # noqa: E402
     CHANGED,
     CONFIRMED,
     MISSING,
@@ -49,8 +49,8 @@ from signmapper_core.changes import (  # noqa: E402
     pose_arrays,
     sign_views,
 )
-from signmapper_core.drive import open_drive  # noqa: E402
-from signmapper_core.mounting import camera_height_above_road  # noqa: E402
+from signmapper_core.drive.reader import open_drive  # noqa: E402
+from signmapper_core.fusion.mounting import camera_height_above_road  # noqa: E402
 
 EDITS = {"removed": 4, "moved": 5, "type": 4}  # of signs the drive sees; then signs added, at least 3 of each kind
 MIN_EDITS = 22

@@ -25,9 +25,9 @@ sys.path.insert(0, str(REPO / "scripts"))
 from evaluate_mapping import drive_folder, generated_drive  # noqa: E402
 
 from signmapper_core.catalogue import load_catalogue  # noqa: E402
-from signmapper_core.drive import open_drive  # noqa: E402
-from signmapper_core.family_evaluation import GROUP_TITLES, GROUPS, catalogue_colour, sign_group  # noqa: E402
-from signmapper_core.visibility import visible_in_pair  # noqa: E402
+from signmapper_core.drive.reader import open_drive  # noqa: E402
+from signmapper_core.evaluation.families import GROUP_TITLES, GROUPS, catalogue_colour, sign_group  # noqa: E402
+from signmapper_core.evaluation.visibility import visible_in_pair  # noqa: E402
 
 
 def in_view(truth, camera, poses, near: float, far: float) -> list:

@@ -6,8 +6,8 @@ from pathlib import Path
 
 import numpy as np
 
-from signmapper_core.drive import TruthSign
-from signmapper_core.drive_writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
+from signmapper_core.drive.reader import TruthSign
+from signmapper_core.drive.writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
 from signmapper_core.geometry import Camera, Pose
 
 SMALL_CAMERA = Camera(width=64, height=48, fx=60.0, fy=60.0, cx=31.5, cy=23.5, baseline_m=0.9)

@@ -16,7 +16,7 @@ from pathlib import Path
 
 from osgeo import ogr
 
-from signmapper_core.classifier_alternatives import parse_alternatives
+from signmapper_core.output.classifier_alternatives import parse_alternatives
 
 REPO_ROOT = Path(__file__).resolve().parents[1]
 

@@ -13,7 +13,7 @@ import cv2
 import numpy as np
 
 from signmapper_core.pipeline.classifiers.face_patch import face_patch
-from signmapper_core.printed_numbers import speed_limit_number
+from signmapper_core.plates.printed_numbers import speed_limit_number
 
 from .backgrounds import BackgroundPool
 from .camera_effects import blur, lighting, resolution_loss, sensor_noise_and_jpeg

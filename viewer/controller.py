@@ -22,8 +22,8 @@ from ..review.background import BackgroundRunner
 from ..review.dock_controller import DockController
 from ..review.drive_locator import DriveLocator
 from ..review.layers import gpkg_source, layer_kind
-from ..signmapper_core.output_schema import DETECTIONS, SIGNS
-from ..signmapper_core.viewing import best_pair_for, nearest_pair
+from ..signmapper_core.drive.viewing import best_pair_for, nearest_pair
+from ..signmapper_core.output.schema import DETECTIONS, SIGNS
 from .frames import PREFETCH, FrameCache
 from .map_items import PairPickTool, VehicleOnMap
 from .overlays import detection_boxes, parse_key, sign_boxes

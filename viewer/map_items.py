@@ -14,7 +14,7 @@ from qgis.gui import QgsMapToolEmitPoint, QgsRubberBand, QgsVertexMarker
 from qgis.PyQt.QtCore import pyqtSignal
 from qgis.PyQt.QtGui import QColor
 
-from ..signmapper_core.viewing import view_cone
+from ..signmapper_core.drive.viewing import view_cone
 
 CONE_COLOUR = QColor(21, 101, 192, 70)
 VEHICLE_COLOUR = QColor(21, 101, 192)

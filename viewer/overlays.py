@@ -15,8 +15,8 @@ from qgis.core import QgsFeatureRequest, QgsRectangle
 
 from ..gpkg.fields import feature_values
 from ..review.layers import features_where
-from ..signmapper_core.output_schema import DETECTIONS, SIGNS, STATUS_COLOURS
-from ..signmapper_core.viewing import project_sign
+from ..signmapper_core.drive.viewing import project_sign
+from ..signmapper_core.output.schema import DETECTIONS, SIGNS, STATUS_COLOURS
 from ..ui.image_view import OverlayBox
 
 SHOWN_WITHIN_M = 40.0  # signs farther from the camera are too small to draw usefully

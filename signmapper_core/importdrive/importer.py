@@ -24,11 +24,11 @@ from typing import Callable, Optional, Union
 
 import numpy as np
 
-from ..atomic_folder import writing_folder
-from ..drive_writer import write_drive_json, write_image, write_poses_csv
+from ..drive.atomic_folder import writing_folder
+from ..drive.images import IMAGE_SUFFIXES, image_header, read_image
+from ..drive.writer import write_drive_json, write_image, write_poses_csv
 from ..errors import ImportInputError
 from ..geometry import Camera, Pose
-from ..image_files import IMAGE_SUFFIXES, image_header, read_image
 from ..progress import CancelCheck, ProgressCallback, WarnCallback, check_cancelled, report, send_warning
 from .calibration import StereoCalibration, choose_calibration
 from .camera_poses import Orientation, body_poses, drive_poses
@@ -147,7 +147,7 @@ def import_drive(out_dir, source: DriveSource, options: Optional[ImportOptions] 
         write_drive_json(tmp, options.output_crs, plan.rectifier.camera, **metadata)
         write_poses_csv(tmp, [(pair.id, t, pose) for pair, t, pose in zip(plan.pairs, plan.times, plan.poses)])
         report(progress, 0.97, "validating the written drive")
-        from ..drive import open_drive
+        from ..drive.reader import open_drive
 
         written = open_drive(tmp, is_cancelled=is_cancelled)
         for message in written.warnings:

@@ -18,11 +18,11 @@ import cv2
 import numpy as np
 
 from ..catalogue.model import MEASURED, STANDARD, UNKNOWN_ID
-from ..face_normal import world_face_normal
+from ..fusion.face_normal import world_face_normal
 from ..geometry import Camera, Pose
-from ..printed_numbers import number_band, printed_number
-from ..review_reasons import FAINT_HOUGH_RING, NO_ENTRY_MATCHES, OFF_FORMAT, ZONE_PANEL_BY_DEPTH, ZONE_PANEL_DISC
-from ..zone_panels import may_be_a_panels_disc
+from ..output.review_reasons import FAINT_HOUGH_RING, NO_ENTRY_MATCHES, OFF_FORMAT, ZONE_PANEL_BY_DEPTH, ZONE_PANEL_DISC
+from ..plates.printed_numbers import number_band, printed_number
+from ..plates.zone_panels import may_be_a_panels_disc
 from .boxes import box_iou, centre_inside, smaller_box_cover
 from .classifiers import accept_threshold, marginal_min_score, min_score
 from .classify import surround_score

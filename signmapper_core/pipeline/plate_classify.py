@@ -23,7 +23,7 @@ from typing import Optional, Sequence
 import cv2
 import numpy as np
 
-from ..plate_catalogue import LAYOUT, TEXT
+from ..plates.catalogue import LAYOUT, TEXT
 from .config import PipelineConfig, PlateConfig
 
 

@@ -23,8 +23,8 @@ from typing import List, Optional, Sequence
 import cv2
 import numpy as np
 
-from ..plate_catalogue import load_plate_templates, pictogram_formats
-from ..plate_formats import PLATE_FORMATS, PLATE_ID, PLATE_NAMES
+from ..plates.catalogue import load_plate_templates, pictogram_formats
+from ..plates.formats import PLATE_FORMATS, PLATE_ID, PLATE_NAMES
 from .boxes import touches_border
 from .detection import Detection
 from .locate import bbox_centre, locate

@@ -19,7 +19,7 @@ import cv2
 import numpy as np
 
 from ..catalogue.text_panels import DIRECTION, PLACE_END, PLACE_NAME, TEXT_PANELS
-from ..face_normal import world_face_normal
+from ..fusion.face_normal import world_face_normal
 from ..geometry import Camera
 from .boxes import centre_inside
 from .detection import Detection

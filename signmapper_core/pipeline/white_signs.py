@@ -18,8 +18,8 @@ import cv2
 import numpy as np
 
 from ..catalogue.model import MEASURED
-from ..face_normal import world_face_normal
-from ..review_reasons import WHITE_UNREAD
+from ..fusion.face_normal import world_face_normal
+from ..output.review_reasons import WHITE_UNREAD
 from .boxes import centre_inside, share_inside
 from .classifiers import accept_threshold
 from .classify import ClassificationResult, classify_segment

@@ -32,7 +32,7 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-from ..output_schema import REVIEW
+from ..output.schema import REVIEW
 from .schema import OFFICIAL_SIGN_TYPE, SCHEMA, SignaloError, check_database
 from .types import to_signalo
 
@@ -108,8 +108,8 @@ def plate_type(plate: ExportSign, official_ids) -> Optional[tuple[str, list, boo
     Signalo has no such type. A plate mapped untyped (``plate``: its text not read, or a run of before plates
     were typed) is typed by its text here, a 5.00-1 without one."""
     from ..catalogue.plates_ch import FREE_TEXT_PLATES, RIGHT, direction_of, signalo_id
-    from ..plate_formats import PLATE_ID
-    from ..plate_types import inscriptions, text_plate_id
+    from ..plates.formats import PLATE_ID
+    from ..plates.types import inscriptions, text_plate_id
 
     template_id = plate.template_id
     if template_id == PLATE_ID:

@@ -1,6 +1,6 @@
 """Reading a Signalo database as the inventory ``changes`` compares a run with.
 
-Each official sign becomes an :class:`~signmapper_core.changes.InventorySign` at
+Each official sign becomes an :class:`~signmapper_core.changes.compare.InventorySign` at
 its support's position, facing its azimut (a verso sign the opposite way, a
 recto-verso sign both ways). Signalo has no heights; where the support records
 the free height under its signs, each face's height above the road is rebuilt
@@ -13,7 +13,7 @@ from collections import defaultdict
 
 import numpy as np
 
-from ..changes import InventorySign
+from ..changes.compare import InventorySign
 from .schema import OFFICIAL_SIGN_TYPE, SCHEMA, check_database
 from .types import from_signalo
 

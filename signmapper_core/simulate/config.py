@@ -6,7 +6,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..drive import TruthSign
+from ..drive.reader import TruthSign
 from ..geometry import Camera, Pose
 
 WHOLE, DRAWABLE = "whole", "drawable"  # the sign sets of SimulationConfig.sign_set

@@ -16,7 +16,7 @@ import sys
 import cv2
 import numpy as np
 
-from ..drive import Drive, TruthSign, open_drive
+from ..drive.reader import Drive, TruthSign, open_drive
 from ..geometry import world_to_pixel
 
 NEAR_M, FAR_M = 4.0, 14.0

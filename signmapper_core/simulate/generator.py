@@ -15,8 +15,8 @@ from typing import Callable
 
 import numpy as np
 
-from ..atomic_folder import writing_folder
-from ..drive_writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
+from ..drive.atomic_folder import writing_folder
+from ..drive.writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
 from ..geometry import Pose
 from ..progress import CancelCheck, ProgressCallback, check_cancelled, report
 from . import textures as tx

@@ -17,7 +17,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from ..drive import TruthSign
+from ..drive.reader import TruthSign
 from .distractors import distractors, white_sign_distractors
 from .faces import FaceOptions, SignKind
 from .plate_layout import white_distractors

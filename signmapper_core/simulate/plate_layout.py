@@ -21,9 +21,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..drive import TruthSign
-from ..plate_formats import plate_formats_for
-from ..plate_text import EXCEPT_WORDS, WEEKDAYS
+from ..drive.reader import TruthSign
+from ..plates.formats import plate_formats_for
+from ..plates.text import EXCEPT_WORDS, WEEKDAYS
 from .plate_faces import draw_in_field, draw_plate
 from .surfaces import Texture, TextureSource, rect_surface
 
@@ -115,7 +115,7 @@ def drawn_plate(rng, language: str, kind: str):
     """A plate template of ``kind`` (pictogram or layout), each id alike, in the plate's language version (German
     where the drawing has no other), or None when the catalogue has none."""
     from ..catalogue.model import DEFAULT_CATALOGUE_DIR
-    from ..plate_catalogue import load_plate_templates
+    from ..plates.catalogue import load_plate_templates
 
     templates = [t for t in load_plate_templates(DEFAULT_CATALOGUE_DIR) if t.kind == kind]
     ids = sorted({t.id for t in templates})

@@ -134,8 +134,8 @@ def write_raw_survey(drive_path, out_dir, rig: RawRig | None = None, jpeg_qualit
     """Write the raw survey of a drive (see module); ``out_dir`` must not exist or be empty."""
     import cv2
 
-    from ..drive import open_drive
-    from ..drive_writer import write_image
+    from ..drive.reader import open_drive
+    from ..drive.writer import write_image
 
     rig = rig or RawRig()
     drive = open_drive(drive_path)

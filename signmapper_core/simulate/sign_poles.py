@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..drive import TruthSign
+from ..drive.reader import TruthSign
 from . import textures as tx
 from .faces import FaceOptions, SignFace, SignKind, draw_sign_face, pick_format
 from .plate_layout import PLATE_MAX_GAP_M, add_plate

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from drive_fixtures import START, straight_poses
 
-from signmapper_core.changes import (
+from signmapper_core.changes.compare import (
     CHANGED,
     CONFIRMED,
     MISSING,
@@ -18,9 +18,9 @@ from signmapper_core.changes import (
     MappedSign,
     compare,
 )
-from signmapper_core.changes_report import report_html
-from signmapper_core.changes_schema import values
-from signmapper_core.drive import PairRecord
+from signmapper_core.changes.report import report_html
+from signmapper_core.changes.schema import values
+from signmapper_core.drive.reader import PairRecord
 from signmapper_core.geometry import Camera
 
 CAMERA = Camera(width=1920, height=1080, fx=1750.0, fy=1750.0, cx=959.5, cy=539.5, baseline_m=0.9)

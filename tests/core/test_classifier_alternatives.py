@@ -3,14 +3,14 @@
 import math
 from types import SimpleNamespace
 
-from signmapper_core.classifier_alternatives import (
+from signmapper_core.output.classifier_alternatives import (
     format_alternatives,
     parse_alternatives,
     pooled_scores,
     ranked_alternatives,
     sign_alternatives,
 )
-from signmapper_core.output_schema import DETECTIONS, SIGNS, fields
+from signmapper_core.output.schema import DETECTIONS, SIGNS, fields
 
 
 def _obs(template_id, scores):

@@ -19,11 +19,11 @@ from drive_fixtures import SMALL_SYNTHETIC
 from gpkg_dump import differences, dump_gpkg
 
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 from signmapper_core.errors import ClusterError
-from signmapper_core.mapping import map_drive
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.progress import Cancelled
+from signmapper_core.run.mapping import map_drive
 from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
 
 REPO = Path(__file__).resolve().parents[2]
@@ -125,7 +125,7 @@ def test_a_worker_killed_in_the_middle_of_a_run_is_replaced_and_no_pair_is_lost(
 
 
 def test_an_unreachable_scheduler_is_a_clear_error_before_any_work(drive_dir, catalogue, monkeypatch, tmp_path):
-    from signmapper_core import dask_pairs
+    from signmapper_core.run import dask_pairs
 
     with socket.socket() as s:  # a port where nothing listens
         s.bind(("127.0.0.1", 0))
@@ -185,7 +185,7 @@ def test_an_address_where_no_scheduler_answers_is_a_clear_error_not_a_hang(drive
 
 
 def test_a_malformed_scheduler_address_is_refused_naming_the_expected_form():
-    from signmapper_core.dask_pairs import scheduler_address
+    from signmapper_core.run.dask_pairs import scheduler_address
 
     assert scheduler_address(" 10.0.0.5:8786 ") == "tcp://10.0.0.5:8786"
     assert scheduler_address("tls://[::1]:8786") == "tls://[::1]:8786"
@@ -233,7 +233,7 @@ def test_missing_dask_is_a_clear_error_naming_the_package_and_the_install_comman
 
 
 def test_the_pins_of_the_error_message_are_requirements_dask_and_dev_installs_them():
-    from signmapper_core.dask_pairs import DASK_PACKAGES
+    from signmapper_core.run.dask_pairs import DASK_PACKAGES
 
     pins = [line.strip() for line in (REPO / "requirements-dask.txt").read_text().splitlines()
             if line.strip() and not line.startswith("#")]
@@ -243,7 +243,8 @@ def test_the_pins_of_the_error_message_are_requirements_dask_and_dev_installs_th
 
 
 def test_a_scheduler_or_worker_of_another_core_version_is_refused_before_any_work(client, monkeypatch):
-    from signmapper_core import __version__, cluster_task, dask_pairs
+    from signmapper_core import __version__
+    from signmapper_core.run import cluster_task, dask_pairs
 
     monkeypatch.setattr(dask_pairs, "__version__", "9.9.9")  # this client
     with pytest.raises(ClusterError, match=rf"the Dask scheduler tcp://127\.0\.0\.1:\d+ has Sign Mapper core "
@@ -282,7 +283,7 @@ def test_a_scheduler_that_cannot_import_the_core_is_refused_before_any_work(driv
 def test_a_worker_started_with_malloc_trim_threshold_takes_image_buffers_from_the_heap_again():
     """Dask's nanny sets MALLOC_TRIM_THRESHOLD_, which turns glibc's adaptive mmap threshold off (1.6x the time
     per pair); the task raises the threshold once per worker process, and leaves other processes alone."""
-    probe = "from signmapper_core.cluster_task import heap_for_images; print(heap_for_images(), heap_for_images())"
+    probe = "from signmapper_core.run.cluster_task import heap_for_images; print(heap_for_images(), heap_for_images())"
     env = {**os.environ, "PYTHONPATH": str(REPO)}
     env.pop("MALLOC_TRIM_THRESHOLD_", None)
     plain = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, env=env, check=True)

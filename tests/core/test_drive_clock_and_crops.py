@@ -8,11 +8,11 @@ import numpy as np
 import pytest
 from drive_fixtures import make_drive
 
-from signmapper_core.drive import open_drive
-from signmapper_core.drive_clock import drive_start
+from signmapper_core.drive.clock import drive_start
+from signmapper_core.drive.reader import open_drive
 from signmapper_core.errors import DriveFormatError
+from signmapper_core.output.sign_crops import crop_box, write_sign_crops
 from signmapper_core.progress import Cancelled
-from signmapper_core.sign_crops import crop_box, write_sign_crops
 
 
 def with_start(root, value):

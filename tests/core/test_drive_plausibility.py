@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 from drive_fixtures import make_drive, rewrite_line
 
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.images import read_depth
+from signmapper_core.drive.reader import open_drive
 from signmapper_core.errors import DriveFormatError, ImageReadError
-from signmapper_core.image_files import read_depth
 
 POSE = "000001,0.200,{e},{n},400.0,{h},{p},{r}"
 
@@ -162,7 +162,7 @@ def test_png_named_jpg_is_named_as_such(tmp_path):
 
 
 def test_a_pair_has_colour_where_only_the_finer_sample_shows_it():
-    from signmapper_core.plausibility import has_colour
+    from signmapper_core.drive.plausibility import has_colour
 
     grey = np.full((1080, 1920, 3), 128, np.uint8)
     assert not has_colour(grey)

@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 from drive_fixtures import SMALL_CAMERA, make_drive, rewrite_line
 
-from signmapper_core.drive import open_drive, read_truth
+from signmapper_core.drive.images import read_depth, write_depth
+from signmapper_core.drive.reader import open_drive, read_truth
 from signmapper_core.errors import DriveFormatError, ImageReadError
-from signmapper_core.image_files import read_depth, write_depth
 
 
 @pytest.fixture

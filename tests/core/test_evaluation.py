@@ -3,7 +3,13 @@
 import numpy as np
 import pytest
 
-from signmapper_core.evaluation import combine_reports, decompose, evaluate, match_to_reference, track_directions
+from signmapper_core.evaluation.accuracy import (
+    combine_reports,
+    decompose,
+    evaluate,
+    match_to_reference,
+    track_directions,
+)
 
 TRAJ = np.array([[0.0, 0.0], [10.0, 0.0], [20.0, 0.0], [30.0, 0.0]])  # driving east
 REF = np.array([[5.0, 4.0, 2.0], [12.0, -4.0, 2.5], [25.0, 4.0, 1.8]])
@@ -70,7 +76,7 @@ def test_combined_reports_add_counts_and_pool_differences():
 
 
 def test_reference_sign_faces_trajectory():
-    from signmapper_core.visibility import faces_trajectory
+    from signmapper_core.evaluation.visibility import faces_trajectory
 
     traj = np.array([[float(x), 0.0] for x in range(0, 60, 2)])  # driving east along y = 0
     sign = (30.0, 4.0)  # left of the road

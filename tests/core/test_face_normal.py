@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from signmapper_core.face_normal import normal_from_disparity_plane, world_face_normal
-from signmapper_core.fusion import azimuth_deg
+from signmapper_core.fusion.face_normal import normal_from_disparity_plane, world_face_normal
+from signmapper_core.fusion.signs import azimuth_deg
 from signmapper_core.geometry import Camera, Pose, world_to_pixel
 
 CAM = Camera(1920, 1080, 1750.0, 1750.0, 959.5, 539.5, 0.9)

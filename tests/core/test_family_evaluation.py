@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.drive import TruthSign
-from signmapper_core.evaluation import evaluate
-from signmapper_core.family_evaluation import (
+from signmapper_core.drive.reader import TruthSign
+from signmapper_core.evaluation.accuracy import evaluate
+from signmapper_core.evaluation.families import (
     GROUPS,
     PROCEDURAL_GROUP,
     catalogue_colour,
@@ -21,7 +21,7 @@ from signmapper_core.family_evaluation import (
     group_lines,
     sign_group,
 )
-from signmapper_core.id_outcomes import (
+from signmapper_core.evaluation.id_outcomes import (
     ACCEPTED_OTHER,
     MISSED,
     REVIEW_OTHER,

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from signmapper_core.drive import PairRecord
-from signmapper_core.fusion import FusionConfig, Observation, fuse_observations
+from signmapper_core.drive.reader import PairRecord
+from signmapper_core.fusion.signs import FusionConfig, Observation, fuse_observations
 from signmapper_core.geometry import Pose
 from signmapper_core.pipeline.detection import Detection
 
@@ -221,7 +221,7 @@ def test_observations_wrap_their_detection_and_are_linked_to_their_sign_by_id():
 def _merged_by_definition(tracks, config):
     """The merge rule read literally: the first pair of tracks (earlier, then later) that is one sign joins, the
     later into the earlier, and the search starts again from the beginning."""
-    from signmapper_core.fusion import _one_sign, _TrackSummary
+    from signmapper_core.fusion.signs import _one_sign, _TrackSummary
 
     tracks = [list(t) for t in tracks]
     merged = True
@@ -241,7 +241,7 @@ def _merged_by_definition(tracks, config):
 
 @pytest.mark.parametrize("seed", range(6))
 def test_track_merging_compares_neighbours_only_and_joins_in_the_order_of_its_rule(seed):
-    from signmapper_core.fusion import _merge_tracks
+    from signmapper_core.fusion.signs import _merge_tracks
 
     rng = np.random.default_rng(seed)
     config = FusionConfig()
@@ -313,7 +313,7 @@ def test_a_disc_sign_read_clearly_stays_itself_though_read_as_a_zone_panel_from_
 def test_a_plate_is_accepted_on_the_classifiers_threshold_without_the_signs_margin():
     """The plate step's score is no probability of the network: the margin set on the network's misreadings of
     signs (accept_margin) must not send clear plates to review."""
-    from signmapper_core.plate_fusion import fuse_plates
+    from signmapper_core.plates.fusion import fuse_plates
 
     config = FusionConfig(accept_classification=0.9)
     signs_seen = [observe([20.0, 3.0, 2.5], k, cls=0.99) for k in (5, 6)]
@@ -363,7 +363,7 @@ def _held(observations, reason):
 
 
 def test_a_sign_read_only_off_format_or_as_unknown_is_mapped_when_seen_twice():
-    from signmapper_core.review_reasons import NO_ENTRY_MATCHES, OFF_FORMAT
+    from signmapper_core.output.review_reasons import NO_ENTRY_MATCHES, OFF_FORMAT
 
     near, cone, other = np.array([20.0, 3.0, 2.5]), np.array([40.0, -3.0, 0.3]), np.array([60.0, 3.0, 2.5])
     obs = (_held(seen_from(near, [3], fmt=("measured", 0.3, 0.3)), OFF_FORMAT)
@@ -378,7 +378,7 @@ def test_a_sign_read_only_off_format_or_as_unknown_is_mapped_when_seen_twice():
 
 
 def test_views_reading_no_catalogue_sign_do_not_outvote_one_that_reads_an_id():
-    from signmapper_core.review_reasons import NO_ENTRY_MATCHES
+    from signmapper_core.output.review_reasons import NO_ENTRY_MATCHES
 
     truth = np.array([20.0, 3.0, 2.5])
     unknown = _held(seen_from(truth, [3, 6], template_id="unknown", cls=0.94), NO_ENTRY_MATCHES)

@@ -17,12 +17,12 @@ import numpy as np
 import pytest
 
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.drive import open_drive
-from signmapper_core.evaluation import evaluate
-from signmapper_core.mapping import map_drive
+from signmapper_core.drive.reader import open_drive
+from signmapper_core.evaluation.accuracy import evaluate
+from signmapper_core.evaluation.visibility import mappable_signs
 from signmapper_core.pipeline import PipelineConfig
+from signmapper_core.run.mapping import map_drive
 from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
-from signmapper_core.visibility import mappable_signs
 
 SEEDS = (9001, 9002)
 PAIRS = 50

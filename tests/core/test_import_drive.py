@@ -22,7 +22,7 @@ from kitti_folder import (
 )
 from pyproj import Transformer
 
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 from signmapper_core.errors import ImportInputError
 from signmapper_core.geometry import pixel_to_world
 from signmapper_core.importdrive import (

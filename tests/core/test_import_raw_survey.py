@@ -7,7 +7,7 @@ import pytest
 from drive_fixtures import SMALL_SYNTHETIC
 
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 from signmapper_core.importdrive import (
     GenericInputs,
     ImportOptions,
@@ -16,8 +16,8 @@ from signmapper_core.importdrive import (
     import_drive,
     match_features,
 )
-from signmapper_core.mapping import map_drive
 from signmapper_core.pipeline import PipelineConfig
+from signmapper_core.run.mapping import map_drive
 from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
 from signmapper_core.simulate.raw_survey import write_raw_survey
 

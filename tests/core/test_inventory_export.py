@@ -1,6 +1,6 @@
 """The inventory deliverable's rows: which signs, in which order, in which words."""
 
-from signmapper_core.inventory_export import COLUMNS, columns, rebased, row, select, short_names
+from signmapper_core.output.inventory_export import COLUMNS, columns, rebased, row, select, short_names
 
 
 def sign(sign_id, status, plate_of=None, **extra):

@@ -8,12 +8,12 @@ import numpy as np
 import pytest
 from drive_fixtures import SMALL_SYNTHETIC
 
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 from signmapper_core.geometry import world_to_pixel
-from signmapper_core.mapping import detect_at, load_pair, manual_sign, map_drive
+from signmapper_core.output.run_settings import run_settings
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.progress import Cancelled
-from signmapper_core.run_settings import run_settings
+from signmapper_core.run.mapping import detect_at, load_pair, manual_sign, map_drive
 from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
 
 

@@ -2,11 +2,16 @@
 
 import numpy as np
 
-from signmapper_core.drive import PairRecord
-from signmapper_core.evaluation import evaluate
-from signmapper_core.fusion import Observation, fuse_observations
+from signmapper_core.drive.reader import PairRecord
+from signmapper_core.evaluation.accuracy import evaluate
+from signmapper_core.evaluation.misread_evidence import (
+    NOT_A_CANDIDATE,
+    false_positive_lines,
+    misread_lines,
+    position_lines,
+)
+from signmapper_core.fusion.signs import Observation, fuse_observations
 from signmapper_core.geometry import Pose
-from signmapper_core.misread_evidence import NOT_A_CANDIDATE, false_positive_lines, misread_lines, position_lines
 from signmapper_core.pipeline.detection import Detection
 
 WEST = np.array([-1.0, 0.0, 0.0])

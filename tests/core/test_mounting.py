@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from signmapper_core.mounting import camera_height_above_road, mounting_height
+from signmapper_core.fusion.mounting import camera_height_above_road, mounting_height
 
 CENTRES = np.array([[0.0, 0.0, 402.4], [2.0, 0.0, 402.5], [4.0, 0.0, 402.6]])  # climbing road, camera 2.4 m up
 

@@ -9,11 +9,11 @@ import pytest
 from test_fusion import seen_from
 
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.fusion import fuse_observations
-from signmapper_core.number_check import check_speed_numbers, judge_numbers
-from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable, read_numbers
+from signmapper_core.fusion.signs import fuse_observations
 from signmapper_core.pipeline.detect import with_number_band
-from signmapper_core.printed_numbers import band_box, number_band, prepared_band, printed_number, printed_numbers
+from signmapper_core.plates.number_check import check_speed_numbers, judge_numbers
+from signmapper_core.plates.ocr import INSTALL_HINT, OcrUnavailable, read_numbers
+from signmapper_core.plates.printed_numbers import band_box, number_band, prepared_band, printed_number, printed_numbers
 
 SPEEDS = frozenset({"20", "30", "40", "50", "60", "70", "80", "100", "120"})
 

@@ -10,7 +10,7 @@ import pytest
 from pipeline_scenes import CAMERA, POSE, sign_scene
 
 from signmapper_core.catalogue import UNKNOWN_ID, CatalogueError, load_catalogue
-from signmapper_core.output_schema import OutputContext
+from signmapper_core.output.schema import OutputContext
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.classifiers import load_model_card
 from signmapper_core.pipeline.config import ClassificationConfig

@@ -3,13 +3,13 @@
 import numpy as np
 import pytest
 
-from signmapper_core import output_schema as schema
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.drive import PairRecord
-from signmapper_core.fusion import Observation, fuse_observations
+from signmapper_core.drive.reader import PairRecord
+from signmapper_core.fusion.signs import Observation, fuse_observations
 from signmapper_core.geometry import Pose
-from signmapper_core.mapping import manual_sign
+from signmapper_core.output import schema
 from signmapper_core.pipeline.detection import Detection
+from signmapper_core.run.mapping import manual_sign
 
 
 def observation(pair_index, position, status="accepted", u=512.345678, depth=9.87654):
@@ -157,7 +157,7 @@ def test_every_swiss_sign_has_an_english_name_and_english_output_uses_it():
 
 def test_plates_are_named_in_the_output_language():
     from signmapper_core.catalogue import load_catalogue
-    from signmapper_core.output_schema import OutputContext
+    from signmapper_core.output.schema import OutputContext
 
     catalogue = load_catalogue()
     assert OutputContext("fr", catalogue).name("5.31-2", "Ausgenommen Fahrräder") == "Exceptés cycles"

@@ -14,7 +14,7 @@ def test_plugin_zip_layout(tmp_path):
     subprocess.run([sys.executable, str(REPO / "scripts" / "build_zip.py"), str(out)], check=True, cwd=REPO)
     names = zipfile.ZipFile(out).namelist()
     assert all(n.startswith("sign_mapper/") for n in names)
-    for required in ("metadata.txt", "__init__.py", "provider/provider.py", "signmapper_core/drive.py"):
+    for required in ("metadata.txt", "__init__.py", "provider/provider.py", "signmapper_core/drive/reader.py"):
         assert f"sign_mapper/{required}" in names
     assert not any(n.startswith(("sign_mapper/tests/", "sign_mapper/.ci/", "sign_mapper/bench/",
                                  "sign_mapper/training/")) for n in names)

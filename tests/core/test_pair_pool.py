@@ -12,11 +12,11 @@ import pytest
 from drive_fixtures import SMALL_SYNTHETIC
 from failing_detection import detect_failing_at, exit_at
 
-from signmapper_core.drive import open_drive
-from signmapper_core.mapping import map_drive
-from signmapper_core.pair_pool import TemplateHandoff, available_cores, python_executable, worker_count
+from signmapper_core.drive.reader import open_drive
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.progress import Cancelled
+from signmapper_core.run.mapping import map_drive
+from signmapper_core.run.pair_pool import TemplateHandoff, available_cores, python_executable, worker_count
 from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
 
 
@@ -149,7 +149,7 @@ def test_templates_that_cannot_be_rendered_end_the_run_with_that_error_and_relea
 @pytest.mark.parametrize("cause", ["no python", "no OpenCV in the workers"])
 def test_a_pool_that_cannot_start_maps_in_this_process_with_a_warning(stereo_drive, catalogue, one_worker,
                                                                       monkeypatch, tmp_path, cause):
-    from signmapper_core import pair_pool
+    from signmapper_core.run import pair_pool
 
     if cause == "no python":
         def missing():
@@ -172,7 +172,7 @@ def test_starting_workers_leaves_the_callers_main_module_as_it_was(monkeypatch):
     import sys
     import types
 
-    from signmapper_core.pair_pool import _main_kept_from_workers
+    from signmapper_core.run.pair_pool import _main_kept_from_workers
 
     main = types.ModuleType("__main__")
     main.__file__, main.__spec__ = "/somewhere/script.py", None

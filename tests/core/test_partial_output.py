@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 
 from signmapper_core.errors import OutputBusyError, OutputWriteError
-from signmapper_core.file_paths import path_problem
-from signmapper_core.partial_output import PartialOutput, remove_stale_partials, write_failure
+from signmapper_core.output.file_paths import path_problem
+from signmapper_core.output.partial_output import PartialOutput, remove_stale_partials, write_failure
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -43,7 +43,7 @@ def test_a_discarded_output_leaves_the_earlier_file_and_nothing_else(tmp_path):
 HOLD = textwrap.dedent("""\
     import sys, time
     sys.path.insert(0, {repo!r})
-    from signmapper_core.partial_output import PartialOutput
+    from signmapper_core.output.partial_output import PartialOutput
     output = PartialOutput({target!r}, folder={folder})
     (output.path / "left" if {folder} else output.path).parent.mkdir(parents=True, exist_ok=True)
     (output.path / "half.jpg" if {folder} else output.path).write_bytes(b"x" * 1000)

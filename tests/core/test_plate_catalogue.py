@@ -14,7 +14,7 @@ from signmapper_core.catalogue import plate_build, svg_render
 from signmapper_core.catalogue.model import DEFAULT_CATALOGUE_DIR
 from signmapper_core.catalogue.official_signs import TABLE, official_signs
 from signmapper_core.catalogue.plates_ch import plate_drawings, signalo_id
-from signmapper_core.plate_catalogue import (
+from signmapper_core.plates.catalogue import (
     LAYOUT,
     PICTOGRAM,
     TEXT,

@@ -9,8 +9,8 @@ import cv2
 import numpy as np
 import pytest
 
-from signmapper_core.fusion import FusionConfig
-from signmapper_core.ocr import (
+from signmapper_core.fusion.signs import FusionConfig
+from signmapper_core.plates.ocr import (
     INSTALL_HINT,
     OcrUnavailable,
     find_tesseract,
@@ -19,7 +19,7 @@ from signmapper_core.ocr import (
     read_texts,
     without_long_lines,
 )
-from signmapper_core.plate_text import is_plate_line, normalise_line, normalise_text
+from signmapper_core.plates.text import is_plate_line, normalise_line, normalise_text
 from signmapper_core.simulate.plate_faces import draw_plate
 
 
@@ -85,7 +85,7 @@ def test_tesseract_reads_plates_of_40_px_in_one_run():
 
 
 def test_crops_shared_over_several_tesseract_calls_read_as_in_one():
-    from signmapper_core.ocr import MIN_CROPS_PER_CALL, call_count
+    from signmapper_core.plates.ocr import MIN_CROPS_PER_CALL, call_count
 
     crops = [plate_crop(lines, 40 if len(lines) == 1 else 48) for lines in PLATES] * 3  # 18 crops
     assert call_count(len(crops), 1) == 1 and call_count(len(crops), 2) == 2 and call_count(len(crops), 8) == 2
@@ -180,7 +180,7 @@ def test_tsv_words_are_grouped_by_image_and_line():
 
 
 def test_a_hanging_tesseract_is_stopped_by_the_timeout(tmp_path):
-    from signmapper_core.ocr import OcrError
+    from signmapper_core.plates.ocr import OcrError
 
     fake = tmp_path / "tesseract"
     fake.write_text("#!/bin/sh\nif [ \"$1\" = --list-langs ]; then echo deu; exit 0; fi\nsleep 30\n")

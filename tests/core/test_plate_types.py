@@ -5,8 +5,8 @@ from __future__ import annotations
 import pytest
 
 from signmapper_core.catalogue.plates_ch import LAYOUT, PICTOGRAM, TEXT, direction_of, kind_of, signalo_id
-from signmapper_core.plate_formats import PLATE_ID
-from signmapper_core.plate_types import inscriptions, text_plate_id
+from signmapper_core.plates.formats import PLATE_ID
+from signmapper_core.plates.types import inscriptions, text_plate_id
 
 
 @pytest.mark.parametrize("text, expected", [

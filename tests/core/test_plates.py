@@ -10,13 +10,13 @@ import pytest
 from pipeline_scenes import noisy_background, paste
 
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.drive import TruthSign, open_drive
-from signmapper_core.drive_writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
-from signmapper_core.evaluation import evaluate
-from signmapper_core.fusion import FusionConfig
+from signmapper_core.drive.reader import TruthSign, open_drive
+from signmapper_core.drive.writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
+from signmapper_core.evaluation.accuracy import evaluate
+from signmapper_core.evaluation.plates import evaluate_plates
+from signmapper_core.evaluation.visibility import mappable_signs
+from signmapper_core.fusion.signs import FusionConfig
 from signmapper_core.geometry import Camera, Pose, world_to_pixel
-from signmapper_core.mapping import map_drive
-from signmapper_core.ocr import INSTALL_HINT, OcrUnavailable, read_texts
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.boxes import box_iou
 from signmapper_core.pipeline.config import PlateConfig
@@ -24,14 +24,14 @@ from signmapper_core.pipeline.depth_sources import depth_source_for
 from signmapper_core.pipeline.pair_context import PairContext
 from signmapper_core.pipeline.plate_classify import classify_plate, pictogram_scores
 from signmapper_core.pipeline.plates import BELOW
-from signmapper_core.plate_catalogue import load_plate_templates
-from signmapper_core.plate_evaluation import evaluate_plates
-from signmapper_core.plate_formats import PLATE_ID
-from signmapper_core.plate_fusion import read_plate_texts
-from signmapper_core.plate_text import normalise_text
+from signmapper_core.plates.catalogue import load_plate_templates
+from signmapper_core.plates.formats import PLATE_ID
+from signmapper_core.plates.fusion import read_plate_texts
+from signmapper_core.plates.ocr import INSTALL_HINT, OcrUnavailable, read_texts
+from signmapper_core.plates.text import normalise_text
+from signmapper_core.run.mapping import map_drive
 from signmapper_core.simulate.plate_faces import PAPER, draw_plate
 from signmapper_core.simulate.plate_layout import pictogram_face
-from signmapper_core.visibility import mappable_signs
 
 CAMERA = Camera(width=960, height=600, fx=1750.0, fy=1750.0, cx=479.5, cy=299.5, baseline_m=0.9)
 HEADING = 90.0  # driving east: forward = +E, right = -N, up = +H
@@ -538,8 +538,8 @@ def test_without_tesseract_plates_are_mapped_and_the_run_says_once_how_to_instal
 
 
 def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
-    from signmapper_core.fusion import FusedSign
-    from signmapper_core.ocr import TextReading, Word
+    from signmapper_core.fusion.signs import FusedSign
+    from signmapper_core.plates.ocr import TextReading, Word
 
     class Obs:
         def __init__(self, height):
@@ -599,8 +599,8 @@ def test_plate_texts_are_voted_over_readings_in_one_ocr_call():
 
 
 def test_a_reading_in_a_form_plates_print_outweighs_a_surer_misreading():
-    from signmapper_core.ocr import TextReading, Word
-    from signmapper_core.plate_fusion import vote_text
+    from signmapper_core.plates.fusion import vote_text
+    from signmapper_core.plates.ocr import TextReading, Word
 
     def reading(text, confidence):
         return TextReading(tuple(Word(w, confidence, 0) for w in text.split()))
@@ -613,8 +613,8 @@ def test_a_reading_in_a_form_plates_print_outweighs_a_surer_misreading():
 
 
 def test_a_view_that_read_only_some_lines_supports_the_reading_of_all_of_them():
-    from signmapper_core.ocr import TextReading, Word
-    from signmapper_core.plate_fusion import vote_text
+    from signmapper_core.plates.fusion import vote_text
+    from signmapper_core.plates.ocr import TextReading, Word
 
     def reading(lines, confidence):
         return TextReading(tuple(Word(w, confidence, k) for k, line in enumerate(lines) for w in line.split()))
@@ -638,8 +638,8 @@ def test_a_plate_seen_whole_is_told_from_one_cut_by_the_image_edge_or_hidden_in_
 
 
 def test_a_plates_text_is_read_from_the_views_that_saw_it_whole_before_larger_cut_ones():
-    from signmapper_core.fusion import FusedSign
-    from signmapper_core.plate_fusion import reading_crops
+    from signmapper_core.fusion.signs import FusedSign
+    from signmapper_core.plates.fusion import reading_crops
 
     class Obs:
         def __init__(self, height, seen):

@@ -2,8 +2,8 @@
 
 from types import SimpleNamespace
 
-from signmapper_core import review_reasons as rr
-from signmapper_core.output_schema import DETECTIONS, SIGNS, fields
+from signmapper_core.output import review_reasons as rr
+from signmapper_core.output.schema import DETECTIONS, SIGNS, fields
 
 
 def _view(status="accepted", reason=""):

@@ -8,8 +8,18 @@ from pathlib import Path
 
 import pytest
 
-from signmapper_core.fusion import FusionConfig
-from signmapper_core.output_schema import RUN_TABLE, encode_run_value
+from signmapper_core.fusion.signs import FusionConfig
+from signmapper_core.output.run_settings import (
+    SETTINGS_VERSION,
+    RunRecordError,
+    load_run_settings,
+    pipeline_config_of,
+    read_run_record,
+    run_settings,
+    settings_dict,
+    settings_of,
+)
+from signmapper_core.output.schema import RUN_TABLE, encode_run_value
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.pipeline.config import (
     SECTION_OF,
@@ -22,16 +32,6 @@ from signmapper_core.pipeline.config import (
     PlateConfig,
     SceneConfig,
     WhiteConfig,
-)
-from signmapper_core.run_settings import (
-    SETTINGS_VERSION,
-    RunRecordError,
-    load_run_settings,
-    pipeline_config_of,
-    read_run_record,
-    run_settings,
-    settings_dict,
-    settings_of,
 )
 from signmapper_core.sign_colours import SIGN_COLOURS
 

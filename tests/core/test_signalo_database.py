@@ -8,8 +8,8 @@ import psycopg2
 import pytest
 from drive_fixtures import START, straight_poses
 
-from signmapper_core.changes import CONFIRMED, ChangeConfig, MappedSign, compare
-from signmapper_core.drive import PairRecord
+from signmapper_core.changes.compare import CONFIRMED, ChangeConfig, MappedSign, compare
+from signmapper_core.drive.reader import PairRecord
 from signmapper_core.geometry import Camera
 from signmapper_core.signalo import SignaloError, connect
 from signmapper_core.signalo.export import ExportSign, export_signs, plan_supports, sign_comment

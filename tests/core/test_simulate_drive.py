@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 from signmapper_core.geometry import world_to_pixel
-from signmapper_core.plate_formats import PLATE_FORMATS
+from signmapper_core.plates.formats import PLATE_FORMATS
 from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive, true_poses
 from signmapper_core.simulate.generator import right_pose
 

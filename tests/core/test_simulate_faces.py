@@ -8,7 +8,7 @@ import cv2
 import numpy as np
 import pytest
 
-from signmapper_core.drive import read_truth
+from signmapper_core.drive.reader import read_truth
 from signmapper_core.simulate import (
     DRAWABLE_SIGNS,
     LEGACY_FACES,

@@ -9,14 +9,14 @@ import numpy as np
 import pytest
 
 from signmapper_core.catalogue.model import DEFAULT_CATALOGUE_DIR
-from signmapper_core.drive import TruthSign, read_truth
-from signmapper_core.drive_writer import write_truth_csv
+from signmapper_core.drive.reader import TruthSign, read_truth
+from signmapper_core.drive.writer import write_truth_csv
 from signmapper_core.errors import DriveFormatError
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.pipeline.plate_classify import classify_plate
-from signmapper_core.plate_catalogue import LAYOUT, PICTOGRAM, TEXT, load_plate_templates
-from signmapper_core.plate_formats import PLATE_FORMATS, PLATE_ID
-from signmapper_core.plate_text import EXCEPT_WORDS, normalise_text
+from signmapper_core.plates.catalogue import LAYOUT, PICTOGRAM, TEXT, load_plate_templates
+from signmapper_core.plates.formats import PLATE_FORMATS, PLATE_ID
+from signmapper_core.plates.text import EXCEPT_WORDS, normalise_text
 from signmapper_core.simulate import SimulationConfig
 from signmapper_core.simulate.generator import make_scene, make_street
 from signmapper_core.simulate.plate_layout import LAYOUT_TEXTS, layout_text, pictogram_face, text_plate

@@ -7,7 +7,7 @@ import hashlib
 import numpy as np
 import pytest
 
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 from signmapper_core.simulate import Cancelled, SimulationConfig, generate_drive, recorded_poses, true_poses
 from signmapper_core.simulate.__main__ import main
 

@@ -11,7 +11,7 @@ import pytest
 from signmapper_core.catalogue import load_catalogue
 from signmapper_core.catalogue.model import COLOURS
 from signmapper_core.catalogue.text_panels import is_text_panel
-from signmapper_core.drive import read_truth
+from signmapper_core.drive.reader import read_truth
 from signmapper_core.geometry import world_to_pixel
 from signmapper_core.simulate import SimulationConfig, generate_drive
 from signmapper_core.simulate.face_artwork import MASTER, drawing_stems, has_procedural, master_face, pointing

@@ -5,12 +5,12 @@ import numpy as np
 import pytest
 from pipeline_scenes import POSE, constant_depth, noisy_background, paste
 
-from signmapper_core.drive import TruthSign, open_drive
-from signmapper_core.drive_writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
-from signmapper_core.evaluation import evaluate
+from signmapper_core.drive.reader import TruthSign, open_drive
+from signmapper_core.drive.writer import write_drive_json, write_pair, write_poses_csv, write_truth_csv
+from signmapper_core.evaluation.accuracy import evaluate
+from signmapper_core.evaluation.panels import evaluate_panels
+from signmapper_core.evaluation.visibility import mappable_signs
 from signmapper_core.geometry import Camera, Pose, world_to_pixel
-from signmapper_core.mapping import map_drive
-from signmapper_core.panel_evaluation import evaluate_panels
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.pipeline.config import with_settings
 from signmapper_core.pipeline.detection import Detection
@@ -25,8 +25,8 @@ from signmapper_core.pipeline.text_panels import (
     reading_crop,
     under_a_bar,
 )
+from signmapper_core.run.mapping import map_drive
 from signmapper_core.simulate.text_panel_faces import text_panel_face
-from signmapper_core.visibility import mappable_signs
 
 CONFIG = with_settings(PipelineConfig(), {"white": {"white_signs": True}})
 # a mapping camera's resolution: a panel's frame line (2 % of its height) is a pixel wide at 7 m

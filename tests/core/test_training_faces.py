@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.printed_numbers import speed_limit_number
+from signmapper_core.plates.printed_numbers import speed_limit_number
 from training.dataset import CLASS_SHARE, class_shares, labels_for
 from training.face_variants import (
     MIRROR_SAFE,

@@ -4,9 +4,9 @@ import numpy as np
 import pytest
 from drive_fixtures import straight_poses
 
-from signmapper_core.drive import PairRecord
+from signmapper_core.drive.reader import PairRecord
+from signmapper_core.drive.viewing import best_pair_for, nearest_pair, project_sign, view_cone
 from signmapper_core.geometry import Camera, pixel_to_world, world_to_pixel
-from signmapper_core.viewing import best_pair_for, nearest_pair, project_sign, view_cone
 
 CAMERA = Camera(width=1920, height=1080, fx=1750.0, fy=1750.0, cx=959.5, cy=539.5, baseline_m=0.9)
 

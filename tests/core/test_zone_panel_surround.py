@@ -5,7 +5,7 @@ import pytest
 
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.pipeline.zone_panel_surround import ABOVE, LEFT, inside_white_panel, strip_box
-from signmapper_core.zone_panels import may_be_a_panels_disc, may_be_disc_of
+from signmapper_core.plates.zone_panels import may_be_a_panels_disc, may_be_disc_of
 
 CONFIG = PipelineConfig()
 DISC = (150, 160, 80, 80)  # x, y, w, h

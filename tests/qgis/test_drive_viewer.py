@@ -13,7 +13,7 @@ from qgis.PyQt.QtCore import QThreadPool
 from qgis.PyQt.QtGui import QImage
 from qgis.PyQt.QtWidgets import QApplication
 
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 from signmapper_core.geometry import world_to_pixel
 from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive, true_poses
 
@@ -173,7 +173,7 @@ def test_the_vehicle_and_its_view_cone_follow_on_the_map(viewer, drive_dir, qgis
 
 
 def test_clicking_the_map_opens_the_pair_at_a_point_or_the_pair_that_sees_a_place(viewer, drive_dir):
-    from signmapper_core.viewing import best_pair_for
+    from signmapper_core.drive.viewing import best_pair_for
 
     controller, dock, _, _ = viewer
     drive = open_drive(drive_dir)

@@ -15,7 +15,7 @@ from qgis.core import (
     QgsVectorLayer,
 )
 
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 
 REF = [("s1", "2.01", 2600010.0, 1200004.0, 402.0), ("s2", "3.03", 2600020.0, 1199996.0, 402.5),
        ("s3", "2.30-50", 2600030.0, 1200004.0, 401.8), ("s4", "1.22", 2600040.0, 1199996.0, 402.2)]

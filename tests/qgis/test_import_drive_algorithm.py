@@ -14,7 +14,7 @@ from qgis.core import (
     QgsProcessingModelChildParameterSource,
 )
 
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 
 
 @pytest.fixture(scope="module")

@@ -10,7 +10,7 @@ from drive_fixtures import SMALL_SYNTHETIC
 from qgis.core import QgsApplication, QgsProcessingModelAlgorithm, QgsVectorLayer
 from qgis_process_runner import enable_plugin, qgis_process_env, run_algorithm
 
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 
 REPO = Path(__file__).resolve().parents[2]
 MODEL = REPO / "models" / "import_and_map_signs.model3"

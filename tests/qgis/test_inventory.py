@@ -13,7 +13,7 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QVariant
 
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 
 
 @pytest.fixture(scope="module")

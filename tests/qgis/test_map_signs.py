@@ -13,7 +13,7 @@ from qgis.core import (
 )
 from qgis_process_runner import enable_plugin, qgis_process_env, run_algorithm
 
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 
 
 def read_detections(path):

@@ -10,7 +10,8 @@ import pytest
 from qgis.core import QgsProcessingException, QgsVectorLayer
 from recorder import Recorder
 
-from signmapper_core.fusion import FusionConfig
+from signmapper_core.fusion.signs import FusionConfig
+from signmapper_core.output.run_settings import SETTINGS_VERSION, load_run_settings, read_run_record, settings_dict
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.pipeline.config import (
     ClassificationConfig,
@@ -20,7 +21,6 @@ from signmapper_core.pipeline.config import (
     WhiteConfig,
     with_settings,
 )
-from signmapper_core.run_settings import SETTINGS_VERSION, load_run_settings, read_run_record, settings_dict
 
 # not the defaults: depth range, colours, both thresholds and an excluded type
 CHANGED = {"NEAR": 5.0, "FAR": 16.0, "COLOURS": [0, 1], "DETECTION_THRESHOLD": 0.6,

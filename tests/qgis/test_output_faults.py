@@ -222,7 +222,7 @@ def test_what_killed_runs_left_is_cleared_by_the_next_run_into_the_folder(cli_en
 
 def test_a_live_runs_partial_output_is_left_alone(cli_env, tmp_path):
     """The files of a run still writing (its lock held, here by this test) are not stale."""
-    from signmapper_core.target_lock import TargetLock
+    from signmapper_core.output.target_lock import TargetLock
 
     drive = make_drive(tmp_path / "drive", n_pairs=2)
     with TargetLock(tmp_path / "live.gpkg"):

@@ -4,10 +4,10 @@ import numpy as np
 from qgis.core import NULL, QgsField, QgsFields
 from qgis.PyQt.QtCore import QVariant
 
-from signmapper_core import output_schema as schema
-from signmapper_core.drive import PairRecord
-from signmapper_core.fusion import Observation
+from signmapper_core.drive.reader import PairRecord
+from signmapper_core.fusion.signs import Observation
 from signmapper_core.geometry import Pose
+from signmapper_core.output import schema
 from signmapper_core.pipeline.detection import Detection
 
 

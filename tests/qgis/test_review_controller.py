@@ -23,7 +23,7 @@ from qgis.PyQt.QtGui import QImage
 from qgis.PyQt.QtWidgets import QApplication
 
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 from signmapper_core.geometry import world_to_pixel
 from signmapper_core.pipeline import PipelineConfig, detect_pair
 from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive

@@ -25,9 +25,9 @@ from qgis.PyQt.QtTest import QTest
 from qgis.PyQt.QtWidgets import QApplication
 
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
+from signmapper_core.drive.viewing import best_pair_for, project_sign
 from signmapper_core.simulate import SimulationConfig, generate_drive
-from signmapper_core.viewing import best_pair_for, project_sign
 
 SMALL = dict(width=960, height=540, fx=875.0)
 # what the surveyor decides for the signs to review, in driving order: A accept, R reject, C reclassify

@@ -3,7 +3,7 @@
 import pytest
 from qgis.core import QgsProcessingException, QgsProcessingFeedback, QgsWkbTypes
 
-from signmapper_core.drive import open_drive
+from signmapper_core.drive.reader import open_drive
 
 SMALL = {"PAIRS": 4, "SEED": 5, "WIDTH": 480, "HEIGHT": 270, "FX": 437.5}
 

@@ -1,0 +1,1 @@
+"""A mapping run compared with an existing sign inventory: the comparison, its layers and its report."""

@@ -1,0 +1,1 @@
+"""From detections per pair to one feature per physical sign: fusion, face direction and mounting height."""
