@@ -32,7 +32,7 @@ from qgis.core import (
 
 from ..gpkg.fields import QT_TYPES
 from ..gpkg.output import GeoPackageLayers, layer_uri
-from ..signmapper_core.output.schema import RUN_TABLE
+from ..signmapper_core.output.run_table import RUN_TABLE
 from .base import SignMapperAlgorithm
 from .drive_input import qgis_crs
 from .signalo_connection import HELP as SIGNALO_HELP

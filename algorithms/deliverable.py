@@ -5,7 +5,8 @@ from __future__ import annotations
 
 from qgis.core import QgsProcessing, QgsProcessingParameterBoolean, QgsProcessingParameterVectorLayer
 
-from ..signmapper_core.output.schema import REVIEW, run_language
+from ..signmapper_core.output.schema import run_language
+from ..signmapper_core.statuses import REVIEW
 from .base import SignMapperAlgorithm
 from .signs_input import signs_layer_and_run
 

@@ -29,7 +29,7 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QVariant
 
 from ..gpkg.output import read_run_table
-from ..signmapper_core.output.schema import REJECTED
+from ..signmapper_core.statuses import REJECTED
 from .base import SignMapperAlgorithm
 
 

@@ -13,7 +13,7 @@ from qgis.core import (
     QgsProcessingParameterVectorLayer,
 )
 
-from ..signmapper_core.output.schema import ACCEPTED, MANUAL, REVIEW
+from ..signmapper_core.statuses import ACCEPTED, MANUAL, REVIEW
 from .base import SignMapperAlgorithm
 from .signalo_connection import HELP as SIGNALO_HELP
 from .signalo_connection import open_signalo, signalo_parameter

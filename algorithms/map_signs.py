@@ -24,9 +24,10 @@ from ..gpkg.language import qgis_language
 from ..gpkg.output import GeoPackageLayers, layer_uri
 from ..gpkg.styles import OutputStyler, embed_default_styles
 from ..signmapper_core.errors import ClusterError, MappingError
-from ..signmapper_core.output import schema
+from ..signmapper_core.output import run_table, schema
 from ..signmapper_core.output.geopackage_file import OUR_TABLES
 from ..signmapper_core.output.schema import DETECTIONS, SIGNS, OutputContext
+from ..signmapper_core.pipeline.classifier_names import CLASSIFIER_CHOICES, CLASSIFIERS
 from ..signmapper_core.pipeline.config import default, with_settings
 from ..signmapper_core.progress import Cancelled, check_cancelled
 from ..signmapper_core.sign_colours import SIGN_COLOURS
@@ -35,9 +36,6 @@ from .drive_input import open_drive_or_raise, qgis_crs
 
 COLOURS = list(SIGN_COLOURS)
 NEAR_M, FAR_M = ("depth", "near_m"), ("depth", "far_m")  # the settings the depth range parameters set
-CLASSIFIERS = [("auto", "Automatic: the learned network where the catalogue has one, else template matching"),
-               ("cnn", "Learned network (CNN trained on the official drawings)"),
-               ("ncc", "Template matching (normalised cross-correlation, Cavegn 2011)")]
 
 
 class MapSignsAlgorithm(SignMapperAlgorithm):
@@ -148,8 +146,9 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             advanced=True,
         )
         self.add_parameter(
-            QgsProcessingParameterEnum(self.CLASSIFIER, self.tr("Classifier"), options=[c[1] for c in CLASSIFIERS],
-                                       defaultValue=[c[0] for c in CLASSIFIERS].index(
+            QgsProcessingParameterEnum(self.CLASSIFIER, self.tr("Classifier"),
+                                       options=[self.tr(c) for c in CLASSIFIER_CHOICES.values()],
+                                       defaultValue=CLASSIFIERS.index(
                                            default("classification", "classifier")),
                                        optional=True),  # models saved before it still run
             "How a face gets its sign type among the candidates its colour and shape leave. The learned network "
@@ -273,8 +272,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                                                                          context),
             ("classification", "classification_threshold"): self.optional_number(
                 parameters, self.CLASSIFICATION_THRESHOLD, context),
-            ("classification", "classifier"): CLASSIFIERS[self.parameterAsEnum(parameters, self.CLASSIFIER,
-                                                                               context)][0],
+            ("classification", "classifier"): CLASSIFIERS[self.parameterAsEnum(parameters, self.CLASSIFIER, context)],
         }
         if earlier is not None:  # what the user changed from the dialog's defaults wins over the record
             chosen = {k: v for k, v in chosen.items() if not _is_default(k, v)}
@@ -317,7 +315,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         path = self.parameterAsFile(parameters, self.SETTINGS_FROM, context)
         if not path:
             return None
-        from ..signmapper_core.output.run_settings import RunRecordError, load_run_settings
+        from ..signmapper_core.output.run_settings import load_run_settings
+        from ..signmapper_core.output.run_table import RunRecordError
 
         label = self.parameterDefinition(self.SETTINGS_FROM).description()
         try:
@@ -377,7 +376,7 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             out = self.output_context(drive, catalogue, language, result, crops, feedback)
             layers = GeoPackageLayers(output)
             self.write_layers(layers, result, out, feedback)
-            layers.write_run_table(schema.run_record(result, out))
+            layers.write_run_table(run_table.run_record(result, out))
             without_svg = embed_default_styles(str(output.path), catalogue, language, output.target)
             check_cancelled(feedback.isCanceled, "writing")
         except Cancelled:

@@ -33,7 +33,7 @@ def main() -> int:
     from signmapper_core.catalogue import load_catalogue
     from signmapper_core.drive.reader import open_drive
     from signmapper_core.pipeline import PipelineConfig
-    from signmapper_core.run.mapping import map_pair
+    from signmapper_core.run.pair import map_pair
 
     cv2.setNumThreads(1)
     drive, catalogue, config = open_drive(args.drive), load_catalogue(), PipelineConfig()

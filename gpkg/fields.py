@@ -21,7 +21,7 @@ def layer_fields(layer: str) -> QgsFields:
 def layer_feature(fields: QgsFields, layer: str, item, context=None) -> QgsFeature:
     """A PointZ feature of ``layer`` for a fused sign (signs) or an observation (detections).
 
-    ``context`` (``output_schema.OutputContext``): language, drive clock, crops.
+    ``context`` (``output.schema.OutputContext``): language, drive clock, crops.
 
     Attributes are set by name, so a layer with fewer or reordered fields (one a
     person copied or edited) gets what it has room for.
@@ -37,7 +37,7 @@ def layer_feature(fields: QgsFields, layer: str, item, context=None) -> QgsFeatu
 
 
 def declared_fields(layer: str) -> tuple:
-    """The declared fields of one of our layers: a mapping run's (``output_schema``) or ``changes``."""
+    """The declared fields of one of our layers: a mapping run's (``output.schema``) or ``changes``."""
     from ..signmapper_core.changes import schema as changes_schema
 
     return changes_schema.FIELDS if layer == changes_schema.CHANGES else schema.fields(layer)

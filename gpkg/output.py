@@ -26,7 +26,7 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QVariant
 
 from ..signmapper_core.output.partial_output import write_failure
-from ..signmapper_core.output.schema import RUN_TABLE, encode_run_value
+from ..signmapper_core.output.run_table import RUN_TABLE, encode_run_value
 
 
 class CheckedSink:
@@ -130,8 +130,8 @@ def layer_uri(path: str, layer: str) -> str:
 
 
 def read_run_table(path: str) -> dict:
-    """The run table of the GeoPackage ``path`` as written (``output_schema.RUN_KEYS``); {} where there is none."""
-    from ..signmapper_core.output.run_settings import RunRecordError, read_run_record
+    """The run table of the GeoPackage ``path`` as written (``output.run_table.RUN_KEYS``); {} where there is none."""
+    from ..signmapper_core.output.run_table import RunRecordError, read_run_record
 
     if not path:
         return {}

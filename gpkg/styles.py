@@ -10,7 +10,7 @@ blue mark; the legend lists these classes by status, then the pictograms by
 sign family. SVG pictograms are optional in a catalogue: an entry without one
 (or whose file is missing) gets a plain marker of its shape and colour instead.
 Detections show a dot coloured by status. Field titles and coded values are in
-the output language (``output_schema`` aliases, ``value_names``).
+the output language (``output.schema`` aliases, ``value_names``).
 
 The styles are embedded in the GeoPackage as its default (opening the file
 shows them) and applied by a Processing layer post-processor to the layers a
@@ -49,10 +49,11 @@ from ..signmapper_core.catalogue.model import UNKNOWN_ID
 from ..signmapper_core.catalogue.names import sign_name, unknown_name
 from ..signmapper_core.output import schema
 from ..signmapper_core.output.partial_output import write_failure
-from ..signmapper_core.output.schema import ACCEPTED, DETECTIONS, REJECTED, REVIEW, SIGNS, STATUS_COLOURS
+from ..signmapper_core.output.schema import DETECTIONS, SIGNS
 from ..signmapper_core.output.value_names import LOCALISED_FIELDS, value_map, value_name
 from ..signmapper_core.plates.formats import PLATE_ID, PLATE_NAMES
 from ..signmapper_core.sign_colours import DISPLAY_COLOURS
+from ..signmapper_core.statuses import ACCEPTED, REJECTED, REVIEW, STATUS_COLOURS
 from . import feature_actions
 
 PICTOGRAM_MM = 7.0

@@ -12,7 +12,8 @@ from qgis.PyQt.sip import isdeleted
 from ..gpkg.fields import feature_values
 from ..signmapper_core.catalogue.model import UNKNOWN_ID
 from ..signmapper_core.changes.schema import CHANGES
-from ..signmapper_core.output.schema import MANUAL, SIGNS
+from ..signmapper_core.output.schema import SIGNS
+from ..signmapper_core.statuses import MANUAL
 from .edits import DecisionLog, EditError, add_feature, change_attributes
 from .layers import features_where
 from .values import accept_values, manual_feature, plate_text_values, reclassify_values, reject_values

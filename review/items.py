@@ -14,8 +14,9 @@ from qgis.core import QgsFeatureRequest
 from ..gpkg.fields import feature_values
 from ..signmapper_core.changes.schema import CHANGES
 from ..signmapper_core.output.classifier_alternatives import parse_alternatives
-from ..signmapper_core.output.schema import DETECTIONS, REVIEW, SIGNS
+from ..signmapper_core.output.schema import DETECTIONS, SIGNS
 from ..signmapper_core.plates.catalogue import pictogram_png
+from ..signmapper_core.statuses import REVIEW
 from ..ui.review_item import ObservationView, ReviewItem
 from .imaging import crop_rect
 from .layers import detections_layer_for, features_where

@@ -8,7 +8,8 @@ from qgis.core import QgsExpression, QgsFeatureRequest, QgsProject, QgsProviderR
 
 from ..gpkg.output import layer_uri
 from ..signmapper_core.changes import schema as changes_schema
-from ..signmapper_core.output.schema import DETECTIONS, LAYERS, RUN_TABLE, SIGNS, required_names
+from ..signmapper_core.output.run_table import RUN_TABLE
+from ..signmapper_core.output.schema import DETECTIONS, LAYERS, SIGNS, required_names
 
 
 def gpkg_source(layer) -> Tuple[str, str]:
@@ -27,7 +28,7 @@ def has_run_table(path: str) -> bool:
 def layer_kind(layer) -> Optional[str]:
     """'signs', 'detections' or 'changes' for a Sign Mapper layer, else None.
 
-    A layer is ours when it has the fields the review needs (``output_schema``,
+    A layer is ours when it has the fields the review needs (``output.schema``,
     ``required``). Its kind is its name in a GeoPackage with our run table, or
     failing that what its fields say (a layer copied elsewhere or renamed keeps them).
     """

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from qgis.core import QgsCoordinateTransform, QgsProject, QgsRectangle
 
-from ..signmapper_core.output.schema import REVIEW
+from ..signmapper_core.statuses import REVIEW
 from .items import driving_order
 
 ZOOM_HALF_SIZE_M = 20.0

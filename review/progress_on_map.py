@@ -6,7 +6,7 @@ from qgis.gui import QgsMapCanvasItem
 from qgis.PyQt.QtCore import QRectF, Qt
 from qgis.PyQt.QtGui import QBrush, QColor, QFont, QFontMetricsF, QPen
 
-from ..signmapper_core.output.schema import REVIEW, STATUS_COLOURS
+from ..signmapper_core.statuses import REVIEW, STATUS_COLOURS
 
 MARGIN_PX = 10
 

@@ -64,7 +64,8 @@ class ReviewSession:
         """The settings the run was mapped with: its whole recorded configuration (``run_settings``); for a run
         recorded before settings were saved whole, its near/far, colours, exclusions, thresholds and classifier
         (defaults for anything missing or invalid)."""
-        from ..signmapper_core.output.run_settings import RunRecordError, run_settings
+        from ..signmapper_core.output.run_settings import run_settings
+        from ..signmapper_core.output.run_table import RunRecordError
         from ..signmapper_core.pipeline.config import SECTION_OF, PipelineConfig, with_settings
 
         try:

@@ -9,7 +9,8 @@ from __future__ import annotations
 from typing import Optional
 
 from ..gpkg.fields import layer_feature
-from ..signmapper_core.output.schema import ACCEPTED, DEFAULT_LANGUAGE, MANUAL, REJECTED, OutputContext, template_values
+from ..signmapper_core.output.schema import DEFAULT_LANGUAGE, OutputContext, template_values
+from ..signmapper_core.statuses import ACCEPTED, MANUAL, REJECTED
 
 DEFAULT_FORMAT = "normal"
 

@@ -163,7 +163,7 @@ def main(argv: Optional[list[str]] = None) -> int:
     args = parser.parse_args(argv)
     from .errors import ClusterError, DriveFormatError, MappingError
     from .output.geopackage_file import OutputFileError
-    from .output.run_settings import RunRecordError
+    from .output.run_table import RunRecordError
     from .pipeline.classifiers import ClassifierError
 
     drives = [Path(d) for d in args.drives]

@@ -36,7 +36,7 @@ from qgis.PyQt.QtWidgets import (
     QWidget,
 )
 
-from ..signmapper_core.output.schema import ACCEPTED, REJECTED, STATUS_COLOURS
+from ..signmapper_core.statuses import ACCEPTED, REJECTED, STATUS_COLOURS
 from .hover_focus import FocusOnHover
 from .image_view import ImageView
 from .review_item import ObservationView, ReviewItem

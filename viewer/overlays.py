@@ -3,7 +3,7 @@
 Signs come from the map (their 3D point, standard size and status), so a sign
 mapped from other pairs, or added by hand, shows where it should be; a pair's
 detections are the boxes measured in exactly this image. Colours are the
-status colours of ``output_schema``; projected boxes are dashed.
+status colours of ``output.schema``; projected boxes are dashed.
 """
 
 from __future__ import annotations
@@ -16,7 +16,8 @@ from qgis.core import QgsFeatureRequest, QgsRectangle
 from ..gpkg.fields import feature_values
 from ..review.layers import features_where
 from ..signmapper_core.drive.viewing import project_sign
-from ..signmapper_core.output.schema import DETECTIONS, SIGNS, STATUS_COLOURS
+from ..signmapper_core.output.schema import DETECTIONS, SIGNS
+from ..signmapper_core.statuses import STATUS_COLOURS
 from ..ui.image_view import OverlayBox
 
 SHOWN_WITHIN_M = 40.0  # signs farther from the camera are too small to draw usefully

@@ -1,6 +1,6 @@
 """The output of ``changes``, declared once: the layers ``changes`` (points) and ``displacements`` (lines).
 
-Like :mod:`output_schema` for a mapping run: the GeoPackage writer, the review
+Like :mod:`output.schema` for a mapping run: the GeoPackage writer, the review
 (which opens a change at the pair where the sign is or should be) and the
 algorithm's help derive from :data:`FIELDS`. A row reads its value from a
 :class:`~signmapper_core.changes.compare.Change`.
@@ -8,7 +8,8 @@ algorithm's help derive from :data:`FIELDS`. A row reads its value from a
 
 from __future__ import annotations
 
-from ..output.schema import ACCEPTED, INTEGER, REAL, REVIEW, TEXT, Field
+from ..output.schema import INTEGER, REAL, TEXT, Field
+from ..statuses import ACCEPTED, REVIEW
 from .compare import CHANGED, CONFIRMED, MISSING, MOVED, NEW, NOT_COVERED, Change
 
 CHANGES, DISPLACEMENTS = "changes", "displacements"

@@ -21,7 +21,7 @@ import numpy as np
 
 from ..catalogue.model import COLOURS
 from ..catalogue.text_panels import is_text_panel
-from ..output.schema import ACCEPTED
+from ..statuses import ACCEPTED
 from .accuracy import evaluate, majority_id, match_to_reference, share_text
 
 WHITE = ("white",)

@@ -14,7 +14,7 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
-from ..output.schema import ACCEPTED
+from ..statuses import ACCEPTED
 from .accuracy import majority_id, share_text
 
 UNKNOWN_ID = "unknown"

@@ -22,8 +22,8 @@ import numpy as np
 
 from ..catalogue.model import UNKNOWN_ID
 from ..output.review_reasons import DOUBTFUL_READINGS, sign_reason
-from ..output.schema import ACCEPTED, REVIEW
 from ..plates.zone_panels import may_be_disc_of
+from ..statuses import ACCEPTED, REVIEW
 
 
 def _of_detection(name: str, doc: str) -> property:

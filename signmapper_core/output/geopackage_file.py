@@ -17,7 +17,8 @@ from pathlib import Path
 
 from ..errors import OutputFileError
 from .partial_output import PartialOutput, write_failure
-from .schema import DETECTIONS, RUN_TABLE, SIGNS
+from .run_table import RUN_TABLE
+from .schema import DETECTIONS, SIGNS
 
 OUR_TABLES = (SIGNS, DETECTIONS, RUN_TABLE)
 STYLE_TABLE = "layer_styles"  # QGIS's styles of every layer in the file: kept, minus the replaced layers' ones

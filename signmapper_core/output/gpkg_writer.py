@@ -1,7 +1,7 @@
 """A mapping result as a GeoPackage through GDAL/OGR, without QGIS: what ``python -m signmapper_core.map`` writes.
 
 The same layers, fields and run table as ``mapsigns`` (both derive them from
-:mod:`output_schema`, both write through OGR's GPKG driver), written atomically
+:mod:`output.schema`, both write through OGR's GPKG driver), written atomically
 (:mod:`geopackage_file`). What only QGIS adds is left out: the layer styles
 (QGIS applies its defaults when the layers are opened; mapsigns run on the file
 embeds them) and the QGIS metadata abstracts.
@@ -14,7 +14,7 @@ from typing import Optional
 
 from ..errors import OutputFileError
 from ..progress import CancelCheck, check_cancelled
-from . import schema
+from . import run_table, schema
 from .geopackage_file import PartialGeoPackage
 from .partial_output import write_failure
 
@@ -74,7 +74,7 @@ def write_geopackage(target, result, context: Optional[schema.OutputContext] = N
             srs = spatial_reference(result.drive.crs)
             for layer_name, items in ((schema.SIGNS, result.signs), (schema.DETECTIONS, result.detections)):
                 _write_layer(source, layer_name, items, srs, context, is_cancelled)
-            _write_run_table(source, schema.run_record(result, context))
+            _write_run_table(source, run_table.run_record(result, context))
             source.FlushCache()
             source = None
         check_cancelled(is_cancelled, "writing")
@@ -116,7 +116,7 @@ def _write_run_table(source, values: dict) -> None:
     """A non-spatial key/value table recording the drive folder and the run's parameters."""
     from osgeo import ogr
 
-    table = source.CreateLayer(schema.RUN_TABLE, None, ogr.wkbNone, ["FID=fid", "OVERWRITE=YES"])
+    table = source.CreateLayer(run_table.RUN_TABLE, None, ogr.wkbNone, ["FID=fid", "OVERWRITE=YES"])
     table.CreateField(ogr.FieldDefn("key", ogr.OFTString))
     table.CreateField(ogr.FieldDefn("value", ogr.OFTString))
     definition = table.GetLayerDefn()
@@ -124,6 +124,6 @@ def _write_run_table(source, values: dict) -> None:
     for key, value in values.items():
         feature = ogr.Feature(definition)
         feature.SetField("key", key)
-        feature.SetField("value", schema.encode_run_value(value))
+        feature.SetField("value", run_table.encode_run_value(value))
         table.CreateFeature(feature)
     table.CommitTransaction()

@@ -17,7 +17,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Dict, List, Sequence, Tuple
 
-from .schema import ACCEPTED, MANUAL, SIGNS, TEXT, field
+from ..statuses import ACCEPTED, MANUAL
+from .schema import SIGNS, TEXT, field
 from .value_names import LOCALISED_FIELDS, value_name
 
 # the columns of the deliverable, in their order: what a surveyor hands over, not how the method worked
@@ -48,7 +49,7 @@ def columns(language: str) -> List[Column]:
 class Selection:
     """The signs delivered, in order, and what was left out."""
 
-    signs: List[dict]  # value dicts of the signs layer (output_schema names), signs each followed by their plates
+    signs: List[dict]  # value dicts of the signs layer (output.schema names), signs each followed by their plates
     left_out: int  # signs and plates whose status is not delivered
     orphan_plates: List[Tuple[int, int]]  # (plate's sign_id, its sign's) of plates whose sign is not delivered
 

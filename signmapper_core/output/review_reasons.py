@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from typing import Optional, Sequence
 
-from .schema import REVIEW
+from ..statuses import REVIEW
 
 # a detection, in its pair
 LOW_INDICATOR = "indicator below the acceptance threshold"

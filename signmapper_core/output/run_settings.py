@@ -1,6 +1,6 @@
 """A run's settings saved whole in its output's run table, and read back to map a drive again with them.
 
-The run table (``output_schema.RUN_KEYS``) holds every setting of the
+The run table (``output.run_table.RUN_KEYS``) holds every setting of the
 ``PipelineConfig`` (key ``pipeline``, a JSON object per section) and of the
 ``FusionConfig`` (key ``fusion``) as JSON, with ``settings_version``.
 :func:`load_run_settings` turns the run table of an earlier output back into
@@ -17,30 +17,12 @@ from __future__ import annotations
 
 import dataclasses
 import json
-import sqlite3
 import typing
-from contextlib import closing
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any, Optional
 
 from ..progress import WarnCallback, send_warning
-from .schema import RUN_KEYS, RUN_TABLE, decode_run_value
-
-# raise when a setting changes its meaning or unit, or the record its layout: older records are then refused
-# unless read_versions learns them (version 1: the pipeline settings flat, before the sections)
-SETTINGS_VERSION = 2
-FLAT_PIPELINE_VERSION = 1
-SQLITE_HEADER = b"SQLite format 3\x00"
-
-
-class RunRecordError(ValueError):
-    """An earlier output's run record cannot give the settings; the message names the file and why."""
-
-
-def settings_dict(settings) -> dict:
-    """Field name -> JSON-ready value of a settings dataclass (tuples become lists, sections objects)."""
-    return json.loads(json.dumps(dataclasses.asdict(settings)))
+from .run_table import FLAT_PIPELINE_VERSION, RUN_KEYS, SETTINGS_VERSION, RunRecordError, read_run_record
 
 
 def _frozen(value):
@@ -151,29 +133,6 @@ def pipeline_config_of(data: dict, where: str, warn: Optional[WarnCallback] = No
             warn(f"{where}: ignored sections this version does not know: {', '.join(unknown)}")
     return PipelineConfig(**{name: settings_of(cls, data[name], f"{where}, section {name}", warn)
                              for name, cls in SECTIONS.items() if name in data})
-
-
-def read_run_record(path) -> dict:
-    """Key -> value of the run table of the GeoPackage ``path`` (values decoded as written).
-
-    Raises :class:`RunRecordError` when the file is missing, no GeoPackage, or has no run table.
-    """
-    path = Path(path)
-    if not path.is_file():
-        raise RunRecordError(f"{path}: no such file")
-    with open(path, "rb") as fh:
-        if fh.read(len(SQLITE_HEADER)) != SQLITE_HEADER:
-            raise RunRecordError(f"{path}: not a GeoPackage")
-    try:
-        with closing(sqlite3.connect(f"{path.resolve().as_uri()}?mode=ro", uri=True)) as db:
-            tables = {row[0] for row in db.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
-            if RUN_TABLE not in tables:
-                raise RunRecordError(f"{path}: no table '{RUN_TABLE}': not an output of Sign Mapper's "
-                                     "'Map traffic signs'")
-            rows = db.execute(f'SELECT "key", "value" FROM "{RUN_TABLE}"').fetchall()
-    except sqlite3.Error as exc:
-        raise RunRecordError(f"{path}: cannot read its table '{RUN_TABLE}': {exc}") from exc
-    return {key: decode_run_value(key, text) for key, text in rows if isinstance(key, str) and isinstance(text, str)}
 
 
 @dataclass(frozen=True)

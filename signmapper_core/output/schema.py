@@ -16,22 +16,16 @@ reader for it, in the order of the table. REAL values are rounded to
 
 from __future__ import annotations
 
-import json
 import operator
 from dataclasses import dataclass
 from dataclasses import field as dc_field
 from datetime import datetime, timedelta
 from typing import Any, Callable, Optional
 
-from .. import __version__
+from ..statuses import ACCEPTED, MANUAL, REJECTED, REVIEW
 
 SIGNS, DETECTIONS = "signs", "detections"
 LAYERS = (SIGNS, DETECTIONS)
-RUN_TABLE = "signmapper_run"
-
-ACCEPTED, REVIEW, REJECTED, MANUAL = "accepted", "review", "rejected", "manual"
-# status -> colour: the review dock's status text and buttons and the detections' layer style
-STATUS_COLOURS = {ACCEPTED: "#2e7d32", REVIEW: "#f57c00", REJECTED: "#9e9e9e", MANUAL: "#1565c0"}
 
 TEXT, INTEGER, REAL = "text", "integer", "real"
 
@@ -184,8 +178,8 @@ FIELDS = (
           template=lambda entry, fmt, lang: _sign_name(entry, lang), contextual=True,
           sign=lambda s, ctx: ctx.name(s.template_id, s.name), detection=lambda o, ctx: ctx.name(o.template_id, o.name),
           **_names("Name", "Bezeichnung", "Désignation", "Denominazione")),
-    Field("status", TEXT, "accepted, review (a person should look), rejected (by a person) or manual (added by a "
-          "person).", required=True, **_both("status"), **_names("Status", "Status", "Statut", "Stato")),
+    Field("status", TEXT, f"{ACCEPTED}, {REVIEW} (a person should look), {REJECTED} (by a person) or {MANUAL} "
+          "(added by a person).", required=True, **_both("status"), **_names("Status", "Status", "Statut", "Stato")),
     Field("reviewed", INTEGER, "1 once a person decided on the feature, else 0.", required=True,
           sign=lambda s: int(s.status == MANUAL), detection=lambda o: int(o.status == MANUAL),
           **_names("Reviewed", "Geprüft", "Contrôlé", "Verificato")),
@@ -318,86 +312,6 @@ def template_values(layer: str, entry, format_name: str, language: str = DEFAULT
     """What reclassifying as catalogue ``entry`` in format ``format_name`` writes (its name in ``language``)."""
     return {f.name: f.typed(f.template(entry, format_name, language)) for f in fields(layer)
             if f.template is not None}
-
-
-def _run_settings():
-    from . import run_settings
-
-    return run_settings
-
-
-@dataclass(frozen=True)
-class RunKey:
-    """One row of the run table: how a mapping result gives it, and whether the value is JSON or plain text."""
-
-    key: str
-    help: str
-    read: Callable[[Any], Any]  # MappingResult -> value
-    text: bool = False  # written and read back as plain text (paths, names), else as JSON
-    setting: Optional[tuple] = None  # (section, name) of the pipeline setting this row repeats for readers
-
-
-RUN_KEYS = (
-    RunKey("software", "Program and version that wrote the file.", lambda r: f"Sign Mapper {__version__}", True),
-    RunKey("drive", "Absolute drive folder: where the review finds the images.",
-           lambda r: str(r.drive.root.resolve()), True),
-    RunKey("crs", "CRS of the drive and the layers.", lambda r: r.drive.crs, True),
-    RunKey("catalogue", "Template catalogue folder.", lambda r: str(r.catalogue.folder), True),
-    RunKey("near_m", "Near limit of the depth range [m].", lambda r: r.config.depth.near_m,
-           setting=("depth", "near_m")),
-    RunKey("far_m", "Far limit of the depth range [m].", lambda r: r.config.depth.far_m, setting=("depth", "far_m")),
-    RunKey("colours", "Sign colours segmented.", lambda r: list(r.config.colour.colours),
-           setting=("colour", "colours")),
-    RunKey("exclude", "Template ids never assigned.", lambda r: list(r.config.classification.exclude),
-           setting=("classification", "exclude")),
-    RunKey("detection_threshold", "Minimum detection indicator.", lambda r: r.config.planarity.detection_threshold,
-           setting=("planarity", "detection_threshold")),
-    RunKey("classifier", "Classifier that ran: cnn (learned network) or ncc (template matching).",
-           lambda r: r.classifier_name, True),
-    RunKey("classification_threshold", "Classification indicator for a detection's status accepted (the "
-           "classifier's own calibrated one unless set); a sign's voters need a mean the fusion setting "
-           "accept_margin of the way from it to 1.", lambda r: r.classification_threshold,
-           setting=("classification", "classification_threshold")),
-    RunKey("run_id", "Identifier of this run (a UUID): exports record it, so the same run is never written twice.",
-           lambda r: r.run_id, True),
-    RunKey("settings_version", "Version of the recorded settings' meaning (run_settings.SETTINGS_VERSION).",
-           lambda r: _run_settings().SETTINGS_VERSION),
-    RunKey("pipeline", "Every setting of the detection pipeline (PipelineConfig) as a JSON object: with fusion, "
-           "what 'Settings from an earlier output' maps a drive again with.",
-           lambda r: _run_settings().settings_dict(r.config)),
-    RunKey("fusion", "Every setting of fusing detections into signs (FusionConfig) as a JSON object.",
-           lambda r: _run_settings().settings_dict(r.fusion)),
-)
-# what the writer chose, not the mapping: read from the OutputContext
-OUTPUT_RUN_KEYS = (
-    RunKey("language", "Language of names and field aliases.", lambda c: c.language, True),
-    RunKey("start_time", "Absolute time of the first pair (drive.json start_time), ISO 8601.",
-           lambda c: c.start.isoformat() if c.start is not None else "", True),
-    RunKey("crops", "Number of sign crops written beside the GeoPackage.", lambda c: len(c.crops)),
-)
-_TEXT_KEYS = {k.key for k in RUN_KEYS + OUTPUT_RUN_KEYS if k.text}
-
-
-def run_record(result, context: Optional[OutputContext] = None) -> dict:
-    """Key -> value of the run table for a ``MappingResult`` (and, when given, how it was written)."""
-    record = {k.key: k.read(result) for k in RUN_KEYS}
-    if context is not None:
-        record.update({k.key: k.read(context) for k in OUTPUT_RUN_KEYS})
-    return record
-
-
-def encode_run_value(value) -> str:
-    return value if isinstance(value, str) else json.dumps(value)
-
-
-def decode_run_value(key: str, text: str):
-    """A run-table value as written: plain text for text keys, JSON otherwise (text if it is not JSON)."""
-    if key in _TEXT_KEYS:
-        return text
-    try:
-        return json.loads(text)
-    except ValueError:
-        return text
 
 
 def _check() -> None:

@@ -11,7 +11,8 @@ from __future__ import annotations
 
 from typing import Any, Dict
 
-from .schema import ACCEPTED, LANGUAGES, MANUAL, REJECTED, REVIEW
+from ..statuses import ACCEPTED, MANUAL, REJECTED, REVIEW
+from .schema import LANGUAGES
 
 
 def _words(en: str, de: str, fr: str, it: str) -> Dict[str, str]:

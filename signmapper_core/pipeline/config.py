@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from typing import Any, Dict, Mapping, Optional, Tuple
 
 from ..sign_colours import HOUGH_TINT_HUES, HSV_RANGES, SIGN_COLOURS, WEAK_HUES, HsvRange
+from .classifier_names import CLASSIFIERS
 
 DEFAULT_HSV_RANGES = HSV_RANGES  # the name the steps' tests use
 
@@ -437,8 +438,6 @@ class ClassificationConfig:
     # signs with a wrong id); a face found twice (about the same box) is not a part
 
     def __post_init__(self):
-        from .classifiers import CLASSIFIERS
-
         if self.classifier not in CLASSIFIERS:
             raise ValueError(f"unknown classifier {self.classifier!r}; choose one of {', '.join(CLASSIFIERS)}")
 

@@ -23,6 +23,7 @@ from ..geometry import Camera, Pose
 from ..output.review_reasons import FAINT_HOUGH_RING, NO_ENTRY_MATCHES, OFF_FORMAT, ZONE_PANEL_BY_DEPTH, ZONE_PANEL_DISC
 from ..plates.printed_numbers import number_band, printed_number
 from ..plates.zone_panels import may_be_a_panels_disc
+from ..statuses import ACCEPTED, REVIEW
 from .boxes import box_iou, centre_inside, smaller_box_cover
 from .classifiers import accept_threshold, marginal_min_score, min_score
 from .classify import surround_score
@@ -324,9 +325,9 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     if off_format and cls.score < accept:  # a size no standard sign has needs a clear reading
         return None
     by_depth = any(best is r for r in held_panels)
-    status = "accepted" if cls.score >= accept and not (by_depth or off_format) else "review"
+    status = ACCEPTED if cls.score >= accept and not (by_depth or off_format) else REVIEW
     reason = ZONE_PANEL_BY_DEPTH if by_depth and cls.score >= accept else (OFF_FORMAT if off_format else "")
-    if seg.source == "hough" and status == "accepted":
+    if seg.source == "hough" and status == ACCEPTED:
         # a circle with a full-colour ring is a colour find the colour step lost (an attachment
         # spoiled its outline); faded or white ones stay for review
         x, y, w, h = seg.bbox
@@ -334,12 +335,12 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         strong = ranges is not None and ring_colour_share(left[y : y + h, x : x + w], seg.mask, ranges, config) >= \
             config.hough.hough_strong_ring_share
         status = status if strong else config.hough.hough_max_status
-        reason = "" if status == "accepted" else FAINT_HOUGH_RING
+        reason = "" if status == ACCEPTED else FAINT_HOUGH_RING
     u, v = bbox_centre(face)
     z = face_depth(planarity, camera, u, v, size, config)
-    if status == "accepted" and may_be_a_panels_disc(zone_panels, cls.template_id) and \
+    if status == ACCEPTED and may_be_a_panels_disc(zone_panels, cls.template_id) and \
             inside_white_panel(left, depth, face, z, config):
-        status, reason = "review", ZONE_PANEL_DISC
+        status, reason = REVIEW, ZONE_PANEL_DISC
     entry = catalogue[cls.template_id]
     # a sign whose colour the segmentation takes for another is reported, and fused, in its own colour
     colour = entry.colour if reads_as(catalogue, entry, seg.colour, config.colour.hsv_ranges) else seg.colour
@@ -390,7 +391,7 @@ def _unknown_detection(seg: Segment, reading, shape: str, planarity, size, pair:
     return Detection(
         template_id=UNKNOWN_ID, name=UNKNOWN_ID, colour=seg.colour, shape=catalogue_shape(shape),
         width_m=match.width_m, height_m=match.height_m, format=match.format, detection_indicator=planarity.indicator,
-        classification_indicator=cls.score, status="review", u=u, v=v, bbox=face, depth_m=float(z),
+        classification_indicator=cls.score, status=REVIEW, u=u, v=v, bbox=face, depth_m=float(z),
         position=locate(camera, pair.pose, u, v, z), source=seg.source, scores=cls.scores,
         normal_world=world_face_normal(camera, pair.pose, planarity.plane), review_reason=NO_ENTRY_MATCHES,
     )
@@ -424,7 +425,7 @@ def suppress_overlaps(detections: Sequence[Detection], max_iou: float,
     whatever its indicators, which a small part inside a face can have higher than the whole (a flatter patch).
     """
     parts = {id(d) for d in detections for o in detections
-             if o is not d and o.status == "accepted" and _part_of(d.bbox, o.bbox, part_max_area_share)}
+             if o is not d and o.status == ACCEPTED and _part_of(d.bbox, o.bbox, part_max_area_share)}
     ranked = sorted((d for d in detections if id(d) not in parts),
                     key=lambda d: d.detection_indicator * d.classification_indicator, reverse=True)
     kept: List[Detection] = []

@@ -25,6 +25,7 @@ import numpy as np
 
 from ..plates.catalogue import load_plate_templates, pictogram_formats
 from ..plates.formats import PLATE_FORMATS, PLATE_ID, PLATE_NAMES
+from ..statuses import ACCEPTED, REVIEW
 from .boxes import touches_border
 from .detection import Detection
 from .locate import bbox_centre, locate
@@ -443,7 +444,7 @@ def plates_of_sign(pair: PairContext, depth: np.ndarray, sign: Detection, side: 
     return Detection(
         template_id=template_id, name=label, colour="white", shape="rectangle", width_m=pw, height_m=ph,
         format=name, detection_indicator=float(fill), classification_indicator=float(score),
-        status="accepted" if score >= config.plates.plate_accept_score else "review", u=u, v=v, bbox=box, depth_m=z,
+        status=ACCEPTED if score >= config.plates.plate_accept_score else REVIEW, u=u, v=v, bbox=box, depth_m=z,
         position=locate(camera, pair.pose, u, v, z), source="plate", normal_world=sign.normal_world,
         plate_of=sign, crop=crop, printed_text=printed, crop_seen=seen,
     )

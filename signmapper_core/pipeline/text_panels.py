@@ -21,6 +21,7 @@ import numpy as np
 from ..catalogue.text_panels import DIRECTION, PLACE_END, PLACE_NAME, TEXT_PANELS
 from ..fusion.face_normal import world_face_normal
 from ..geometry import Camera
+from ..statuses import ACCEPTED, REVIEW
 from .boxes import centre_inside
 from .detection import Detection
 from .locate import bbox_centre, locate
@@ -387,7 +388,7 @@ def judge_panel(field: PanelField, pair: PairContext, depth: np.ndarray, grey: n
         template_id=template_id, name=pair.catalogue[template_id].name("de"), colour="white", shape="rectangle",
         width_m=round(width_m / step) * step, height_m=round(height_m / step) * step, format="measured",
         detection_indicator=planarity.indicator, classification_indicator=indicator,
-        status="accepted" if accepted else "review", u=u, v=v, bbox=box, depth_m=float(z),
+        status=ACCEPTED if accepted else REVIEW, u=u, v=v, bbox=box, depth_m=float(z),
         position=locate(camera, pair.pose, u, v, z), source="text-panel",
         normal_world=world_face_normal(camera, pair.pose, planarity.plane),
         crop=reading_crop(pair.left, field),

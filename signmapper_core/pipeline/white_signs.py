@@ -20,6 +20,7 @@ import numpy as np
 from ..catalogue.model import MEASURED
 from ..fusion.face_normal import world_face_normal
 from ..output.review_reasons import WHITE_UNREAD
+from ..statuses import ACCEPTED, REVIEW
 from .boxes import centre_inside, share_inside
 from .classifiers import accept_threshold
 from .classify import ClassificationResult, classify_segment
@@ -239,11 +240,11 @@ def read_white_face(pair: PairContext, bbox, ids: Sequence[str], matched: Classi
     is calibrated like every other sign's); otherwise, or when it reads no id, the template matching stands."""
     known = _network_read(pair, bbox, ids)
     if known is None:
-        return matched, "accepted" if matched.score >= pair.config.white.white_accept_score else "review", ""
+        return matched, ACCEPTED if matched.score >= pair.config.white.white_accept_score else REVIEW, ""
     read, accept = known
     if read.template_id is None:
-        return matched, "review", WHITE_UNREAD  # resembles a white template, but the network reads none of them
-    return read, "accepted" if read.score >= accept else "review", ""
+        return matched, REVIEW, WHITE_UNREAD  # resembles a white template, but the network reads none of them
+    return read, ACCEPTED if read.score >= accept else REVIEW, ""
 
 
 def network_reading(pair: PairContext, bbox, ids: Sequence[str]) -> Optional[ClassificationResult]:
@@ -332,10 +333,10 @@ def _judge_face(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
         read = network_reading(pair, seg.bbox, ids) if supported and config.white.white_network_gate else None
         if read is None:
             return None
-        cls, status, reason = read, "accepted", ""
+        cls, status, reason = read, ACCEPTED, ""
     else:
         cls, status, reason = read_white_face(pair, seg.bbox, ids, cls)
-    if is_panel and match.format == MEASURED and status == "accepted":
+    if is_panel and match.format == MEASURED and status == ACCEPTED:
         panels.append(seg.bbox)
     entry = catalogue[cls.template_id]
     names = getattr(entry, "names", None) or {}

@@ -17,8 +17,8 @@ from typing import Callable, Optional, Sequence
 
 from ..fusion.signs import FusedSign, FusionConfig
 from ..output.review_reasons import digits_reason
-from ..output.schema import ACCEPTED, REVIEW
 from ..progress import WarnCallback, send_warning
+from ..statuses import ACCEPTED, REVIEW
 from .ocr import OcrError, OcrUnavailable, read_numbers
 from .printed_numbers import prepared_band, printed_number
 

@@ -26,6 +26,8 @@ from typing import Any, List, Optional, Sequence
 
 import numpy as np
 
+from ..machine import available_cores
+
 LANGUAGES = ("deu", "fra", "ita")
 DEBIAN_PACKAGES = ("tesseract-ocr", "tesseract-ocr-deu", "tesseract-ocr-fra", "tesseract-ocr-ita")
 INSTALL_HINT = "sudo apt-get install " + " ".join(DEBIAN_PACKAGES)
@@ -255,8 +257,6 @@ def _read(images: List[np.ndarray], options: tuple, language_count: Optional[int
     path, languages = find_tesseract(executable)
     timeout = timeout_s if timeout_s is not None else BASE_TIMEOUT_S + TIMEOUT_PER_IMAGE_S * len(images)
     if cores is None:
-        from ..run.pair_pool import available_cores
-
         cores = available_cores()
     calls = call_count(len(images), cores)
     with tempfile.TemporaryDirectory(prefix="signmapper-ocr-") as folder:

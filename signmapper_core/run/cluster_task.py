@@ -7,7 +7,8 @@ import that package). So neither direction pickles the core's classes: a job is
 a dict of strings, numbers and the settings as JSON-ready dicts; a result is the
 detections as dicts of numbers and arrays. The task function itself is named
 by the workers' module name (:func:`worker_function`); the scheduler unpickles
-each task too, so it imports this module (nothing else of the core). No Dask import here:
+each task too, so it imports this module (nothing else of the core): the core's modules are imported inside
+the functions that run on a worker, keeping numpy and OpenCV out of the scheduler. No Dask import here:
 workers import this module, and so does the client, only when a cluster is used.
 """
 
@@ -27,7 +28,7 @@ from typing import Optional
 from .. import __version__
 
 WORKER_PACKAGE = "signmapper_core"  # the core's name on a worker: its PYTHONPATH holds the plugin folder
-TASK_MODULE = f"{WORKER_PACKAGE}.cluster_task"
+TASK_MODULE = f"{WORKER_PACKAGE}.{__name__.rpartition(WORKER_PACKAGE + '.')[2]}"  # this module, on a worker
 
 
 class _Module:
@@ -78,7 +79,7 @@ def pair_job(drive, record, catalogue, config, detect=None) -> dict:
     """The job of one pair: the drive's paths, camera and the pair's pose; the catalogue folder (None: the
     worker's own bundled catalogue) and the pipeline settings as JSON-ready dicts."""
     from ..catalogue.model import DEFAULT_CATALOGUE_DIR
-    from ..output.run_settings import settings_dict
+    from ..output.run_table import settings_dict
 
     folder = Path(catalogue.folder)
     bundled = folder.resolve() == DEFAULT_CATALOGUE_DIR.resolve()
@@ -144,7 +145,7 @@ def map_pair_task(job: dict) -> dict:
 
     from ..drive.reader import Drive, PairRecord
     from ..geometry import Camera, Pose
-    from .mapping import map_pair
+    from .pair import map_pair
 
     heap_for_images()
     cv2.setNumThreads(1)  # a worker runs a pair per thread: the cores are shared out by Dask's threads
@@ -162,7 +163,7 @@ def map_pair_task(job: dict) -> dict:
 def pair_result(data: dict, record):
     """The client's ``mapping.PairResult`` of a worker's answer, for the client's own ``record``."""
     from ..pipeline.detection import Detection
-    from .mapping import PairResult
+    from .pair import PairResult
 
     if data["index"] != record.index:
         raise ValueError(f"a worker answered for pair index {data['index']}, expected {record.index} ({record.id})")

@@ -13,8 +13,6 @@ rest would silently lack signs. Cancellation is checked between pairs
 
 from __future__ import annotations
 
-import time as _time
-import traceback as _traceback
 import uuid
 from contextlib import closing
 from dataclasses import dataclass, field, replace
@@ -23,41 +21,22 @@ from typing import Iterator, Optional
 import numpy as np
 
 from ..catalogue.text_panels import is_text_panel
-from ..drive.plausibility import pair_warnings
 from ..drive.reader import Drive, PairRecord
-from ..errors import DriveFormatError, MappingError
+from ..errors import MappingError
 from ..fusion.mounting import camera_height_above_road, mounting_height
 from ..fusion.signs import FusedSign, FusionConfig, Observation, azimuth_deg, fuse_observations
-from ..output.schema import MANUAL, run_record
+from ..output.run_table import run_record
 from ..plates.fusion import fuse_plates, is_plate, read_plate_texts
 from ..plates.number_check import check_speed_numbers, speed_limit_signs
 from ..plates.printed_numbers import printed_numbers
 from ..progress import CancelCheck, ProgressCallback, WarnCallback, check_cancelled, report, send_warning
-from .pair_pool import worker_count
+from ..statuses import MANUAL
+from .dask_pairs import dask_pairs
+from .pair import DETECT, PairResult, load_pair, map_pair
+from .pair_pool import PoolNotStarted, pooled_pairs, worker_count
 
 PAIRS_SHARE = 0.95  # of the progress: the pairs; fusion and mounting heights take the rest
 LARGEST_FACE_M = 1.5  # a click is the sign's centre: the search window must hold half the largest face
-
-
-READ, DETECT = "read", "detect"  # where a skipped pair failed
-
-
-@dataclass
-class PairResult:
-    """The detections of one pair, or why the pair was skipped.
-
-    ``stage`` says where an ``error`` arose: READ (the pair's files) or DETECT (the
-    pipeline raised; ``traceback`` then holds the formatted traceback for the log).
-    """
-
-    record: PairRecord
-    detections: list = field(default_factory=list)  # pipeline.Detection
-    error: Optional[str] = None
-    seconds: float = 0.0  # loading and detecting
-    load_seconds: float = 0.0  # of which decoding the files
-    stage: Optional[str] = None
-    traceback: Optional[str] = None
-    warnings: list = field(default_factory=list)  # readable but useless input: no depth, no colour
 
 
 @dataclass
@@ -86,36 +65,8 @@ class MappingResult:
         return failure_summary(self.skipped, len(self.drive.pairs))
 
     def run_record(self) -> dict:
-        """What the run table records (``output_schema.RUN_KEYS``): software, drive, catalogue and settings."""
+        """What the run table records (``output.run_table.RUN_KEYS``): software, drive, catalogue and settings."""
         return run_record(self)
-
-
-def load_pair(drive: Drive, record: PairRecord):
-    """(left, depth, right) of one pair as the pipeline takes them: right is only read where no depth is given."""
-    left = drive.load_left(record)
-    depth = drive.load_depth(record)
-    right = drive.load_right(record) if depth is None else None
-    return left, depth, right
-
-
-def map_pair(drive: Drive, record: PairRecord, catalogue, config, detect=None) -> PairResult:
-    """The detections of one pair, or why it was skipped (files unreadable, or the detection raised)."""
-    if detect is None:
-        from ..pipeline import detect_pair as detect  # OpenCV is imported only when mapping actually runs
-    start = _time.perf_counter()
-    try:
-        left, depth, right = load_pair(drive, record)
-    except DriveFormatError as exc:  # the readers report unreadable files as ImageReadError
-        return PairResult(record, error=str(exc), seconds=_time.perf_counter() - start, stage=READ)
-    loaded = _time.perf_counter()
-    try:
-        detections = detect(left, depth, right, drive.camera, record.pose, catalogue, config)
-    except Exception as exc:  # noqa: BLE001 - one pair's failure is reported, the run goes on
-        return PairResult(record, error=f"detection failed: {type(exc).__name__}: {exc}",
-                          seconds=_time.perf_counter() - start, load_seconds=loaded - start, stage=DETECT,
-                          traceback=_traceback.format_exc())
-    return PairResult(record, detections, seconds=_time.perf_counter() - start, load_seconds=loaded - start,
-                      warnings=pair_warnings(record, left, depth))
 
 
 def map_pairs(drive: Drive, catalogue, config, is_cancelled: Optional[CancelCheck] = None, workers: int = 1,
@@ -130,13 +81,9 @@ def map_pairs(drive: Drive, catalogue, config, is_cancelled: Optional[CancelChec
     module-level function, so worker processes can import it).
     """
     if scheduler is not None:
-        from .dask_pairs import dask_pairs  # Dask is imported only when a cluster is asked for
-
         yield from dask_pairs(drive, catalogue, config, scheduler, is_cancelled, detect)
         return
     if workers > 1:
-        from .pair_pool import PoolNotStarted, pooled_pairs
-
         try:
             yield from pooled_pairs(drive, catalogue, config, workers, is_cancelled, detect)
             return

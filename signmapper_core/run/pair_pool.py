@@ -39,7 +39,9 @@ from pathlib import Path
 from typing import Callable, Iterator, Optional
 
 from ..errors import MappingError
+from ..machine import available_cores
 from ..progress import CancelCheck, check_cancelled
+from .pair import map_pair
 
 AHEAD = 2  # pairs queued per worker beyond the one it is working on
 POLL_S = 0.1  # how often the cancel button is asked while waiting for a pair
@@ -71,14 +73,6 @@ def _main_kept_from_workers():
             if main is not None:
                 vars(main).pop("__spec__", None)
                 vars(main).update(hidden)
-
-
-def available_cores() -> int:
-    """Cores this process may run on (its affinity, not the machine's count)."""
-    try:
-        return max(1, len(os.sched_getaffinity(0)))
-    except AttributeError:  # not on Linux
-        return max(1, os.cpu_count() or 1)
 
 
 def worker_count(requested: Optional[int], pairs: int) -> int:
@@ -193,8 +187,6 @@ def _start_worker(run_file: str, opencv_threads: int, templates: Optional[Templa
 
 
 def _map_in_worker(index: int):
-    from .mapping import map_pair
-
     state = _worker_state
     return map_pair(state["drive"], state["drive"].pairs[index], state["catalogue"], state["config"],
                     state["detect"])

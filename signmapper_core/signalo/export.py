@@ -32,7 +32,7 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-from ..output.schema import REVIEW
+from ..statuses import REVIEW
 from .schema import OFFICIAL_SIGN_TYPE, SCHEMA, SignaloError, check_database
 from .types import to_signalo
 

@@ -7,8 +7,9 @@ import numpy as np
 
 from . import textures as tx
 from .faces import SIGN_COLOURS, SignKind
+from .panels import PanelLook, PlacedSign
 from .scene_pieces import CARRIAGEWAY, PARKING_LEFT, UP, Pieces, fit_texture
-from .sign_poles import PanelLook, PlacedSign, sign_pole
+from .sign_poles import sign_pole
 from .street_body import FacadeSpan
 from .surfaces import Texture, TextureSource, rect_surface
 

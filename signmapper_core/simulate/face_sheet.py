@@ -16,7 +16,7 @@ import cv2
 import numpy as np
 
 from .faces import FaceOptions, draw_sign_face, pick_format, sign_kinds
-from .sign_poles import face_shape
+from .panels import face_shape
 
 VARIATIONS = ("face_print", "face_sheeting", "face_wear", "face_dirt", "face_marks", "face_dents")
 FX = 1750.0

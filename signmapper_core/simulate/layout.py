@@ -20,11 +20,12 @@ import numpy as np
 from ..drive.reader import TruthSign
 from .distractors import distractors, white_sign_distractors
 from .faces import FaceOptions, SignKind
+from .panels import PanelLook, PlacedSign
 from .plate_layout import white_distractors
 from .scene_pieces import CARRIAGEWAY, PARKING_LEFT, SIDEWALK_RIGHT, Pieces, TextureKeys
 from .sign_mix import SignMix
 from .sign_mounts import RIGHT_SIDE_SHARE, pole_form, sign_spot
-from .sign_poles import PanelLook, PlacedSign, sign_pole
+from .sign_poles import sign_pole
 from .street import Street
 from .street_body import buildings, lamp_post, road
 from .surfaces import Surface

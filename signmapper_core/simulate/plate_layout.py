@@ -24,6 +24,7 @@ import numpy as np
 from ..drive.reader import TruthSign
 from ..plates.formats import plate_formats_for
 from ..plates.text import EXCEPT_WORDS, WEEKDAYS
+from .panels import PlacedSign, face_shape
 from .plate_faces import draw_in_field, draw_plate
 from .surfaces import Texture, TextureSource, rect_surface
 
@@ -171,8 +172,6 @@ def _next(pieces, kind: str):
 
 def add_plate(pieces, look, host, centre, facing_deg: float, tilt_deg: float, sign_fmt, s: float) -> list:
     """[the plate] right below the sign ``host`` (a PlacedSign) with probability ``look.plate_share``, else []."""
-    from .sign_poles import PlacedSign, face_shape
-
     key, rng = _next(pieces, "plate")
     if host.truth is None or rng.random() >= look.plate_share:
         return []

@@ -17,18 +17,10 @@ import numpy as np
 
 from .face_artwork import MASTER, pointing
 from .faces import MEASURED, pick_format
+from .panels import PanelLook, PlacedSign
 from .scene_pieces import CARRIAGEWAY, KERB_H, PARKING_LEFT, SIDEWALK_LEFT, SIDEWALK_RIGHT, Pieces
 from .sign_mix import BOARD, POLE, POST, TEXT_PANEL, SignMix
-from .sign_poles import (
-    POLE_STANDOFF_M,
-    PanelLook,
-    PlacedSign,
-    make_face,
-    mount_face,
-    occluder,
-    sign_pole,
-    standing_pole,
-)
+from .sign_poles import POLE_STANDOFF_M, make_face, mount_face, occluder, sign_pole, standing_pole
 from .street_body import FacadeSpan
 from .text_panel_poles import TWO_POLES_FROM_M, text_panel_pole
 

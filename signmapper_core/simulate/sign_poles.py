@@ -3,52 +3,20 @@ stand between a sign and the approaching vehicle."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 import numpy as np
 
 from ..drive.reader import TruthSign
 from . import textures as tx
-from .faces import FaceOptions, SignFace, SignKind, draw_sign_face, pick_format
+from .faces import SignFace, SignKind, draw_sign_face, pick_format
+from .panels import PanelLook, PlacedSign, face_shape
 from .plate_layout import PLATE_MAX_GAP_M, add_plate
 from .scene_pieces import CARRIAGEWAY, KERB_H, PARKING_LEFT, SIDEWALK_RIGHT, UP, Pieces
 from .sign_mix import pick_kind
-from .surfaces import Surface, Texture, TextureSource, rect_surface
+from .surfaces import Texture, TextureSource, rect_surface
 
 POLE_FORMS = ("single", "stacked", "back-to-back", "overhead", "away")
 POLE_STANDOFF_M = 0.04  # pole axis behind an upright panel (a 6 cm pole: 1 cm clear of it)
 OVERHEAD_REACH_M = 0.3  # how far an overhead panel may reach over the right sidewalk
-
-
-@dataclass
-class PlacedSign:
-    """A sign panel as laid out: truth row when its face looks towards the vehicle."""
-
-    truth: TruthSign | None
-    colour: str
-    centre: np.ndarray
-    surfaces: list[Surface] = field(default_factory=list)
-    host: PlacedSign | None = None  # a supplementary plate: the sign it hangs under
-
-
-@dataclass(frozen=True)
-class PanelLook:
-    """What every panel of a scene shares: the focal length its face texture is sized for, the face
-    options, and the realism switches that touch signs."""
-
-    fx: float
-    face_options: FaceOptions
-    weathering: bool
-    shadows: bool
-    occlusion: bool  # a branch or pole may stand in front of a sign
-    plate_share: float = 0.0  # share of poles whose lowest sign carries a supplementary plate (plate_layout)
-
-
-def face_shape(size_px: int, w_m: float, h_m: float) -> tuple[int, int]:
-    """(height, width) in pixels of a face texture whose longer side is ``size_px``."""
-    if w_m >= h_m:
-        return max(1, int(round(size_px * h_m / w_m))), size_px
-    return size_px, max(1, int(round(size_px * w_m / h_m)))
 
 
 def make_face(pieces: Pieces, look: PanelLook, kind: SignKind, fmt) -> tuple[SignFace, str]:

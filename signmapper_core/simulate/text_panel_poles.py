@@ -16,9 +16,10 @@ import numpy as np
 from ..catalogue.text_panels import DIRECTION, TEXT_PANELS
 from .face_artwork import PROCEDURAL
 from .faces import SignFace, draw_sign_face
+from .panels import PanelLook, PlacedSign
 from .place_names import panel_lines
 from .scene_pieces import CARRIAGEWAY, KERB_H, PARKING_LEFT, Pieces
-from .sign_poles import POLE_STANDOFF_M, PanelLook, PlacedSign, mount_face, occluder, standing_pole
+from .sign_poles import POLE_STANDOFF_M, mount_face, occluder, standing_pole
 from .text_panel_faces import PanelPlan, draw_text_panel, plan_panel
 
 TEXT_PANEL_SHARE = 0.35  # of the white poles: one text panel (or two stacked direction panels) instead

@@ -13,7 +13,8 @@ from signmapper_core.geometry import world_to_pixel
 from signmapper_core.output.run_settings import run_settings
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.progress import Cancelled
-from signmapper_core.run.mapping import detect_at, load_pair, manual_sign, map_drive
+from signmapper_core.run.mapping import detect_at, manual_sign, map_drive
+from signmapper_core.run.pair import load_pair
 from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
 
 

@@ -7,9 +7,10 @@ from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive.reader import PairRecord
 from signmapper_core.fusion.signs import Observation, fuse_observations
 from signmapper_core.geometry import Pose
-from signmapper_core.output import schema
+from signmapper_core.output import run_table, schema
 from signmapper_core.pipeline.detection import Detection
 from signmapper_core.run.mapping import manual_sign
+from signmapper_core.statuses import ACCEPTED, MANUAL, REJECTED, REVIEW, STATUS_COLOURS, STATUSES
 
 
 def observation(pair_index, position, status="accepted", u=512.345678, depth=9.87654):
@@ -83,17 +84,17 @@ def test_our_layers_are_known_by_what_the_review_needs():
 
 
 def test_every_status_has_one_colour():
-    assert set(schema.STATUS_COLOURS) == {schema.ACCEPTED, schema.REVIEW, schema.REJECTED, schema.MANUAL}
-    assert all(c.startswith("#") and len(c) == 7 for c in schema.STATUS_COLOURS.values())
+    assert set(STATUS_COLOURS) == set(STATUSES) == {ACCEPTED, REVIEW, REJECTED, MANUAL}
+    assert all(c.startswith("#") and len(c) == 7 for c in STATUS_COLOURS.values())
 
 
 def test_run_values_round_trip_as_text_or_json():
-    assert schema.decode_run_value("drive", schema.encode_run_value("/data/2024")) == "/data/2024"
-    assert schema.decode_run_value("drive", "123") == "123"  # a path stays text even when it looks like JSON
-    assert schema.decode_run_value("near_m", schema.encode_run_value(4.0)) == 4.0
-    assert schema.decode_run_value("colours", schema.encode_run_value(["red", "blue"])) == ["red", "blue"]
-    assert schema.decode_run_value("from_a_later_version", "not json") == "not json"
-    assert [k.key for k in schema.RUN_KEYS][:2] == ["software", "drive"]
+    assert run_table.decode_run_value("drive", run_table.encode_run_value("/data/2024")) == "/data/2024"
+    assert run_table.decode_run_value("drive", "123") == "123"  # a path stays text even when it looks like JSON
+    assert run_table.decode_run_value("near_m", run_table.encode_run_value(4.0)) == 4.0
+    assert run_table.decode_run_value("colours", run_table.encode_run_value(["red", "blue"])) == ["red", "blue"]
+    assert run_table.decode_run_value("from_a_later_version", "not json") == "not json"
+    assert [k.key for k in run_table.RUN_KEYS][:2] == ["software", "drive"]
 
 
 def test_survey_fields_come_first_with_coordinates_and_aliases_in_four_languages():
@@ -135,9 +136,9 @@ def test_run_table_records_how_the_rows_were_written():
     from types import SimpleNamespace
 
     context = schema.OutputContext(language="it", crops={1: "a.jpg", 2: "b.jpg"})
-    record = {k.key: k.read(context) for k in schema.OUTPUT_RUN_KEYS}
+    record = {k.key: k.read(context) for k in run_table.OUTPUT_RUN_KEYS}
     assert record == {"language": "it", "start_time": "", "crops": 2}
-    assert schema.decode_run_value("language", "it") == "it"
+    assert run_table.decode_run_value("language", "it") == "it"
     assert SimpleNamespace  # the mapping part is covered by the golden GeoPackage
 
 

@@ -13,10 +13,11 @@ from drive_fixtures import SMALL_SYNTHETIC
 from failing_detection import detect_failing_at, exit_at
 
 from signmapper_core.drive.reader import open_drive
+from signmapper_core.machine import available_cores
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.progress import Cancelled
 from signmapper_core.run.mapping import map_drive
-from signmapper_core.run.pair_pool import TemplateHandoff, available_cores, python_executable, worker_count
+from signmapper_core.run.pair_pool import TemplateHandoff, python_executable, worker_count
 from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig, generate_drive
 
 

@@ -9,17 +9,15 @@ from pathlib import Path
 import pytest
 
 from signmapper_core.fusion.signs import FusionConfig
-from signmapper_core.output.run_settings import (
+from signmapper_core.output.run_settings import load_run_settings, pipeline_config_of, run_settings, settings_of
+from signmapper_core.output.run_table import (
+    RUN_TABLE,
     SETTINGS_VERSION,
     RunRecordError,
-    load_run_settings,
-    pipeline_config_of,
+    encode_run_value,
     read_run_record,
-    run_settings,
     settings_dict,
-    settings_of,
 )
-from signmapper_core.output.schema import RUN_TABLE, encode_run_value
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.pipeline.config import (
     SECTION_OF,

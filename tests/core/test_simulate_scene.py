@@ -10,8 +10,9 @@ from signmapper_core.simulate.distractors import facade_distractor
 from signmapper_core.simulate.faces import FaceOptions, sign_kinds
 from signmapper_core.simulate.generator import _vehicle_positions, make_scene, make_street
 from signmapper_core.simulate.layout import CARRIAGEWAY, PARKING_LEFT
+from signmapper_core.simulate.panels import PanelLook
 from signmapper_core.simulate.scene_pieces import Pieces, TextureKeys
-from signmapper_core.simulate.sign_poles import PanelLook, sign_pole
+from signmapper_core.simulate.sign_poles import sign_pole
 from signmapper_core.simulate.street_body import buildings
 
 

@@ -18,6 +18,7 @@ from signmapper_core.simulate.face_artwork import MASTER, drawing_stems, has_pro
 from signmapper_core.simulate.faces import LONGER_SIDE, FaceOptions, SignFace, draw_sign_face, pick_format
 from signmapper_core.simulate.generator import make_scene, make_street
 from signmapper_core.simulate.layout import CARRIAGEWAY
+from signmapper_core.simulate.panels import PanelLook
 from signmapper_core.simulate.scene_pieces import KERB_H, Pieces, TextureKeys
 from signmapper_core.simulate.sign_mix import BOARD, MIX, POST, MixPart, SignMix, whole_mix
 from signmapper_core.simulate.sign_mounts import (
@@ -26,7 +27,6 @@ from signmapper_core.simulate.sign_mounts import (
     POST_LOWER_EDGE_M,
     sign_post,
 )
-from signmapper_core.simulate.sign_poles import PanelLook
 from signmapper_core.simulate.street_body import FacadeSpan
 
 LONG = SimulationConfig(pairs=1500, seed=8601, distractor_density=0.0, plate_share=0.0)

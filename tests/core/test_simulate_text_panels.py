@@ -12,9 +12,9 @@ from signmapper_core.simulate import DRAWABLE_SIGNS, SimulationConfig
 from signmapper_core.simulate import faces as faces_module
 from signmapper_core.simulate.faces import FaceOptions, SignKind, white_sign_kinds
 from signmapper_core.simulate.generator import make_scene, make_street
+from signmapper_core.simulate.panels import PanelLook
 from signmapper_core.simulate.place_names import PLACES, panel_lines
 from signmapper_core.simulate.scene_pieces import Pieces, TextureKeys
-from signmapper_core.simulate.sign_poles import PanelLook
 from signmapper_core.simulate.text_panel_faces import plan_panel, text_panel_face
 from signmapper_core.simulate.text_panel_poles import LOWER_EDGE_M, text_panel_pole
 

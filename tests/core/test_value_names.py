@@ -1,9 +1,10 @@
 """The words of coded output values: every code the output writes has one in every output language."""
 
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.output.schema import LANGUAGE_NAMES, LANGUAGES, STATUS_COLOURS
+from signmapper_core.output.schema import LANGUAGE_NAMES, LANGUAGES
 from signmapper_core.output.value_names import VALUE_NAMES, value_map, value_name
 from signmapper_core.plates.formats import PLATE_FORMATS
+from signmapper_core.statuses import STATUS_COLOURS
 
 
 def test_every_code_written_has_a_word_in_every_language():

@@ -118,7 +118,7 @@ def test_truth_csv_as_reference_and_trajectory_from_the_recorded_drive(run, tmp_
     gpkg = tmp_path / "signs.gpkg"
     mapped = point_layer([("s", "2.30-50", 2600005.0, 1200003.0, 401.6)], "signs")
     from sign_mapper.gpkg.output import GeoPackageLayers
-    from sign_mapper.signmapper_core.geopackage_file import PartialGeoPackage
+    from sign_mapper.signmapper_core.output.geopackage_file import PartialGeoPackage
 
     out = PartialGeoPackage(gpkg)
     layers = GeoPackageLayers(out)

@@ -31,7 +31,7 @@ def run_gpkg(tmp_path, sign_mapper):
     """A reviewed mapping run written in French, with an image crop beside it."""
     from sign_mapper.gpkg.fields import layer_fields
     from sign_mapper.gpkg.output import GeoPackageLayers
-    from sign_mapper.signmapper_core.geopackage_file import PartialGeoPackage
+    from sign_mapper.signmapper_core.output.geopackage_file import PartialGeoPackage
 
     fields = layer_fields("signs")
     output = PartialGeoPackage(tmp_path / "run.gpkg")
@@ -71,7 +71,7 @@ def rows_of(path, layer="inventory"):
 
 def test_a_geopackage_deliverable_in_french_keeps_the_files_other_layers(run, run_gpkg, tmp_path):
     from sign_mapper.gpkg.output import GeoPackageLayers
-    from sign_mapper.signmapper_core.geopackage_file import PartialGeoPackage
+    from sign_mapper.signmapper_core.output.geopackage_file import PartialGeoPackage
 
     target = tmp_path / "out" / "livrable.gpkg"
     target.parent.mkdir()
@@ -151,8 +151,8 @@ def test_the_inventory_is_written_under_its_lock_and_a_second_export_into_the_ge
     """The one output mechanism (issue 46): a file another run is writing is refused, the earlier file as it was;
     an export into a GeoPackage holding an earlier inventory replaces that layer and keeps the others."""
     from qgis.core import QgsProcessingException
-    from sign_mapper.signmapper_core.geopackage_file import geopackage_tables
-    from sign_mapper.signmapper_core.target_lock import TargetLock
+    from sign_mapper.signmapper_core.output.geopackage_file import geopackage_tables
+    from sign_mapper.signmapper_core.output.target_lock import TargetLock
 
     target = tmp_path / "inventory.csv"
     target.write_text("earlier\n", encoding="utf-8")

@@ -113,7 +113,7 @@ def test_a_layer_outside_the_project_gives_the_pdf_only_and_nothing_to_print_is_
 def test_an_atlas_is_written_under_its_lock_and_a_failed_run_leaves_the_earlier_pdf(run, mapped, tmp_path):
     """The one output mechanism (issue 46): the PDF is moved in when the run succeeds; a file another run is
     writing is refused, the earlier PDF as it was, nothing left beside it."""
-    from sign_mapper.signmapper_core.target_lock import TargetLock
+    from sign_mapper.signmapper_core.output.target_lock import TargetLock
 
     out = tmp_path / "atlas.pdf"
     out.write_bytes(b"%PDF earlier")

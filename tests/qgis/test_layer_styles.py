@@ -24,7 +24,7 @@ from qgis.PyQt.QtCore import QSize
 from qgis.PyQt.QtGui import QColor, QImage
 
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.output.schema import STATUS_COLOURS
+from signmapper_core.statuses import STATUS_COLOURS
 
 STATUSES = ("accepted", "review", "rejected", "manual")
 SPACING_M = 10.0  # between the test signs on the map

@@ -11,7 +11,8 @@ from qgis.core import QgsProcessingException, QgsVectorLayer
 from recorder import Recorder
 
 from signmapper_core.fusion.signs import FusionConfig
-from signmapper_core.output.run_settings import SETTINGS_VERSION, load_run_settings, read_run_record, settings_dict
+from signmapper_core.output.run_settings import load_run_settings
+from signmapper_core.output.run_table import SETTINGS_VERSION, read_run_record, settings_dict
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.pipeline.config import (
     ClassificationConfig,

@@ -73,7 +73,7 @@ def test_missing_opencv_gives_install_message_not_traceback(plugin_dir, tmp_path
 
 
 def test_map_signs_help_lists_every_output_field(registered_plugin):
-    from sign_mapper.signmapper_core import output_schema
+    from sign_mapper.signmapper_core.output import schema as output_schema
 
     help_text = QgsApplication.processingRegistry().algorithmById("signmapper:mapsigns").shortHelpString()
     for field in output_schema.FIELDS:

@@ -81,7 +81,7 @@ def _write_layer(gpkg, name, rows, crs):
 def build_gpkg(path: Path, drive_dir: Path, detections, recorded_drive=None, skip=(), language=None) -> Path:
     """A GeoPackage like mapsigns writes: detections, signs fused by template, and the run table."""
     from sign_mapper.gpkg.output import GeoPackageLayers
-    from sign_mapper.signmapper_core.geopackage_file import PartialGeoPackage
+    from sign_mapper.signmapper_core.output.geopackage_file import PartialGeoPackage
 
     crs = QgsCoordinateReferenceSystem("EPSG:2056")
     sign_ids = {t: i + 1 for i, t in enumerate(sorted({d.template_id for _, d in detections}))}

@@ -46,7 +46,7 @@ def signs_gpkg(path, drive_dir):
     the first ten (in driving order) to review, the misread ones with their true id as first next choice."""
     from sign_mapper.gpkg.fields import layer_fields
     from sign_mapper.gpkg.output import GeoPackageLayers
-    from sign_mapper.signmapper_core.geopackage_file import PartialGeoPackage
+    from sign_mapper.signmapper_core.output.geopackage_file import PartialGeoPackage
 
     drive, catalogue = open_drive(drive_dir), load_catalogue()
     rows = []

@@ -11,10 +11,9 @@ from __future__ import annotations
 from functools import lru_cache
 from pathlib import Path
 
+from ..classifier_names import CLASSIFIERS
 from .learned import ClassifierError, LearnedClassifier, load_model_card, model_card_path
 from .ncc import NccClassifier
-
-CLASSIFIERS = ("auto", "cnn", "ncc")
 
 
 def make_classifier(name: str, catalogue, config=None):

@@ -7,6 +7,7 @@ from typing import Sequence
 import numpy as np
 
 from ..classify import ClassificationResult, classify_segment
+from ..config import PipelineConfig
 
 
 class NccClassifier:
@@ -19,8 +20,6 @@ class NccClassifier:
 
     def __init__(self, catalogue, config=None):
         """``config``: the PipelineConfig whose classification settings apply (None: the defaults)."""
-        from ..config import PipelineConfig
-
         self.catalogue = catalogue
         self.config = config if config is not None else PipelineConfig()
 
