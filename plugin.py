@@ -26,7 +26,7 @@ class SignMapperPlugin:
         missing = missing_modules()
         if missing:
             QgsMessageLog.logMessage(install_hint(missing), LOG_TAG, Qgis.Warning)
-        from .provider.provider import SignMapperProvider
+        from .provider.provider import SignMapperProvider  # after the check: the algorithms may import OpenCV
 
         self.provider = SignMapperProvider()
         QgsApplication.processingRegistry().addProvider(self.provider)
@@ -35,11 +35,12 @@ class SignMapperPlugin:
         self.initProcessing()
         missing = missing_modules()
         if missing and self.iface is not None and self.installer is None:
-            from .opencv_installer import ModuleInstaller
+            from .opencv_installer import ModuleInstaller  # Qt widgets: only with a GUI and something missing
 
             self.installer = ModuleInstaller(self.iface)
             self.installer.offer(missing)  # the hint and an Install… button
         if self.iface is not None and self.review_ui is None:
+            # the docks' Qt widgets and OpenCV: only with a GUI (qgis_process never calls initGui)
             from .review.plugin_ui import ReviewUi
             from .viewer.plugin_ui import ViewerUi
 

@@ -23,6 +23,11 @@ from qgis.PyQt.QtCore import QCoreApplication
 from qgis.PyQt.QtGui import QIcon
 
 from ..dependencies import install_hint, missing_modules
+from ..signmapper_core.errors import OutputFileError
+from ..signmapper_core.output.file_paths import shown
+from ..signmapper_core.output.schema import LANGUAGE_NAMES, LANGUAGES
+from .output_paths import output_problem, path_problems
+from .run_outputs import RunOutputs
 
 ICONS = Path(__file__).resolve().parents[1] / "icons"
 OUTPUTS_HELP = (
@@ -98,7 +103,6 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         """The output language, offered by name after ``first`` (what an algorithm does when none is chosen)."""
         from qgis.core import QgsProcessingParameterEnum
 
-        from ..signmapper_core.output.schema import LANGUAGE_NAMES, LANGUAGES
 
         options = [first] + [LANGUAGE_NAMES[code] for code in LANGUAGES]
         return self.add_parameter(QgsProcessingParameterEnum(name, self.tr("Language of the output"),
@@ -106,7 +110,6 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
 
     def chosen_language(self, parameters, name: str, context):
         """The language code chosen, None for the first option (the algorithm's own default)."""
-        from ..signmapper_core.output.schema import LANGUAGES
 
         choice = self.parameterAsEnum(parameters, name, context)
         return LANGUAGES[choice - 1] if choice > 0 else None
@@ -123,7 +126,6 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         ok, message = super().checkParameterValues(parameters, context)
         if not ok:
             return ok, message
-        from .output_paths import path_problems
 
         try:
             problem = path_problems(self, parameters, context)  # first: Python's own checks raise on such a path
@@ -138,7 +140,6 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
 
     def processAlgorithm(self, parameters, context, feedback):  # noqa: N802
         """:meth:`process` with its file outputs written as partial outputs, moved in only when it returns."""
-        from .run_outputs import RunOutputs
 
         try:
             self.check_outputs(parameters, context)
@@ -163,7 +164,6 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         where Processing logs a failed run's error twice more after printing it. With ``--json`` it prints no
         feedback of a failed run, so there the message goes to the log once, as the only one echoed.
         """
-        from ..signmapper_core.errors import OutputFileError
 
         if isinstance(exc, OutputFileError):
             exc = QgsProcessingException(f"{exc}{written}")
@@ -209,7 +209,6 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
     def check_outputs(self, parameters, context) -> None:
         """The output check of ``checkParameterValues`` at the start of a run (models may skip the former); done
         once per run: once the run holds its outputs, another check would find them busy."""
-        from .output_paths import output_problem
 
         if self.run_outputs is not None:
             return
@@ -249,7 +248,6 @@ class CoreFeedback:
 
 def file_error(exc: OSError) -> str:
     """An OSError as a message naming the file (shortened when very long) and what the system said."""
-    from ..signmapper_core.output.file_paths import shown
 
     where = f"{shown(exc.filename)}: " if exc.filename else ""
     return f"{where}{exc.strerror or exc}"

@@ -32,7 +32,25 @@ from qgis.core import (
 
 from ..gpkg.fields import QT_TYPES
 from ..gpkg.output import GeoPackageLayers, layer_uri
+from ..signmapper_core.changes import schema as changes_schema
+from ..signmapper_core.changes.compare import (
+    CHANGED,
+    CONFIRMED,
+    MOVED,
+    VERDICTS,
+    ChangeConfig,
+    InventorySign,
+    MappedSign,
+    compare,
+    with_height,
+)
+from ..signmapper_core.changes.report import report_html
+from ..signmapper_core.drive.reader import open_drive
+from ..signmapper_core.errors import DriveFormatError
+from ..signmapper_core.evaluation.reference_rows import exact_duplicates, no_geometry_note, repeats_note
+from ..signmapper_core.fusion.mounting import camera_height_above_road
 from ..signmapper_core.output.run_table import RUN_TABLE
+from ..signmapper_core.signalo import SignaloError
 from .base import SignMapperAlgorithm
 from .drive_input import qgis_crs
 from .signalo_connection import HELP as SIGNALO_HELP
@@ -91,7 +109,6 @@ class ChangesAlgorithm(SignMapperAlgorithm):
     DISPLACEMENTS = "DISPLACEMENTS"
 
     def shortHelpString(self):  # noqa: N802
-        from ..signmapper_core.changes import schema as changes_schema
 
         lines = [super().shortHelpString(), "<b>Fields of 'changes'</b>", "<ul>"]
         lines += [f"<li><b>{f.name}</b>: {self.help_html(f.help)}</li>" for f in changes_schema.FIELDS]
@@ -161,15 +178,12 @@ class ChangesAlgorithm(SignMapperAlgorithm):
         self.addOutput(QgsProcessingOutputVectorLayer(self.CHANGES, self.tr("Changes"), QgsProcessing.TypeVectorPoint))
         self.addOutput(QgsProcessingOutputVectorLayer(self.DISPLACEMENTS, self.tr("Displacements"),
                                                       QgsProcessing.TypeVectorLine))
-        from ..signmapper_core.changes.compare import VERDICTS
 
         for verdict in VERDICTS:
             self.addOutput(QgsProcessingOutputNumber(verdict.upper().replace(" ", "_"), self.tr(verdict)))
 
     # inputs -----------------------------------------------------------------------------------------------
     def open_run_drive(self, parameters, context, run: dict):
-        from ..signmapper_core.drive.reader import open_drive
-        from ..signmapper_core.errors import DriveFormatError
 
         folder = self.parameterAsFile(parameters, self.DRIVE, context) or run.get("drive")
         if not folder:
@@ -183,8 +197,6 @@ class ChangesAlgorithm(SignMapperAlgorithm):
     def inventory_from_layer(self, parameters, context, drive_crs, catalogue, feedback):
         import numpy as np
 
-        from ..signmapper_core.changes.compare import InventorySign
-        from ..signmapper_core.evaluation.reference_rows import no_geometry_note
 
         source = self.parameterAsSource(parameters, self.INVENTORY, context)
         type_field = self.parameterAsString(parameters, self.TYPE_FIELD, context) or "template_id"
@@ -221,7 +233,6 @@ class ChangesAlgorithm(SignMapperAlgorithm):
     def without_repeats(inventory: list, where: str, row: str, feedback) -> list:
         """The inventory with each sign that repeats another exactly left out, with a warning (``row``: what the
         inventory's keys are, "fid" or "sign")."""
-        from ..signmapper_core.evaluation.reference_rows import exact_duplicates, repeats_note
 
         repeats = exact_duplicates([s.template_id for s in inventory], [s.position for s in inventory])
         if repeats:
@@ -231,9 +242,7 @@ class ChangesAlgorithm(SignMapperAlgorithm):
     def inventory_from_signalo(self, parameters, context, drive_crs, catalogue, feedback):
         import numpy as np
 
-        from ..signmapper_core.changes.compare import InventorySign
-        from ..signmapper_core.signalo import SignaloError
-        from ..signmapper_core.signalo.inventory import read_inventory
+        from ..signmapper_core.signalo.inventory import read_inventory  # delays OpenCV until used
 
         connection, where = open_signalo(self.parameterAsString(parameters, self.SIGNALO, context))
         try:
@@ -260,10 +269,7 @@ class ChangesAlgorithm(SignMapperAlgorithm):
     def process(self, parameters, context, feedback):
         import numpy as np
 
-        from ..signmapper_core.catalogue import load_catalogue
-        from ..signmapper_core.changes.compare import ChangeConfig, MappedSign, compare
-        from ..signmapper_core.changes.report import report_html
-        from ..signmapper_core.fusion.mounting import camera_height_above_road
+        from ..signmapper_core.catalogue import load_catalogue  # delays OpenCV until used
 
         has_layer = parameters.get(self.INVENTORY) not in (None, "")
         has_signalo = bool(self.parameterAsString(parameters, self.SIGNALO, context))
@@ -326,8 +332,6 @@ class ChangesAlgorithm(SignMapperAlgorithm):
         return results
 
     def write(self, parameters, context, report, drive, run, layer, described) -> None:
-        from ..signmapper_core.changes import schema as changes_schema
-        from ..signmapper_core.changes.compare import CHANGED, CONFIRMED, MOVED, with_height
 
         crs, _note = qgis_crs(drive.crs)
         output = GeoPackageLayers(self.run_outputs.partial(self.OUTPUT))

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from qgis.core import QgsProcessing, QgsProcessingParameterBoolean, QgsProcessingParameterVectorLayer
 
+from ..signmapper_core.output.inventory_export import DELIVERED
 from ..signmapper_core.output.schema import run_language
 from ..signmapper_core.statuses import REVIEW
 from .base import SignMapperAlgorithm
@@ -34,7 +35,6 @@ class DeliverableAlgorithm(SignMapperAlgorithm):
 
     def deliverable_inputs(self, parameters, context) -> tuple:
         """(signs layer, its run table, the statuses delivered, the language: chosen, else the layer's own)."""
-        from ..signmapper_core.output.inventory_export import DELIVERED
 
         layer, run = signs_layer_and_run(self.parameterAsVectorLayer(parameters, self.SIGNS, context))
         language = self.chosen_language(parameters, self.LANGUAGE, context) or run_language(run)

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from qgis.core import QgsCoordinateReferenceSystem, QgsProcessingException
 
+from ..signmapper_core.errors import DriveFormatError
+
 
 def open_drive_or_raise(folder: str, feedback=None):
     """Validate and open the drive; a format error is raised as the user-facing message.
@@ -12,8 +14,7 @@ def open_drive_or_raise(folder: str, feedback=None):
     ``feedback`` (a ``CoreFeedback``) shows progress, cancels (``progress.Cancelled``) and logs the
     drive's warnings (implausible values, an ignored truth.csv).
     """
-    from ..signmapper_core.drive.reader import open_drive
-    from ..signmapper_core.errors import DriveFormatError
+    from ..signmapper_core.drive.reader import open_drive  # delays numpy until used
 
     if not folder:
         raise QgsProcessingException("No drive folder given.")

@@ -29,6 +29,8 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QVariant
 
 from ..gpkg.output import read_run_table
+from ..signmapper_core.errors import DriveFormatError
+from ..signmapper_core.evaluation.reference_rows import exact_duplicates, no_geometry_note, repeats_note
 from ..signmapper_core.statuses import REJECTED
 from .base import SignMapperAlgorithm
 
@@ -150,8 +152,8 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
     def process(self, parameters, context, feedback):
         import numpy as np
 
-        from ..signmapper_core.evaluation.accuracy import COMPONENTS, evaluate, format_report
-        from ..signmapper_core.evaluation.report import missed_rows, report_html, sign_rows
+        from ..signmapper_core.evaluation.accuracy import COMPONENTS, evaluate, format_report  # delays numpy until used
+        from ..signmapper_core.evaluation.report import missed_rows, report_html, sign_rows  # delays numpy until used
 
         signs = self.parameterAsSource(parameters, self.SIGNS, context)
         reference = self.parameterAsSource(parameters, self.REFERENCE, context)
@@ -212,7 +214,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         1.3 stands for the id that reads as that number ("1.30") among the mapped ids and the catalogue
         the signs were mapped with; where none or several do, the number stays as written.
         """
-        from ..signmapper_core.catalogue import load_catalogue
+        from ..signmapper_core.catalogue import load_catalogue  # delays OpenCV and numpy until used
 
         kind = reference.fields().field(field_name).typeName()
         known = set(mapped_ids)
@@ -252,7 +254,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
 
     @staticmethod
     def keep_facing_trajectory(refs: dict, trajectory, feedback) -> dict:
-        from ..signmapper_core.evaluation.visibility import faces_trajectory
+        from ..signmapper_core.evaluation.visibility import faces_trajectory  # delays numpy until used
 
         keep = [i for i, (xyz, facing) in enumerate(zip(refs["xyz"], refs["facing"]))
                 if facing is None or faces_trajectory(xyz, facing, trajectory)]  # unknown facing: kept
@@ -263,7 +265,6 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
     def read_points(source, id_field, height_field, transform, context, skip_rejected=False,
                     facing_field=None, feedback=None) -> dict:
         """Position, id, fid and facing of every feature; those without geometry are left out with a warning."""
-        from ..signmapper_core.evaluation.reference_rows import no_geometry_note
 
         names = source.fields().names()
         if id_field not in names:
@@ -303,7 +304,6 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
     @staticmethod
     def without_repeats(points: dict, source, feedback) -> dict:
         """``points`` (:meth:`read_points`) with each row that repeats another exactly left out, with a warning."""
-        from ..signmapper_core.evaluation.reference_rows import exact_duplicates, repeats_note
 
         repeats = exact_duplicates(points["ids"], points["xyz"])
         if not repeats:
@@ -358,8 +358,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         return {} if layer is None else read_run_table(layer.source().split("|")[0])
 
     def recorded_drive(self, parameters, context):
-        from ..signmapper_core.drive.reader import open_drive
-        from ..signmapper_core.errors import DriveFormatError
+        from ..signmapper_core.drive.reader import open_drive  # delays numpy until used
 
         values = self.recorded_run(parameters, context)
         if "drive" not in values:

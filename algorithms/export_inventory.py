@@ -23,6 +23,7 @@ from qgis.core import (
 from ..gpkg.fields import QT_TYPES
 from ..gpkg.output import CheckedSink, GeoPackageLayers, layer_uri
 from ..review.layers import gpkg_source
+from ..signmapper_core.output import inventory_export as inventory
 from ..signmapper_core.output.partial_output import write_failure
 from .deliverable import DeliverableAlgorithm
 from .signs_input import read_signs
@@ -81,7 +82,6 @@ class ExportInventoryAlgorithm(DeliverableAlgorithm):
         return suffix
 
     def process(self, parameters, context, feedback):
-        from ..signmapper_core.output import inventory_export as inventory
 
         suffix = self.output_format(parameters, context)
         layer, _run, statuses, language = self.deliverable_inputs(parameters, context)

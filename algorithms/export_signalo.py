@@ -13,6 +13,8 @@ from qgis.core import (
     QgsProcessingParameterVectorLayer,
 )
 
+from ..signmapper_core.signalo import SignaloError
+from ..signmapper_core.signalo.schema import check_database
 from ..signmapper_core.statuses import ACCEPTED, MANUAL, REVIEW
 from .base import SignMapperAlgorithm
 from .signalo_connection import HELP as SIGNALO_HELP
@@ -94,9 +96,7 @@ class ExportToSignaloAlgorithm(SignMapperAlgorithm):
     def process(self, parameters, context, feedback):
         import numpy as np
 
-        from ..signmapper_core.signalo import SignaloError
-        from ..signmapper_core.signalo.export import ExportSign, export_signs
-        from ..signmapper_core.signalo.schema import check_database
+        from ..signmapper_core.signalo.export import ExportSign, export_signs  # delays OpenCV until used
 
         layer, run = signs_layer_and_run(self.parameterAsVectorLayer(parameters, self.SIGNS, context))
         run_id = run.get("run_id")

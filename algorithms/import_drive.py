@@ -15,6 +15,8 @@ from qgis.core import (
     QgsProcessingParameterString,
 )
 
+from ..signmapper_core.errors import DriveFormatError, ImportInputError
+from ..signmapper_core.progress import Cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
 
 PRESETS = ("Generic: image folders, calibration file, pose CSV", "KITTI raw drive folder")
@@ -77,7 +79,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
     VERTICAL_DISPARITY = "VERTICAL_DISPARITY"
 
     def initAlgorithm(self, config=None):  # noqa: N802
-        from ..signmapper_core.importdrive.attitude import CONVENTIONS
+        from ..signmapper_core.importdrive.attitude import CONVENTIONS  # delays numpy until used
 
         folder, file = QgsProcessingParameterFile.Folder, QgsProcessingParameterFile.File
         number = QgsProcessingParameterNumber
@@ -201,10 +203,10 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
         ``check``: also compute the poses (quick, no pixels) so that their errors show before the run.
         """
         self.require_dependencies()
-        from ..signmapper_core.errors import ImportInputError
+        # delays numpy until used
         from ..signmapper_core.importdrive import GenericInputs, ImportOptions, Orientation, generic_source
-        from ..signmapper_core.importdrive.importer import plan_import
-        from ..signmapper_core.importdrive.kitti import kitti_source, utm_crs
+        from ..signmapper_core.importdrive.importer import plan_import  # delays numpy until used
+        from ..signmapper_core.importdrive.kitti import kitti_source, utm_crs  # delays numpy until used
 
         self.check_outputs(parameters, context)
         kitti = self.parameterAsEnum(parameters, self.PRESET, context) == 1
@@ -259,9 +261,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
 
     def process(self, parameters, context, feedback):
         source, options, out_dir = self.settings(parameters, context, check=False)
-        from ..signmapper_core.errors import DriveFormatError, ImportInputError
-        from ..signmapper_core.importdrive import import_drive
-        from ..signmapper_core.progress import Cancelled
+        from ..signmapper_core.importdrive import import_drive  # delays numpy until used
 
         feedback.pushInfo(f"Importing {source.label}: {len(source.pairs)} pairs into {out_dir} ({options.output_crs})")
         steps = CoreFeedback(feedback)

@@ -13,6 +13,7 @@ from qgis.core import (
     QgsProcessingParameterFileDestination,
 )
 
+from ..layout.atlas import atlas_layout
 from ..signmapper_core.output.partial_output import write_failure
 from .deliverable import DeliverableAlgorithm
 
@@ -65,8 +66,7 @@ class InventoryAtlasAlgorithm(DeliverableAlgorithm):
         super().check_outputs(parameters, context)
 
     def process(self, parameters, context, feedback):
-        from ..layout.atlas import atlas_layout
-        from ..signmapper_core.catalogue import load_catalogue
+        from ..signmapper_core.catalogue import load_catalogue  # delays OpenCV until used
 
         target = Path(self.output_target(parameters, self.OUTPUT, context))
         layer, run, statuses, language = self.deliverable_inputs(parameters, context)

@@ -23,13 +23,23 @@ from ..gpkg.fields import layer_feature, layer_fields
 from ..gpkg.language import qgis_language
 from ..gpkg.output import GeoPackageLayers, layer_uri
 from ..gpkg.styles import OutputStyler, embed_default_styles
-from ..signmapper_core.errors import ClusterError, MappingError
+from ..signmapper_core.catalogue import load_catalogue
+from ..signmapper_core.drive.clock import drive_start, first_time
+from ..signmapper_core.errors import ClusterError, DriveFormatError, MappingError
+from ..signmapper_core.fusion.signs import FusionConfig
 from ..signmapper_core.output import run_table, schema
 from ..signmapper_core.output.geopackage_file import OUR_TABLES
+from ..signmapper_core.output.run_settings import load_run_settings
+from ..signmapper_core.output.run_table import RunRecordError
 from ..signmapper_core.output.schema import DETECTIONS, SIGNS, OutputContext
+from ..signmapper_core.output.sign_crops import CropFolder
+from ..signmapper_core.pipeline import PipelineConfig
 from ..signmapper_core.pipeline.classifier_names import CLASSIFIER_CHOICES, CLASSIFIERS
+from ..signmapper_core.pipeline.classifiers import ClassifierError, accept_threshold, classifier_for
 from ..signmapper_core.pipeline.config import default, with_settings
 from ..signmapper_core.progress import Cancelled, check_cancelled
+from ..signmapper_core.run.dask_pairs import scheduler_address
+from ..signmapper_core.run.mapping import map_drive
 from ..signmapper_core.sign_colours import SIGN_COLOURS
 from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise, qgis_crs
@@ -233,9 +243,6 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         """(drive folder, catalogue, PipelineConfig, FusionConfig) of the parameters and, when given, the settings
         of an earlier output; QgsProcessingException says what is wrong. Notes on the record go to ``notes``."""
         self.require_dependencies()
-        from ..signmapper_core.catalogue import load_catalogue
-        from ..signmapper_core.fusion.signs import FusionConfig
-        from ..signmapper_core.pipeline import PipelineConfig
 
         folder = self.parameterAsFile(parameters, self.DRIVE, context)
         if not folder or not (Path(folder) / "drive.json").is_file():
@@ -288,7 +295,6 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             config = with_settings(base, changes)
         except ValueError as exc:
             raise QgsProcessingException(str(exc)) from exc
-        from ..signmapper_core.pipeline.classifiers import ClassifierError, classifier_for
 
         try:
             classifier_for(catalogue, config)  # a missing or broken model is said before any work
@@ -301,8 +307,6 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         text = (self.parameterAsString(parameters, self.SCHEDULER, context) or "").strip()
         if not text:
             return None
-        from ..signmapper_core.errors import ClusterError
-        from ..signmapper_core.run.dask_pairs import scheduler_address  # no Dask import: only the address is read
 
         try:
             return scheduler_address(text)
@@ -315,8 +319,6 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         path = self.parameterAsFile(parameters, self.SETTINGS_FROM, context)
         if not path:
             return None
-        from ..signmapper_core.output.run_settings import load_run_settings
-        from ..signmapper_core.output.run_table import RunRecordError
 
         label = self.parameterDefinition(self.SETTINGS_FROM).description()
         try:
@@ -326,7 +328,6 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
 
     @staticmethod
     def report_classifier(catalogue, config, feedback) -> None:
-        from ..signmapper_core.pipeline.classifiers import accept_threshold, classifier_for
 
         classifier = classifier_for(catalogue, config)
         feedback.pushInfo(f"Classifier: {classifier.name}; status 'accepted' from a classification indicator of "
@@ -362,8 +363,6 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         unchanged = self.run_outputs.unchanged()
         crops = None
         if self.parameterAsBoolean(parameters, self.CROPS, context):
-            from ..signmapper_core.output.sign_crops import CropFolder  # OpenCV: imported only when a run needs it
-
             crops = CropFolder(path)
             self.run_outputs.add(crops.output)
         max_skipped = self.parameterAsDouble(parameters, self.MAX_SKIPPED, context) / 100.0
@@ -411,8 +410,6 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
     @staticmethod
     def output_context(drive, catalogue, language, result, crops, feedback) -> OutputContext:
         """Language, the drive's clock and, when asked for, the crops written (in the partial folder)."""
-        from ..signmapper_core.drive.clock import drive_start, first_time
-        from ..signmapper_core.errors import DriveFormatError
 
         try:
             start = drive_start(drive)
@@ -444,7 +441,6 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         discards its output. ``workers``: processes mapping the pairs (0 = all cores); ``scheduler``: a Dask
         scheduler address instead (the cancel button cancels the cluster's tasks).
         """
-        from ..signmapper_core.run.mapping import map_drive
 
         steps = CoreFeedback(feedback, 5, 92)
         result = map_drive(drive, catalogue, config, steps.progress, steps.is_cancelled, steps.warn,

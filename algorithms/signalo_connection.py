@@ -9,6 +9,8 @@ from qgis.core import (
     QgsProviderRegistry,
 )
 
+from ..signmapper_core.signalo import SignaloError, connect
+
 HELP = ("Signalo database: one of the PostgreSQL connections saved in QGIS (Browser ▸ PostgreSQL ▸ New "
         "Connection; a connection may name a pg_service.conf service). From qgis_process, a script or a model it "
         "may also be a service written service=NAME, or libpq parameters such as 'host=… dbname=signalo user=…'.")
@@ -39,7 +41,6 @@ def conninfo(text: str) -> tuple[str, str]:
 
 def open_signalo(text: str):
     """(psycopg2 connection, name for messages); QgsProcessingException with the reason if it cannot be opened."""
-    from ..signmapper_core.signalo import SignaloError, connect
 
     info, where = conninfo(text)
     try:

@@ -84,7 +84,7 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
 
     def process(self, parameters, context, feedback):
         self.require_dependencies()
-        from ..signmapper_core.simulate import SimulationConfig, generate_drive
+        from ..signmapper_core.simulate import SimulationConfig, generate_drive  # delays OpenCV and numpy until used
 
         out_dir = self.parameterAsString(parameters, self.OUTPUT, context)
         config = SimulationConfig(

@@ -38,7 +38,7 @@ def layer_feature(fields: QgsFields, layer: str, item, context=None) -> QgsFeatu
 
 def declared_fields(layer: str) -> tuple:
     """The declared fields of one of our layers: a mapping run's (``output.schema``) or ``changes``."""
-    from ..signmapper_core.changes import schema as changes_schema
+    from ..signmapper_core.changes import schema as changes_schema  # delays numpy until used
 
     return changes_schema.FIELDS if layer == changes_schema.CHANGES else schema.fields(layer)
 

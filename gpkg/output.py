@@ -26,7 +26,7 @@ from qgis.core import (
 from qgis.PyQt.QtCore import QVariant
 
 from ..signmapper_core.output.partial_output import write_failure
-from ..signmapper_core.output.run_table import RUN_TABLE, encode_run_value
+from ..signmapper_core.output.run_table import RUN_TABLE, RunRecordError, encode_run_value, read_run_record
 
 
 class CheckedSink:
@@ -131,7 +131,6 @@ def layer_uri(path: str, layer: str) -> str:
 
 def read_run_table(path: str) -> dict:
     """The run table of the GeoPackage ``path`` as written (``output.run_table.RUN_KEYS``); {} where there is none."""
-    from ..signmapper_core.output.run_table import RunRecordError, read_run_record
 
     if not path:
         return {}

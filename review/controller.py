@@ -15,6 +15,8 @@ from qgis.PyQt.QtCore import pyqtSignal
 from qgis.PyQt.sip import isdeleted
 
 from ..gpkg.output import read_run_table
+from ..signmapper_core.catalogue import load_catalogue
+from ..signmapper_core.catalogue.names import sign_name
 from ..ui.template_picker import TemplateChoice
 from .background import BackgroundRunner, Jobs
 from .decisions import DecisionTaker
@@ -147,8 +149,6 @@ class ReviewController(DockController):
         self.dock.set_pairs([rec.id for rec in drive.pairs] if drive else [])
 
     def _load_catalogue(self) -> None:
-        from ..signmapper_core.catalogue import load_catalogue
-        from ..signmapper_core.catalogue.names import sign_name
 
         folder = self.session.run.get("catalogue")
         key = folder if folder and (Path(folder) / "catalogue.json").is_file() else None

@@ -13,6 +13,7 @@ from ..gpkg.fields import feature_values
 from ..signmapper_core.catalogue.model import UNKNOWN_ID
 from ..signmapper_core.changes.schema import CHANGES
 from ..signmapper_core.output.schema import SIGNS
+from ..signmapper_core.run.mapping import detect_at, manual_sign
 from ..signmapper_core.statuses import MANUAL
 from .edits import DecisionLog, EditError, add_feature, change_attributes
 from .layers import features_where
@@ -116,7 +117,6 @@ class DecisionTaker:
         if session.layer is None or record is None or session.catalogue is None:
             self.dock.show_message("Adding a sign needs a Sign Mapper layer and its drive's images", error=True)
             return
-        from ..signmapper_core.run.mapping import detect_at
 
         drive, catalogue, config, layer = session.drive, session.catalogue, session.pipeline_config(), session.layer
 
@@ -153,7 +153,6 @@ class DecisionTaker:
 
     def _add(self, observation) -> None:
         """A feature for the clicked sign: the observation itself, or in a signs layer a new sign numbered last."""
-        from ..signmapper_core.run.mapping import manual_sign
 
         layer, kind = self.session.layer, self.session.kind
         if kind == CHANGES:

@@ -73,7 +73,7 @@ class DriveLocator:
         if folder is None:
             return None
         if folder not in self._drives:
-            from ..signmapper_core.drive.reader import open_drive
+            from ..signmapper_core.drive.reader import open_drive  # delays numpy until used
 
             # image headers are not checked here: a long drive would block the GUI; a bad image shows when loaded
             self._drives[folder] = open_drive(folder, check_images=False)

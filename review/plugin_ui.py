@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..dock_ui import DockUi
+from ..ui.review_dock import ReviewDock
 
 
 class ReviewUi(DockUi):
@@ -23,8 +24,7 @@ class ReviewUi(DockUi):
         super().__init__(iface)
 
     def build(self):
-        from ..ui.review_dock import ReviewDock
-        from .controller import ReviewController
+        from .controller import ReviewController  # delays OpenCV and numpy until used
 
         dock = ReviewDock(self.iface.mainWindow())
         controller = ReviewController(self.iface, dock, self.ask_drive_folder)

@@ -8,6 +8,10 @@ from __future__ import annotations
 
 from typing import Callable, Optional
 
+from ..signmapper_core.drive.clock import drive_start, first_time
+from ..signmapper_core.output.run_settings import run_settings
+from ..signmapper_core.output.run_table import RunRecordError
+from ..signmapper_core.output.schema import OutputContext, run_language
 from ..ui.review_item import ReviewItem
 
 
@@ -42,14 +46,11 @@ class ReviewSession:
     @property
     def language(self) -> str:
         """The language the run wrote its names in (German for files from before it was recorded)."""
-        from ..signmapper_core.output.schema import run_language
 
         return run_language(self.run)
 
     def output_context(self):
         """How the run wrote its rows (language, drive clock): what an added sign is written with."""
-        from ..signmapper_core.drive.clock import drive_start, first_time
-        from ..signmapper_core.output.schema import OutputContext
 
         start = None
         if self.drive is not None:
@@ -64,8 +65,7 @@ class ReviewSession:
         """The settings the run was mapped with: its whole recorded configuration (``run_settings``); for a run
         recorded before settings were saved whole, its near/far, colours, exclusions, thresholds and classifier
         (defaults for anything missing or invalid)."""
-        from ..signmapper_core.output.run_settings import run_settings
-        from ..signmapper_core.output.run_table import RunRecordError
+        # delays numpy until used
         from ..signmapper_core.pipeline.config import SECTION_OF, PipelineConfig, with_settings
 
         try:

@@ -10,6 +10,7 @@ from typing import Optional
 
 from ..gpkg.fields import layer_feature
 from ..signmapper_core.output.schema import DEFAULT_LANGUAGE, OutputContext, template_values
+from ..signmapper_core.plates.text import normalise_text
 from ..signmapper_core.statuses import ACCEPTED, MANUAL, REJECTED
 
 DEFAULT_FORMAT = "normal"
@@ -28,9 +29,8 @@ def plate_text_values(text: str, current_status: str, current_template_id: str =
     """A person read the plate and set its text: certain (confidence 1), the plate accepted and reviewed.
     Spelt as the mapping writes texts (``plate_text``): lines joined by " / ". A text plate (or one mapped
     untyped) is typed again by what it now says (``plate_types``), named in ``context``'s language."""
-    from ..signmapper_core.catalogue.plates_ch import TEXT, kind_of
-    from ..signmapper_core.plates.text import normalise_text
-    from ..signmapper_core.plates.types import text_plate_id
+    from ..signmapper_core.catalogue.plates_ch import TEXT, kind_of  # delays OpenCV and numpy until used
+    from ..signmapper_core.plates.types import text_plate_id  # delays OpenCV and numpy until used
 
     lines = [line for line in text.replace("\n", " / ").split("/")]
     written = normalise_text(lines)

@@ -24,6 +24,12 @@ import time
 from pathlib import Path
 from typing import Optional
 
+from .drive.clock import drive_start, first_time
+from .errors import ClusterError, DriveFormatError, MappingError
+from .output.geopackage_file import OutputFileError
+from .output.gpkg_writer import write_geopackage
+from .output.run_settings import load_run_settings
+from .output.run_table import RunRecordError
 from .output.schema import LANGUAGES, OutputContext, language_of
 
 PRINT_EVERY_S = 5.0  # a progress line at most this often
@@ -89,11 +95,10 @@ def environment_language() -> str:
 
 def settings(args, say):
     """(catalogue, PipelineConfig, FusionConfig) of the arguments and, when given, an earlier output's record."""
-    from .catalogue import load_catalogue
-    from .fusion.signs import FusionConfig
-    from .output.run_settings import load_run_settings
-    from .pipeline import PipelineConfig
-    from .pipeline.config import with_settings
+    from .catalogue import load_catalogue  # delays OpenCV and numpy until used
+    from .fusion.signs import FusionConfig  # delays OpenCV and numpy until used
+    from .pipeline import PipelineConfig  # delays numpy until used
+    from .pipeline.config import with_settings  # delays numpy until used
 
     earlier = load_run_settings(args.settings_from, say) if args.settings_from else None
     folder = args.catalogue or (earlier.catalogue if earlier is not None else None)
@@ -124,11 +129,9 @@ class Printer:
 
 def map_one(folder: Path, target: Path, catalogue, config, fusion, args, scheduler) -> str:
     """Map the drive at ``folder`` (on the cluster when ``scheduler`` is a client) and write ``target``."""
-    from .drive.clock import drive_start, first_time
-    from .drive.reader import open_drive
-    from .output.gpkg_writer import write_geopackage
-    from .output.sign_crops import CropFolder
-    from .run.mapping import map_drive
+    from .drive.reader import open_drive  # delays numpy until used
+    from .output.sign_crops import CropFolder  # delays OpenCV until used
+    from .run.mapping import map_drive  # delays OpenCV and numpy until used
 
     printer = Printer(folder.name)
     drive = open_drive(folder, progress=None)
@@ -161,10 +164,7 @@ def map_one(folder: Path, target: Path, catalogue, config, fusion, args, schedul
 def main(argv: Optional[list[str]] = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
-    from .errors import ClusterError, DriveFormatError, MappingError
-    from .output.geopackage_file import OutputFileError
-    from .output.run_table import RunRecordError
-    from .pipeline.classifiers import ClassifierError
+    from .pipeline.classifiers import ClassifierError  # delays OpenCV and numpy until used
 
     drives = [Path(d) for d in args.drives]
     try:
@@ -180,7 +180,7 @@ def main(argv: Optional[list[str]] = None) -> int:
     try:
         catalogue, config, fusion = settings(args, Printer.warn)
         if args.scheduler:
-            from .run.dask_pairs import connect
+            from .run.dask_pairs import connect  # delays numpy until used
 
             client = connect(args.scheduler, args.connect_timeout)  # before any work: an unreachable one says so
             threads = sum(client.nthreads().values())

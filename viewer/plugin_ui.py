@@ -7,6 +7,7 @@ from pathlib import Path
 from qgis.PyQt.QtCore import Qt
 
 from ..dock_ui import DockUi
+from ..ui.drive_viewer import DriveViewerDock
 
 
 class ViewerUi(DockUi):
@@ -37,8 +38,7 @@ class ViewerUi(DockUi):
             self.controller.show_pair(layer, pair_id)
 
     def build(self):
-        from ..ui.drive_viewer import DriveViewerDock
-        from .controller import DriveViewerController
+        from .controller import DriveViewerController  # delays OpenCV and numpy until used
 
         dock = DriveViewerDock(self.iface.mainWindow())
         return dock, DriveViewerController(self.iface, dock, self.ask_drive_folder, add_sign=self._add_sign)

@@ -13,7 +13,7 @@ from typing import Callable
 import numpy as np
 
 from . import shapes
-from .drawing import Drawing, FillEllipse, FillPoly
+from .drawing import Drawing, FillEllipse, FillPoly, StrokeLine
 from .pen import Pen
 from .style import FaceStyle
 
@@ -104,7 +104,6 @@ def diagonal_stripes(pen_drawing: Drawing, clip_outline, colour: str = "black", 
                      spacing: float = 0.045, width: float = 0.014, angle_deg: float = -45.0,
                      centre=(0.5, 0.5)):
     """Thin parallel stripes (end-of-restriction band) clipped to a convex outline."""
-    from .drawing import StrokeLine
 
     a = math.radians(angle_deg)
     d = np.array([math.cos(a), math.sin(a)])

@@ -12,11 +12,12 @@ from dataclasses import dataclass
 from typing import Callable
 
 from . import formats as F
-from . import frames
+from . import frames, shapes
 from . import pictograms as pg
 from .drawing import Drawing
 from .pen import Pen
 from .style import FaceStyle
+from .text_panels import TEXT_PANELS
 
 
 @dataclass(frozen=True)
@@ -80,7 +81,6 @@ def info(id_, de, fr, it, content, colour="blue"):
 def end_sign(id_, de, fr, it, content):
     def draw(st):
         d = frames.disc(st, content, fill="white", rim_colour=None, edge="grey")
-        from . import shapes
         frames.diagonal_stripes(d, shapes.regular_polygon(32, 0.5, 0.5, 0.47), "black", n=5, spacing=0.05,
                                 width=0.016 * st.stroke_scale)
         return d
@@ -193,7 +193,6 @@ def _general_limit(end: bool):
     def draw(st):
         d = frames.disc(st, content, rim_colour=ring, rim=0.17)
         if end:
-            from . import shapes
             frames.diagonal_stripes(d, shapes.regular_polygon(32, 0.5, 0.5, 0.33), "black", n=5, spacing=0.05,
                                     width=0.016 * st.stroke_scale)
         return d
@@ -367,7 +366,6 @@ _add("3.03", "Hauptstrasse", "Route principale", "Strada principale", "yellow", 
 
 def _end_main_road(st):
     d = frames.diamond(st)
-    from . import shapes
     inner = shapes.inset_convex([(0.5, 0), (1, 0.5), (0.5, 1), (0, 0.5)], 0.1)
     frames.diagonal_stripes(d, inner, "black", n=5, spacing=0.04, width=0.016 * st.stroke_scale, angle_deg=45)
     return d
@@ -444,7 +442,6 @@ def _text_panel(lines, aspect: float, bar: bool = False):
 
 
 def _text_panel_entry(id_, de, fr, it, lines, bar=False):
-    from .text_panels import TEXT_PANELS
 
     w, h = TEXT_PANELS[id_].nominal
     _add(id_, de, fr, it, "white", "rectangle", {"normal": (w, h)}, False, _text_panel(lines, w / h, bar))

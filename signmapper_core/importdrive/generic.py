@@ -6,6 +6,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Optional
 
+from ..errors import ImportInputError
 from .attitude import convention
 from .calibration import read_calibrations
 from .camera_poses import Orientation
@@ -46,8 +47,6 @@ def generic_source(inputs: GenericInputs) -> DriveSource:
     if inputs.image_times is not None:
         times = {k: t for k, (t, _line) in read_image_times(inputs.image_times).items()}
     elif inputs.trajectory:
-        from ..errors import ImportInputError
-
         raise ImportInputError(inputs.poses, "a trajectory is interpolated to the image times: give the image times "
                                "(a CSV with id,time)")
     return DriveSource(

@@ -26,6 +26,7 @@ import numpy as np
 
 from ..drive.atomic_folder import writing_folder
 from ..drive.images import IMAGE_SUFFIXES, image_header, read_image
+from ..drive.reader import open_drive
 from ..drive.writer import write_drive_json, write_image, write_poses_csv
 from ..errors import ImportInputError
 from ..geometry import Camera, Pose
@@ -147,8 +148,6 @@ def import_drive(out_dir, source: DriveSource, options: Optional[ImportOptions] 
         write_drive_json(tmp, options.output_crs, plan.rectifier.camera, **metadata)
         write_poses_csv(tmp, [(pair.id, t, pose) for pair, t, pose in zip(plan.pairs, plan.times, plan.poses)])
         report(progress, 0.97, "validating the written drive")
-        from ..drive.reader import open_drive
-
         written = open_drive(tmp, is_cancelled=is_cancelled)
         for message in written.warnings:
             note(message.replace(str(tmp), str(out_dir)))

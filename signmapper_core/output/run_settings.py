@@ -114,7 +114,7 @@ def pipeline_config_of(data: dict, where: str, warn: Optional[WarnCallback] = No
     sections and settings are passed to ``warn`` and ignored; values a section
     refuses raise :class:`RunRecordError` naming ``where``.
     """
-    from ..pipeline.config import SECTION_OF, SECTIONS, PipelineConfig
+    from ..pipeline.config import SECTION_OF, SECTIONS, PipelineConfig  # delays numpy until used
 
     if not isinstance(data, dict):
         raise RunRecordError(f"{where}: expected a JSON object of settings, found {type(data).__name__}")
@@ -147,7 +147,7 @@ class RunSettings:
 
 def run_settings(record: dict, where: str, warn: Optional[WarnCallback] = None) -> RunSettings:
     """The settings of a run record (:func:`read_run_record`); ``where`` names it in messages."""
-    from ..fusion.signs import FusionConfig
+    from ..fusion.signs import FusionConfig  # delays OpenCV and numpy until used
 
     software = record.get("software", "an unknown program")
     version = record.get("settings_version")

@@ -22,7 +22,10 @@ from dataclasses import field as dc_field
 from datetime import datetime, timedelta
 from typing import Any, Callable, Optional
 
+from ..plates.formats import PLATE_ID, PLATE_NAMES
 from ..statuses import ACCEPTED, MANUAL, REJECTED, REVIEW
+from .classifier_alternatives import detection_alternatives, format_alternatives, sign_alternatives
+from .review_reasons import reason_shown
 
 SIGNS, DETECTIONS = "signs", "detections"
 LAYERS = (SIGNS, DETECTIONS)
@@ -60,9 +63,8 @@ class OutputContext:
     crops: dict = dc_field(default_factory=dict)  # sign_id -> crop image path relative to the GeoPackage
 
     def name(self, template_id: str, fallback: str) -> str:
-        from ..catalogue.model import UNKNOWN_ID
-        from ..catalogue.names import sign_name, unknown_name
-        from ..plates.formats import PLATE_ID, PLATE_NAMES
+        from ..catalogue.model import UNKNOWN_ID  # delays OpenCV and numpy until used
+        from ..catalogue.names import sign_name, unknown_name  # delays OpenCV and numpy until used
 
         if template_id == PLATE_ID:
             return PLATE_NAMES.get(self.language, PLATE_NAMES["en"])
@@ -71,7 +73,7 @@ class OutputContext:
         if self.catalogue is not None and template_id in self.catalogue:
             return sign_name(self.catalogue[template_id], self.language)
         if self.catalogue is not None and getattr(self.catalogue, "folder", None) is not None:
-            from ..plates.catalogue import load_plate_templates, template_by_id
+            from ..plates.catalogue import load_plate_templates, template_by_id  # delays numpy until used
 
             plate = template_by_id(load_plate_templates(self.catalogue.folder), template_id)
             if plate is not None:  # a pictogram plate; English: the German name, as for signs without one
@@ -147,19 +149,17 @@ def _coordinate(i: int) -> dict:
 
 
 def _sign_name(entry, language: str) -> str:
-    from ..catalogue.names import sign_name
+    from ..catalogue.names import sign_name  # delays OpenCV and numpy until used
 
     return sign_name(entry, language)
 
 
 def _review_reason(item) -> Optional[str]:
-    from .review_reasons import reason_shown
 
     return reason_shown(item)
 
 
 def _alternatives_text(item, sign: bool = False) -> Optional[str]:
-    from .classifier_alternatives import detection_alternatives, format_alternatives, sign_alternatives
 
     return format_alternatives(sign_alternatives(item) if sign else detection_alternatives(item))
 

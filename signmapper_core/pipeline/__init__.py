@@ -14,7 +14,7 @@ __all__ = ["Detection", "PipelineConfig", "detect_in_window", "detect_pair"]
 
 def __getattr__(name):
     if name in ("detect_pair", "detect_in_window"):
-        from . import detect
+        from . import detect  # delays OpenCV until used
 
         return getattr(detect, name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -21,7 +21,7 @@ from .boxes import box_iou
 from .classify import canonical_template
 from .colour import hsv_mask
 from .config import TEMPLATE_GEOMETRY
-from .shape import classify_shape
+from .shape import IDEAL_POLYGONS, classify_shape
 
 FULL = (0.0, 0.0, 1.0, 1.0)
 _cache: Dict[tuple, tuple] = {}
@@ -330,7 +330,6 @@ def measured_rim_bbox(image: np.ndarray, segment_bbox, segment_mask: np.ndarray,
 
 def outline_samples(shape: str, count: int) -> Tuple[np.ndarray, np.ndarray]:
     """(points, outward normals), each (N, 2), evenly along the ideal outline of ``shape`` in the unit box."""
-    from .shape import IDEAL_POLYGONS
 
     if shape not in IDEAL_POLYGONS:  # a circle (or an unknown shape: its inscribed ellipse)
         t = np.linspace(0.0, 2.0 * np.pi, count, endpoint=False)

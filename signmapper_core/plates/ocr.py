@@ -48,7 +48,7 @@ def _settings(config):
     """The run's fusion settings (``fusion.FusionConfig``), which hold the OCR's; the defaults for None."""
     if config is not None:
         return config
-    from ..fusion.signs import FusionConfig
+    from ..fusion.signs import FusionConfig  # delays OpenCV until used
 
     return FusionConfig()
 

@@ -26,6 +26,8 @@ from pathlib import Path
 from typing import Optional
 
 from .. import __version__
+from ..output.run_settings import pipeline_config_of
+from ..output.run_table import settings_dict
 
 WORKER_PACKAGE = "signmapper_core"  # the core's name on a worker: its PYTHONPATH holds the plugin folder
 TASK_MODULE = f"{WORKER_PACKAGE}.{__name__.rpartition(WORKER_PACKAGE + '.')[2]}"  # this module, on a worker
@@ -78,8 +80,7 @@ def worker_report() -> dict:
 def pair_job(drive, record, catalogue, config, detect=None) -> dict:
     """The job of one pair: the drive's paths, camera and the pair's pose; the catalogue folder (None: the
     worker's own bundled catalogue) and the pipeline settings as JSON-ready dicts."""
-    from ..catalogue.model import DEFAULT_CATALOGUE_DIR
-    from ..output.run_table import settings_dict
+    from ..catalogue.model import DEFAULT_CATALOGUE_DIR  # delays OpenCV and numpy until used
 
     folder = Path(catalogue.folder)
     bundled = folder.resolve() == DEFAULT_CATALOGUE_DIR.resolve()
@@ -102,7 +103,7 @@ def _path(text) -> Optional[Path]:
 
 @lru_cache(maxsize=4)
 def _catalogue(folder: Optional[str]):
-    from ..catalogue import load_catalogue
+    from ..catalogue import load_catalogue  # delays OpenCV and numpy until used
 
     return load_catalogue(folder)
 
@@ -110,7 +111,6 @@ def _catalogue(folder: Optional[str]):
 @lru_cache(maxsize=8)
 def _config(settings: str):
     """The PipelineConfig of a job's settings (as sorted JSON, so a worker builds each config once)."""
-    from ..output.run_settings import pipeline_config_of
 
     return pipeline_config_of(json.loads(settings), "pipeline settings of the job")
 
@@ -143,9 +143,9 @@ def map_pair_task(job: dict) -> dict:
     """Run on a worker: map the pair of ``job`` (reading its files from the shared path), return plain data."""
     import cv2
 
-    from ..drive.reader import Drive, PairRecord
-    from ..geometry import Camera, Pose
-    from .pair import map_pair
+    from ..drive.reader import Drive, PairRecord  # delays numpy until used
+    from ..geometry import Camera, Pose  # delays numpy until used
+    from .pair import map_pair  # delays numpy until used
 
     heap_for_images()
     cv2.setNumThreads(1)  # a worker runs a pair per thread: the cores are shared out by Dask's threads
@@ -162,8 +162,8 @@ def map_pair_task(job: dict) -> dict:
 
 def pair_result(data: dict, record):
     """The client's ``mapping.PairResult`` of a worker's answer, for the client's own ``record``."""
-    from ..pipeline.detection import Detection
-    from .pair import PairResult
+    from ..pipeline.detection import Detection  # delays numpy until used
+    from .pair import PairResult  # delays numpy until used
 
     if data["index"] != record.index:
         raise ValueError(f"a worker answered for pair index {data['index']}, expected {record.index} ({record.id})")

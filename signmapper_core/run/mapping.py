@@ -26,6 +26,9 @@ from ..errors import MappingError
 from ..fusion.mounting import camera_height_above_road, mounting_height
 from ..fusion.signs import FusedSign, FusionConfig, Observation, azimuth_deg, fuse_observations
 from ..output.run_table import run_record
+from ..pipeline import detect_in_window
+from ..pipeline.classifiers import accept_threshold, classifier_for
+from ..pipeline.face_extent import carried_discs
 from ..plates.fusion import fuse_plates, is_plate, read_plate_texts
 from ..plates.number_check import check_speed_numbers, speed_limit_signs
 from ..plates.printed_numbers import printed_numbers
@@ -134,8 +137,6 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     here. ``ClusterError`` when the cluster cannot be used, before any pair.
     ``detect``: see :func:`map_pairs`.
     """
-    from ..pipeline.classifiers import accept_threshold, classifier_for
-    from ..pipeline.face_extent import carried_discs
 
     classifier = classifier_for(catalogue, config)  # a missing or broken model fails here, before any pair
     unread = classifier.unknown(catalogue.ids()) if hasattr(classifier, "unknown") else []
@@ -204,7 +205,6 @@ def detect_at(drive: Drive, record: PairRecord, catalogue, config, u: float, v: 
 
     The same detection steps run in a window around the click (``detect_in_window``).
     """
-    from ..pipeline import detect_in_window
 
     left, depth, right = load_pair(drive, record)
     detection = detect_in_window(left, depth, right, drive.camera, record.pose, catalogue, config, (u, v),

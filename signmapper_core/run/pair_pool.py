@@ -169,7 +169,7 @@ def _start_worker(run_file: str, opencv_threads: int, templates: Optional[Templa
     with open(run_file, "rb") as source:
         drive, catalogue, config, detect = pickle.load(source)
     cv2.setNumThreads(opencv_threads)
-    from ..pipeline.classifiers import classifier_for
+    from ..pipeline.classifiers import classifier_for  # delays OpenCV until used
     from ..pipeline.detect import detect_pair  # noqa: F401  (imported lazily by the package)
 
     try:
@@ -178,7 +178,7 @@ def _start_worker(run_file: str, opencv_threads: int, templates: Optional[Templa
         pass
     rendered = templates.receive() if templates is not None else None
     if rendered:
-        from ..pipeline.classify import seed_canonical_templates
+        from ..pipeline.classify import seed_canonical_templates  # delays OpenCV until used
 
         seed_canonical_templates(catalogue, rendered)
     _worker_state.update(drive=drive, catalogue=catalogue, config=config, detect=detect)
@@ -194,7 +194,7 @@ def _map_in_worker(index: int):
 
 def _is_project_catalogue(catalogue) -> bool:
     """Whether ``catalogue`` is one of the project's (a test's stand-in has no templates to render)."""
-    from ..catalogue import Catalogue
+    from ..catalogue import Catalogue  # delays OpenCV until used
 
     return isinstance(catalogue, Catalogue)
 
@@ -238,7 +238,7 @@ def pooled_pairs(drive, catalogue, config, workers: int, is_cancelled: Optional[
         except (OSError, BrokenProcessPool) as exc:  # the system refused new processes
             raise PoolNotStarted(str(exc)) from exc
         if handoff is not None:
-            from ..pipeline.classify import canonical_templates
+            from ..pipeline.classify import canonical_templates  # delays OpenCV until used
 
             # rendered here once for all, on every core while the workers wait for them after their imports
             handoff.send(canonical_templates(catalogue, threads=available_cores()))

@@ -32,6 +32,9 @@ from typing import Optional, Sequence
 
 import numpy as np
 
+from ..catalogue.plates_ch import FREE_TEXT_PLATES, RIGHT, direction_of, signalo_id
+from ..plates.formats import PLATE_ID
+from ..plates.types import inscriptions, text_plate_id
 from ..statuses import REVIEW
 from .schema import OFFICIAL_SIGN_TYPE, SCHEMA, SignaloError, check_database
 from .types import to_signalo
@@ -107,9 +110,6 @@ def plate_type(plate: ExportSign, official_ids) -> Optional[tuple[str, list, boo
     """(Signalo official sign id, inscriptions, natural direction or left) of a supplementary plate, None if
     Signalo has no such type. A plate mapped untyped (``plate``: its text not read, or a run of before plates
     were typed) is typed by its text here, a 5.00-1 without one."""
-    from ..catalogue.plates_ch import FREE_TEXT_PLATES, RIGHT, direction_of, signalo_id
-    from ..plates.formats import PLATE_ID
-    from ..plates.types import inscriptions, text_plate_id
 
     template_id = plate.template_id
     if template_id == PLATE_ID:

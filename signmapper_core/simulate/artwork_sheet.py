@@ -13,6 +13,7 @@ import sys
 import cv2
 import numpy as np
 
+from ..catalogue import load_catalogue
 from .face_artwork import OTHER_PICTOGRAM, has_procedural, master_face, procedural_face
 
 PER_ROW = 6
@@ -42,7 +43,6 @@ def artwork_sheet(template_ids, size_px: int, rng: np.random.Generator) -> np.nd
 
 
 def main(argv=None) -> int:
-    from ..catalogue import load_catalogue
 
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("out", help="PNG to write")

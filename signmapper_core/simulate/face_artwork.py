@@ -19,6 +19,10 @@ from pathlib import Path
 import cv2
 import numpy as np
 
+from ..catalogue import FaceStyle, load_catalogue, render_face
+from ..catalogue.model import DEFAULT_CATALOGUE_DIR, Catalogue
+from ..catalogue.signs_ch import SIGNS
+
 MASTER, PROCEDURAL = "master", "procedural"
 MASTER_CACHE_PX = 800  # masters are kept at most this large: faces are at most 640 px
 POINTED_END = 0.8  # a panel's end whose outline covers less than this share of the other end's is its point
@@ -67,7 +71,6 @@ def choose_artwork(rng: np.random.Generator, master_share: float) -> str:
 
 def has_procedural(template_id: str) -> bool:
     """Whether the catalogue's procedural drawer knows the sign (a catalogue may carry others)."""
-    from ..catalogue.signs_ch import SIGNS
 
     return template_id in SIGNS
 
@@ -75,7 +78,6 @@ def has_procedural(template_id: str) -> bool:
 @lru_cache(maxsize=1)
 def _entries() -> dict:
     """The bundled catalogue's entries (their drawings' paths), read once."""
-    from ..catalogue import load_catalogue
 
     return load_catalogue().entries
 
@@ -91,7 +93,6 @@ def drawing_stems(template_id: str) -> tuple[str, ...]:
 def _master(template_id: str, drawing: int = 0) -> tuple[np.ndarray, np.ndarray]:
     """(bgr, alpha) of the bundled catalogue's master (``drawing`` 0) or its ``drawing``-th variant, reduced to
     MASTER_CACHE_PX on its longer side."""
-    from ..catalogue.model import DEFAULT_CATALOGUE_DIR, Catalogue
 
     catalogue = Catalogue(DEFAULT_CATALOGUE_DIR, _entries())  # a fresh catalogue: its full-size cache is dropped
     bgr, alpha = catalogue.master(template_id) if drawing == 0 else catalogue.variant_masters(template_id)[drawing - 1]
@@ -139,7 +140,6 @@ def master_face(template_id: str, size_wh: tuple[int, int], rng: np.random.Gener
 def procedural_face(template_id: str, size_wh: tuple[int, int], rng: np.random.Generator
                     ) -> tuple[np.ndarray, np.ndarray]:
     """The catalogue's procedural drawing at (w, h) with a random style drawn from ``rng``."""
-    from ..catalogue import FaceStyle, render_face
 
     w, h = int(size_wh[0]), int(size_wh[1])
     style = FaceStyle.random(rng, strength=float(rng.uniform(0.5, 1.0)))

@@ -18,6 +18,8 @@ from dataclasses import dataclass, fields
 import cv2
 import numpy as np
 
+from ..catalogue import load_catalogue
+from ..catalogue.text_panels import is_text_panel
 from . import face_dirt, face_marks, face_print, face_sheeting, face_wear
 from .face_artwork import (
     MASTER,
@@ -82,7 +84,6 @@ def sign_kinds(colours: tuple[str, ...] = SIGN_COLOURS) -> list[SignKind]:
 
     Only the signs the procedural drawer knows (``has_procedural``): the generator prints each either way.
     """
-    from ..catalogue import load_catalogue
 
     catalogue = load_catalogue()
     kinds = []
@@ -102,7 +103,6 @@ def white_sign_kinds() -> list[SignKind]:
     Without the generic text panels (4.29, 4.30, 4.33): their wording and size change from panel to panel,
     so they are set from text (``text_panel_poles``), never printed from a master image.
     """
-    from ..catalogue.text_panels import is_text_panel
 
     return [k for k in sign_kinds(("white",)) if not is_text_panel(k.template_id)]
 

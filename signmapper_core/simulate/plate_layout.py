@@ -21,9 +21,14 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..catalogue.model import DEFAULT_CATALOGUE_DIR
+from ..catalogue.plates_ch import signalo_id
 from ..drive.reader import TruthSign
+from ..plates.catalogue import load_plate_templates
 from ..plates.formats import plate_formats_for
 from ..plates.text import EXCEPT_WORDS, WEEKDAYS
+from . import face_dirt, face_print, face_wear
+from .face_layers import ink_layers
 from .panels import PlacedSign, face_shape
 from .plate_faces import draw_in_field, draw_plate
 from .surfaces import Texture, TextureSource, rect_surface
@@ -103,7 +108,6 @@ def plate_lines(rng, language: str = "") -> list:
 
 def layout_text(rng, template, language: str) -> str:
     """The free text a layout plate carries in its field."""
-    from ..catalogue.plates_ch import signalo_id
 
     official = signalo_id(template.id)
     if official in LAYOUT_TEXTS:
@@ -115,8 +119,6 @@ def layout_text(rng, template, language: str) -> str:
 def drawn_plate(rng, language: str, kind: str):
     """A plate template of ``kind`` (pictogram or layout), each id alike, in the plate's language version (German
     where the drawing has no other), or None when the catalogue has none."""
-    from ..catalogue.model import DEFAULT_CATALOGUE_DIR
-    from ..plates.catalogue import load_plate_templates
 
     templates = [t for t in load_plate_templates(DEFAULT_CATALOGUE_DIR) if t.kind == kind]
     ids = sorted({t.id for t in templates})
@@ -133,8 +135,6 @@ def pictogram_face(template, width_px: int, height_px: int, rng, text: str = "")
     get), never the template's pixels."""
     import cv2
 
-    from . import face_dirt, face_print, face_wear
-    from .face_layers import ink_layers
 
     master = cv2.imread(template.png) if template.png else None
     if master is None:  # a template without its file (a test's): its grey

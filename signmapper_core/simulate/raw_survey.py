@@ -24,6 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ..drive.reader import open_drive
+from ..drive.writer import write_image
 from ..geometry import camera_rotation, rot_z
 from ..importdrive.attitude import convention, rot_y
 from ..importdrive.crs_steps import CrsSteps
@@ -134,8 +136,6 @@ def write_raw_survey(drive_path, out_dir, rig: RawRig | None = None, jpeg_qualit
     """Write the raw survey of a drive (see module); ``out_dir`` must not exist or be empty."""
     import cv2
 
-    from ..drive.reader import open_drive
-    from ..drive.writer import write_image
 
     rig = rig or RawRig()
     drive = open_drive(drive_path)

@@ -40,6 +40,7 @@ from typing import Sequence
 
 import numpy as np
 
+from ..catalogue import load_catalogue
 from ..catalogue.model import COLOURS
 from ..catalogue.model import MEASURED as MEASURED_SIZING
 from ..catalogue.text_panels import TEXT_PANELS
@@ -181,6 +182,5 @@ def pick_kind(kinds: SignMix | Sequence[SignKind], rng: np.random.Generator) -> 
 @lru_cache(maxsize=1)
 def whole_mix() -> SignMix:
     """The mix of the bundled catalogue."""
-    from ..catalogue import load_catalogue
 
     return SignMix.from_catalogue(load_catalogue())
