@@ -2,7 +2,7 @@
 
 import pytest
 
-from tests.import_graph import REPO, read_graph
+from import_graph import REPO, read_graph
 
 CORE = "signmapper_core"
 MAX_ROOT_MODULES = 12
