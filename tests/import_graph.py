@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import ast
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import cache
 from pathlib import Path
 from typing import Iterable, Optional
 
@@ -79,7 +79,7 @@ class ImportGraph:
                 visit(v)
         return groups
 
-    @lru_cache(maxsize=None)  # noqa: B019 - one graph per test session
+    @cache  # noqa: B019 - one graph per test session
     def loaded_with(self, module: str) -> frozenset:
         """Every module Python imports with ``module`` at module level (its own included)."""
         top = self.edges_with_externals()
@@ -92,7 +92,7 @@ class ImportGraph:
                 todo.extend(top.get(m, ()))
         return frozenset(seen)
 
-    @lru_cache(maxsize=None)  # noqa: B019
+    @cache  # noqa: B019
     def edges_with_externals(self) -> dict:
         out: dict[str, set[str]] = {}
         for imp in self.imports:
@@ -164,25 +164,29 @@ def read_graph(folders: Iterable[str] = (), skip: Iterable[str] = (".venv", "bui
     modules = dict(_dotted(p)[0:1] + (p,) for p in files)
     graph = ImportGraph(modules)
     for path in files:
-        module, is_package = _dotted(path)
-        source = path.read_text()
-        lines = source.split("\n")
-        tree = ast.parse(source)
-
-        def visit(node, in_function: bool) -> None:
-            for child in ast.iter_child_nodes(node):
-                if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
-                    visit(child, True)
-                elif isinstance(child, ast.If) and "TYPE_CHECKING" in ast.dump(child.test):
-                    continue  # never runs
-                elif isinstance(child, (ast.Import, ast.ImportFrom)):
-                    if isinstance(child, ast.ImportFrom) and child.module == "__future__":
-                        continue
-                    graph.imports.append(Import(module, child.lineno,
-                                                tuple(_targets(modules, module, is_package, child)),
-                                                in_function, _commented(lines, child)))
-                else:
-                    visit(child, in_function)
-
-        visit(tree, False)
+        graph.imports.extend(_imports_of(path, modules))
     return graph
+
+
+def _imports_of(path: Path, modules: dict) -> list[Import]:
+    module, is_package = _dotted(path)
+    source = path.read_text()
+    lines = source.split("\n")
+    found: list[Import] = []
+
+    def visit(node, in_function: bool) -> None:
+        for child in ast.iter_child_nodes(node):
+            if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+                visit(child, True)
+            elif isinstance(child, ast.If) and "TYPE_CHECKING" in ast.dump(child.test):
+                continue  # never runs
+            elif isinstance(child, (ast.Import, ast.ImportFrom)):
+                if isinstance(child, ast.ImportFrom) and child.module == "__future__":
+                    continue
+                found.append(Import(module, child.lineno, tuple(_targets(modules, module, is_package, child)),
+                                    in_function, _commented(lines, child)))
+            else:
+                visit(child, in_function)
+
+    visit(ast.parse(source), False)
+    return found

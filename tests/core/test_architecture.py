@@ -1,7 +1,6 @@
 """The house plan: no import cycle, a core of few root modules in rooms, and late imports only where they pay."""
 
 import pytest
-
 from import_graph import REPO, read_graph
 
 CORE = "signmapper_core"
