@@ -49,6 +49,7 @@ from ..signmapper_core.drive.reader import open_drive
 from ..signmapper_core.errors import DriveFormatError
 from ..signmapper_core.evaluation.reference_rows import exact_duplicates, no_geometry_note, repeats_note
 from ..signmapper_core.fusion.mounting import camera_height_above_road
+from ..signmapper_core.output.run_settings import recorded_config
 from ..signmapper_core.output.run_table import RUN_TABLE
 from ..signmapper_core.signalo import SignaloError
 from .base import SignMapperAlgorithm
@@ -281,11 +282,12 @@ class ChangesAlgorithm(SignMapperAlgorithm):
         drive_crs, _note = qgis_crs(drive.crs)
         catalogue_dir = run.get("catalogue")
         catalogue = load_catalogue(catalogue_dir if catalogue_dir and Path(catalogue_dir).is_dir() else None)
-        excluded = set(run.get("exclude") or [])
+        recorded = recorded_config(run)
+        excluded = set(recorded.classification.exclude)
         config = ChangeConfig(
             tolerance_m=self.parameterAsDouble(parameters, self.TOLERANCE, context),
             move_radius_m=self.parameterAsDouble(parameters, self.MOVE_RADIUS, context),
-            near_m=float(run.get("near_m", 4.0)), far_m=float(run.get("far_m", 14.0)),
+            near_m=recorded.depth.near_m, far_m=recorded.depth.far_m,
             max_face_angle_deg=self.parameterAsDouble(parameters, self.MAX_FACE_ANGLE, context),
             camera_height_m=camera_height_above_road(drive.metadata))
         try:

@@ -30,7 +30,13 @@ from qgis.PyQt.QtCore import QVariant
 
 from ..gpkg.output import read_run_table
 from ..signmapper_core.errors import DriveFormatError
-from ..signmapper_core.evaluation.reference_rows import exact_duplicates, no_geometry_note, repeats_note
+from ..signmapper_core.evaluation.reference_rows import (
+    exact_duplicates,
+    ids_from_numbers,
+    no_geometry_note,
+    numeric_ids_note,
+    repeats_note,
+)
 from ..signmapper_core.statuses import REJECTED
 from .base import SignMapperAlgorithm
 
@@ -170,7 +176,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         refs = self.read_points(reference, ref_field, height_field, to_signs, context, facing_field=facing_field,
                                 feedback=feedback)
         if reference.fields().field(ref_field).isNumeric():
-            refs["ids"] = self.ids_from_numbers(refs["ids"], mapped["ids"], parameters, context, feedback,
+            refs["ids"] = self.read_numbers_as_ids(refs["ids"], mapped["ids"], parameters, context, feedback,
                                                 reference, ref_field)
         refs = self.without_repeats(refs, reference, feedback)
         if not refs["xyz"]:
@@ -208,12 +214,9 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             "SIGMA_3D": defined(report.table2["3d"].std),
         }
 
-    def ids_from_numbers(self, numbers, mapped_ids, parameters, context, feedback, reference, field_name):
-        """Catalogue ids (text) for a reference id field that QGIS typed as a number, with a warning.
-
-        1.3 stands for the id that reads as that number ("1.30") among the mapped ids and the catalogue
-        the signs were mapped with; where none or several do, the number stays as written.
-        """
+    def read_numbers_as_ids(self, numbers, mapped_ids, parameters, context, feedback, reference, field_name):
+        """Catalogue ids (text) for a reference id field that QGIS typed as a number, with a warning: read back
+        among the mapped ids and the ids of the catalogue the signs were mapped with (``ids_from_numbers``)."""
         from ..signmapper_core.catalogue import load_catalogue  # delays OpenCV and numpy until used
 
         kind = reference.fields().field(field_name).typeName()
@@ -223,33 +226,8 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
         except Exception:  # noqa: BLE001 - the catalogue only helps to read numbers back; its loss is logged
             feedback.pushInfo("The catalogue of the mapped signs could not be loaded; only their own ids are "
                               "used to read the reference's numbers back as ids")
-        by_number: dict[float, set] = {}
-        for text in known:
-            try:
-                by_number.setdefault(float(text), set()).add(text)
-            except ValueError:
-                continue
-        ids, unresolved, example = [], [], None
-        for value in numbers:
-            try:
-                number = float(value)
-            except ValueError:  # NULL
-                ids.append(value)
-                continue
-            candidates = by_number.get(number, set())
-            ids.append(next(iter(candidates)) if len(candidates) == 1 else f"{number:g}")
-            if len(candidates) != 1:
-                unresolved.append(f"{number:g}")
-            elif example is None and ids[-1] != f"{number:g}":
-                example = f"{number:g} as {ids[-1]}"
-        text = (f"Reference field '{field_name}' is numeric ({kind}), but sign types are catalogue ids compared as "
-                "text ('1.30' is not '1.3'). Load the reference with this field as text (for a delimited-text "
-                "layer: switch off 'Detect field types').")
-        if example:
-            text += f" Numbers were read back as the catalogue ids they stand for (e.g. {example})."
-        if unresolved:
-            text += f" {len(unresolved)} stand for no single catalogue id and stay numbers (e.g. {unresolved[0]})."
-        feedback.pushWarning(text)
+        ids, unresolved, example = ids_from_numbers(numbers, known)
+        feedback.pushWarning(numeric_ids_note(field_name, kind, unresolved, example))
         return ids
 
     @staticmethod

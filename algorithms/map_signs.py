@@ -23,23 +23,19 @@ from ..gpkg.fields import layer_feature, layer_fields
 from ..gpkg.language import qgis_language
 from ..gpkg.output import GeoPackageLayers, layer_uri
 from ..gpkg.styles import OutputStyler, embed_default_styles
-from ..signmapper_core.catalogue import load_catalogue
 from ..signmapper_core.drive.clock import drive_start, first_time
 from ..signmapper_core.errors import ClusterError, DriveFormatError, MappingError
-from ..signmapper_core.fusion.signs import FusionConfig
 from ..signmapper_core.output import run_table, schema
 from ..signmapper_core.output.geopackage_file import OUR_TABLES
-from ..signmapper_core.output.run_settings import load_run_settings
-from ..signmapper_core.output.run_table import RunRecordError
 from ..signmapper_core.output.schema import DETECTIONS, SIGNS, OutputContext
 from ..signmapper_core.output.sign_crops import CropFolder
-from ..signmapper_core.pipeline import PipelineConfig
 from ..signmapper_core.pipeline.classifier_names import CLASSIFIER_CHOICES, CLASSIFIERS
-from ..signmapper_core.pipeline.classifiers import ClassifierError, accept_threshold, classifier_for
-from ..signmapper_core.pipeline.config import default, with_settings
+from ..signmapper_core.pipeline.classifiers import accept_threshold, classifier_for
+from ..signmapper_core.pipeline.config import default
 from ..signmapper_core.progress import Cancelled, check_cancelled
 from ..signmapper_core.run.dask_pairs import scheduler_address
 from ..signmapper_core.run.mapping import map_drive
+from ..signmapper_core.run.setup import RunSetupError, assemble_run
 from ..signmapper_core.sign_colours import SIGN_COLOURS
 from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise, qgis_crs
@@ -254,53 +250,28 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             raise QgsProcessingException(f"{label}: {output}: the output must be a GeoPackage file ending in .gpkg")
         self.check_outputs(parameters, context)  # an existing file that is no GeoPackage is refused, not replaced
         self.scheduler(parameters, context)  # a malformed address is said before the run
-        earlier = self.earlier_settings(parameters, context, notes)
         colours = [COLOURS[i] for i in self.parameterAsEnums(parameters, self.COLOURS, context)]
-        if not colours:
-            raise QgsProcessingException("Choose at least one sign colour to detect.")
-        catalogue_dir = self.parameterAsFile(parameters, self.CATALOGUE, context) or None
-        if catalogue_dir is None and earlier is not None and earlier.catalogue:
-            catalogue_dir = earlier.catalogue
-            if not Path(catalogue_dir).is_dir():
-                labels = [self.parameterDefinition(n).description() for n in (self.SETTINGS_FROM, self.CATALOGUE)]
-                raise QgsProcessingException(f"{labels[0]}: its catalogue folder {catalogue_dir} does not exist "
-                                             f"here; set '{labels[1]}'")
-        try:
-            catalogue = load_catalogue(catalogue_dir)
-        except Exception as exc:  # the catalogue's own errors name the file
-            raise QgsProcessingException(f"Template catalogue: {exc}") from exc
         chosen = {  # (section, setting) -> the dialog's value
             NEAR_M: self.parameterAsDouble(parameters, self.NEAR, context),
             FAR_M: self.parameterAsDouble(parameters, self.FAR, context),
             ("colour", "colours"): tuple(colours),
             ("white", "white_signs"): self.parameterAsBool(parameters, self.WHITE_SIGNS, context),
-            ("classification", "exclude"): tuple(self.excluded_ids(parameters, context, catalogue)),
+            ("classification", "exclude"): tuple(self.excluded_ids(parameters, context)),
             ("planarity", "detection_threshold"): self.parameterAsDouble(parameters, self.DETECTION_THRESHOLD,
                                                                          context),
             ("classification", "classification_threshold"): self.optional_number(
                 parameters, self.CLASSIFICATION_THRESHOLD, context),
             ("classification", "classifier"): CLASSIFIERS[self.parameterAsEnum(parameters, self.CLASSIFIER, context)],
         }
-        if earlier is not None:  # what the user changed from the dialog's defaults wins over the record
-            chosen = {k: v for k, v in chosen.items() if not _is_default(k, v)}
-        base = earlier.config if earlier is not None else PipelineConfig()
-        near, far = chosen.get(NEAR_M, base.depth.near_m), chosen.get(FAR_M, base.depth.far_m)
-        if near >= far:
-            labels = [self.parameterDefinition(n).description() for n in (self.NEAR, self.FAR)]
-            raise QgsProcessingException(f"{labels[0]} ({near:g} m) must be less than {labels[1]} ({far:g} m).")
-        changes = {}
-        for (section, name), value in chosen.items():
-            changes.setdefault(section, {})[name] = value
+        labels = {key: self.parameterDefinition(name).description() for key, name in (
+            ("settings_from", self.SETTINGS_FROM), ("near_m", self.NEAR), ("far_m", self.FAR))}
         try:
-            config = with_settings(base, changes)
-        except ValueError as exc:
-            raise QgsProcessingException(str(exc)) from exc
-
-        try:
-            classifier_for(catalogue, config)  # a missing or broken model is said before any work
-        except ClassifierError as exc:
-            raise QgsProcessingException(f"Classifier: {exc}") from exc
-        return folder, catalogue, config, earlier.fusion if earlier is not None else FusionConfig()
+            run = assemble_run(chosen, self.parameterAsFile(parameters, self.SETTINGS_FROM, context) or None,
+                               self.parameterAsFile(parameters, self.CATALOGUE, context) or None,
+                               defaults_yield=True, warn=notes.append if notes is not None else None, labels=labels)
+        except RunSetupError as exc:
+            raise QgsProcessingException(str(exc)) from None
+        return folder, run.catalogue, run.config, run.fusion
 
     def scheduler(self, parameters, context):
         """The Dask scheduler address given (``tcp://HOST:PORT``), or None: map on this computer."""
@@ -313,18 +284,6 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         except ClusterError as exc:
             raise QgsProcessingException(f"{self.parameterDefinition(self.SCHEDULER).description()}: {exc}") \
                 from None
-
-    def earlier_settings(self, parameters, context, notes=None):
-        """The ``RunSettings`` of the earlier output given, or None; its problems as QgsProcessingException."""
-        path = self.parameterAsFile(parameters, self.SETTINGS_FROM, context)
-        if not path:
-            return None
-
-        label = self.parameterDefinition(self.SETTINGS_FROM).description()
-        try:
-            return load_run_settings(path, notes.append if notes is not None else None)
-        except RunRecordError as exc:
-            raise QgsProcessingException(f"{label}: {exc}") from exc
 
     @staticmethod
     def report_classifier(catalogue, config, feedback) -> None:
@@ -424,13 +383,9 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         return OutputContext(language=language, catalogue=catalogue, start=start, first_time=first_time(drive),
                              crops=written)
 
-    def excluded_ids(self, parameters, context, catalogue) -> list[str]:
+    def excluded_ids(self, parameters, context) -> list[str]:
         text = self.parameterAsString(parameters, self.EXCLUDE, context) or ""
-        ids = [t.strip() for t in text.replace(";", ",").split(",") if t.strip()]
-        unknown = [i for i in ids if i not in catalogue]
-        if unknown:
-            raise QgsProcessingException(f"Sign types to exclude: {', '.join(unknown)} not in the catalogue")
-        return ids
+        return [t.strip() for t in text.replace(";", ",").split(",") if t.strip()]
 
     @staticmethod
     def map(drive, catalogue, config, feedback, max_skipped: float = 1.0, fusion=None, workers: int = 0,
@@ -468,11 +423,3 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                 check_cancelled(feedback.isCanceled if feedback is not None else None, "writing")
                 writer.addFeature(layer_feature(fields, layer, item, out), QgsFeatureSink.FastInsert)
             writer.close()
-
-
-def _is_default(setting, value) -> bool:
-    """Whether a dialog value is the (section, name) setting's default (colours in any order): then an earlier
-    run's value wins."""
-    if setting == ("colour", "colours"):
-        return set(value) == set(default(*setting))
-    return value == default(*setting)

@@ -9,8 +9,7 @@ from __future__ import annotations
 from typing import Callable, Optional
 
 from ..signmapper_core.drive.clock import drive_start, first_time
-from ..signmapper_core.output.run_settings import run_settings
-from ..signmapper_core.output.run_table import RunRecordError
+from ..signmapper_core.output.run_settings import recorded_config
 from ..signmapper_core.output.schema import OutputContext, run_language
 from ..ui.review_item import ReviewItem
 
@@ -62,27 +61,5 @@ class ReviewSession:
                              first_time=first_time(self.drive) if self.drive is not None else 0.0)
 
     def pipeline_config(self):
-        """The settings the run was mapped with: its whole recorded configuration (``run_settings``); for a run
-        recorded before settings were saved whole, its near/far, colours, exclusions, thresholds and classifier
-        (defaults for anything missing or invalid)."""
-        # delays numpy until used
-        from ..signmapper_core.pipeline.config import SECTION_OF, PipelineConfig, with_settings
-
-        try:
-            return run_settings(self.run, "the layer's run table").config
-        except RunRecordError:
-            pass
-        keys = ("near_m", "far_m", "detection_threshold", "classification_threshold")
-        recorded = {k: float(self.run[k]) for k in keys if isinstance(self.run.get(k), (int, float))}
-        for key in ("colours", "exclude"):
-            if isinstance(self.run.get(key), list):
-                recorded[key] = tuple(self.run[key])
-        if self.run.get("classifier") in ("cnn", "ncc"):
-            recorded["classifier"] = self.run["classifier"]
-        changes = {}
-        for key, value in recorded.items():
-            changes.setdefault(SECTION_OF[key], {})[key] = value
-        try:
-            return with_settings(PipelineConfig(), changes)
-        except (TypeError, ValueError):
-            return PipelineConfig()
+        """The settings the run was mapped with (``run_settings.recorded_config``)."""
+        return recorded_config(self.run)

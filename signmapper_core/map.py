@@ -28,8 +28,6 @@ from .drive.clock import drive_start, first_time
 from .errors import ClusterError, DriveFormatError, MappingError
 from .output.geopackage_file import OutputFileError
 from .output.gpkg_writer import write_geopackage
-from .output.run_settings import load_run_settings
-from .output.run_table import RunRecordError
 from .output.schema import LANGUAGES, OutputContext, language_of
 
 PRINT_EVERY_S = 5.0  # a progress line at most this often
@@ -95,18 +93,12 @@ def environment_language() -> str:
 
 def settings(args, say):
     """(catalogue, PipelineConfig, FusionConfig) of the arguments and, when given, an earlier output's record."""
-    from .catalogue import load_catalogue  # delays OpenCV and numpy until used
-    from .fusion.signs import FusionConfig  # delays OpenCV and numpy until used
-    from .pipeline import PipelineConfig  # delays numpy until used
-    from .pipeline.config import with_settings  # delays numpy until used
+    from .run.setup import assemble_run  # delays OpenCV and numpy until used
 
-    earlier = load_run_settings(args.settings_from, say) if args.settings_from else None
-    folder = args.catalogue or (earlier.catalogue if earlier is not None else None)
-    catalogue = load_catalogue(folder)
-    config, fusion = (PipelineConfig(), FusionConfig()) if earlier is None else (earlier.config, earlier.fusion)
-    if args.white_signs is not None:  # given, it wins over the record (as a changed dialog value in mapsigns)
-        config = with_settings(config, {"white": {"white_signs": args.white_signs}})
-    return catalogue, config, fusion
+    choices = {} if args.white_signs is None else {("white", "white_signs"): args.white_signs}  # given, it wins
+    run = assemble_run(choices, args.settings_from, args.catalogue, warn=say,
+                       labels={"settings_from": "--settings-from", "catalogue": "--catalogue"})
+    return run.catalogue, run.config, run.fusion
 
 
 class Printer:
@@ -164,7 +156,6 @@ def map_one(folder: Path, target: Path, catalogue, config, fusion, args, schedul
 def main(argv: Optional[list[str]] = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
-    from .pipeline.classifiers import ClassifierError  # delays OpenCV and numpy until used
 
     drives = [Path(d) for d in args.drives]
     try:
@@ -188,8 +179,7 @@ def main(argv: Optional[list[str]] = None) -> int:
                   file=sys.stderr, flush=True)
         for folder, target in zip(drives, targets):
             map_one(folder, target, catalogue, config, fusion, args, client)
-    except (ClusterError, MappingError, DriveFormatError, OutputFileError, ClassifierError, RunRecordError,
-            ValueError) as exc:
+    except (ClusterError, MappingError, DriveFormatError, OutputFileError, ValueError) as exc:
         print(f"error: {exc}", file=sys.stderr, flush=True)
         return 1
     finally:

@@ -181,3 +181,28 @@ def _note_contradictions(record: dict, config, where: str, warn: Optional[WarnCa
 def load_run_settings(path, warn: Optional[WarnCallback] = None) -> RunSettings:
     """The settings an earlier output at ``path`` was mapped with; :class:`RunRecordError` says what is wrong."""
     return run_settings(read_run_record(path), str(path), warn)
+
+
+def recorded_config(record: dict):
+    """The ``PipelineConfig`` a run was mapped with, from its run table ``record``: the whole recorded settings;
+    for a run recorded before they were saved whole, the settings its own rows repeat (near_m, colours, …) over
+    the defaults (defaults for anything missing or invalid)."""
+    from ..pipeline.classifier_names import CLASSIFIERS  # the pipeline package: delays numpy until used
+    from ..pipeline.config import PipelineConfig, with_settings  # delays numpy until used
+
+    try:
+        return run_settings(record, "the run table").config
+    except RunRecordError:
+        pass
+    changes: dict = {}
+    for key in RUN_KEYS:
+        value = record.get(key.key)
+        if key.setting is not None and isinstance(value, (int, float, list)) and not isinstance(value, bool):
+            section, name = key.setting
+            changes.setdefault(section, {})[name] = tuple(value) if isinstance(value, list) else float(value)
+    if record.get("classifier") in CLASSIFIERS:  # the strategy that ran, recorded from the first version on
+        changes.setdefault("classification", {})["classifier"] = record["classifier"]
+    try:
+        return with_settings(PipelineConfig(), changes)
+    except (TypeError, ValueError):
+        return PipelineConfig()
