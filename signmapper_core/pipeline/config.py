@@ -241,7 +241,7 @@ class PlanarityConfig:
     detection_threshold: float = 0.5  # planar share of a segment needed to keep it
     planarity_window_px: int = 7  # side of the window a local plane is fitted in [px]
     planarity_window_min_share: float = 1 / 3  # a window's plane is fitted only where this share has a depth...
-    planarity_window_min_px: int = 6  # ...and at least this many pixels: fewer fit a plane to noise
+    planarity_window_min_px: int = 6  # ...and at least this many [px]: fewer fit a plane to noise (3 points always do)
     planarity_tolerance_px: float = 0.6  # residual allowed [px of full-resolution disparity], given depth
     sgbm_planarity_tolerance_px: float = 1.0  # the same for half-scale SGBM depth, which is noisier [px]
     max_slant_deg: float = 45.0  # steepest slant kept [deg]: signs face the road, roughly along the optical axis
@@ -514,7 +514,7 @@ class PipelineConfig:
     classification: ClassificationConfig = field(default_factory=ClassificationConfig)  # step 7: reading a face
     hough: HoughConfig = field(default_factory=HoughConfig)  # round faces by the Hough transform
     white: WhiteConfig = field(default_factory=WhiteConfig)  # white and grey signs, text panels
-    plates: PlateConfig = field(default_factory=PlateConfig)  # supplementary plates
+    plates: PlateConfig = field(default_factory=PlateConfig)  # supplementary plates below or above a sign
 
 
 SECTIONS: Dict[str, type] = {f.name: f.default_factory for f in dataclasses.fields(PipelineConfig)}
