@@ -120,7 +120,7 @@ class BrightFieldConfig:
     field_ring_min_red_blue: float = 1.05  # ...its R/B at least this x the field's...
     field_ring_max_brightness: float = 0.85  # ...and its brightness at most this x the field's
     field_coarse_share: float = 0.5  # the first check on the reduced image asks this share of each margin above
-    dark_ring_max_brightness: float = 0.7  # a ring the dark robbed of colour counts at most this x its field bright...
+    dark_ring_max_brightness: float = 0.7  # a colourless dusk ring counts at most this x as bright as its field...
     dark_ring_min_ratio: float = 0.97  # ...of no other colour (R/G and R/B over its field's at least this)...
     dark_ring_min_fit: float = 0.88  # ...around a triangle field fitting its ideal outline this well [IoU]...
     dark_field_min_fit: float = 0.69  # ...or this well when the field itself is dim: dusk blurs it (1.0: never)
@@ -208,7 +208,7 @@ class DepthConfig:
 
     near_m: float = 4.0  # nearest depth searched [m] (Cavegn 2011): closer faces are cut by the frame
     far_m: float = 14.0  # farthest depth searched [m] (Cavegn 2011): farther is slower and less accurate
-    search_close_px: int = 15  # holes of a given depth's search space this small [px] are closed before it cuts
+    search_close_px: int = 15  # holes of a given depth's search space this small [px] are closed before it cuts colours
     search_grow_px: int = 31  # with SGBM depth the search space is grown by this much instead [px]
     face_depth_slack: float = 0.2  # a face's plane depth counts within near x (1 - this) .. far x (1 + this)
     sgbm_scale: float = 0.5  # SGBM runs on the pair at this scale: ~8x faster, disparity still sub-pixel
@@ -219,8 +219,8 @@ class DepthConfig:
     sgbm_row_margin_px: int = 24  # margin around candidates, rows and columns [px]
     sgbm_far_factor: float = 2.0  # disparities searched down to far x this: far points then match outside the range
     sgbm_uniqueness: int = 15  # SGBM's uniqueness ratio [%]: the best match beats the second by this margin
-    sgbm_p1: int = 8  # SGBM's penalty for disparity steps of 1 [x channels x block size²]: OpenCV's documented
-    sgbm_p2: int = 32  # SGBM's penalty for larger jumps [x channels x block size²]: OpenCV's documented 1:4
+    sgbm_p1: int = 8  # SGBM's penalty for disparity steps of 1 [x channels x block size²]: OpenCV's documented choice
+    sgbm_p2: int = 32  # SGBM's penalty for larger jumps [x channels x block size²]: 4 x P1, as OpenCV documents
     sgbm_disp12_max_diff: int = 2  # left-right check: disparities of both views differing more are invalid
     sgbm_speckle_window: int = 60  # disparity blobs smaller than this [px at the matcher's scale] are noise...
     sgbm_speckle_range: int = 2  # ...where their disparities vary at most this much within
@@ -241,7 +241,7 @@ class PlanarityConfig:
     detection_threshold: float = 0.5  # planar share of a segment needed to keep it
     planarity_window_px: int = 7  # side of the window a local plane is fitted in [px]
     planarity_window_min_share: float = 1 / 3  # a window's plane is fitted only where this share has a depth...
-    planarity_window_min_px: int = 6  # ...and at least this many [px]: fewer fit a plane to noise (3 points always do)
+    planarity_window_min_px: int = 6  # ...and at least this many [px]: fewer fit a plane to noise
     planarity_tolerance_px: float = 0.6  # residual allowed [px of full-resolution disparity], given depth
     sgbm_planarity_tolerance_px: float = 1.0  # the same for half-scale SGBM depth, which is noisier [px]
     max_slant_deg: float = 45.0  # steepest slant kept [deg]: signs face the road, roughly along the optical axis
@@ -434,7 +434,7 @@ class PlateConfig:
     plate_value_steps: Tuple[int, ...] = (0, 25, 50)  # further floors above that: a plate before a pale wall
     plate_edge_cut: bool = True  # the lowest floor is also cut along brightness edges: a plate before a pale façade
     plate_edge_thresholds: Tuple[int, int] = (20, 60)  # Canny thresholds of those edges [value 0-255]
-    plate_depth_tolerance_m: float = 0.3  # where depth is known, the plate lies within this of the sign's [m]
+    plate_depth_tolerance_m: float = 0.3  # where depth is known, the plate lies within this of the sign's depth [m]
     plate_close_m: float = 0.0  # closing before the holes are filled [m] (0: none; a plate's thin frame must stay)
     plate_frame_share: float = 0.075  # of a plate's height: its white margin and black frame line (inset)
     plate_min_fill: float = 0.85  # of its box: a rectangle
