@@ -155,7 +155,7 @@ def build(data: Path, out: Path, n_crops: int, n_scenes: int, with_gtsrb: bool, 
         "# Real sign photographs: committed subset\n\n"
         f"{len(crop_rows)} crops (crops.csv) and {len(listing)} whole scenes ({len(scene_rows)} signs, scenes.csv; "
         f"every scene in scenes_images.csv, {sum(1 for r in listing if not r[5])} without a sign), all from the "
-        "`report` half. Built by `scripts/realset/make_subset.py "
+        "`report` half. Built by `python -m scripts.realset.make_subset "
         f"--crops {n_crops} --scenes {n_scenes}{' --with-gtsrb' if with_gtsrb else ''} --seed {seed}`. "
         "Crops under gtsdb/crops/ are cut from the GTSDB scenes with a 10 % (>= 5 px) margin and saved as "
         "PNG; scenes are the JPEGs as fetched. Manifest format: `signmapper_core/validation/realset.py`.\n\n"
