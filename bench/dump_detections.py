@@ -14,17 +14,12 @@ from __future__ import annotations
 
 import argparse
 import os
-import resource
 import sys
 import time
 from dataclasses import replace
 from pathlib import Path
 
-
-def cpu_seconds() -> float:
-    """User + system seconds of this process and its ended children (worker processes)."""
-    own, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
-    return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
+from bench.bench_mapping import cpu_seconds
 
 
 def detection_line(drive_name: str, observation) -> str:
