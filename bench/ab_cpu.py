@@ -68,7 +68,7 @@ def main() -> int:
         catalogue = importlib.import_module(name + ".catalogue").load_catalogue()
         drive = core_function(name, ("drive.reader", "drive"), "open_drive")(args.drive)
         config = importlib.import_module(name + ".pipeline").PipelineConfig()
-        map_pair = core_function(name, ("run.mapping", "mapping"), "map_pair")
+        map_pair = core_function(name, ("run.pair", "run.mapping", "mapping"), "map_pair")
         map_pair(drive, drive.pairs[0], catalogue, config)  # warm-up: classifier, templates
         runs[key] = (drive, catalogue, config, map_pair)
     seconds = {key: {} for key in runs}
