@@ -150,16 +150,16 @@ train-classifier: apt $(TRAIN_VENV)/.installed
 
 # temperature and acceptance threshold fitted on the tune half of the real photographs (scripts/realset)
 calibrate-classifier: venv
-	$(PY) scripts/calibrate_classifier.py --data $(REAL_DATA)
+	$(PY) -m scripts.calibrate_classifier --data $(REAL_DATA)
 
 catalogue-sheet: venv
 	$(PY) -m signmapper_core.catalogue.sheet docs/catalogue-sheet.png
 
 zip: venv
-	$(PY) scripts/build_zip.py dist/$(PLUGIN_NAME).zip
+	$(PY) -m scripts.build_zip dist/$(PLUGIN_NAME).zip
 
 import-model: venv
-	$(PY) scripts/make_import_model.py
+	$(PY) -m scripts.make_import_model
 
 deploy:
 	mkdir -p $(QGIS_PROFILE_PLUGINS)

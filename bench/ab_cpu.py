@@ -1,8 +1,8 @@
 """CPU time per pair of two checkouts of the core, in one process, the same pairs alternately.
 
-    python bench/ab_cpu.py BASE_CHECKOUT NEW_CHECKOUT [--drive DRIVE] [--pairs 40] [--rounds 3]
+    python -m bench.ab_cpu BASE_CHECKOUT NEW_CHECKOUT [--drive DRIVE] [--pairs 40] [--rounds 3]
 
-``--drive``: a drive folder (default build/drives/seed2001-100-stereo, the one ``bench_mapping.py`` generates).
+``--drive``: a drive folder (default build/drives/seed2001-100-stereo, the one ``bench.bench_mapping`` generates).
 
 Each checkout's ``signmapper_core`` is imported under a name of its own (the package imports
 itself only relatively), both map pair 1, then pairs 1..N again and again: each pair by one
@@ -17,37 +17,58 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import importlib.util
 import os
 import sys
-import tempfile
 import time
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
+from scripts.drives import DRIVES
+
+
+def import_core(checkout: Path, name: str) -> None:
+    """``checkout``'s ``signmapper_core`` imported as the package ``name``, its modules below it by that name (the
+    package imports itself only relatively): two checkouts side by side in one process, no folder on sys.path."""
+    folder = checkout.resolve() / "signmapper_core"
+    spec = importlib.util.spec_from_file_location(name, folder / "__init__.py",
+                                                  submodule_search_locations=[str(folder)])
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+
+
+def core_function(package: str, modules, function: str):
+    """``function`` of the first of ``modules`` (below ``package``) that has it: where it lives in the core now,
+    then where it lived before (a base checkout may be older)."""
+    for module in modules:
+        try:
+            found = getattr(importlib.import_module(f"{package}.{module}"), function, None)
+        except ModuleNotFoundError:
+            continue
+        if found is not None:
+            return found
+    raise SystemExit(f"{package}: no {function} in {', '.join(modules)}")
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("base", type=Path)
     parser.add_argument("new", type=Path)
-    parser.add_argument("--drive", type=Path, default=REPO / "build" / "drives" / "seed2001-100-stereo")
+    parser.add_argument("--drive", type=Path, default=DRIVES / "seed2001-100-stereo")
     parser.add_argument("--pairs", type=int, default=40)
     parser.add_argument("--rounds", type=int, default=3)
     args = parser.parse_args()
     import cv2
 
     cv2.setNumThreads(1)
-    links = tempfile.mkdtemp(prefix="ab_cpu_")
     names = {"base": "ab_base_core", "new": "ab_new_core"}
-    for key, name in names.items():
-        os.symlink(getattr(args, key).resolve() / "signmapper_core", os.path.join(links, name))
-    sys.path.insert(0, links)
     runs = {}
     for key, name in names.items():
+        import_core(getattr(args, key), name)
         catalogue = importlib.import_module(name + ".catalogue").load_catalogue()
-        drive = importlib.import_module(name + ".drive").open_drive(args.drive)
+        drive = core_function(name, ("drive.reader", "drive"), "open_drive")(args.drive)
         config = importlib.import_module(name + ".pipeline").PipelineConfig()
-        map_pair = importlib.import_module(name + ".mapping").map_pair
+        map_pair = core_function(name, ("run.pair", "run.mapping", "mapping"), "map_pair")
         map_pair(drive, drive.pairs[0], catalogue, config)  # warm-up: classifier, templates
         runs[key] = (drive, catalogue, config, map_pair)
     seconds = {key: {} for key in runs}

@@ -1,10 +1,10 @@
 """Pairs per second of mapping a drive end to end with two checkouts' defaults, runs interleaved.
 
-    python bench/ab_mapping.py BASE_CHECKOUT [--pairs 200] [--seed 2001] [--rounds 3] [--workers 2]
+    python -m bench.ab_mapping BASE_CHECKOUT [--pairs 200] [--seed 2001] [--rounds 3] [--workers 2]
 
-Each round maps the drive of ``bench_mapping.py`` (generated once, cached under build/drives/) once with
+Each round maps the drive of ``bench.bench_mapping`` (generated once, cached under build/drives/) once with
 the checkout BASE_CHECKOUT and once with this one, the order swapped every round, each run in its own
-process with its own checkout's ``bench_mapping.py --mode pipeline-all`` (``map_drive`` with its default
+process with its own checkout's ``bench.bench_mapping --mode pipeline-all`` (``map_drive`` with its default
 ``PipelineConfig``, a worker process per core, start-up, decoding, SGBM, detection, fusion and OCR
 included). On a machine shared with other work the speed drifts over minutes, so only runs close in time
 are compared: each round prints both rates and their ratio (this checkout / base), then the median ratio
@@ -21,14 +21,17 @@ import subprocess
 import sys
 from pathlib import Path
 
+from bench.bench_mapping import drive_folder
+
 REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO / "bench"))
 
 
 def run(checkout: Path, folder: Path) -> dict:
-    """One end-to-end mapping of ``folder`` by ``checkout``'s bench_mapping.py, in its own process."""
-    script = checkout / "bench" / "bench_mapping.py"
-    out = subprocess.run([sys.executable, str(script), "--mode", "pipeline-all", "--drive", str(folder)],
+    """One end-to-end mapping of ``folder`` by ``checkout``'s bench_mapping, in its own process: run as a module,
+    or as a file in a checkout from before bench/ was a package."""
+    module = ["-m", "bench.bench_mapping"] if (checkout / "bench" / "__init__.py").is_file() else \
+        [str(checkout / "bench" / "bench_mapping.py")]
+    out = subprocess.run([sys.executable, *module, "--mode", "pipeline-all", "--drive", str(folder)],
                          capture_output=True, text=True, check=True, cwd=checkout)
     return json.loads(out.stdout.strip().splitlines()[-1])
 
@@ -40,8 +43,6 @@ def main() -> int:
     parser.add_argument("--seed", type=int, default=2001)
     parser.add_argument("--rounds", type=int, default=3)
     args = parser.parse_args()
-    from bench_mapping import drive_folder
-
     folder = drive_folder(args.seed, args.pairs)
     print(f"drive {folder}: {args.pairs} Full-HD JPEG pairs, no depth maps; base {args.base.resolve()}, "
           f"new {REPO}; {os.cpu_count()} cores")

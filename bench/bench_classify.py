@@ -1,6 +1,6 @@
 """Time per candidate segment of each classifier, as the pipeline calls it (one face box, its candidates).
 
-    python bench/bench_classify.py [--n 300] [--threads 0]
+    python -m bench.bench_classify [--n 300] [--threads 0]
 
 Faces are catalogue templates pasted into a noisy Full-HD frame at 16-160 px;
 candidates are the entries of the same colour and shape (the paper's cut).
@@ -10,15 +10,10 @@ candidates are the entries of the same colour and shape (the paper's cut).
 from __future__ import annotations
 
 import argparse
-import sys
 import time
-from pathlib import Path
 
 import cv2
 import numpy as np
-
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
 
 
 def main() -> None:

@@ -1,6 +1,6 @@
 """Seconds per Full-HD image of the colour step without depth (colour passes, merges, Hough, shape, candidates).
 
-    python bench/bench_colour_step.py [--data DIR] [--split tune] [--images 40]
+    python -m bench.bench_colour_step [--data DIR] [--split tune] [--images 40]
 
 Photographs of a real-photograph set (scenes_images.csv, e.g. GTSDB's 1360x800 scenes) are
 scaled to 1920 px wide (Full HD width) before timing, so the figure is per Full-HD frame;
@@ -17,8 +17,7 @@ import sys
 import time
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
+from scripts.drives import DRIVES, cached_drive
 
 
 def real_images(data: Path, split: str, count: int):
@@ -30,12 +29,9 @@ def real_images(data: Path, split: str, count: int):
 
 def synthetic_images(count: int):
     from signmapper_core.drive.reader import open_drive
-    from signmapper_core.simulate import SimulationConfig, generate_drive
+    from signmapper_core.simulate import SimulationConfig
 
-    out = REPO / "build" / "drives" / f"seed2001-{count}"
-    if not (out / "poses.csv").exists():
-        generate_drive(out, SimulationConfig(pairs=count, seed=2001))
-    drive = open_drive(out)
+    drive = open_drive(cached_drive(DRIVES / f"seed2001-{count}", SimulationConfig(pairs=count, seed=2001)))
     return [drive.load_left(r) for r in drive.pairs]
 
 

@@ -1,6 +1,6 @@
 """Pairs per second and memory of mapping a drive end to end, from the JPEG files, against the naive baseline.
 
-    python bench/bench_mapping.py [--pairs 20] [--seed 2001] [--rounds 3] [--long 1000] [--dask] [--scheduler tcp://HOST:PORT]
+    python -m bench.bench_mapping [--pairs 20] [--seed 2001] [--rounds 3] [--long 1000] [--dask] [--scheduler tcp://HOST:PORT]
 
 A synthetic Full-HD drive of JPEG stereo pairs without depth maps (generated once,
 cached under build/drives/) is mapped three ways, each in its own process so its
@@ -39,8 +39,9 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
+from scripts.drives import DRIVES, cached_drive
+
 REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
 
 MODES = ("pipeline-1", "pipeline-all", "baseline")
 DASK_MODES = ("dask-1", "dask-2")
@@ -129,8 +130,7 @@ def run_dask(mode: str, folder: Path, scheduler: str = "") -> dict:
 
 
 def run_mode(mode: str, folder: Path, long_pairs: int = 0) -> dict:
-    from bench_mapping import baseline_detect as baseline  # by module name, so worker processes can import it
-
+    from bench.bench_mapping import baseline_detect as baseline  # by module name: worker processes import it
     from signmapper_core.catalogue import load_catalogue
     from signmapper_core.drive.reader import open_drive
     from signmapper_core.pipeline import PipelineConfig
@@ -162,19 +162,17 @@ def run_mode(mode: str, folder: Path, long_pairs: int = 0) -> dict:
 
 
 def drive_folder(seed: int, pairs: int) -> Path:
-    from signmapper_core.simulate import SimulationConfig, generate_drive
+    from signmapper_core.simulate import SimulationConfig
 
-    out = REPO / "build" / "drives" / f"seed{seed}-{pairs}-stereo"
-    if not (out / "poses.csv").exists():
-        print(f"generating {out} ...", flush=True)
-        generate_drive(out, SimulationConfig(pairs=pairs, seed=seed, write_depth=False))
-    return out
+    return cached_drive(DRIVES / f"seed{seed}-{pairs}-stereo",
+                        SimulationConfig(pairs=pairs, seed=seed, write_depth=False))
 
 
 def child(mode: str, folder: Path, long_pairs: int = 0, scheduler: str = "") -> dict:
-    command = [sys.executable, __file__, "--mode", mode, "--drive", str(folder), "--long", str(long_pairs)]
+    command = [sys.executable, "-m", "bench.bench_mapping", "--mode", mode, "--drive", str(folder), "--long",
+               str(long_pairs)]
     command += ["--scheduler", scheduler] if scheduler else []
-    out = subprocess.run(command, capture_output=True, text=True, check=True)
+    out = subprocess.run(command, capture_output=True, text=True, check=True, cwd=REPO)
     return json.loads(out.stdout.strip().splitlines()[-1])
 
 

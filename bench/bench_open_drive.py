@@ -1,6 +1,6 @@
 """Time of opening (validating) a long drive: headers of every file, plausibility checks, first depth map.
 
-    .venv/bin/python bench/bench_open_drive.py --pairs 10000 [--folder /tmp/drive10k]
+    .venv/bin/python -m bench.bench_open_drive --pairs 10000 [--folder /tmp/drive10k]
 
 Writes a drive of tiny 64x48 pairs (left, right, depth) once, then opens it three times and prints the
 seconds; the cost is per file (headers), not per pixel.
@@ -9,14 +9,9 @@ seconds; the cost is per file (headers), not per pixel.
 from __future__ import annotations
 
 import argparse
-import sys
 import tempfile
 import time
 from pathlib import Path
-
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-sys.path.insert(0, str(ROOT / "tests"))
 
 
 def main() -> None:
@@ -24,9 +19,8 @@ def main() -> None:
     parser.add_argument("--pairs", type=int, default=10000)
     parser.add_argument("--folder", type=Path, default=None, help="drive folder to write (kept for reruns)")
     args = parser.parse_args()
-    from drive_fixtures import make_drive
-
     from signmapper_core.drive.reader import open_drive
+    from tests.drive_fixtures import make_drive
 
     folder = args.folder or Path(tempfile.mkdtemp()) / "drive"
     if not (folder / "poses.csv").exists():

@@ -1,6 +1,6 @@
 """Per-step time and per-pair detection quality of the pipeline on a synthetic drive.
 
-    python bench/bench_pipeline.py [--pairs 20] [--seed 2001] [--mode given|sgbm|sgbm-full] [--verbose]
+    python -m bench.bench_pipeline [--pairs 20] [--seed 2001] [--mode given|sgbm|sgbm-full] [--verbose]
 
 Generates (once, cached under build/drives/) a Full-HD drive with true depth
 maps and truth.csv, runs detect_pair on every pair and reports:
@@ -24,18 +24,14 @@ from pathlib import Path
 
 import numpy as np
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
+from scripts.drives import DRIVES, cached_drive
 
 
 def drive_folder(seed: int, pairs: int) -> Path:
-    from signmapper_core.simulate import SimulationConfig, generate_drive
+    from signmapper_core.simulate import SimulationConfig
 
-    out = REPO / "build" / "drives" / f"seed{seed}-{pairs}-depth"
-    if not (out / "poses.csv").exists():
-        print(f"generating {out} ...", flush=True)
-        generate_drive(out, SimulationConfig(pairs=pairs, seed=seed, write_depth=True))
-    return out
+    return cached_drive(DRIVES / f"seed{seed}-{pairs}-depth",
+                        SimulationConfig(pairs=pairs, seed=seed, write_depth=True))
 
 
 def expected_signs(drive, record, config, max_angle_deg=45.0):

@@ -1,6 +1,6 @@
 """Speed of epipolar rectification and of a whole import, Full-HD raw pairs (target: >= 20 pairs/s on 2 cores).
 
-    .venv/bin/python bench/bench_rectify.py [--pairs 40] [--runs 3] [--folder /tmp/rawpairs]
+    .venv/bin/python -m bench.bench_rectify [--pairs 40] [--runs 3] [--folder /tmp/rawpairs]
 
 Writes ``--pairs`` raw Full-HD JPEG pairs (quality 95, a smooth random texture) and a toed-in, distorted
 stereo calibration once, then measures per run:
@@ -22,15 +22,10 @@ import csv
 import resource
 import shutil
 import statistics
-import sys
 import tempfile
 import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
-
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
-sys.path.insert(0, str(ROOT / "tests"))
 
 SIZE = (1920, 1080)
 
@@ -38,7 +33,8 @@ SIZE = (1920, 1080)
 def write_inputs(folder: Path, pairs: int) -> None:
     import cv2
     import numpy as np
-    from stereo_scenes import texture
+
+    from tests.stereo_scenes import texture
 
     if (folder / "stereo.yml").exists() and len(list((folder / "left").glob("*.jpg"))) == pairs:
         return

@@ -1,6 +1,6 @@
 """Benchmark of the synthetic drive generator: seconds and MB per 100 pairs, peak RSS.
 
-    .venv/bin/python bench/bench_simulate.py [--pairs 100] [--width 1920 --height 1080] [--depth] [--keep DIR]
+    .venv/bin/python -m bench.bench_simulate [--pairs 100] [--width 1920 --height 1080] [--depth] [--keep DIR]
 """
 
 from __future__ import annotations
@@ -13,9 +13,7 @@ import tempfile
 import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
-
-from signmapper_core.simulate import SimulationConfig, generate_drive  # noqa: E402
+from signmapper_core.simulate import SimulationConfig, generate_drive
 
 
 def main(argv=None) -> int:

@@ -1,6 +1,6 @@
 """Frames per second of the drive viewer stepping through a Full-HD drive (JPEG left images).
 
-    QT_QPA_PLATFORM=offscreen python bench/bench_viewer.py [--pairs 40] [--seed 2002]
+    QT_QPA_PLATFORM=offscreen python -m bench.bench_viewer [--pairs 40] [--seed 2002]
 
 Generates a Full-HD synthetic drive once (cached under build/drives/), maps it
 with Map traffic signs (so every frame has its signs and detections drawn over
@@ -20,19 +20,16 @@ import tempfile
 import time
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
+from scripts.drives import DRIVES, cached_drive
+from scripts.qgis_plugin import load_plugin
+
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 
 
 def drive_folder(pairs: int, seed: int) -> Path:
-    sys.path.insert(0, str(REPO))
-    from signmapper_core.simulate import SimulationConfig, generate_drive
+    from signmapper_core.simulate import SimulationConfig
 
-    out = REPO / "build" / "drives" / f"viewer-{seed}-{pairs}"
-    if not (out / "poses.csv").exists():
-        print(f"generating {pairs} Full-HD pairs in {out} ...", flush=True)
-        generate_drive(out, SimulationConfig(pairs=pairs, seed=seed, write_depth=True))
-    return out
+    return cached_drive(DRIVES / f"viewer-{seed}-{pairs}", SimulationConfig(pairs=pairs, seed=seed, write_depth=True))
 
 
 def main() -> None:
@@ -49,21 +46,14 @@ def main() -> None:
 
     app = QgsApplication([], True)
     app.initQgis()
-    sys.path.insert(0, "/usr/share/qgis/python/plugins")
     plugins = Path(tempfile.mkdtemp()) / "plugins"
     plugins.mkdir()
-    (plugins / "sign_mapper").symlink_to(REPO, target_is_directory=True)
-    sys.path.insert(0, str(plugins))
+    plugin = load_plugin(plugins)
     import processing
-    import sign_mapper
-    from processing.core.Processing import Processing
     from sign_mapper.ui.drive_viewer import DriveViewerDock
     from sign_mapper.viewer.controller import DriveViewerController
     from sign_mapper.viewer.frames import bgr_to_rgb32
 
-    Processing.initialize()
-    plugin = sign_mapper.classFactory(None)
-    plugin.initProcessing()
     gpkg = plugins.parent / "bench.gpkg"
     processing.run("signmapper:mapsigns", {"DRIVE": str(drive_dir), "OUTPUT": str(gpkg)})
     layers = [QgsVectorLayer(f"{gpkg}|layername={n}", n, "ogr") for n in ("signs", "detections")]

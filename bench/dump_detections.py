@@ -1,6 +1,6 @@
 """Every detection of mapping drives, one line each, and the CPU time it took: to show a speed change keeps the output.
 
-    python bench/dump_detections.py DRIVE [DRIVE ...] [--pairs 30] [--workers 1] --out before.txt
+    python -m bench.dump_detections DRIVE [DRIVE ...] [--pairs 30] [--workers 1] --out before.txt
     diff before.txt after.txt
 
 Each line: drive, pair id, template id, box, detection and classification
@@ -14,20 +14,12 @@ from __future__ import annotations
 
 import argparse
 import os
-import resource
 import sys
 import time
 from dataclasses import replace
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
-
-
-def cpu_seconds() -> float:
-    """User + system seconds of this process and its ended children (worker processes)."""
-    own, children = resource.getrusage(resource.RUSAGE_SELF), resource.getrusage(resource.RUSAGE_CHILDREN)
-    return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
+from bench.bench_mapping import cpu_seconds
 
 
 def detection_line(drive_name: str, observation) -> str:

@@ -1,6 +1,6 @@
 """Where the time of mapping one pair goes: cProfile over ``mapping.map_pair`` (decoding included), one process.
 
-    python bench/profile_pair.py [--drive build/drives/seed2001-100-stereo] [--pairs 10] [--top 25]
+    python -m bench.profile_pair [--drive build/drives/seed2001-100-stereo] [--pairs 10] [--top 25]
 
 Profiles the first ``--pairs`` pairs of a drive (JPEG pairs, depth by SGBM) after
 one warm-up pair (classifier loaded, OpenCV initialised), with OpenCV on one
@@ -18,13 +18,12 @@ import sys
 import time
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
+from scripts.drives import DRIVES
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--drive", type=Path, default=REPO / "build" / "drives" / "seed2001-100-stereo")
+    parser.add_argument("--drive", type=Path, default=DRIVES / "seed2001-100-stereo")
     parser.add_argument("--pairs", type=int, default=10)
     parser.add_argument("--top", type=int, default=25)
     args = parser.parse_args()

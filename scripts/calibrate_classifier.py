@@ -1,6 +1,6 @@
 """Calibrate the learned classifier's indicator on the tune half of the real photographs.
 
-    python scripts/calibrate_classifier.py --data /work/data/real [--split tune] [--max-wrong 0.015]
+    python -m scripts.calibrate_classifier --data /work/data/real [--split tune] [--max-wrong 0.015]
 
 The network is trained on synthetic faces only; on real photographs it is more
 sure of itself than it should be. This fits three numbers on real photographs
@@ -10,24 +10,21 @@ the accepted signs carry a wrong id, and the open set's limit: the logit that
 ``--unknown-percentile`` % of the real signs read right stay below (a face matching
 its best candidate less well is mapped as unknown). Both are written into the model card with
 what they were fitted on. Report figures on the other half (``--split report``
-of evaluate_real_photos.py), never on this one.
+of ``scripts.evaluate_real_photos``), never on this one.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-import sys
 from pathlib import Path
 
 import numpy as np
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
-
-from signmapper_core.catalogue import load_catalogue  # noqa: E402
-from signmapper_core.pipeline.classifiers import LearnedClassifier, load_model_card, model_card_path  # noqa: E402
-from signmapper_core.validation import load_manifest  # noqa: E402
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.pipeline.classifiers import LearnedClassifier, load_model_card, model_card_path
+from signmapper_core.pipeline.classifiers.calibration import acceptance_threshold
+from signmapper_core.validation import load_manifest
 
 
 def candidate_logits(classifier: LearnedClassifier, catalogue, signs):
@@ -75,16 +72,6 @@ def unknown_limit(rows, right: np.ndarray, percentile: float) -> float:
     return float(np.percentile(fits, percentile))
 
 
-def threshold_for(best: np.ndarray, right: np.ndarray, max_wrong: float) -> float:
-    """Lowest threshold with at most ``max_wrong`` wrong among the signs at or above it."""
-    order = np.argsort(-best)
-    wrong = np.cumsum(~right[order]) / np.arange(1, len(order) + 1)
-    ok = np.nonzero(wrong <= max_wrong)[0]
-    if ok.size == 0:
-        return 0.99
-    return float(np.clip(best[order][ok[-1]], 0.5, 0.99))
-
-
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--data", type=Path, required=True, help="folder with crops.csv (scripts/realset)")
@@ -104,7 +91,7 @@ def main(argv=None) -> int:
     before = classifier.card.temperature
     temperature = fit_temperature(rows)
     best, right = probabilities(rows, temperature)
-    threshold = threshold_for(best, right, args.max_wrong)
+    threshold = acceptance_threshold(best, right, args.max_wrong)
     accepted = best >= threshold
     limit = unknown_limit(rows, right, args.unknown_percentile)
     print(f"open set: unknown below logit {limit:.2f} (synthetic: {classifier.card.unknown_logit})")

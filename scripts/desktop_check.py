@@ -21,6 +21,10 @@ for screenshots and the report), SIGNMAPPER_CHECK_GPKG (output GeoPackage).
 
 from __future__ import annotations
 
+# Run as a file, not as a module like the other scripts: QGIS desktop executes it in its own Python
+# (``qgis --code``), with the plugin already loaded from QGIS_PLUGINPATH and reached through ``qgis.utils.plugins``
+# and Processing. So it imports nothing of this repository by name and needs no path set-up; ``python -m
+# scripts.desktop_check`` would fail, it needs the running desktop's ``iface``.
 import json
 import os
 import traceback

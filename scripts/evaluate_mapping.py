@@ -1,7 +1,7 @@
 """Map drives with the core pipeline and print Cavegn's Tables 1 and 2 against truth.csv.
 
-    python scripts/evaluate_mapping.py DRIVE [DRIVE ...]
-    python scripts/evaluate_mapping.py --generate 1001 1002 1003 --pairs 60 [--depth] [--workers 0]
+    python -m scripts.evaluate_mapping DRIVE [DRIVE ...]
+    python -m scripts.evaluate_mapping --generate 1001 1002 1003 --pairs 60 [--depth] [--workers 0]
 
 ``--generate`` writes held-out synthetic drives (cached under build/drives/) and
 evaluates them. Seeds below 1000 are for tuning; report figures on seeds >= 1000.
@@ -37,13 +37,11 @@ from typing import Optional
 
 import numpy as np
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
-
-from signmapper_core.catalogue import load_catalogue  # noqa: E402
-from signmapper_core.drive.reader import open_drive  # noqa: E402
-from signmapper_core.evaluation.accuracy import combine_reports, evaluate, format_report, majority_id  # noqa: E402
-from signmapper_core.evaluation.families import (  # noqa: E402
+from scripts.drives import DRIVES, cached_drive
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.drive.reader import open_drive
+from signmapper_core.evaluation.accuracy import combine_reports, evaluate, format_report, majority_id
+from signmapper_core.evaluation.families import (
     COLOURED,
     WHITE,
     FamilyFigures,
@@ -53,24 +51,24 @@ from signmapper_core.evaluation.families import (  # noqa: E402
     group_figures,
     group_lines,
 )
-from signmapper_core.evaluation.id_outcomes import id_outcomes, outcome_lines  # noqa: E402
-from signmapper_core.evaluation.misread_evidence import (  # noqa: E402
+from signmapper_core.evaluation.id_outcomes import id_outcomes, outcome_lines
+from signmapper_core.evaluation.misread_evidence import (
     false_positive_lines,
     misread_lines,
     missed_lines,
     position_lines,
 )
-from signmapper_core.evaluation.panels import PanelFigures, evaluate_panels  # noqa: E402
-from signmapper_core.evaluation.plates import PlateFigures, evaluate_plates  # noqa: E402
-from signmapper_core.evaluation.visibility import mappable_signs  # noqa: E402
-from signmapper_core.fusion.signs import sign_accept_threshold  # noqa: E402
-from signmapper_core.output.classifier_alternatives import sign_alternatives  # noqa: E402
-from signmapper_core.output.review_reasons import reason_shown  # noqa: E402
-from signmapper_core.pipeline import PipelineConfig  # noqa: E402
-from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, WhiteConfig  # noqa: E402
-from signmapper_core.plates.fusion import is_plate  # noqa: E402
-from signmapper_core.run.mapping import map_drive  # noqa: E402
-from signmapper_core.simulate.face_artwork import OFFICIAL_PICTOGRAM, pictogram_group  # noqa: E402
+from signmapper_core.evaluation.panels import PanelFigures, evaluate_panels
+from signmapper_core.evaluation.plates import PlateFigures, evaluate_plates
+from signmapper_core.evaluation.visibility import mappable_signs
+from signmapper_core.fusion.signs import sign_accept_threshold
+from signmapper_core.output.classifier_alternatives import sign_alternatives
+from signmapper_core.output.review_reasons import reason_shown
+from signmapper_core.pipeline import PipelineConfig
+from signmapper_core.pipeline.config import ClassificationConfig, DepthConfig, WhiteConfig
+from signmapper_core.plates.fusion import is_plate
+from signmapper_core.run.mapping import map_drive
+from signmapper_core.simulate.face_artwork import OFFICIAL_PICTOGRAM, pictogram_group
 
 
 def drive_config(seed: int, pairs: int, depth: bool, legacy_faces: bool = False, white_share: float = 0.0,
@@ -90,7 +88,7 @@ def drive_config(seed: int, pairs: int, depth: bool, legacy_faces: bool = False,
     whole = "-whole" if config.sign_set == WHOLE else ""
     plated = f"-plates{plate_share:g}" if plate_share is not None else ""
     name = f"seed{seed}-{pairs}{'-depth' if depth else ''}-faces-{faces}{white}{whole}{plated}"
-    return REPO / "build" / "drives" / name, config
+    return DRIVES / name, config
 
 
 def drive_folder(*args, **kwargs) -> Path:
@@ -103,13 +101,7 @@ def drive_folder(*args, **kwargs) -> Path:
 
 def generated_drive(*args, **kwargs) -> Path:
     """The folder of :func:`drive_config`'s drive, generated unless there."""
-    from signmapper_core.simulate import generate_drive
-
-    out, config = drive_config(*args, **kwargs)
-    if not (out / "poses.csv").exists():
-        print(f"generating {out} ...", flush=True)
-        generate_drive(out, config)
-    return out
+    return cached_drive(*drive_config(*args, **kwargs))
 
 
 FAMILIES = {"white and grey": WHITE, "coloured": COLOURED}

@@ -1,7 +1,7 @@
 """Recognition figures on real photographs (GTSRB crops, GTSDB scenes) mapped to SSV ids.
 
-    python scripts/evaluate_real_photos.py classify --data DIR [--split report] [--limit N] [--seed 0] [--read-digits]
-    python scripts/evaluate_real_photos.py detect --data DIR [--split report] [--limit N] [--seed 0]
+    python -m scripts.evaluate_real_photos classify --data DIR [--split report] [--limit N] [--seed 0] [--read-digits]
+    python -m scripts.evaluate_real_photos detect --data DIR [--split report] [--limit N] [--seed 0]
 
 ``DIR`` holds crops.csv, scenes.csv, scenes_images.csv and the photographs (see
 scripts/realset/README.md); default: $SIGNMAPPER_REAL_DATA, else the committed subset
@@ -33,14 +33,12 @@ from collections import Counter, defaultdict
 from pathlib import Path
 from typing import Callable, Dict, List, Sequence
 
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.pipeline import PipelineConfig
+from signmapper_core.pipeline.boxes import box_iou
+from signmapper_core.validation import load_manifest, load_scene_list, read_bgr
+
 REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
-
-from signmapper_core.catalogue import load_catalogue  # noqa: E402
-from signmapper_core.pipeline import PipelineConfig  # noqa: E402
-from signmapper_core.pipeline.boxes import box_iou  # noqa: E402
-from signmapper_core.validation import load_manifest, load_scene_list, read_bgr  # noqa: E402
-
 SMALL_PX = 30
 SUBSET_DIR = REPO / "tests" / "data" / "real-signs"
 

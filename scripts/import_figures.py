@@ -1,6 +1,6 @@
 """Figures of an imported drive: rows of every pair, static points across pairs, and a mapping run.
 
-    .venv/bin/python scripts/import_figures.py DRIVE [--span 4] [--step 1] [--map]
+    .venv/bin/python -m scripts.import_figures DRIVE [--span 4] [--step 1] [--map]
 
 - rows: mean absolute vertical disparity of matched features (``epipolar.match_features``) in every
   ``--step``-th pair: what rectification left over (must stay below 0.5 px);
@@ -19,9 +19,6 @@ import time
 from pathlib import Path
 
 import numpy as np
-
-ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT))
 
 
 def main(argv=None) -> int:

@@ -15,7 +15,7 @@ start it) with Signalo's data model, ``signmapper:exporttosignalo`` of the run
 every written sign should come back ``confirmed`` and only the types Signalo does
 not list ``new``. ::
 
-    scripts/inventory_changes.py --generate 1100 1101 1102 --out /tmp/changes --signalo
+    python -m scripts.inventory_changes --generate 1100 1101 1102 --out /tmp/changes --signalo
 """
 
 from __future__ import annotations
@@ -31,11 +31,8 @@ from pathlib import Path
 
 import numpy as np
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
-
-from signmapper_core.catalogue import load_catalogue  # noqa: E402
-from signmapper_core.changes.compare import (  # noqa: E402
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.changes.compare import (
     CHANGED,
     CONFIRMED,
     MISSING,
@@ -49,8 +46,10 @@ from signmapper_core.changes.compare import (  # noqa: E402
     pose_arrays,
     sign_views,
 )
-from signmapper_core.drive.reader import open_drive  # noqa: E402
-from signmapper_core.fusion.mounting import camera_height_above_road  # noqa: E402
+from signmapper_core.drive.reader import open_drive
+from signmapper_core.fusion.mounting import camera_height_above_road
+
+REPO = Path(__file__).resolve().parents[1]
 
 EDITS = {"removed": 4, "moved": 5, "type": 4}  # of signs the drive sees; then signs added, at least 3 of each kind
 MIN_EDITS = 22
@@ -101,9 +100,8 @@ def signs_by_status(gpkg: Path) -> dict:
 def signalo_round_trip(env, out: Path, seeds) -> bool:
     """Export every mapped drive into its own Signalo database and compare the run with it; True if all came
     back confirmed (apart from types Signalo does not list, which must be the only 'new' signs)."""
-    sys.path.insert(0, str(REPO / "tests"))
-    from postgres_server import PostgresServer
-    from signalo_schema import install_signalo
+    from tests.postgres_server import PostgresServer
+    from tests.signalo_schema import install_signalo
 
     server = PostgresServer().start()
     all_right = True

@@ -1,6 +1,6 @@
 """Write ``models/import_and_map_signs.model3``: raw survey in, mapped signs out, as a Processing model.
 
-    make import-model        (or: .venv/bin/python scripts/make_import_model.py [OUT.model3])
+    make import-model        (or: .venv/bin/python -m scripts.make_import_model [OUT.model3])
 
 The model chains ``signmapper:importdrive`` (generic preset: image folders, calibration, pose or trajectory
 CSV) into ``signmapper:mapsigns`` and ``signmapper:drivetrajectory`` (pose preview) on the imported drive. Its
@@ -15,6 +15,8 @@ import os
 import sys
 import tempfile
 from pathlib import Path
+
+from scripts.qgis_plugin import load_plugin
 
 ROOT = Path(__file__).resolve().parents[1]
 MODEL_PATH = ROOT / "models" / "import_and_map_signs.model3"
@@ -110,17 +112,8 @@ def main(argv=None) -> int:
 
     app = QgsApplication([], False)
     app.initQgis()
-    sys.path.append(str(Path(app.pkgDataPath()) / "python" / "plugins"))   # QGIS's own Processing plugin
-    from processing.core.Processing import Processing
-
-    Processing.initialize()
     with tempfile.TemporaryDirectory() as plugins:
-        os.symlink(ROOT, Path(plugins) / "sign_mapper", target_is_directory=True)
-        sys.path.insert(0, plugins)
-        import sign_mapper
-
-        plugin = sign_mapper.classFactory(None)
-        plugin.initProcessing()
+        plugin = load_plugin(Path(plugins))
         model = build_model(QgsApplication.processingRegistry())
         out.parent.mkdir(parents=True, exist_ok=True)
         if not model.toFile(str(out)):

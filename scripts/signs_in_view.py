@@ -1,12 +1,12 @@
 """Signs in view per colour family (faces of the procedural designs apart), from truth and poses only: nothing mapped.
 
-    python scripts/signs_in_view.py DRIVE [DRIVE ...]
-    python scripts/signs_in_view.py --seeds 8000-8059 --pairs 100 [--plan | --generate]
+    python -m scripts.signs_in_view DRIVE [DRIVE ...]
+    python -m scripts.signs_in_view --seeds 8000-8059 --pairs 100 [--plan | --generate]
 
 For a held-out set, chosen before anything is mapped: every family should have enough signs in view over it.
 A sign is in view as ``visibility.mappable_signs`` says (its centre inside the image, within the depth range,
 its face turned to the camera, in one pair at least); its row is ``family_evaluation.sign_group``. ``--seeds``
-counts the synthetic drives ``scripts/evaluate_mapping.py --generate SEEDS --pairs N`` maps (the same folders
+counts the synthetic drives ``python -m scripts.evaluate_mapping --generate SEEDS --pairs N`` maps (the same folders
 under build/drives/): ``--plan`` from their layout alone (no pixel rendered; the same truth and poses the drives
 carry), ``--generate`` writes those not there yet, else the folders must exist.
 """
@@ -18,16 +18,11 @@ import sys
 from collections import Counter
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO))
-sys.path.insert(0, str(REPO / "scripts"))
-
-from evaluate_mapping import drive_folder, generated_drive  # noqa: E402
-
-from signmapper_core.catalogue import load_catalogue  # noqa: E402
-from signmapper_core.drive.reader import open_drive  # noqa: E402
-from signmapper_core.evaluation.families import GROUP_TITLES, GROUPS, catalogue_colour, sign_group  # noqa: E402
-from signmapper_core.evaluation.visibility import visible_in_pair  # noqa: E402
+from scripts.evaluate_mapping import drive_folder, generated_drive
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.drive.reader import open_drive
+from signmapper_core.evaluation.families import GROUP_TITLES, GROUPS, catalogue_colour, sign_group
+from signmapper_core.evaluation.visibility import visible_in_pair
 
 
 def in_view(truth, camera, poses, near: float, far: float) -> list:

@@ -21,6 +21,7 @@ import torch
 from torch import nn
 
 from signmapper_core.catalogue import DEFAULT_CATALOGUE_DIR, load_catalogue
+from signmapper_core.pipeline.classifiers.calibration import acceptance_threshold
 from signmapper_core.pipeline.classifiers.face_patch import standardise
 from signmapper_core.pipeline.classifiers.learned import BACKGROUND, CARD_FORMAT, MODEL_DIR
 
@@ -118,16 +119,6 @@ def fit_temperature(logits, labels, groups, background) -> float:
             nll -= zz[picked.index(label)] - (zz.max() + np.log(np.exp(zz - zz.max()).sum()))
         best = min(best, (nll, float(t)))
     return best[1]
-
-
-def acceptance_threshold(best_p: np.ndarray, correct: np.ndarray, max_wrong: float) -> float:
-    """Lowest probability above which at most ``max_wrong`` of the accepted picks are wrong."""
-    order = np.argsort(-best_p)
-    wrong = np.cumsum(~correct[order]) / np.arange(1, len(order) + 1)
-    ok = np.nonzero(wrong <= max_wrong)[0]
-    if ok.size == 0:
-        return 0.99
-    return float(np.clip(best_p[order][ok[-1]], 0.5, 0.99))
 
 
 def unknown_logit(logits: np.ndarray, labels: np.ndarray, groups, background: int, percentile: float) -> float:

@@ -1,6 +1,6 @@
 """Write the real-photograph manifests (crops.csv, scenes.csv, scenes_images.csv) from GTSRB/GTSDB.
 
-    python scripts/realset/build_manifests.py /work/data/real
+    python -m scripts.realset.build_manifests /work/data/real
 
 Expects, below DATA (see scripts/realset/README.md for where they come from):
 
@@ -27,11 +27,10 @@ from pathlib import Path
 
 import cv2
 
-HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE.parents[1]))
+from signmapper_core.catalogue import load_catalogue
+from signmapper_core.validation import IMAGE_LIST_COLUMNS, MANIFEST_COLUMNS
 
-from signmapper_core.catalogue import load_catalogue  # noqa: E402
-from signmapper_core.validation import IMAGE_LIST_COLUMNS, MANIFEST_COLUMNS  # noqa: E402
+HERE = Path(__file__).resolve().parent
 
 MAPPING = HERE / "gtsrb_to_ssv.csv"
 GTSDB_SIZE = (1360, 800)

@@ -1,7 +1,7 @@
 """Build a small real-photograph subset (<= 20 MB) that may be shared: crops and scenes, report half only.
 
-    python scripts/realset/make_subset.py /work/data/real /work/data/real-subset [--crops 600] [--scenes 60]
-                                          [--with-gtsrb] [--seed 0] [--max-mb 20]
+    python -m scripts.realset.make_subset /work/data/real /work/data/real-subset [--crops 600] [--scenes 60]
+                                             [--with-gtsrb] [--seed 0] [--max-mb 20]
 
 Crops: cut from the GTSDB ``report`` scenes with a margin of 10 % of the sign (at least 5 px), as
 GTSRB crops are, and saved as PNG (lossless from the decoded photograph); with ``--with-gtsrb`` the
@@ -25,16 +25,14 @@ from pathlib import Path
 
 import cv2
 
-HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE.parents[1]))
-
-from signmapper_core.validation import (  # noqa: E402
+from signmapper_core.validation import (
     IMAGE_LIST_COLUMNS,
     MANIFEST_COLUMNS,
     load_manifest,
     load_scene_list,
 )
 
+HERE = Path(__file__).resolve().parent
 SMALL_PX = 30
 
 
@@ -157,7 +155,7 @@ def build(data: Path, out: Path, n_crops: int, n_scenes: int, with_gtsrb: bool, 
         "# Real sign photographs: committed subset\n\n"
         f"{len(crop_rows)} crops (crops.csv) and {len(listing)} whole scenes ({len(scene_rows)} signs, scenes.csv; "
         f"every scene in scenes_images.csv, {sum(1 for r in listing if not r[5])} without a sign), all from the "
-        "`report` half. Built by `scripts/realset/make_subset.py "
+        "`report` half. Built by `python -m scripts.realset.make_subset "
         f"--crops {n_crops} --scenes {n_scenes}{' --with-gtsrb' if with_gtsrb else ''} --seed {seed}`. "
         "Crops under gtsdb/crops/ are cut from the GTSDB scenes with a 10 % (>= 5 px) margin and saved as "
         "PNG; scenes are the JPEGs as fetched. Manifest format: `signmapper_core/validation/realset.py`.\n\n"

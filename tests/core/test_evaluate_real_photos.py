@@ -1,4 +1,4 @@
-"""scripts/evaluate_real_photos.py and scripts/realset/make_subset.py on small constructed sets.
+"""``scripts.evaluate_real_photos`` and ``scripts.realset.make_subset`` on small constructed sets.
 
 The constructed "photographs" are catalogue renderings pasted on a grey ground: they check the
 plumbing (manifest -> candidates -> classifier / colour step -> tables), not recognition quality;
@@ -7,7 +7,6 @@ real figures come from the real set (and the smoke test on the committed subset)
 
 from __future__ import annotations
 
-import importlib.util
 import os
 from pathlib import Path
 
@@ -15,20 +14,12 @@ import cv2
 import numpy as np
 import pytest
 
+from scripts import evaluate_real_photos as evaluate
+from scripts.realset import make_subset
 from signmapper_core.validation import IMAGE_LIST_COLUMNS, MANIFEST_COLUMNS, load_manifest, load_scene_list
 
 REPO = Path(__file__).resolve().parents[2]
 
-
-def _script(relpath: str):
-    spec = importlib.util.spec_from_file_location(Path(relpath).stem, REPO / relpath)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-evaluate = _script("scripts/evaluate_real_photos.py")
-make_subset = _script("scripts/realset/make_subset.py")
 
 
 def _paste(canvas: np.ndarray, catalogue, template_id: str, x: int, y: int, size: int):

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import importlib.util
 from collections import Counter
 from pathlib import Path
 from types import SimpleNamespace
@@ -123,9 +122,8 @@ def test_left_out_ids_are_told_unknown_accepted_as_another_or_missed():
 
 
 def test_evaluate_mapping_reads_ids_from_a_list_or_a_file(tmp_path):
-    spec = importlib.util.spec_from_file_location("evaluate_mapping", REPO / "scripts" / "evaluate_mapping.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
+    from scripts import evaluate_mapping as module
+
     assert module.read_ids("4.64, 0.3,") == ["4.64", "0.3"]
     (tmp_path / "ids.txt").write_text("# left out, seed 7\n4.64\n\n0.3  # tourist\n", encoding="utf-8")
     assert module.read_ids(f"@{tmp_path / 'ids.txt'}") == ["4.64", "0.3"]

@@ -11,7 +11,7 @@ REPO = Path(__file__).resolve().parents[2]
 
 def test_plugin_zip_layout(tmp_path):
     out = tmp_path / "sign_mapper.zip"
-    subprocess.run([sys.executable, str(REPO / "scripts" / "build_zip.py"), str(out)], check=True, cwd=REPO)
+    subprocess.run([sys.executable, "-m", "scripts.build_zip", str(out)], check=True, cwd=REPO)
     names = zipfile.ZipFile(out).namelist()
     assert all(n.startswith("sign_mapper/") for n in names)
     for required in ("metadata.txt", "__init__.py", "provider/provider.py", "signmapper_core/drive/reader.py"):

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
 from types import SimpleNamespace
 
 import numpy as np
@@ -19,15 +17,6 @@ from signmapper_core.simulate.face_artwork import (
     has_procedural,
     pictogram_group,
 )
-
-REPO = Path(__file__).resolve().parents[2]
-
-
-def _evaluate_mapping():
-    spec = importlib.util.spec_from_file_location("evaluate_mapping", REPO / "scripts" / "evaluate_mapping.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 def test_every_listed_sign_is_in_the_catalogue_and_drawn_procedurally():
@@ -53,7 +42,8 @@ def test_sheet_has_a_tile_per_sign_in_rows_of_six():
 
 
 def test_evaluation_counts_each_group_and_the_official_pictogram_total():
-    em = _evaluate_mapping()
+    from scripts import evaluate_mapping as em
+
     reference = [SimpleNamespace(template_id=t, artwork=a) for t, a in
                  [("2.12", PROCEDURAL), ("2.12", MASTER), ("2.07", PROCEDURAL), ("2.07", PROCEDURAL), ("1.01", "")]]
     signs = [SimpleNamespace(template_id=t) for t in ("2.13", "2.12", "2.07", "2.09")]

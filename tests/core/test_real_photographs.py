@@ -87,7 +87,7 @@ def test_accepted_signs_are_right(classified):
 
 def test_colour_step_finds_the_faces_of_whole_photographs():
     """Colour and shape on whole GTSDB scenes, no depth: a face is found when a reading's box overlaps the
-    sign's by IoU >= 0.5 and the true id is among its candidates (``scripts/evaluate_real_photos.py detect``)."""
+    sign's by IoU >= 0.5 and the true id is among its candidates (``python -m scripts.evaluate_real_photos detect``)."""
     catalogue = load_catalogue()
     config = PipelineConfig()
     signs = [s for s in load_manifest(SUBSET / "scenes.csv", known_ids={e.id for e in catalogue})
