@@ -11,6 +11,7 @@ from qgis.core import (
     QgsProcessingOutputNumber,
     QgsProcessingParameterBoolean,
     QgsProcessingParameterFileDestination,
+    QgsProject,
 )
 
 from ..layout.atlas import atlas_layout
@@ -72,8 +73,9 @@ class InventoryAtlasAlgorithm(DeliverableAlgorithm):
         layer, run, statuses, language = self.deliverable_inputs(parameters, context)
         folder = run.get("catalogue")
         catalogue = load_catalogue(folder if folder and (Path(folder) / "catalogue.json").is_file() else None)
-        project = context.project()
-        layout = atlas_layout(project, layer, catalogue, language, statuses, LAYOUT_NAME.format(layer=layer.name()))
+        project = context.project()  # None in qgis_process without --PROJECT_PATH: the layout needs one
+        owner = project if project is not None else QgsProject()
+        layout = atlas_layout(owner, layer, catalogue, language, statuses, LAYOUT_NAME.format(layer=layer.name()))
         atlas = layout.atlas()
         if not atlas.updateFeatures():
             raise QgsProcessingException(f"{layer.name()}: no sign with status {', '.join(statuses)}: no atlas "

@@ -6,7 +6,7 @@ import shutil
 import numpy as np
 import pytest
 from mapping_runs import map_drive
-from qgis.core import QgsLayoutExporter, QgsProcessingException, QgsProject, QgsVectorLayer
+from qgis.core import QgsLayoutExporter, QgsProcessingContext, QgsProcessingException, QgsProject, QgsVectorLayer
 from qgis.PyQt.QtGui import QImage
 
 from signmapper_core.catalogue import load_catalogue
@@ -108,6 +108,16 @@ def test_a_layer_outside_the_project_gives_the_pdf_only_and_nothing_to_print_is_
     with pytest.raises(QgsProcessingException, match="no sign with status accepted, manual"):
         run("signmapper:inventoryatlas", {"SIGNS": f"{copy}|layername=signs", "OUTPUT": str(tmp_path / "no.pdf")})
     assert not (tmp_path / "no.pdf").exists()
+
+
+def test_without_a_project_as_in_qgis_process_the_atlas_is_printed_all_the_same(run, mapped, tmp_path):
+    """qgis_process without --PROJECT_PATH gives the algorithm no project: the layout once crashed QGIS there."""
+    out = tmp_path / "no-project.pdf"
+    context = QgsProcessingContext()
+    assert context.project() is None
+    result = run("signmapper:inventoryatlas", {"SIGNS": f"{mapped}|layername=signs", "OUTPUT": str(out)},
+                 context=context)
+    assert pdf_pages(out) == result["PAGES"] > 0
 
 
 def test_an_atlas_is_written_under_its_lock_and_a_failed_run_leaves_the_earlier_pdf(run, mapped, tmp_path):
