@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..geometry import world_to_pixel
+from ..pipeline.config import DepthConfig
 
 
 def facing_vector(azimuth_deg: float) -> np.ndarray:
@@ -31,7 +32,8 @@ def visible_in_pair(camera, pose, sign, near_m: float, far_m: float, max_face_an
     return cos_angle >= np.cos(np.radians(max_face_angle_deg))
 
 
-def mappable_signs(drive, near_m: float = 4.0, far_m: float = 14.0, plates: bool = False) -> list:
+def mappable_signs(drive, near_m: float = DepthConfig.near_m, far_m: float = DepthConfig.far_m,
+                   plates: bool = False) -> list:
     """Truth signs of ``drive`` seen face-on within the depth range in at least one pair.
 
     Supplementary plates (rows with ``plate_of``) are left out, or with ``plates`` only they are given.
@@ -45,7 +47,7 @@ def mappable_signs(drive, near_m: float = 4.0, far_m: float = 14.0, plates: bool
     ]
 
 
-def largest_view_px(drive, sign, near_m: float = 4.0, far_m: float = 14.0) -> float:
+def largest_view_px(drive, sign, near_m: float = DepthConfig.near_m, far_m: float = DepthConfig.far_m) -> float:
     """Height in pixels of ``sign``'s face in the pair that sees it largest within the depth range (0 if none)."""
     best = 0.0
     for rec in drive.pairs:
