@@ -204,6 +204,33 @@ def test_a_help_text_takes_a_default_from_its_home(trees, shared):
                                             f"take it from {shared.home} (an f-string)"
 
 
+def is_hue(node: ast.AST) -> bool:
+    """A hue: a name with 'hue' in it, or the first channel of an HSV image (``hsv[..., 0]``, ``hsv[:, :, 0]``)."""
+    if isinstance(node, ast.Name):
+        return "hue" in node.id.lower()
+    if isinstance(node, ast.Subscript):
+        index = node.slice.elts[-1] if isinstance(node.slice, ast.Tuple) else node.slice
+        return is_number(index, 0) and any("hsv" in w.lower() for w in words(node.value))
+    return False
+
+
+def hue_thresholds(trees) -> list:
+    found = []
+    for path, tree in trees.items():
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Compare):
+                sides = [node.left, *node.comparators]
+                if any(is_hue(s) for s in sides) and any(isinstance(s, ast.Constant) for s in sides):
+                    found.append((path, node.lineno, f"{path}:{node.lineno} ({ast.unparse(node)})"))
+    return [text for _path, _line, text in sorted(set(found))]
+
+
+def test_hue_thresholds_are_declared_with_the_sign_colours(trees):
+    """The sign colours' hue bands (red's above all, at both ends of the hue circle) are declared in
+    sign_colours.py, each named for its use; code compares hues with those bands (``in_hue_bands``)."""
+    assert hue_thresholds({p: t for p, t in trees.items() if p != "signmapper_core/sign_colours.py"}) == []
+
+
 def test_the_scan_sees_what_it_is_meant_to():
     """Each way of writing a default again is caught, other uses of the number are not."""
     source = '''
@@ -227,3 +254,5 @@ window = x[4:14]
     assert [n.split(" ")[0] for n in near] == [f"example.py:{i}" for i in (2, 3, 4, 6, 7)]
     assert [n.split(" ")[0] for n in far] == [f"example.py:{i}" for i in (2, 3, 4, 5, 8, 9)]
     assert said_again(trees, SHARED[0]) == ["example.py:7 ('4 m')"]
+    hues = ast.parse("red = (hue <= 12) | (hsv[..., 0] > 165) | (img[..., 0] > 3) | (hsv[..., 1] > 90)")
+    assert [h.split(" ", 1)[1] for h in hue_thresholds({"x.py": hues})] == ["(hsv[..., 0] > 165)", "(hue <= 12)"]
