@@ -16,6 +16,8 @@ from qgis.core import (
 )
 
 from ..signmapper_core.errors import DriveFormatError, ImportInputError
+from ..signmapper_core.importdrive.generic import GenericInputs
+from ..signmapper_core.importdrive.importer import ImportOptions
 from ..signmapper_core.progress import Cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
 
@@ -30,7 +32,7 @@ NORTHS = (("auto", "Automatic (navigation angles: true north; a camera's angles:
           ("true", "True north"), ("grid", "Grid north of the input CRS"))
 IMAGE_FORMATS = (("auto", "Automatic (normal images kept as they are, rectified ones as JPEG)"), ("jpg", "JPEG"),
                  ("png", "PNG"))
-DEFAULT_OUTPUT_CRS = "EPSG:2056"
+DEFAULT_OUTPUT_CRS = ImportOptions.output_crs
 
 
 class ImportDriveAlgorithm(SignMapperAlgorithm):
@@ -47,7 +49,8 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
         "to the left camera, grid convergence and heights by pyproj. Before any image is written, the inputs are "
         "checked (image size against the calibration, poses against the image times, angles that look like radians "
         "given as degrees, a CRS without metres) and the first pair is rectified and its rows checked: the mean "
-        "vertical disparity of matched features must stay below the limit (0.5 px). A failed or cancelled import "
+        "vertical disparity of matched features must stay below the limit "
+        f"({ImportOptions.max_vertical_disparity_px:g} px). A failed or cancelled import "
         "leaves no folder behind. Preview the result with Drive trajectory, then map it with Map traffic signs. "
         "The KITTI preset reads a KITTI raw drive folder (images, OXTS poses, calibration files) by itself."
     )
@@ -149,15 +152,16 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
                            "True north (what an INS gives) or the grid north of a projected input CRS (what "
                            "photogrammetric software gives in a projected CRS). The output grid's convergence is "
                            "applied either way.", advanced=True)
-        self.add_parameter(QgsProcessingParameterString(self.INPUT_CRS, self.tr("CRS of the poses"), "EPSG:4979"),
+        self.add_parameter(QgsProcessingParameterString(self.INPUT_CRS, self.tr("CRS of the poses"),
+                                                        GenericInputs.input_crs),
                            "Any CRS PROJ knows, geographic (x = longitude) or projected. Say what the heights are: "
                            "EPSG:4979 = WGS 84 with ellipsoidal heights, EPSG:4326+5773 = with EGM96 heights, "
                            "EPSG:2056+5728 = LV95 with LN02 heights. A CRS without heights keeps them as given.")
         self.add_parameter(QgsProcessingParameterString(self.OUTPUT_CRS, self.tr("CRS of the drive"), "",
                                                         optional=True),
                            "Projected CRS in metres for the drive, e.g. EPSG:2056 (LV95) or EPSG:2056+5728 (LV95 with "
-                           "LN02 heights; needs swisstopo's geoid grid in PROJ). Empty: EPSG:2056, or for KITTI the "
-                           "UTM zone with EGM96 heights.")
+                           f"LN02 heights; needs swisstopo's geoid grid in PROJ). Empty: {DEFAULT_OUTPUT_CRS}, or for "
+                           "KITTI the UTM zone with EGM96 heights.")
         for name, axis in zip(self.LEVER, ("x", "y", "z")):
             self.add_parameter(number(name, self.tr(f"Lever arm {axis} [m]"), number.Double, 0.0),
                                f"Position of the left camera's projection centre relative to the body whose poses "
@@ -175,10 +179,12 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
                                                       options=[t for _, t in IMAGE_FORMATS], defaultValue=0),
                            "Automatic keeps normal images (already rectified JPEG/PNG/TIFF) byte for byte and writes "
                            "rectified ones as JPEG.", advanced=True)
-        self.add_parameter(number(self.JPEG_QUALITY, self.tr("JPEG quality"), number.Integer, 95, minValue=50,
-                                  maxValue=100), "Quality of JPEG images written by the import.", advanced=True)
+        self.add_parameter(number(self.JPEG_QUALITY, self.tr("JPEG quality"), number.Integer,
+                                  ImportOptions.jpeg_quality, minValue=50, maxValue=100),
+                           "Quality of JPEG images written by the import.", advanced=True)
         self.add_parameter(number(self.MAX_VERTICAL_DISPARITY, self.tr("Largest mean vertical disparity [px]"),
-                                  number.Double, 0.5, minValue=0.01, maxValue=50.0),
+                                  number.Double, ImportOptions.max_vertical_disparity_px, minValue=0.01,
+                                  maxValue=50.0),
                            "The rows of the first pair must line up after rectification: the mean absolute vertical "
                            "disparity of its matched features must stay below this, or the import stops.",
                            advanced=True)

@@ -33,6 +33,7 @@ from ..signmapper_core.pipeline.classifier_names import CLASSIFIER_CHOICES, CLAS
 from ..signmapper_core.pipeline.classifiers import accept_threshold, classifier_for
 from ..signmapper_core.pipeline.config import default
 from ..signmapper_core.progress import Cancelled, check_cancelled
+from ..signmapper_core.run import MAX_SKIPPED_PERCENT
 from ..signmapper_core.run.dask_pairs import scheduler_address
 from ..signmapper_core.run.mapping import map_drive
 from ..signmapper_core.run.setup import RunSetupError, assemble_run
@@ -195,7 +196,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.MAX_SKIPPED, self.tr("Largest share of unreadable pairs [%]"),
-                                         QgsProcessingParameterNumber.Double, 50.0, minValue=0.0, maxValue=100.0),
+                                         QgsProcessingParameterNumber.Double, MAX_SKIPPED_PERCENT, minValue=0.0,
+                                         maxValue=100.0),
             "Pairs whose files cannot be read (or whose detection fails) are skipped and logged. When more than "
             "this share of the drive is skipped the run fails (as soon as that is certain) and writes nothing, "
             "since the output would lack their signs without a word. A run where no pair can be mapped always "

@@ -28,7 +28,7 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-from ..evaluation.visibility import facing_vector
+from ..evaluation.visibility import READABLE_FACE_ANGLE_DEG, facing_vector
 from ..pipeline.config import DepthConfig
 
 CONFIRMED, MOVED, CHANGED, MISSING, NOT_COVERED, NEW = "confirmed", "moved", "changed", "missing", "not covered", "new"
@@ -87,7 +87,7 @@ class ChangeConfig:
     height_gate_m: float = 0.35  # same place only within this vertically, where both heights are known
     near_m: float = DepthConfig.near_m
     far_m: float = DepthConfig.far_m
-    max_face_angle_deg: float = 75.0  # a face turned farther away than this is not readable
+    max_face_angle_deg: float = READABLE_FACE_ANGLE_DEG
     camera_height_m: Optional[float] = None  # above the road, for inventory heights given above the road
 
     def validate(self) -> ChangeConfig:

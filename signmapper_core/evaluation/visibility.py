@@ -13,13 +13,16 @@ import numpy as np
 from ..geometry import world_to_pixel
 from ..pipeline.config import DepthConfig
 
+READABLE_FACE_ANGLE_DEG = 75.0  # a face turned farther than this away from the camera cannot be read
+
 
 def facing_vector(azimuth_deg: float) -> np.ndarray:
     a = np.radians(azimuth_deg)
     return np.array([np.sin(a), np.cos(a), 0.0])
 
 
-def visible_in_pair(camera, pose, sign, near_m: float, far_m: float, max_face_angle_deg: float = 75.0) -> bool:
+def visible_in_pair(camera, pose, sign, near_m: float, far_m: float,
+                    max_face_angle_deg: float = READABLE_FACE_ANGLE_DEG) -> bool:
     u, v, z = world_to_pixel(camera, pose, sign.position)
     if not (near_m <= z <= far_m and 0 <= u <= camera.width - 1 and 0 <= v <= camera.height - 1):
         return False
@@ -69,7 +72,7 @@ def densify(polyline_xy, step_m: float) -> np.ndarray:
 
 
 def faces_trajectory(position_xy, facing_deg: float, trajectory_xy: np.ndarray, max_distance_m: float = 20.0,
-                     max_face_angle_deg: float = 75.0) -> bool:
+                     max_face_angle_deg: float = READABLE_FACE_ANGLE_DEG) -> bool:
     """True if from some trajectory vertex within ``max_distance_m`` the sign is ahead and its face looks back.
 
     For references without a camera model (a surveyed inventory with a facing

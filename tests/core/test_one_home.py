@@ -16,15 +16,21 @@ from __future__ import annotations
 import ast
 import os
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Iterator, Optional
 
 import pytest
 
+from signmapper_core.changes.compare import ChangeConfig
+from signmapper_core.evaluation.visibility import READABLE_FACE_ANGLE_DEG
+from signmapper_core.importdrive.generic import GenericInputs
+from signmapper_core.importdrive.importer import ImportOptions
 from signmapper_core.pipeline.config import DepthConfig
+from signmapper_core.run import MAX_SKIPPED_PERCENT
 
 ROOT = Path(__file__).resolve().parents[2]
+SIGN_COLOURS = "signmapper_core/sign_colours.py"
 SKIPPED_FOLDERS = {"tests", "build", "node_modules", "__pycache__"}  # and every hidden one (.venv, .git)
 
 
@@ -40,6 +46,7 @@ class SharedDefault:
     names: str  # regex (case-insensitive) of the names that tie a literal to this default
     home: str  # the one file that writes it
     said: tuple = ()  # regexes of help-text words that state the value
+    elsewhere: tuple = ()  # files where the same value under such a name is another thing (reason beside)
 
     def ties(self, name: str) -> bool:
         return re.search(self.names, name, re.IGNORECASE) is not None
@@ -48,11 +55,29 @@ class SharedDefault:
 NEAR, FAR = DepthConfig.near_m, DepthConfig.far_m
 DEPTH_RANGE_SAID = (number(NEAR) + r"\s*(?:-|–|to|\.\.)\s*" + number(FAR), number(NEAR) + r"\s*m\b",
                     number(FAR) + r"\s*m\b")
+IMPORT_OPTIONS = "signmapper_core/importdrive/importer.py"
 SHARED = [
     SharedDefault("near limit of the depth range", NEAR, r"near(?!est)", "signmapper_core/pipeline/config.py",
                   DEPTH_RANGE_SAID),
     SharedDefault("far limit of the depth range", FAR, r"far", "signmapper_core/pipeline/config.py",
                   DEPTH_RANGE_SAID),
+    SharedDefault("largest share of unreadable pairs", MAX_SKIPPED_PERCENT, r"skip", "signmapper_core/run/__init__.py",
+                  (number(MAX_SKIPPED_PERCENT) + r"\s*%",)),
+    SharedDefault("tolerance of a confirmed sign", ChangeConfig.tolerance_m, r"^tolerance(_m)?$",
+                  "signmapper_core/changes/compare.py"),
+    SharedDefault("move radius", ChangeConfig.move_radius_m, r"move_radius", "signmapper_core/changes/compare.py"),
+    SharedDefault("readable face angle", READABLE_FACE_ANGLE_DEG, r"face_angle",
+                  "signmapper_core/evaluation/visibility.py"),
+    SharedDefault("JPEG quality of an import", ImportOptions.jpeg_quality, r"jpeg_quality", IMPORT_OPTIONS,
+                  elsewhere=("signmapper_core/simulate/raw_survey.py",)),  # the simulated raw camera's JPEGs
+    SharedDefault("largest vertical disparity of an import", ImportOptions.max_vertical_disparity_px,
+                  r"vertical_disparity", IMPORT_OPTIONS,
+                  (number(ImportOptions.max_vertical_disparity_px) + r"\s*px",)),
+    SharedDefault("output CRS of an import", ImportOptions.output_crs, r"output_crs", IMPORT_OPTIONS,
+                  (r"(?i)(default|empty)\W{0,3}" + re.escape(ImportOptions.output_crs),),
+                  elsewhere=("bench/bench_rectify.py",)),  # the bench's poses are in LV95, so is its drive
+    SharedDefault("CRS of an import's poses", GenericInputs.input_crs, r"input_crs",
+                  "signmapper_core/importdrive/generic.py"),
 ]
 
 
@@ -64,15 +89,31 @@ def project_files() -> Iterator[Path]:
                 yield Path(folder) / name
 
 
-@pytest.fixture(scope="module")
-def trees():
-    out = {}
-    for path in project_files():
-        tree = ast.parse(path.read_text(encoding="utf-8"), str(path))
+@dataclass
+class Scan:
+    """What the tests look at in each file, read once: its literals, help texts and comparisons."""
+
+    literals: list = field(default_factory=list)  # (path, ast.Constant), parents linked
+    helps: list = field(default_factory=list)  # (path, line, literal text)
+    compares: list = field(default_factory=list)  # (path, ast.Compare)
+
+    def add(self, path: str, tree: ast.AST) -> Scan:
         for node in ast.walk(tree):
             for child in ast.iter_child_nodes(node):
                 child.parent = node
-        out[path.relative_to(ROOT).as_posix()] = tree
+            if isinstance(node, ast.Constant):
+                self.literals.append((path, node))
+            elif isinstance(node, ast.Compare):
+                self.compares.append((path, node))
+        self.helps += [(path, line, text) for line, text in help_texts(tree)]
+        return self
+
+
+@pytest.fixture(scope="module")
+def scan():
+    out = Scan()
+    for path in project_files():
+        out.add(path.relative_to(ROOT).as_posix(), ast.parse(path.read_text(encoding="utf-8"), str(path)))
     return out
 
 
@@ -146,18 +187,22 @@ def is_number(node: ast.AST, value) -> bool:
     return isinstance(node, ast.Constant) and type(node.value) in (int, float) and node.value == value
 
 
-def written_again(trees, shared: SharedDefault) -> list:
-    """(file:line, names) of each literal of ``shared``'s value that a name ties to it, outside its home."""
-    found = []
-    for path, tree in trees.items():
-        if path == shared.home:
-            continue
-        for node in ast.walk(tree):
-            if is_number(node, shared.value):
-                names = sorted(n for n in names_of(node) if shared.ties(n))
-                if names:
-                    found.append((path, node.lineno, f"{path}:{node.lineno} ({', '.join(names)})"))
-    return [text for _path, _line, text in sorted(set(found))]
+def is_value(node: ast.AST, value) -> bool:
+    """``node`` is the literal ``value`` (a number, or the very string)."""
+    if isinstance(value, str):
+        return isinstance(node, ast.Constant) and node.value == value
+    return is_number(node, value)
+
+
+def written_again(scan: Scan, shared: SharedDefault) -> list:
+    """'file:line (names)' of each literal of ``shared``'s value that a name ties to it, outside its home."""
+    found = set()
+    for path, node in scan.literals:
+        if path != shared.home and path not in shared.elsewhere and is_value(node, shared.value):
+            names = sorted(n for n in names_of(node) if shared.ties(n))
+            if names:
+                found.add((path, node.lineno, f"{path}:{node.lineno} ({', '.join(names)})"))
+    return [text for _path, _line, text in sorted(found)]
 
 
 def help_texts(tree) -> Iterator[tuple]:
@@ -180,28 +225,39 @@ def help_texts(tree) -> Iterator[tuple]:
                     yield sub.lineno, sub.value
 
 
-def said_again(trees, shared: SharedDefault) -> list:
-    found = []
-    for path, tree in trees.items():
-        for line, text in help_texts(tree):
-            for pattern in shared.said:
-                match = re.search(pattern, text)
-                if match:
-                    found.append(f"{path}:{line} ('{match.group(0)}')")
-    return sorted(set(found))
+def said_again(scan: Scan, shared: SharedDefault) -> list:
+    """'file:line (words)' of each help text that states ``shared``'s value in its own words."""
+    found = set()
+    for path, line, text in scan.helps:
+        for pattern in shared.said:
+            match = re.search(pattern, text)
+            if match:
+                found.add((path, line, f"{path}:{line} ('{match.group(0)}')"))
+    return [text for _path, _line, text in sorted(found)]
 
 
 @pytest.mark.parametrize("shared", SHARED, ids=[s.what for s in SHARED])
-def test_a_shared_default_is_written_only_in_its_home(trees, shared):
-    assert shared.home in trees
-    assert written_again(trees, shared) == [], f"the {shared.what} ({shared.value}) is written again; take it " \
-                                               f"from {shared.home}"
+def test_a_shared_default_is_written_only_in_its_home(scan, shared):
+    assert (ROOT / shared.home).is_file()
+    assert written_again(scan, shared) == [], f"the {shared.what} ({shared.value}) is written again; take it " \
+                                              f"from {shared.home}"
 
 
 @pytest.mark.parametrize("shared", [s for s in SHARED if s.said], ids=[s.what for s in SHARED if s.said])
-def test_a_help_text_takes_a_default_from_its_home(trees, shared):
-    assert said_again(trees, shared) == [], f"a help text states the {shared.what} ({shared.value}) in words; " \
-                                            f"take it from {shared.home} (an f-string)"
+def test_a_help_text_takes_a_default_from_its_home(scan, shared):
+    assert said_again(scan, shared) == [], f"a help text states the {shared.what} ({shared.value}) in words; " \
+                                           f"take it from {shared.home} (an f-string)"
+
+
+STATED_DEFAULT = re.compile(r"\bdefault\b\W{0,3}(-?\d|EPSG:)", re.IGNORECASE)
+
+
+def test_a_help_text_states_no_default_in_its_own_words(scan):
+    """'(default 10)' beside ``default=10`` is the value written twice: argparse's ``%(default)s`` or an
+    f-string of the home says it (a Processing dialog shows its parameters' defaults by itself)."""
+    found = [f"{path}:{line} ({text[max(0, m.start() - 30):m.end() + 10]!r})"
+             for path, line, text in scan.helps for m in [STATED_DEFAULT.search(text)] if m]
+    assert found == []
 
 
 def is_hue(node: ast.AST) -> bool:
@@ -214,21 +270,20 @@ def is_hue(node: ast.AST) -> bool:
     return False
 
 
-def hue_thresholds(trees) -> list:
-    found = []
-    for path, tree in trees.items():
-        for node in ast.walk(tree):
-            if isinstance(node, ast.Compare):
-                sides = [node.left, *node.comparators]
-                if any(is_hue(s) for s in sides) and any(isinstance(s, ast.Constant) for s in sides):
-                    found.append((path, node.lineno, f"{path}:{node.lineno} ({ast.unparse(node)})"))
-    return [text for _path, _line, text in sorted(set(found))]
+def hue_thresholds(scan: Scan) -> list:
+    """'file:line (comparison)' of each hue compared with a number outside sign_colours.py."""
+    found = set()
+    for path, node in scan.compares:
+        sides = [node.left, *node.comparators]
+        if path != SIGN_COLOURS and any(is_hue(s) for s in sides) and any(isinstance(s, ast.Constant) for s in sides):
+            found.add((path, node.lineno, f"{path}:{node.lineno} ({ast.unparse(node)})"))
+    return [text for _path, _line, text in sorted(found)]
 
 
-def test_hue_thresholds_are_declared_with_the_sign_colours(trees):
+def test_hue_thresholds_are_declared_with_the_sign_colours(scan):
     """The sign colours' hue bands (red's above all, at both ends of the hue circle) are declared in
     sign_colours.py, each named for its use; code compares hues with those bands (``in_hue_bands``)."""
-    assert hue_thresholds({p: t for p, t in trees.items() if p != "signmapper_core/sign_colours.py"}) == []
+    assert hue_thresholds(scan) == []
 
 
 def test_the_scan_sees_what_it_is_meant_to():
@@ -245,14 +300,11 @@ settings = {"far_m": 14.0, "radius_px": 14}
 radius = 14
 window = x[4:14]
 '''
-    tree = ast.parse(source)
-    for node in ast.walk(tree):
-        for child in ast.iter_child_nodes(node):
-            child.parent = node
-    trees = {"example.py": tree, SHARED[0].home: ast.parse("")}
-    near, far = written_again(trees, SHARED[0]), written_again(trees, SHARED[1])
+    example = Scan().add("example.py", ast.parse(source))
+    near, far = written_again(example, SHARED[0]), written_again(example, SHARED[1])
     assert [n.split(" ")[0] for n in near] == [f"example.py:{i}" for i in (2, 3, 4, 6, 7)]
     assert [n.split(" ")[0] for n in far] == [f"example.py:{i}" for i in (2, 3, 4, 5, 8, 9)]
-    assert said_again(trees, SHARED[0]) == ["example.py:7 ('4 m')"]
+    assert said_again(example, SHARED[0]) == ["example.py:7 ('4 m')"]
     hues = ast.parse("red = (hue <= 12) | (hsv[..., 0] > 165) | (img[..., 0] > 3) | (hsv[..., 1] > 90)")
-    assert [h.split(" ", 1)[1] for h in hue_thresholds({"x.py": hues})] == ["(hsv[..., 0] > 165)", "(hue <= 12)"]
+    found = [h.split(" ", 1)[1] for h in hue_thresholds(Scan().add("x.py", hues))]
+    assert found == ["(hsv[..., 0] > 165)", "(hue <= 12)"]
