@@ -16,8 +16,6 @@ from qgis.core import (
 )
 
 from ..signmapper_core.errors import DriveFormatError, ImportInputError
-from ..signmapper_core.importdrive.generic import GenericInputs
-from ..signmapper_core.importdrive.importer import ImportOptions
 from ..signmapper_core.progress import Cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
 
@@ -32,7 +30,6 @@ NORTHS = (("auto", "Automatic (navigation angles: true north; a camera's angles:
           ("true", "True north"), ("grid", "Grid north of the input CRS"))
 IMAGE_FORMATS = (("auto", "Automatic (normal images kept as they are, rectified ones as JPEG)"), ("jpg", "JPEG"),
                  ("png", "PNG"))
-DEFAULT_OUTPUT_CRS = ImportOptions.output_crs
 
 
 class ImportDriveAlgorithm(SignMapperAlgorithm):
@@ -49,10 +46,10 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
         "to the left camera, grid convergence and heights by pyproj. Before any image is written, the inputs are "
         "checked (image size against the calibration, poses against the image times, angles that look like radians "
         "given as degrees, a CRS without metres) and the first pair is rectified and its rows checked: the mean "
-        "vertical disparity of matched features must stay below the limit "
-        f"({ImportOptions.max_vertical_disparity_px:g} px). A failed or cancelled import "
-        "leaves no folder behind. Preview the result with Drive trajectory, then map it with Map traffic signs. "
-        "The KITTI preset reads a KITTI raw drive folder (images, OXTS poses, calibration files) by itself."
+        "vertical disparity of matched features must stay below the limit ('Largest mean vertical disparity'). "
+        "A failed or cancelled import leaves no folder behind. Preview the result with Drive trajectory, then map it "
+        "with Map traffic signs. The KITTI preset reads a KITTI raw drive folder (images, OXTS poses, calibration "
+        "files) by itself."
     )
 
     PRESET = "PRESET"
@@ -82,6 +79,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
     VERTICAL_DISPARITY = "VERTICAL_DISPARITY"
 
     def initAlgorithm(self, config=None):  # noqa: N802
+        from ..signmapper_core.importdrive import GenericInputs, ImportOptions  # delays numpy until used
         from ..signmapper_core.importdrive.attitude import CONVENTIONS  # delays numpy until used
 
         folder, file = QgsProcessingParameterFile.Folder, QgsProcessingParameterFile.File
@@ -160,8 +158,8 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
         self.add_parameter(QgsProcessingParameterString(self.OUTPUT_CRS, self.tr("CRS of the drive"), "",
                                                         optional=True),
                            "Projected CRS in metres for the drive, e.g. EPSG:2056 (LV95) or EPSG:2056+5728 (LV95 with "
-                           f"LN02 heights; needs swisstopo's geoid grid in PROJ). Empty: {DEFAULT_OUTPUT_CRS}, or for "
-                           "KITTI the UTM zone with EGM96 heights.")
+                           "LN02 heights; needs swisstopo's geoid grid in PROJ). "
+                           f"Empty: {ImportOptions.output_crs}, or for KITTI the UTM zone with EGM96 heights.")
         for name, axis in zip(self.LEVER, ("x", "y", "z")):
             self.add_parameter(number(name, self.tr(f"Lever arm {axis} [m]"), number.Double, 0.0),
                                f"Position of the left camera's projection centre relative to the body whose poses "
@@ -251,7 +249,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
                     input_crs=string(parameters, self.INPUT_CRS, context).strip(),
                     lever_arm_m=tuple(self.parameterAsDouble(parameters, n, context) for n in self.LEVER),
                     boresight_deg=tuple(self.parameterAsDouble(parameters, n, context) for n in self.BORESIGHT)))
-                output_crs = string(parameters, self.OUTPUT_CRS, context).strip() or DEFAULT_OUTPUT_CRS
+                output_crs = string(parameters, self.OUTPUT_CRS, context).strip() or ImportOptions.output_crs
             check_image = self.parameterAsFileOutput(parameters, self.CHECK_IMAGE, context)
             options = ImportOptions(
                 output_crs=output_crs,
