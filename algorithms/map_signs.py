@@ -30,7 +30,7 @@ from ..signmapper_core.output.geopackage_file import OUR_TABLES
 from ..signmapper_core.output.schema import DETECTIONS, SIGNS, OutputContext
 from ..signmapper_core.output.sign_crops import CropFolder
 from ..signmapper_core.pipeline.classifier_names import CLASSIFIER_CHOICES, CLASSIFIERS
-from ..signmapper_core.pipeline.classifiers import accept_threshold, classifier_for
+from ..signmapper_core.pipeline.classifiers import NccClassifier, accept_threshold, classifier_for
 from ..signmapper_core.pipeline.config import default
 from ..signmapper_core.progress import Cancelled, check_cancelled
 from ..signmapper_core.run import MAX_SKIPPED_PERCENT
@@ -172,7 +172,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                                          default("classification", "classification_threshold"), optional=True,
                                          minValue=0.0, maxValue=1.0),
             "Minimum classification indicator (0-1) for status 'accepted'; lower ones get status 'review'. Empty = "
-            "the classifier's own: the network's calibrated threshold, 0.6 for template matching.",
+            f"the classifier's own: the network's calibrated threshold, {NccClassifier.accept_threshold:g} for "
+            "template matching.",
             advanced=True,
         )
         self.add_parameter(

@@ -26,6 +26,7 @@ from signmapper_core.changes.compare import ChangeConfig
 from signmapper_core.evaluation.visibility import READABLE_FACE_ANGLE_DEG
 from signmapper_core.importdrive.generic import GenericInputs
 from signmapper_core.importdrive.importer import ImportOptions
+from signmapper_core.pipeline.classifiers import NccClassifier
 from signmapper_core.pipeline.config import DepthConfig
 from signmapper_core.run import MAX_SKIPPED_PERCENT
 
@@ -78,6 +79,9 @@ SHARED = [
                   elsewhere=("bench/bench_rectify.py",)),  # the bench's poses are in LV95, so is its drive
     SharedDefault("CRS of an import's poses", GenericInputs.input_crs, r"input_crs",
                   "signmapper_core/importdrive/generic.py"),
+    SharedDefault("template matching's threshold for 'accepted'", NccClassifier.accept_threshold,
+                  r"^accept_threshold$", "signmapper_core/pipeline/classifiers/ncc.py",
+                  (number(NccClassifier.accept_threshold) + r"[^.]*template matching",)),
 ]
 
 
