@@ -1,14 +1,18 @@
 """Each shared default has one home: written a second time anywhere in the project, a test here fails.
 
-The project's .py files outside tests/ are read with ``ast``. A default is
-"written again" when its value appears as a literal that a name ties to it: a
-parameter's default, a keyword argument, an assignment, a ``.get(key, value)``,
-an ``x or value``, a Processing parameter's default beside its name, an
-argparse ``default=`` of an option named so. A help text (argparse ``help=``,
-a Processing parameter's help, a ``HELP`` string) that states the value in
-its literal words writes it again too; it takes the value from the home with
-an f-string instead. Other uses of the same number (a 4-pair window, a
-14-pixel radius) have other names and are not counted.
+The project's .py files outside tests/ are read with ``ast`` (SHARED lists the
+defaults and their homes). A default is "written again" when its value appears
+as a literal that a name ties to it: a parameter's default, a keyword argument,
+an assignment, a ``.get(key, value)``, an ``x or value``, a Processing
+parameter's default beside its name, an argparse ``default=`` of an option
+named so. Other uses of the same number (a 4-pair window, a 14-pixel radius)
+have other names and are not counted.
+
+A help text (argparse ``help=``/``description=``, a Processing parameter's
+help, a ``HELP`` string) that states a default in its own words writes it again
+too: it takes the value from the home with an f-string, or argparse's
+``%(default)s``. And the sign colours' hue bands are declared in
+sign_colours.py only: a hue compared with a number elsewhere fails.
 """
 
 from __future__ import annotations
