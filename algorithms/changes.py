@@ -152,18 +152,20 @@ class ChangesAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.TOLERANCE, self.tr("Tolerance [m]"), QgsProcessingParameterNumber.Double,
-                                         0.5, minValue=0.01),
+                                         ChangeConfig.tolerance_m, minValue=0.01),
             "A mapped sign of the same type planimetrically closer than this confirms an inventory sign; another "
             "type this close means the sign changed.",
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.MOVE_RADIUS, self.tr("Move radius [m]"),
-                                         QgsProcessingParameterNumber.Double, 5.0, minValue=0.02),
+                                         QgsProcessingParameterNumber.Double, ChangeConfig.move_radius_m,
+                                         minValue=0.02),
             "The same type farther than the tolerance but within this: the sign moved.",
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.MAX_FACE_ANGLE, self.tr("Readable face angle [°]"),
-                                         QgsProcessingParameterNumber.Double, 75.0, minValue=1.0, maxValue=90.0),
+                                         QgsProcessingParameterNumber.Double, ChangeConfig.max_face_angle_deg,
+                                         minValue=1.0, maxValue=90.0),
             "A face turned farther than this away from the camera cannot be read.", advanced=True,
         )
         self.add_parameter(

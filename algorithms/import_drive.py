@@ -30,7 +30,6 @@ NORTHS = (("auto", "Automatic (navigation angles: true north; a camera's angles:
           ("true", "True north"), ("grid", "Grid north of the input CRS"))
 IMAGE_FORMATS = (("auto", "Automatic (normal images kept as they are, rectified ones as JPEG)"), ("jpg", "JPEG"),
                  ("png", "PNG"))
-DEFAULT_OUTPUT_CRS = "EPSG:2056"
 
 
 class ImportDriveAlgorithm(SignMapperAlgorithm):
@@ -47,9 +46,10 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
         "to the left camera, grid convergence and heights by pyproj. Before any image is written, the inputs are "
         "checked (image size against the calibration, poses against the image times, angles that look like radians "
         "given as degrees, a CRS without metres) and the first pair is rectified and its rows checked: the mean "
-        "vertical disparity of matched features must stay below the limit (0.5 px). A failed or cancelled import "
-        "leaves no folder behind. Preview the result with Drive trajectory, then map it with Map traffic signs. "
-        "The KITTI preset reads a KITTI raw drive folder (images, OXTS poses, calibration files) by itself."
+        "vertical disparity of matched features must stay below the limit ('Largest mean vertical disparity'). "
+        "A failed or cancelled import leaves no folder behind. Preview the result with Drive trajectory, then map it "
+        "with Map traffic signs. The KITTI preset reads a KITTI raw drive folder (images, OXTS poses, calibration "
+        "files) by itself."
     )
 
     PRESET = "PRESET"
@@ -79,6 +79,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
     VERTICAL_DISPARITY = "VERTICAL_DISPARITY"
 
     def initAlgorithm(self, config=None):  # noqa: N802
+        from ..signmapper_core.importdrive import GenericInputs, ImportOptions  # delays numpy until used
         from ..signmapper_core.importdrive.attitude import CONVENTIONS  # delays numpy until used
 
         folder, file = QgsProcessingParameterFile.Folder, QgsProcessingParameterFile.File
@@ -149,15 +150,16 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
                            "True north (what an INS gives) or the grid north of a projected input CRS (what "
                            "photogrammetric software gives in a projected CRS). The output grid's convergence is "
                            "applied either way.", advanced=True)
-        self.add_parameter(QgsProcessingParameterString(self.INPUT_CRS, self.tr("CRS of the poses"), "EPSG:4979"),
+        self.add_parameter(QgsProcessingParameterString(self.INPUT_CRS, self.tr("CRS of the poses"),
+                                                        GenericInputs.input_crs),
                            "Any CRS PROJ knows, geographic (x = longitude) or projected. Say what the heights are: "
                            "EPSG:4979 = WGS 84 with ellipsoidal heights, EPSG:4326+5773 = with EGM96 heights, "
                            "EPSG:2056+5728 = LV95 with LN02 heights. A CRS without heights keeps them as given.")
         self.add_parameter(QgsProcessingParameterString(self.OUTPUT_CRS, self.tr("CRS of the drive"), "",
                                                         optional=True),
                            "Projected CRS in metres for the drive, e.g. EPSG:2056 (LV95) or EPSG:2056+5728 (LV95 with "
-                           "LN02 heights; needs swisstopo's geoid grid in PROJ). Empty: EPSG:2056, or for KITTI the "
-                           "UTM zone with EGM96 heights.")
+                           "LN02 heights; needs swisstopo's geoid grid in PROJ). "
+                           f"Empty: {ImportOptions.output_crs}, or for KITTI the UTM zone with EGM96 heights.")
         for name, axis in zip(self.LEVER, ("x", "y", "z")):
             self.add_parameter(number(name, self.tr(f"Lever arm {axis} [m]"), number.Double, 0.0),
                                f"Position of the left camera's projection centre relative to the body whose poses "
@@ -175,10 +177,12 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
                                                       options=[t for _, t in IMAGE_FORMATS], defaultValue=0),
                            "Automatic keeps normal images (already rectified JPEG/PNG/TIFF) byte for byte and writes "
                            "rectified ones as JPEG.", advanced=True)
-        self.add_parameter(number(self.JPEG_QUALITY, self.tr("JPEG quality"), number.Integer, 95, minValue=50,
-                                  maxValue=100), "Quality of JPEG images written by the import.", advanced=True)
+        self.add_parameter(number(self.JPEG_QUALITY, self.tr("JPEG quality"), number.Integer,
+                                  ImportOptions.jpeg_quality, minValue=50, maxValue=100),
+                           "Quality of JPEG images written by the import.", advanced=True)
         self.add_parameter(number(self.MAX_VERTICAL_DISPARITY, self.tr("Largest mean vertical disparity [px]"),
-                                  number.Double, 0.5, minValue=0.01, maxValue=50.0),
+                                  number.Double, ImportOptions.max_vertical_disparity_px, minValue=0.01,
+                                  maxValue=50.0),
                            "The rows of the first pair must line up after rectification: the mean absolute vertical "
                            "disparity of its matched features must stay below this, or the import stops.",
                            advanced=True)
@@ -245,7 +249,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
                     input_crs=string(parameters, self.INPUT_CRS, context).strip(),
                     lever_arm_m=tuple(self.parameterAsDouble(parameters, n, context) for n in self.LEVER),
                     boresight_deg=tuple(self.parameterAsDouble(parameters, n, context) for n in self.BORESIGHT)))
-                output_crs = string(parameters, self.OUTPUT_CRS, context).strip() or DEFAULT_OUTPUT_CRS
+                output_crs = string(parameters, self.OUTPUT_CRS, context).strip() or ImportOptions.output_crs
             check_image = self.parameterAsFileOutput(parameters, self.CHECK_IMAGE, context)
             options = ImportOptions(
                 output_crs=output_crs,

@@ -30,9 +30,10 @@ from ..signmapper_core.output.geopackage_file import OUR_TABLES
 from ..signmapper_core.output.schema import DETECTIONS, SIGNS, OutputContext
 from ..signmapper_core.output.sign_crops import CropFolder
 from ..signmapper_core.pipeline.classifier_names import CLASSIFIER_CHOICES, CLASSIFIERS
-from ..signmapper_core.pipeline.classifiers import accept_threshold, classifier_for
+from ..signmapper_core.pipeline.classifiers import NccClassifier, accept_threshold, classifier_for
 from ..signmapper_core.pipeline.config import default
 from ..signmapper_core.progress import Cancelled, check_cancelled
+from ..signmapper_core.run import MAX_SKIPPED_PERCENT
 from ..signmapper_core.run.dask_pairs import scheduler_address
 from ..signmapper_core.run.mapping import map_drive
 from ..signmapper_core.run.setup import RunSetupError, assemble_run
@@ -41,7 +42,7 @@ from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise, qgis_crs
 
 COLOURS = list(SIGN_COLOURS)
-NEAR_M, FAR_M = ("depth", "near_m"), ("depth", "far_m")  # the settings the depth range parameters set
+NEAR_SETTING, FAR_SETTING = ("depth", "near_m"), ("depth", "far_m")  # the settings the depth range parameters set
 
 
 class MapSignsAlgorithm(SignMapperAlgorithm):
@@ -109,17 +110,19 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.NEAR, self.tr("Near limit of the depth range [m]"),
-                                         QgsProcessingParameterNumber.Double, default("depth", "near_m"), minValue=0.5,
+                                         QgsProcessingParameterNumber.Double, default(*NEAR_SETTING), minValue=0.5,
                                          maxValue=100.0),
-            "Signs closer than this depth (along the optical axis) are not searched; default 4 m.",
+            "Signs closer than this depth (along the optical axis) are not searched; default "
+            f"{default(*NEAR_SETTING):g} m.",
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.FAR, self.tr("Far limit of the depth range [m]"),
-                                         QgsProcessingParameterNumber.Double, default("depth", "far_m"), minValue=1.0,
+                                         QgsProcessingParameterNumber.Double, default(*FAR_SETTING), minValue=1.0,
                                          maxValue=200.0),
             "Signs farther than this depth are not searched (they are measured better in a later pair); default "
-            "14 m as in Cavegn (2011). On wide streets signs on the far side only come into view beyond 14 m: "
-            "about 20 m maps them too, with somewhat larger errors and slower stereo matching.",
+            f"{default(*FAR_SETTING):g} m as in Cavegn (2011). On wide streets signs on the far side only come into "
+            f"view beyond {default(*FAR_SETTING):g} m: about 20 m maps them too, with somewhat larger errors and "
+            "slower stereo matching.",
         )
         self.add_parameter(
             QgsProcessingParameterEnum(self.COLOURS, self.tr("Sign colours to detect"), options=COLOURS,
@@ -169,7 +172,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                                          default("classification", "classification_threshold"), optional=True,
                                          minValue=0.0, maxValue=1.0),
             "Minimum classification indicator (0-1) for status 'accepted'; lower ones get status 'review'. Empty = "
-            "the classifier's own: the network's calibrated threshold, 0.6 for template matching.",
+            f"the classifier's own: the network's calibrated threshold, {NccClassifier.accept_threshold:g} for "
+            "template matching.",
             advanced=True,
         )
         self.add_parameter(
@@ -193,7 +197,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.MAX_SKIPPED, self.tr("Largest share of unreadable pairs [%]"),
-                                         QgsProcessingParameterNumber.Double, 50.0, minValue=0.0, maxValue=100.0),
+                                         QgsProcessingParameterNumber.Double, MAX_SKIPPED_PERCENT, minValue=0.0,
+                                         maxValue=100.0),
             "Pairs whose files cannot be read (or whose detection fails) are skipped and logged. When more than "
             "this share of the drive is skipped the run fails (as soon as that is certain) and writes nothing, "
             "since the output would lack their signs without a word. A run where no pair can be mapped always "
@@ -252,8 +257,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         self.scheduler(parameters, context)  # a malformed address is said before the run
         colours = [COLOURS[i] for i in self.parameterAsEnums(parameters, self.COLOURS, context)]
         chosen = {  # (section, setting) -> the dialog's value
-            NEAR_M: self.parameterAsDouble(parameters, self.NEAR, context),
-            FAR_M: self.parameterAsDouble(parameters, self.FAR, context),
+            NEAR_SETTING: self.parameterAsDouble(parameters, self.NEAR, context),
+            FAR_SETTING: self.parameterAsDouble(parameters, self.FAR, context),
             ("colour", "colours"): tuple(colours),
             ("white", "white_signs"): self.parameterAsBool(parameters, self.WHITE_SIGNS, context),
             ("classification", "exclude"): tuple(self.excluded_ids(parameters, context)),

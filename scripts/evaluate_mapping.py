@@ -221,8 +221,8 @@ def main(argv=None) -> int:
                         help="generated drives: share of sign poles whose lowest sign carries a plate (default: the "
                              "generator's)")
     parser.add_argument("--radius", type=float, default=0.75, help="matching radius in metres")
-    parser.add_argument("--near", type=float, default=4.0)
-    parser.add_argument("--far", type=float, default=14.0)
+    parser.add_argument("--near", type=float, default=DepthConfig.near_m)
+    parser.add_argument("--far", type=float, default=DepthConfig.far_m)
     parser.add_argument("--catalogue", type=Path, default=None)
     parser.add_argument("--classifier", default="auto", help="auto, cnn or ncc")
     parser.add_argument("--workers", type=int, default=0, help="worker processes (0 = all cores)")

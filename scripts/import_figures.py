@@ -22,12 +22,14 @@ import numpy as np
 
 
 def main(argv=None) -> int:
+    from signmapper_core.pipeline.config import DepthConfig
+
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("drive", type=Path)
     parser.add_argument("--span", type=int, default=2, help="pairs a static point is followed through (2: each "
                         "pair with the next; more where pairs are close together)")
     parser.add_argument("--step", type=int, default=1, help="check the rows of every n-th pair")
-    parser.add_argument("--near", type=float, default=4.0, help="nearest point used for the spread, m")
+    parser.add_argument("--near", type=float, default=DepthConfig.near_m, help="nearest point used for the spread, m")
     parser.add_argument("--far", type=float, default=20.0, help="farthest point used for the spread, m")
     parser.add_argument("--map", action="store_true", help="also map the drive's signs")
     args = parser.parse_args(argv)

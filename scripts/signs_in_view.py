@@ -23,6 +23,7 @@ from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive.reader import open_drive
 from signmapper_core.evaluation.families import GROUP_TITLES, GROUPS, catalogue_colour, sign_group
 from signmapper_core.evaluation.visibility import visible_in_pair
+from signmapper_core.pipeline.config import DepthConfig
 
 
 def in_view(truth, camera, poses, near: float, far: float) -> list:
@@ -58,8 +59,8 @@ def main(argv=None) -> int:
     how = parser.add_mutually_exclusive_group()
     how.add_argument("--plan", action="store_true", help="count from the layout, write nothing")
     how.add_argument("--generate", action="store_true", help="write the synthetic drives not there yet")
-    parser.add_argument("--near", type=float, default=4.0)
-    parser.add_argument("--far", type=float, default=14.0)
+    parser.add_argument("--near", type=float, default=DepthConfig.near_m)
+    parser.add_argument("--far", type=float, default=DepthConfig.far_m)
     args = parser.parse_args(argv)
     if not args.drives and not args.seeds:
         parser.error("give drive folders or --seeds")

@@ -29,6 +29,7 @@ from .errors import ClusterError, DriveFormatError, MappingError
 from .output.geopackage_file import OutputFileError
 from .output.gpkg_writer import write_geopackage
 from .output.schema import LANGUAGES, OutputContext, language_of
+from .run import MAX_SKIPPED_PERCENT
 
 PRINT_EVERY_S = 5.0  # a progress line at most this often
 
@@ -46,9 +47,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--scheduler", metavar="tcp://HOST:PORT",
                    help="map on the Dask cluster of this scheduler (needs requirements-dask.txt; docs/scale-out.md)")
     p.add_argument("--workers", type=int, default=0,
-                   help="without --scheduler: worker processes here (default 0 = all cores, 1 = this process)")
+                   help="without --scheduler: worker processes here (0 = all cores, 1 = this process; "
+                        "default %(default)s)")
     p.add_argument("--connect-timeout", type=float, default=10.0, metavar="S",
-                   help="seconds to wait for the scheduler and its first worker (default 10)")
+                   help="seconds to wait for the scheduler and its first worker (default %(default)g)")
     p.add_argument("--catalogue", help="template catalogue folder (default: the bundled Swiss catalogue); on a "
                                        "cluster a folder of your own must be at the same path on every worker")
     p.add_argument("--settings-from", metavar="GPKG",
@@ -62,8 +64,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--crops", action="store_true",
                    help="write an image crop per sign (JPEG of its best pair) in a folder <output name>_crops beside "
                         "the GeoPackage, its path in the field crop_path, as mapsigns does")
-    p.add_argument("--max-skipped", type=float, default=50.0, metavar="PERCENT",
-                   help="largest share of unreadable pairs before a drive fails (default 50 %%, as mapsigns)")
+    p.add_argument("--max-skipped", type=float, default=MAX_SKIPPED_PERCENT, metavar="PERCENT",
+                   help="largest share of unreadable pairs before a drive fails (default %(default)g %%, as mapsigns)")
     return p
 
 

@@ -47,6 +47,22 @@ HOUGH_TINT_HUES: Dict[str, HueBands] = {
     "blue": ((95, 135),),
 }
 
+# Red by hue alone, whatever the saturation: where a danger triangle's hidden apex should be, pixels of another
+# hue (leaves, a hedge) tell an occluder from the triangle's own faded or shadowed red (pipeline/hidden_apex.py)
+RED_ANY_SATURATION_HUES: HueBands = ((0, 12), (150, 179))
+# The red rim of an official drawing, clean and saturated: the training faces' rim (training/face_wear.py)
+DRAWING_RED_HUES: HueBands = ((0, 11), (166, 179))
+DRAWING_RED_MIN_SATURATION = 91
+
+
+def in_hue_bands(hue, bands: HueBands):
+    """Boolean array: ``hue`` (an array of OpenCV hues) inside any of ``bands`` (inclusive)."""
+    inside = False
+    for low, high in bands:
+        inside = inside | ((hue >= low) & (hue <= high))
+    return inside
+
+
 # The colour a map draws each catalogue colour in (a plain marker where a template has no SVG pictogram); white
 # is a catalogue colour too, found by outline rather than hue
 DISPLAY_COLOURS: Dict[str, str] = {"red": "#d52b1e", "blue": "#1f5fae", "yellow": "#f5c400", "white": "#f0f0f0",

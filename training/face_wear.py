@@ -10,6 +10,8 @@ from __future__ import annotations
 import cv2
 import numpy as np
 
+from signmapper_core.sign_colours import DRAWING_RED_HUES, DRAWING_RED_MIN_SATURATION, in_hue_bands
+
 
 def smooth_field(rng: np.random.Generator, h: int, w: int, cell: float) -> np.ndarray:
     """Band-limited noise in about [-1, 1] with features ``cell`` pixels large."""
@@ -108,7 +110,7 @@ def colour_masks(face: np.ndarray, alpha: np.ndarray):
     """(red, white) masks of a face: the rim colour of prohibition and danger signs and the field inside."""
     hsv = cv2.cvtColor(np.clip(face, 0, 255).astype(np.uint8), cv2.COLOR_BGR2HSV)
     inside = alpha > 127
-    red = inside & ((hsv[..., 0] < 12) | (hsv[..., 0] > 165)) & (hsv[..., 1] > 90)
+    red = inside & in_hue_bands(hsv[..., 0], DRAWING_RED_HUES) & (hsv[..., 1] >= DRAWING_RED_MIN_SATURATION)
     white = inside & (hsv[..., 1] < 50) & (hsv[..., 2] > 170)
     return red, white
 

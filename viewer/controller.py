@@ -24,6 +24,7 @@ from ..review.drive_locator import DriveLocator
 from ..review.layers import gpkg_source, layer_kind
 from ..signmapper_core.drive.viewing import best_pair_for, nearest_pair
 from ..signmapper_core.output.schema import DETECTIONS, SIGNS
+from ..signmapper_core.pipeline.config import DepthConfig
 from .frames import PREFETCH, FrameCache
 from .map_items import PairPickTool, VehicleOnMap
 from .overlays import detection_boxes, parse_key, sign_boxes
@@ -187,8 +188,8 @@ class DriveViewerController(DockController):
         record = self.drive.pairs[index]
         boxes = self.boxes(record)
         self.dock.show_frame(index, record.id, image, boxes, self.caption(record, boxes))
-        self.vehicle.show(self.drive.camera, record.pose, float(self.run.get("far_m") or 14.0), self.drive.crs,
-                          follow=self.dock.follow())
+        self.vehicle.show(self.drive.camera, record.pose, float(self.run.get("far_m") or DepthConfig.far_m),
+                          self.drive.crs, follow=self.dock.follow())
 
     def boxes(self, record):
         out = []
@@ -268,8 +269,8 @@ class DriveViewerController(DockController):
             tolerance = point.distance(aside)  # the same screen distance in the drive's metres
         index, distance = nearest_pair(self.drive.pairs, point.x(), point.y())
         if distance > tolerance:
-            near = float(self.run.get("near_m") or 4.0)
-            far = float(self.run.get("far_m") or 14.0)
+            near = float(self.run.get("near_m") or DepthConfig.near_m)
+            far = float(self.run.get("far_m") or DepthConfig.far_m)
             index = best_pair_for(self.drive.camera, self.drive.pairs, point.x(), point.y(), None, near, far)
             if index is None:
                 self.dock.show_message(f"No pair sees ({point.x():.1f}, {point.y():.1f}) within {near:g}–{far:g} m",

@@ -28,7 +28,8 @@ from typing import Optional, Sequence
 
 import numpy as np
 
-from ..evaluation.visibility import facing_vector
+from ..evaluation.visibility import READABLE_FACE_ANGLE_DEG, facing_vector
+from ..pipeline.config import DepthConfig
 
 CONFIRMED, MOVED, CHANGED, MISSING, NOT_COVERED, NEW = "confirmed", "moved", "changed", "missing", "not covered", "new"
 VERDICTS = (CONFIRMED, MOVED, CHANGED, MISSING, NOT_COVERED, NEW)
@@ -84,9 +85,9 @@ class ChangeConfig:
     tolerance_m: float = 0.5  # the same sign: planimetrically closer than this
     move_radius_m: float = 5.0  # the same type farther than the tolerance but within this: moved
     height_gate_m: float = 0.35  # same place only within this vertically, where both heights are known
-    near_m: float = 4.0
-    far_m: float = 14.0
-    max_face_angle_deg: float = 75.0  # a face turned farther away than this is not readable
+    near_m: float = DepthConfig.near_m
+    far_m: float = DepthConfig.far_m
+    max_face_angle_deg: float = READABLE_FACE_ANGLE_DEG
     camera_height_m: Optional[float] = None  # above the road, for inventory heights given above the road
 
     def validate(self) -> ChangeConfig:

@@ -10,6 +10,7 @@ from typing import List, Optional, Sequence, Tuple
 import numpy as np
 
 from ..geometry import pixel_to_world, world_to_pixel
+from ..pipeline.config import DepthConfig
 
 NEAREST_M = 1.0  # nearer than this a projected sign is not drawn (it fills the frame)
 VIEW_MARGIN = 0.05  # share of the image width a place must keep from the border to count as well seen
@@ -57,7 +58,7 @@ def nearest_pair(pairs: Sequence, east: float, north: float) -> Tuple[int, float
 
 
 def best_pair_for(camera, pairs: Sequence, east: float, north: float, height: Optional[float] = None,
-                  near_m: float = 4.0, far_m: float = 14.0) -> Optional[int]:
+                  near_m: float = DepthConfig.near_m, far_m: float = DepthConfig.far_m) -> Optional[int]:
     """Index of the pair that sees a map place best, None if no pair has it in view.
 
     A place is seen well when it is in front of the camera inside the image

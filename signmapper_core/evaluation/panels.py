@@ -13,6 +13,7 @@ from dataclasses import dataclass, fields
 from typing import Optional, Sequence
 
 from ..catalogue.text_panels import is_text_panel
+from ..pipeline.config import DepthConfig
 from .accuracy import share_text
 from .visibility import largest_view_px
 
@@ -40,9 +41,9 @@ class PanelFigures:
                 f">= {MIN_LINE_PX:.0f} px ({share_text(self.texts_right, self.readable_detected)} of the detected)"]
 
 
-def evaluate_panels(drive, signs: Sequence, reference: Sequence, match: Sequence[int], near_m: float = 4.0,
-                    far_m: float = 14.0, min_line_px: float = MIN_LINE_PX,
-                    evidence: Optional[list] = None) -> PanelFigures:
+def evaluate_panels(drive, signs: Sequence, reference: Sequence, match: Sequence[int],
+                    near_m: float = DepthConfig.near_m, far_m: float = DepthConfig.far_m,
+                    min_line_px: float = MIN_LINE_PX, evidence: Optional[list] = None) -> PanelFigures:
     """Text panel figures of one run. ``signs``: the fused signs (no plates) in the order of ``match``, the
     index of each one's reference sign in ``reference`` or -1 (``EvaluationReport.match``)."""
     figures = PanelFigures()

@@ -21,6 +21,7 @@ from typing import Optional
 import numpy as np
 
 from ..catalogue.plates_ch import kind_of
+from ..pipeline.config import DepthConfig
 from .accuracy import match_to_reference, share_text
 from .visibility import largest_view_px, mappable_signs
 
@@ -73,8 +74,8 @@ class PlateFigures:
             f"{MIN_TEXT_PX:.0f} px ({share_text(self.texts_right, self.readable_detected)} of the detected)"]
 
 
-def evaluate_plates(drive, signs, sign_reference, sign_match, near_m: float = 4.0, far_m: float = 14.0,
-                    radius_m: float = 0.75, min_text_px: float = MIN_TEXT_PX,
+def evaluate_plates(drive, signs, sign_reference, sign_match, near_m: float = DepthConfig.near_m,
+                    far_m: float = DepthConfig.far_m, radius_m: float = 0.75, min_text_px: float = MIN_TEXT_PX,
                     evidence: Optional[list] = None) -> PlateFigures:
     """Plate figures of one run.
 

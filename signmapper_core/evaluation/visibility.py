@@ -11,6 +11,9 @@ from __future__ import annotations
 import numpy as np
 
 from ..geometry import world_to_pixel
+from ..pipeline.config import DepthConfig
+
+READABLE_FACE_ANGLE_DEG = 75.0  # a face turned farther than this away from the camera cannot be read
 
 
 def facing_vector(azimuth_deg: float) -> np.ndarray:
@@ -18,7 +21,8 @@ def facing_vector(azimuth_deg: float) -> np.ndarray:
     return np.array([np.sin(a), np.cos(a), 0.0])
 
 
-def visible_in_pair(camera, pose, sign, near_m: float, far_m: float, max_face_angle_deg: float = 75.0) -> bool:
+def visible_in_pair(camera, pose, sign, near_m: float, far_m: float,
+                    max_face_angle_deg: float = READABLE_FACE_ANGLE_DEG) -> bool:
     u, v, z = world_to_pixel(camera, pose, sign.position)
     if not (near_m <= z <= far_m and 0 <= u <= camera.width - 1 and 0 <= v <= camera.height - 1):
         return False
@@ -31,7 +35,8 @@ def visible_in_pair(camera, pose, sign, near_m: float, far_m: float, max_face_an
     return cos_angle >= np.cos(np.radians(max_face_angle_deg))
 
 
-def mappable_signs(drive, near_m: float = 4.0, far_m: float = 14.0, plates: bool = False) -> list:
+def mappable_signs(drive, near_m: float = DepthConfig.near_m, far_m: float = DepthConfig.far_m,
+                   plates: bool = False) -> list:
     """Truth signs of ``drive`` seen face-on within the depth range in at least one pair.
 
     Supplementary plates (rows with ``plate_of``) are left out, or with ``plates`` only they are given.
@@ -45,7 +50,7 @@ def mappable_signs(drive, near_m: float = 4.0, far_m: float = 14.0, plates: bool
     ]
 
 
-def largest_view_px(drive, sign, near_m: float = 4.0, far_m: float = 14.0) -> float:
+def largest_view_px(drive, sign, near_m: float = DepthConfig.near_m, far_m: float = DepthConfig.far_m) -> float:
     """Height in pixels of ``sign``'s face in the pair that sees it largest within the depth range (0 if none)."""
     best = 0.0
     for rec in drive.pairs:
@@ -67,7 +72,7 @@ def densify(polyline_xy, step_m: float) -> np.ndarray:
 
 
 def faces_trajectory(position_xy, facing_deg: float, trajectory_xy: np.ndarray, max_distance_m: float = 20.0,
-                     max_face_angle_deg: float = 75.0) -> bool:
+                     max_face_angle_deg: float = READABLE_FACE_ANGLE_DEG) -> bool:
     """True if from some trajectory vertex within ``max_distance_m`` the sign is ahead and its face looks back.
 
     For references without a camera model (a surveyed inventory with a facing

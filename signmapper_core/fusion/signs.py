@@ -22,6 +22,7 @@ import numpy as np
 
 from ..catalogue.model import UNKNOWN_ID
 from ..output.review_reasons import DOUBTFUL_READINGS, sign_reason
+from ..pipeline.config import DepthConfig
 from ..plates.zone_panels import may_be_disc_of
 from ..statuses import ACCEPTED, REVIEW
 
@@ -107,7 +108,7 @@ class FusionConfig:
     # beyond the range is measured into it now and then (tune drive 808: a 2.30-30 ~20 m away, seen once,
     # mapped 7 m short at 13.2 m and accepted); a sign really within the range is seen again as the vehicle nears
     single_max_depth_share: float = 0.85
-    far_m: float = 14.0  # the mapping's far limit of the search space (mapping passes it)
+    far_m: float = DepthConfig.far_m  # the mapping's far limit of the search space (mapping passes it)
     min_obs_accepted: int = 2
     # a sign whose every view reads it at a size no standard format of its sign has, or as no catalogue sign
     # (review reasons OFF_FORMAT, NO_ENTRY_MATCHES) is mapped only when seen in at least this many pairs: read

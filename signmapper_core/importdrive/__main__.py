@@ -26,7 +26,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--kitti", type=Path, help="a KITTI raw drive folder (..._sync or ..._extract): the preset; "
                    "the calibration, images and poses are found in it")
     p.add_argument("--kitti-cameras", choices=tuple(CAMERAS), default="colour",
-                   help="KITTI cameras: colour (02/03, default) or grey (00/01)")
+                   help="KITTI cameras: colour (02/03) or grey (00/01); default %(default)s")
     p.add_argument("--left", type=Path, help="folder of the left images")
     p.add_argument("--right", type=Path, help="folder of the right images (default: --left, with patterns)")
     p.add_argument("--left-pattern", default="", help="file name pattern of left images, '*' = image id "
@@ -47,7 +47,7 @@ def build_parser() -> argparse.ArgumentParser:
                    "the input grid)")
     p.add_argument("--input-crs", default=d.input_crs, help=f"CRS of the pose positions (default {d.input_crs}: "
                    "WGS 84 longitude/latitude with ellipsoidal heights)")
-    p.add_argument("--output-crs", default=None, help="projected CRS of the drive (default EPSG:2056, LV95; "
+    p.add_argument("--output-crs", default=None, help=f"projected CRS of the drive (default {o.output_crs}, LV95; "
                    "KITTI: the UTM zone with EGM96 heights)")
     p.add_argument("--lever-arm", type=float, nargs=3, default=d.lever_arm_m, metavar=("X", "Y", "Z"),
                    help="left camera's projection centre in the body axes of the convention, metres")
@@ -55,11 +55,11 @@ def build_parser() -> argparse.ArgumentParser:
                    help="camera heading/pitch/roll relative to the body (0 0 0 = looking forward), degrees")
     p.add_argument("--image-format", choices=IMAGE_FORMATS, default=o.image_format, help="format of the written "
                    "images; auto keeps normal images as they are and writes JPEG otherwise")
-    p.add_argument("--jpeg-quality", type=int, default=o.jpeg_quality, help="JPEG quality (default 95)")
+    p.add_argument("--jpeg-quality", type=int, default=o.jpeg_quality, help="JPEG quality (default %(default)s)")
     p.add_argument("--max-vertical-disparity", type=float, default=o.max_vertical_disparity_px,
                    help="largest mean vertical disparity (px) of the first pair's features after rectification")
     p.add_argument("--check-image", type=Path, help="write the first pair with epipolar lines to this PNG")
-    p.add_argument("--workers", type=int, default=o.workers, help="threads converting pairs (default 2)")
+    p.add_argument("--workers", type=int, default=o.workers, help="threads converting pairs (default %(default)s)")
     p.add_argument("--quiet", action="store_true", help="no progress output")
     return p
 
@@ -89,7 +89,7 @@ def main(argv=None) -> int:
 
     try:
         source = source_from_args(args)
-        output_crs = args.output_crs or (utm_crs(source) if args.kitti is not None else "EPSG:2056")
+        output_crs = args.output_crs or (utm_crs(source) if args.kitti is not None else ImportOptions.output_crs)
         options = ImportOptions(output_crs=output_crs, image_format=args.image_format,
                                 jpeg_quality=args.jpeg_quality, max_vertical_disparity_px=args.max_vertical_disparity,
                                 check_image=args.check_image, workers=args.workers)

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..geometry import pixel_to_world
+from ..pipeline.config import DepthConfig
 from .epipolar import grey, match_features, track
 
 MAX_DY_PX = 1.0   # a left-right match off its row by more than this is no match in a normal pair
@@ -63,7 +64,8 @@ def _world(drive, record, left_grey, right_grey, points_left: np.ndarray, near_m
     return out
 
 
-def static_point_spread(drive, start: int, pairs: int = 4, near_m: float = 4.0, far_m: float = 20.0) -> PointSpread:
+def static_point_spread(drive, start: int, pairs: int = 4, near_m: float = DepthConfig.near_m,
+                        far_m: float = 20.0) -> PointSpread:
     """Points of pair ``start`` followed through ``pairs`` consecutive pairs (see module)."""
     records = drive.pairs[start:start + pairs]
     first = records[0]

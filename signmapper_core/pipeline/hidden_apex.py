@@ -16,6 +16,7 @@ from typing import Optional, Tuple
 import cv2
 import numpy as np
 
+from ..sign_colours import RED_ANY_SATURATION_HUES, in_hue_bands
 from .shape import ideal_mask
 
 Box = Tuple[int, int, int, int]
@@ -46,5 +47,4 @@ def apex_completed_face(image: np.ndarray, bbox: Box, aspect: float, config) -> 
 
 def _red(hsv: np.ndarray) -> np.ndarray:
     """Pixels of a red hue (either end of the hue circle), whatever their saturation."""
-    hue = hsv[..., 0]
-    return (hue <= 12) | (hue >= 150)
+    return in_hue_bands(hsv[..., 0], RED_ANY_SATURATION_HUES)

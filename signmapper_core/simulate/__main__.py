@@ -21,7 +21,7 @@ def build_parser() -> argparse.ArgumentParser:
                     "a street with traffic signs, distractors and realistic camera effects.")
     p.add_argument("out", help="output drive folder (must not exist, or be empty)")
     p.add_argument("--pairs", type=int, default=d.pairs, help=f"number of stereo pairs (default {d.pairs})")
-    p.add_argument("--seed", type=int, default=d.seed, help="random seed; same seed, same files (default 0)")
+    p.add_argument("--seed", type=int, default=d.seed, help=f"random seed; same seed, same files (default {d.seed})")
     p.add_argument("--depth", action="store_true", help="also write true depth maps depth/<id>.npy")
     p.add_argument("--width", type=int, default=d.width, help=f"image width in pixels (default {d.width})")
     p.add_argument("--height", type=int, default=d.height, help=f"image height in pixels (default {d.height})")

@@ -2,7 +2,8 @@
 
 ``python -m signmapper_core.simulate.contact_sheet DRIVE OUT.png [--tiles 4] [--tile-width 640]``
 Boxes are projected from truth.csv with the poses of poses.csv; signs within the
-detection range (4-14 m) are boxed green and labelled, others thin orange.
+mapping's default depth range (``DepthConfig``) are boxed green and labelled,
+others thin orange.
 ``--crops`` instead shows every truth sign cut out of the image where it is seen
 from nearest a given distance (``--distance``, default 7 m), to look at faces as
 the camera sees them.
@@ -18,8 +19,9 @@ import numpy as np
 
 from ..drive.reader import Drive, TruthSign, open_drive
 from ..geometry import world_to_pixel
+from ..pipeline.config import DepthConfig
 
-NEAR_M, FAR_M = 4.0, 14.0
+SEARCH_NEAR_M, SEARCH_FAR_M = DepthConfig.near_m, DepthConfig.far_m  # the mapping's default search space
 
 
 def sign_corners(sign: TruthSign) -> np.ndarray:
@@ -52,7 +54,7 @@ def annotate(drive: Drive, index: int) -> np.ndarray:
     img = drive.load_left(drive.pairs[index])
     scale = max(1, img.shape[1] // 640)
     for sign, uv, z in signs_in_view(drive, index):
-        in_range = NEAR_M <= z <= FAR_M
+        in_range = SEARCH_NEAR_M <= z <= SEARCH_FAR_M
         colour = (0, 255, 0) if in_range else (0, 200, 255)
         cv2.polylines(img, [np.round(uv).astype(np.int32)], True, colour, 2 * scale if in_range else scale,
                       cv2.LINE_AA)
@@ -67,7 +69,8 @@ def annotate(drive: Drive, index: int) -> np.ndarray:
 
 def pick_pairs(drive: Drive, count: int) -> list[int]:
     """Pairs with the most truth signs in range, spread over the drive."""
-    scores = [sum(NEAR_M <= z <= FAR_M for _s, _uv, z in signs_in_view(drive, i)) for i in range(len(drive))]
+    scores = [sum(SEARCH_NEAR_M <= z <= SEARCH_FAR_M for _s, _uv, z in signs_in_view(drive, i))
+              for i in range(len(drive))]
     chosen: list[int] = []
     for i in sorted(range(len(drive)), key=lambda k: (-scores[k], k)):
         if all(abs(i - j) >= 3 for j in chosen):
@@ -106,7 +109,8 @@ def sign_crops(drive_path, out_png, distance_m: float = 7.0, tile: int = 128, co
         for sign, uv, z in signs_in_view(drive, i):
             inside = (uv[:, 0].min() >= 0 and uv[:, 1].min() >= 0 and uv[:, 0].max() < drive.camera.width
                       and uv[:, 1].max() < drive.camera.height)
-            if inside and NEAR_M <= z <= FAR_M and abs(z - distance_m) < best.get(sign.sign_id, (np.inf,))[0]:
+            nearer = abs(z - distance_m) < best.get(sign.sign_id, (np.inf,))[0]
+            if inside and SEARCH_NEAR_M <= z <= SEARCH_FAR_M and nearer:
                 best[sign.sign_id] = (abs(z - distance_m), i, uv)
     tiles = []
     for sign in drive.truth or []:
@@ -130,7 +134,7 @@ def sign_crops(drive_path, out_png, distance_m: float = 7.0, tile: int = 128, co
                     (255, 255, 255), 1, cv2.LINE_AA)
         tiles.append(cell)
     if not tiles:
-        raise ValueError(f"{drive_path}: no truth sign is fully in view within {NEAR_M:g}-{FAR_M:g} m")
+        raise ValueError(f"{drive_path}: no truth sign is fully in view within {SEARCH_NEAR_M:g}-{SEARCH_FAR_M:g} m")
     while len(tiles) % columns:
         tiles.append(np.full_like(tiles[0], 40))
     sheet = np.vstack([np.hstack(tiles[r:r + columns]) for r in range(0, len(tiles), columns)])
@@ -144,8 +148,8 @@ def main(argv=None) -> int:
                                 description="Draw the truth signs onto a few left images of a drive, as one PNG.")
     p.add_argument("drive", help="drive folder with truth.csv")
     p.add_argument("out", help="output PNG")
-    p.add_argument("--tiles", type=int, default=4, help="number of pairs shown (default 4)")
-    p.add_argument("--tile-width", type=int, default=640, help="width of each tile in pixels (default 640)")
+    p.add_argument("--tiles", type=int, default=4, help="number of pairs shown (default %(default)s)")
+    p.add_argument("--tile-width", type=int, default=640, help="width of each tile in pixels (default %(default)s)")
     p.add_argument("--crops", action="store_true", help="one crop per truth sign instead of whole images")
     p.add_argument("--distance", type=float, default=7.0, help="with --crops: preferred viewing distance, m")
     args = p.parse_args(argv)

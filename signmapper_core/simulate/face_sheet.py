@@ -81,7 +81,7 @@ def main(argv=None) -> int:
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--count", type=int, default=24)
     p.add_argument("--columns", type=int, default=6)
-    p.add_argument("--tile", type=int, default=200, help="tile size in pixels (default 200)")
+    p.add_argument("--tile", type=int, default=200, help="tile size in pixels (default %(default)s)")
     p.add_argument("--artwork", choices=("mixed", "procedural"), default="mixed")
     p.add_argument("--master-share", type=float, default=FaceOptions().master_share)
     p.add_argument("--only", choices=[v.removeprefix("face_") for v in VARIATIONS],

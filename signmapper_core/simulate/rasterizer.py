@@ -16,8 +16,8 @@ import numpy as np
 from ..geometry import Camera, Pose
 from .surfaces import Surface, Texture
 
-NEAR_M = 0.3
-FAR_M = 250.0
+CLIP_NEAR_M = 0.3  # the camera's clipping planes: a triangle is cut at the near one, one wholly beyond the far
+CLIP_FAR_M = 250.0  # one is not drawn
 SUBPIXEL_BITS = 4
 
 
@@ -102,12 +102,12 @@ class Rasterizer:
         poly = packed[:, 12:20].reshape(-1, 4, 2)
         pts = o_c[:, None, :] + poly[..., 0:1] * u_c[:, None, :] + poly[..., 1:2] * v_c[:, None, :]
         z = pts[..., 2]
-        keep = (z.max(axis=1) >= NEAR_M) & (z.min(axis=1) <= FAR_M)
+        keep = (z.max(axis=1) >= CLIP_NEAR_M) & (z.min(axis=1) <= CLIP_FAR_M)
         one_sided = packed[:, 20] > 0
         facing = np.einsum("ij,ij->i", packed[:, 9:12], centre - packed[:, 0:3]) > 0
         keep &= ~one_sided | facing
         # frustum test for surfaces entirely in front of the near plane
-        front = keep & (z.min(axis=1) >= NEAR_M)
+        front = keep & (z.min(axis=1) >= CLIP_NEAR_M)
         with np.errstate(divide="ignore", invalid="ignore"):
             u = self.camera.fx * pts[..., 0] / z + self.camera.cx
             v = self.camera.fy * pts[..., 1] / z + self.camera.cy
@@ -122,10 +122,10 @@ class Rasterizer:
         v_c = surf.axis_v @ rot
         st = surf.polygon
         z = o_c[2] + st[:, 0] * u_c[2] + st[:, 1] * v_c[2]
-        if z.max() < NEAR_M or z.min() > FAR_M:
+        if z.max() < CLIP_NEAR_M or z.min() > CLIP_FAR_M:
             return None
-        if z.min() < NEAR_M:
-            st = _clip_near(st, z, NEAR_M)
+        if z.min() < CLIP_NEAR_M:
+            st = _clip_near(st, z, CLIP_NEAR_M)
             if len(st) < 3:
                 return None
         pts_c = o_c + st[:, :1] * u_c + st[:, 1:2] * v_c
@@ -148,7 +148,7 @@ class Rasterizer:
         plane = (normal[0] / cam.fx / d, normal[1] / cam.fy / d,
                  (normal[2] - normal[0] * cam.cx / cam.fx - normal[1] * cam.cy / cam.fy) / d)
         mean_z = float(zc.mean())
-        texel_px = float(np.sqrt(u_c @ u_c)) * cam.fx / max(mean_z, NEAR_M)
+        texel_px = float(np.sqrt(u_c @ u_c)) * cam.fx / max(mean_z, CLIP_NEAR_M)
         return mean_z, surf, uv, (x0, y0, x1, y1), h, plane, texel_px
 
     def _draw(self, image, inv_depth, surf: Surface, uv, box, h, plane, texel_px):
