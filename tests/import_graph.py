@@ -14,7 +14,9 @@ REPO = Path(__file__).resolve().parents[1]
 HEAVY = ("cv2", "numpy", "pyproj", "PIL", "distributed", "dask", "osgeo", "psycopg", "psycopg2", "shapely")
 # served lazily by a package's module-level __getattr__: (package, name) -> the module that defines it
 LAZY_NAMES = {("signmapper_core.pipeline", "detect_pair"): "signmapper_core.pipeline.detect",
-              ("signmapper_core.pipeline", "detect_in_window"): "signmapper_core.pipeline.detect"}
+              ("signmapper_core.pipeline", "detect_in_window"): "signmapper_core.pipeline.detect",
+              **{("signmapper_core.simulate", name): "signmapper_core.simulate.generator"
+                 for name in ("generate_drive", "recorded_poses", "true_poses")}}
 PLUGIN_PREFIX = "sign_mapper."  # how tests and QGIS name the plugin package
 
 

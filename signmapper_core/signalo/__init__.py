@@ -8,6 +8,10 @@ detection, ``schema`` checks a database is a Signalo version we can use,
 
 from .schema import SignaloError
 
+# how mapped signs become Signalo's supports and azimuts (export.plan_supports)
+POLE_RADIUS_M = 0.3  # signs closer than this on the plan stand on one pole
+AZIMUTH_GAP_DEG = 30.0  # faces of one pole whose directions differ less than this share an azimut
+
 
 def connect(conninfo: str, where: str = ""):
     """A psycopg2 connection; SignaloError naming the database and the reason if it cannot be opened."""
@@ -21,4 +25,4 @@ def connect(conninfo: str, where: str = ""):
         raise SignaloError(f"cannot connect to {where or 'the Signalo database'}: {str(exc).strip()}") from exc
 
 
-__all__ = ["SignaloError", "connect"]
+__all__ = ["AZIMUTH_GAP_DEG", "POLE_RADIUS_M", "SignaloError", "connect"]

@@ -36,6 +36,7 @@ from ..catalogue.plates_ch import FREE_TEXT_PLATES, RIGHT, direction_of, signalo
 from ..plates.formats import PLATE_ID
 from ..plates.types import inscriptions, text_plate_id
 from ..statuses import REVIEW
+from . import AZIMUTH_GAP_DEG, POLE_RADIUS_M
 from .schema import OFFICIAL_SIGN_TYPE, SCHEMA, SignaloError, check_database
 from .types import to_signalo
 
@@ -129,8 +130,8 @@ def _angle_gap(a: float, b: float) -> float:
     return abs((a - b + 180.0) % 360.0 - 180.0)
 
 
-def plan_supports(signs: Sequence[ExportSign], pole_radius_m: float = 0.3,
-                  azimuth_gap_deg: float = 30.0) -> list[SupportPlan]:
+def plan_supports(signs: Sequence[ExportSign], pole_radius_m: float = POLE_RADIUS_M,
+                  azimuth_gap_deg: float = AZIMUTH_GAP_DEG) -> list[SupportPlan]:
     """Group signs into poles (single linkage within ``pole_radius_m``) and each pole's faces into azimuts."""
     n = len(signs)
     parent = list(range(n))
@@ -290,8 +291,8 @@ def _update_sign(cursor, sign: ExportSign, srid: int, run_id: str) -> str:
     return str(sign.update_id)
 
 
-def export_signs(connection, run_id: str, signs: Sequence[ExportSign], pole_radius_m: float = 0.3,
-                 azimuth_gap_deg: float = 30.0, where: str = "the database") -> ExportResult:
+def export_signs(connection, run_id: str, signs: Sequence[ExportSign], pole_radius_m: float = POLE_RADIUS_M,
+                 azimuth_gap_deg: float = AZIMUTH_GAP_DEG, where: str = "the database") -> ExportResult:
     """Write ``signs`` into the Signalo database of ``connection`` in one transaction; SignaloError if it cannot.
 
     Signs the run already wrote are left alone; signs whose type Signalo lacks
