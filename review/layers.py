@@ -46,16 +46,22 @@ def layer_kind(layer) -> Optional[str]:
     return SIGNS if SIGNS in kinds else DETECTIONS
 
 
-def detections_layer_for(layer) -> Optional[QgsVectorLayer]:
-    """The ``detections`` layer of the GeoPackage holding ``layer``: the project's if loaded, else a private one."""
-    path, _ = gpkg_source(layer)
+def gpkg_layer(path: str, name: str) -> Optional[QgsVectorLayer]:
+    """Layer ``name`` of the GeoPackage ``path``: the project's if loaded (so edits in its buffer show), else a
+    private one; None where there is no such layer (or no path). The review and the drive viewer both reach a
+    run's other layer this way."""
     if not path:
         return None
     for candidate in QgsProject.instance().mapLayers().values():
-        if gpkg_source(candidate) == (path, DETECTIONS):
+        if gpkg_source(candidate) == (path, name):
             return candidate
-    private = QgsVectorLayer(layer_uri(path, DETECTIONS), DETECTIONS, "ogr")
+    private = QgsVectorLayer(layer_uri(path, name), name, "ogr")
     return private if private.isValid() else None
+
+
+def detections_layer_for(layer) -> Optional[QgsVectorLayer]:
+    """The ``detections`` layer of the GeoPackage holding ``layer``: the project's if loaded, else a private one."""
+    return gpkg_layer(gpkg_source(layer)[0], DETECTIONS)
 
 
 def features_where(layer, field: str, value):

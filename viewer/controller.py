@@ -17,11 +17,11 @@ from qgis.PyQt.QtCore import QTimer
 from qgis.PyQt.sip import isdeleted
 
 from ..gpkg.fields import feature_values
-from ..gpkg.output import layer_uri, read_run_table
+from ..gpkg.output import read_run_table
 from ..review.background import BackgroundRunner
 from ..review.dock_controller import DockController
 from ..review.drive_locator import DriveLocator
-from ..review.layers import gpkg_source, layer_kind
+from ..review.layers import gpkg_layer, gpkg_source, layer_kind
 from ..signmapper_core.drive.viewing import best_pair_for, nearest_pair
 from ..signmapper_core.output.schema import DETECTIONS, SIGNS
 from ..signmapper_core.pipeline.config import DepthConfig
@@ -92,7 +92,7 @@ class DriveViewerController(DockController):
         self.run = read_run_table(path) if path else {}
         layers = {kind: layer}
         other = DETECTIONS if kind == SIGNS else SIGNS
-        found = self._layer_of(path, other)
+        found = gpkg_layer(path, other)
         if found is not None:
             layers[other] = found
         self._watch(layers)
@@ -113,16 +113,6 @@ class DriveViewerController(DockController):
         """The shown frame again with the layers as they are now (its image is in the cache)."""
         if self.drive is not None and self.index >= 0 and self.wanted == self.index:
             self.frames.get(self.index, lambda image, i=self.index: self._show(i, image))
-
-    @staticmethod
-    def _layer_of(path: str, kind: str):
-        if not path:
-            return None
-        for candidate in QgsProject.instance().mapLayers().values():
-            if gpkg_source(candidate) == (path, kind):
-                return candidate
-        private = QgsVectorLayer(layer_uri(path, kind), kind, "ogr")
-        return private if private.isValid() else None
 
     def _open_drive(self, recorded: str) -> None:
         self.play(False)
