@@ -26,11 +26,21 @@ def _off_centre_point(alpha: np.ndarray, rng: np.random.Generator, min_radius: f
     return int(x), int(y)
 
 
+def _paint(img: np.ndarray, mask: np.ndarray, colour) -> np.ndarray:
+    """``img`` with ``colour`` laid over it in the share ``mask`` (0..1) of each pixel: how every mark goes on."""
+    return img * (1 - mask[..., None]) + colour * mask[..., None]
+
+
+def _mark_start(bgr: np.ndarray, alpha: np.ndarray, rng: np.random.Generator, min_radius: float):
+    """(h, w, the face as float BGR, where the mark goes or None): what every mark starts from, ``min_radius`` as
+    in :func:`_off_centre_point`."""
+    h, w = bgr.shape[:2]
+    return h, w, bgr.astype(np.float32), _off_centre_point(alpha, rng, min_radius)
+
+
 def sticker(bgr: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.ndarray:
     """Float BGR with one sticker: a rotated rectangle or a disc, some with a few lines of 'print'."""
-    h, w = bgr.shape[:2]
-    img = bgr.astype(np.float32)
-    at = _off_centre_point(alpha, rng, 0.28)
+    h, w, img, at = _mark_start(bgr, alpha, rng, 0.28)
     if at is None:
         return img
     size = rng.uniform(0.05, 0.11) * w
@@ -43,7 +53,7 @@ def sticker(bgr: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.
     else:
         cv2.circle(mask, at, max(1, int(size / 2)), 1.0, -1, cv2.LINE_AA)
     mask *= alpha.astype(np.float32) / 255.0
-    img = img * (1 - mask[..., None]) + colour * mask[..., None]
+    img = _paint(img, mask, colour)
     if rng.random() < 0.6:  # a few dark 'text' lines across the sticker
         lines = np.zeros((h, w), np.float32)
         thick = max(1, int(round(size * 0.07)))
@@ -53,15 +63,13 @@ def sticker(bgr: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.
             cv2.line(lines, (int(at[0] - half), y), (int(at[0] + half), y), 1.0, thick, cv2.LINE_AA)
         lines *= mask
         ink = np.array((30.0, 30.0, 30.0)) if colour.mean() > 100 else np.array((235.0, 235.0, 235.0))
-        img = img * (1 - lines[..., None]) + ink * lines[..., None]
+        img = _paint(img, lines, ink)
     return img
 
 
 def graffiti_tag(bgr: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -> np.ndarray:
     """Float BGR with one sprayed tag: a smooth scribble with loops, soft-edged, clipped to the face."""
-    h, w = bgr.shape[:2]
-    img = bgr.astype(np.float32)
-    at = _off_centre_point(alpha, rng, 0.2)
+    h, w, img, at = _mark_start(bgr, alpha, rng, 0.2)
     if at is None:
         return img
     span = rng.uniform(0.2, 0.35) * w
@@ -79,4 +87,4 @@ def graffiti_tag(bgr: np.ndarray, alpha: np.ndarray, rng: np.random.Generator) -
     mask = cv2.GaussianBlur(mask, (0, 0), max(0.6, thick * 0.3)) * rng.uniform(0.75, 0.95)
     mask = np.clip(mask * 1.3, 0, 1) * (alpha.astype(np.float32) / 255.0)
     colour = np.array(SPRAY_BGR[int(rng.integers(len(SPRAY_BGR)))], np.float32)
-    return img * (1 - mask[..., None]) + colour * mask[..., None]
+    return _paint(img, mask, colour)
