@@ -15,6 +15,7 @@ import numpy as np
 
 from ..catalogue import load_catalogue
 from .face_artwork import OTHER_PICTOGRAM, has_procedural, master_face, procedural_face
+from .sheet_grid import tile_grid
 
 PER_ROW = 6
 
@@ -37,9 +38,7 @@ def artwork_sheet(template_ids, size_px: int, rng: np.random.Generator) -> np.nd
         tiles.append(np.vstack([head, tile]))
     if not tiles:
         raise ValueError("no signs to draw")
-    while len(tiles) % PER_ROW:
-        tiles.append(np.full_like(tiles[0], 255))
-    return np.vstack([np.hstack(tiles[k : k + PER_ROW]) for k in range(0, len(tiles), PER_ROW)])
+    return tile_grid(tiles, PER_ROW, 255)
 
 
 def main(argv=None) -> int:

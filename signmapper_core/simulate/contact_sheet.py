@@ -20,6 +20,7 @@ import numpy as np
 from ..drive.reader import Drive, TruthSign, open_drive
 from ..geometry import world_to_pixel
 from ..pipeline.config import DepthConfig
+from .sheet_grid import tile_grid, write_png
 
 SEARCH_NEAR_M, SEARCH_FAR_M = DepthConfig.near_m, DepthConfig.far_m  # the mapping's default search space
 
@@ -91,13 +92,8 @@ def contact_sheet(drive_path, out_png, tiles: int = 4, tile_width: int = 640) ->
         cv2.putText(small, f"pair {drive.pairs[i].id}", (8, h - 10), cv2.FONT_HERSHEY_SIMPLEX, 0.5,
                     (255, 255, 255), 1, cv2.LINE_AA)
         images.append(small)
-    cols = 2 if len(images) > 1 else 1
-    while len(images) % cols:
-        images.append(np.zeros_like(images[0]))
-    rows = [np.hstack(images[r:r + cols]) for r in range(0, len(images), cols)]
-    sheet = np.vstack(rows)
-    if not cv2.imwrite(str(out_png), sheet, [cv2.IMWRITE_PNG_COMPRESSION, 9]):
-        raise OSError(f"{out_png}: could not write the PNG")
+    sheet = tile_grid(images, 2 if len(images) > 1 else 1, 0)
+    write_png(out_png, sheet)
     return sheet
 
 
@@ -135,11 +131,8 @@ def sign_crops(drive_path, out_png, distance_m: float = 7.0, tile: int = 128, co
         tiles.append(cell)
     if not tiles:
         raise ValueError(f"{drive_path}: no truth sign is fully in view within {SEARCH_NEAR_M:g}-{SEARCH_FAR_M:g} m")
-    while len(tiles) % columns:
-        tiles.append(np.full_like(tiles[0], 40))
-    sheet = np.vstack([np.hstack(tiles[r:r + columns]) for r in range(0, len(tiles), columns)])
-    if not cv2.imwrite(str(out_png), sheet, [cv2.IMWRITE_PNG_COMPRESSION, 9]):
-        raise OSError(f"{out_png}: could not write the PNG")
+    sheet = tile_grid(tiles, columns, 40)
+    write_png(out_png, sheet)
     return sheet
 
 

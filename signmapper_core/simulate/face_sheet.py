@@ -17,6 +17,7 @@ import numpy as np
 
 from .faces import FaceOptions, draw_sign_face, pick_format, sign_kinds
 from .panels import face_shape
+from .sheet_grid import tile_grid, write_png
 
 VARIATIONS = ("face_print", "face_sheeting", "face_wear", "face_dirt", "face_marks", "face_dents")
 FX = 1750.0
@@ -66,11 +67,8 @@ def face_sheet(out_png, seed: int = 0, count: int = 24, columns: int = 6, tile: 
                options: FaceOptions | None = None, weathering: bool = True) -> np.ndarray:
     faces = sheet_faces(seed, count, options or FaceOptions(), weathering)
     tiles = [tile_image(tid, bgr, alpha, notes, tile) for tid, bgr, alpha, notes in faces]
-    while len(tiles) % columns:
-        tiles.append(np.full_like(tiles[0], 128))
-    sheet = np.vstack([np.hstack(tiles[r:r + columns]) for r in range(0, len(tiles), columns)])
-    if not cv2.imwrite(str(out_png), sheet, [cv2.IMWRITE_PNG_COMPRESSION, 9]):
-        raise OSError(f"{out_png}: could not write the PNG")
+    sheet = tile_grid(tiles, columns, 128)
+    write_png(out_png, sheet)
     return sheet
 
 
