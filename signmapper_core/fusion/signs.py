@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from collections import defaultdict
 from dataclasses import dataclass, field
+from operator import attrgetter
 from typing import Mapping, Optional, Sequence
 
 import numpy as np
@@ -27,8 +28,14 @@ from ..plates.zone_panels import may_be_disc_of
 from ..statuses import ACCEPTED, REVIEW
 
 
+def _reads(path: str, doc: str) -> property:
+    """A read-only attribute that reads ``path`` (dotted) of its object: an observation shows its detection's and
+    its pair's values, a fused sign its best observation's, without a copy that could go stale."""
+    return property(attrgetter(path), doc=doc)
+
+
 def _of_detection(name: str, doc: str) -> property:
-    return property(lambda self: getattr(self.detection, name), doc=doc)
+    return _reads(f"detection.{name}", doc)
 
 
 @dataclass(eq=False)
@@ -63,23 +70,10 @@ class Observation:
     depth_m = _of_detection("depth_m", "depth of the face centre")
     position = _of_detection("position", "(E, N, H) of the face centre")
     normal = _of_detection("normal_world", "unit face normal (E, N, H) towards the camera, or None")
-
-    @property
-    def pair_index(self) -> int:
-        return self.record.index
-
-    @property
-    def pair_id(self) -> str:
-        return self.record.id
-
-    @property
-    def time(self) -> float:
-        return self.record.time
-
-    @property
-    def camera_centre(self) -> np.ndarray:
-        """World position of the left camera of the pair."""
-        return self.record.pose.centre
+    pair_index = _reads("record.index", "index of the pair in the drive")
+    pair_id = _reads("record.id", "id of the pair")
+    time = _reads("record.time", "time of the pair")
+    camera_centre = _reads("record.pose.centre", "World position of the left camera of the pair.")
 
 
 @dataclass(frozen=True)
@@ -171,22 +165,10 @@ class FusedSign:
     text_confidence: Optional[float] = None  # 0..1: OCR confidence and agreement of its readings
     review_reason: Optional[str] = None  # why it is in review (review_reasons); None when accepted
 
-    @property
-    def name(self) -> str:
-        return self.best.name
-
-    @property
-    def colour(self) -> str:
-        return self.best.colour
-
-    @property
-    def shape(self) -> str:
-        return self.best.shape
-
-    @property
-    def source(self) -> str:
-        """How the best observation was found: "colour" segmentation or "hough" fallback."""
-        return self.best.source
+    name = _reads("best.name", "template name (of the best observation)")
+    colour = _reads("best.colour", "segmented colour (of the best observation)")
+    shape = _reads("best.shape", "shape (of the best observation)")
+    source = _reads("best.source", 'How the best observation was found: "colour" segmentation or "hough" fallback.')
 
 
 def _compatible_shape(a: str, b: str) -> bool:
