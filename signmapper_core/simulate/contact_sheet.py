@@ -20,7 +20,7 @@ import numpy as np
 from ..drive.reader import Drive, TruthSign, open_drive
 from ..geometry import world_to_pixel
 from ..pipeline.config import DepthConfig
-from .sheet_grid import tile_grid, write_png
+from .sheet_grid import write_sheet
 
 SEARCH_NEAR_M, SEARCH_FAR_M = DepthConfig.near_m, DepthConfig.far_m  # the mapping's default search space
 
@@ -92,9 +92,7 @@ def contact_sheet(drive_path, out_png, tiles: int = 4, tile_width: int = 640) ->
         cv2.putText(small, f"pair {drive.pairs[i].id}", (8, h - 10), cv2.FONT_HERSHEY_SIMPLEX, 0.5,
                     (255, 255, 255), 1, cv2.LINE_AA)
         images.append(small)
-    sheet = tile_grid(images, 2 if len(images) > 1 else 1, 0)
-    write_png(out_png, sheet)
-    return sheet
+    return write_sheet(out_png, images, 2 if len(images) > 1 else 1, 0)
 
 
 def sign_crops(drive_path, out_png, distance_m: float = 7.0, tile: int = 128, columns: int = 8) -> np.ndarray:
@@ -131,9 +129,7 @@ def sign_crops(drive_path, out_png, distance_m: float = 7.0, tile: int = 128, co
         tiles.append(cell)
     if not tiles:
         raise ValueError(f"{drive_path}: no truth sign is fully in view within {SEARCH_NEAR_M:g}-{SEARCH_FAR_M:g} m")
-    sheet = tile_grid(tiles, columns, 40)
-    write_png(out_png, sheet)
-    return sheet
+    return write_sheet(out_png, tiles, columns, 40)
 
 
 def main(argv=None) -> int:

@@ -17,7 +17,7 @@ import numpy as np
 
 from .faces import FaceOptions, draw_sign_face, pick_format, sign_kinds
 from .panels import face_shape
-from .sheet_grid import tile_grid, write_png
+from .sheet_grid import write_sheet
 
 VARIATIONS = ("face_print", "face_sheeting", "face_wear", "face_dirt", "face_marks", "face_dents")
 FX = 1750.0
@@ -67,9 +67,7 @@ def face_sheet(out_png, seed: int = 0, count: int = 24, columns: int = 6, tile: 
                options: FaceOptions | None = None, weathering: bool = True) -> np.ndarray:
     faces = sheet_faces(seed, count, options or FaceOptions(), weathering)
     tiles = [tile_image(tid, bgr, alpha, notes, tile) for tid, bgr, alpha, notes in faces]
-    sheet = tile_grid(tiles, columns, 128)
-    write_png(out_png, sheet)
-    return sheet
+    return write_sheet(out_png, tiles, columns, 128)
 
 
 def main(argv=None) -> int:

@@ -16,7 +16,10 @@ def tile_grid(tiles: Sequence[np.ndarray], columns: int, fill: int) -> np.ndarra
     return np.vstack([np.hstack(tiles[r:r + columns]) for r in range(0, len(tiles), columns)])
 
 
-def write_png(path, image: np.ndarray) -> None:
-    """``image`` as a compressed PNG at ``path``; OSError where it cannot be written (cv2 only returns False)."""
-    if not cv2.imwrite(str(path), image, [cv2.IMWRITE_PNG_COMPRESSION, 9]):
+def write_sheet(path, tiles: Sequence[np.ndarray], columns: int, fill: int) -> np.ndarray:
+    """The sheet of ``tiles`` (:func:`tile_grid`), written as a compressed PNG at ``path``; OSError where it cannot
+    be written (cv2 only returns False)."""
+    sheet = tile_grid(tiles, columns, fill)
+    if not cv2.imwrite(str(path), sheet, [cv2.IMWRITE_PNG_COMPRESSION, 9]):
         raise OSError(f"{path}: could not write the PNG")
+    return sheet
