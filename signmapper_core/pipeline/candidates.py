@@ -22,7 +22,7 @@ from .config import PipelineConfig
 from .detect import segment_candidates, segment_shapes
 from .face_extent import FULL, face_bbox, rim_face_bboxes, ring_edge_bbox
 from .half_discs import with_half_discs
-from .hough import hough_scale, hough_segments
+from .hough import find_circles, hough_scale, hough_segments
 
 
 @dataclass(frozen=True)
@@ -89,7 +89,7 @@ def weak_rim_circles(image: np.ndarray, config: PipelineConfig, taken: Sequence[
     r_min, r_max = max(3, config.hough.hough_min_face_px // 2), max(4, config.hough.max_face_px // 2)
     out = []
     scale = hough_scale(r_min, config.hough.hough_scale, config.hough.hough_min_radius_px)
-    for seg in hough_segments(image, search, r_min, r_max, scale, config):
+    for seg in hough_segments(image, find_circles(image, search, r_min, r_max, scale, config), config):
         if (seg.colour in config.colour.colours or seg.colour == "white") and not any(
                 box_iou(seg.bbox, box) >= config.hough.hough_covered_iou for box in taken):
             out.append(seg)

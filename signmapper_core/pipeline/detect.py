@@ -52,7 +52,7 @@ from .face_extent import (
 from .face_print import print_share
 from .half_discs import with_half_discs
 from .hidden_apex import apex_completed_face
-from .hough import hough_scale, hough_segments, radius_range_px, ring_colour_share, ringed_field
+from .hough import find_circles, hough_scale, hough_segments, radius_range_px, ring_colour_share, ringed_field
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
 from .plates import find_plates
@@ -586,7 +586,8 @@ def _hough_detections(pair: PairContext, depth: np.ndarray, search: np.ndarray,
         taken = [d.bbox for d in found] + list(panels)
         sub = search[y0:y1, x0:x1]
         scale = hough_scale(r_min, config.hough.hough_scale, config.hough.hough_min_radius_px)
-        for seg in hough_segments(pair.left[y0:y1, x0:x1], sub, r_min, r_max, scale, config):
+        image = pair.left[y0:y1, x0:x1]
+        for seg in hough_segments(image, find_circles(image, sub, r_min, r_max, scale, config), config):
             seg = _shift_segment(seg, x0, y0)
             seg = ringed_field(pair.left, seg, config) or seg
             if seg.colour == "white" and config.white.white_signs:  # the white step's discs

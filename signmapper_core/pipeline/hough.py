@@ -42,7 +42,10 @@ def find_circles(
     scale: float,
     config: PipelineConfig,
 ) -> np.ndarray:
-    """Circles (N, 3) as (u, v, r) in full-image pixels, found in the search space (image at ``scale``)."""
+    """Circles (N, 3) as (u, v, r) in full-image pixels, found in the search space (image at ``scale``); none
+    where the search space is empty."""
+    if not search_mask.any():
+        return np.zeros((0, 3))
     grey = _reduced_search_grey(bgr, search_mask, scale, config.hough.hough_mask_median_px)
     lo, hi = max(2, int(r_min * scale)), max(3, int(np.ceil(r_max * scale)))
     circles = cv2.HoughCircles(
@@ -199,20 +202,12 @@ def circle_segment(bgr: np.ndarray, u: float, v: float, r: float, config: Pipeli
                    int(np.count_nonzero(mask)), touches, source="hough")
 
 
-def hough_segments(
-    bgr: np.ndarray,
-    search_mask: np.ndarray,
-    r_min: int,
-    r_max: int,
-    scale: float,
-    config: PipelineConfig,
-    taken: Sequence[tuple] = (),
-) -> List[Segment]:
-    """Round-sign segments from Hough circles whose centre is not inside a ``taken`` box."""
+def hough_segments(bgr: np.ndarray, circles: np.ndarray, config: PipelineConfig,
+                   taken: Sequence[tuple] = ()) -> List[Segment]:
+    """Round-sign segments of ``bgr`` from Hough ``circles`` (:func:`find_circles`) whose centre is not inside a
+    ``taken`` box."""
     out = []
-    if not search_mask.any():
-        return out
-    for u, v, r in find_circles(bgr, search_mask, r_min, r_max, scale, config):
+    for u, v, r in circles:
         if any(x <= u < x + w and y <= v < y + h for x, y, w, h in taken):
             continue
         seg = circle_segment(bgr, u, v, r, config)

@@ -39,7 +39,8 @@ def test_faded_red_ring_is_found_and_named_red():
     faded_red = (120, 115, 165)  # saturation ~ 80: below the red threshold of the colour step
     image, depth, r = _scene(faded_red, (200, 200, 200))
     search = search_space_mask(depth, 4.0, 14.0)
-    segs = hough_segments(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6], SLACK), 0.5, CONFIG)
+    circles = find_circles(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6], SLACK), 0.5, CONFIG)
+    segs = hough_segments(image, circles, CONFIG)
     assert len(segs) >= 1
     best = min(segs, key=lambda s: abs(s.bbox[0] + s.bbox[2] / 2 - 300) + abs(s.bbox[1] + s.bbox[3] / 2 - 180))
     x, y, w, h = best.bbox
@@ -57,7 +58,7 @@ def test_white_round_sign_is_found_from_the_depth_edge():
 def test_nothing_in_the_search_space_means_no_circles():
     image, depth, _ = _scene((120, 115, 165), (200, 200, 200), z=20.0)
     search = search_space_mask(depth, 4.0, 14.0)
-    assert hough_segments(image, search, 10, 60, 0.5, CONFIG) == []
+    assert hough_segments(image, find_circles(image, search, 10, 60, 0.5, CONFIG), CONFIG) == []
 
 
 def test_weak_colour_of_grey_ring_is_white():
