@@ -12,7 +12,6 @@ from typing import Sequence
 from qgis.PyQt.QtCore import Qt, pyqtSignal
 from qgis.PyQt.QtGui import QKeySequence
 from qgis.PyQt.QtWidgets import (
-    QAction,
     QCheckBox,
     QDockWidget,
     QHBoxLayout,
@@ -23,7 +22,7 @@ from qgis.PyQt.QtWidgets import (
     QWidget,
 )
 
-from .hover_focus import FocusOnHover
+from .hover_focus import FocusOnHover, add_shortcuts
 from .image_view import ImageView, OverlayBox
 
 # name -> (button text, shortcut)
@@ -120,12 +119,7 @@ class DriveViewerDock(QDockWidget):
             "play": self.buttons["play"].toggle, "pick": self.buttons["pick"].toggle,
             "add_sign": self.buttons["add_sign"].toggle,
         }
-        for name, handler in handlers.items():
-            action = QAction(KEYS[name][0], self)
-            action.setShortcut(QKeySequence(KEYS[name][1]))
-            action.setShortcutContext(Qt.WidgetWithChildrenShortcut)
-            action.triggered.connect(lambda _checked=False, h=handler: h() if self.count else None)
-            self.addAction(action)
+        add_shortcuts(self, KEYS, {name: (lambda h=h: h() if self.count else None) for name, h in handlers.items()})
 
     # requests ----------------------------------------------------------------------------------------
     def step(self, delta: int) -> None:

@@ -7,8 +7,11 @@ unless the user is typing somewhere (a text field keeps its focus).
 
 from __future__ import annotations
 
-from qgis.PyQt.QtCore import QEvent, QObject
-from qgis.PyQt.QtWidgets import QAbstractSpinBox, QApplication, QComboBox, QLineEdit, QPlainTextEdit, QTextEdit
+from typing import Callable, Mapping, Tuple
+
+from qgis.PyQt.QtCore import QEvent, QObject, Qt
+from qgis.PyQt.QtGui import QKeySequence
+from qgis.PyQt.QtWidgets import QAbstractSpinBox, QAction, QApplication, QComboBox, QLineEdit, QPlainTextEdit, QTextEdit
 
 TYPING = (QLineEdit, QTextEdit, QPlainTextEdit, QAbstractSpinBox)
 
@@ -32,3 +35,19 @@ class FocusOnHover(QObject):
             if focus is None or not watched.isAncestorOf(focus):
                 self.target.setFocus()
         return False
+
+
+def add_shortcuts(dock, keys: Mapping[str, Tuple[str, str]], handlers: Mapping[str, Callable[[], object]]) -> None:
+    """An action on ``dock`` for each handler, named as it is and with the (text, key) of ``keys[name]``.
+
+    The shortcuts act while the focus is in the dock (``Qt.WidgetWithChildrenShortcut``), which
+    :class:`FocusOnHover` gives it when the pointer enters: two docks share the QGIS window's keys.
+    """
+    for name, handler in handlers.items():
+        text, key = keys[name]
+        action = QAction(text, dock)
+        action.setObjectName(name)
+        action.setShortcut(QKeySequence(key))
+        action.setShortcutContext(Qt.WidgetWithChildrenShortcut)
+        action.triggered.connect(lambda _checked=False, h=handler: h())
+        dock.addAction(action)

@@ -13,7 +13,6 @@ from typing import List, Optional, Sequence
 from qgis.PyQt.QtCore import QSize, Qt, pyqtSignal
 from qgis.PyQt.QtGui import QIcon, QKeySequence, QPixmap
 from qgis.PyQt.QtWidgets import (
-    QAction,
     QApplication,
     QCheckBox,
     QComboBox,
@@ -37,7 +36,7 @@ from qgis.PyQt.QtWidgets import (
 )
 
 from ..signmapper_core.statuses import ACCEPTED, REJECTED, STATUS_COLOURS
-from .hover_focus import FocusOnHover
+from .hover_focus import FocusOnHover, add_shortcuts
 from .image_view import ImageView
 from .review_item import ObservationView, ReviewItem
 from .template_picker import CHOICE_KEYS, TemplateChoice, TemplatePicker
@@ -267,17 +266,7 @@ class ReviewDock(QDockWidget):
         return grid
 
     def _install_shortcuts(self) -> None:
-        handlers = {
-            "accept": lambda: self._if_enabled("accept"),
-            "reject": lambda: self._if_enabled("reject"),
-            "reclassify": lambda: self._if_enabled("reclassify"),
-            "previous": lambda: self._if_enabled("previous"),
-            "next": lambda: self._if_enabled("next"),
-            "next_review": lambda: self._if_enabled("next_review"),
-            "zoom": lambda: self._if_enabled("zoom"),
-            "add_sign": lambda: self._if_enabled("add_sign"),
-            "undo": lambda: self._if_enabled("undo"),
-        }
+        handlers = {name: (lambda name=name: self._if_enabled(name)) for name in SHORTCUTS}  # its button's click
         keys = {name: SHORTCUTS[name] for name in handlers}
         for i, key in enumerate(CHOICE_KEYS):  # the picker's next choices, while it is open
             handlers[f"choice{i + 1}"] = lambda i=i: self.picker_box.isVisible() and self.picker.choose_suggestion(i)
@@ -285,14 +274,7 @@ class ReviewDock(QDockWidget):
         handlers["close_picker"] = lambda: self.picker_box.isVisible() and self.show_picker(False)
         keys["close_picker"] = ("Close the picker", CLOSE_PICKER_KEY)
         self.picker.set_reserved(QKeySequence(key).toString() for _text, key in keys.values())
-        for name, handler in handlers.items():
-            text, key = keys[name]
-            action = QAction(text, self)
-            action.setObjectName(name)
-            action.setShortcut(QKeySequence(key))
-            action.setShortcutContext(Qt.WidgetWithChildrenShortcut)
-            action.triggered.connect(lambda _checked=False, h=handler: h())
-            self.addAction(action)
+        add_shortcuts(self, keys, handlers)
 
     def _if_enabled(self, name: str) -> None:
         button = self.buttons[name]
