@@ -9,13 +9,8 @@ from qgis.core import (
     NULL,
     QgsCoordinateReferenceSystem,
     QgsCoordinateTransform,
-    QgsFeature,
     QgsFeatureSink,
-    QgsField,
-    QgsFields,
     QgsGeometry,
-    QgsLineString,
-    QgsPoint,
     QgsProcessing,
     QgsProcessingContext,
     QgsProcessingException,
@@ -30,7 +25,7 @@ from qgis.core import (
     QgsWkbTypes,
 )
 
-from ..gpkg.fields import QT_TYPES
+from ..gpkg.fields import declared_qgs_fields, line_z, named_feature, point_z
 from ..gpkg.output import GeoPackageLayers, layer_uri
 from ..signmapper_core.changes import schema as changes_schema
 from ..signmapper_core.changes.compare import (
@@ -57,21 +52,6 @@ from .drive_input import qgis_crs
 from .signalo_connection import HELP as SIGNALO_HELP
 from .signalo_connection import open_signalo, signalo_parameter
 from .signs_input import read_signs, signs_layer_and_run
-
-
-def schema_fields(declared) -> QgsFields:
-    fields = QgsFields()
-    for field in declared:
-        fields.append(QgsField(field.name, QT_TYPES[field.kind]))
-    return fields
-
-
-def _feature(fields: QgsFields, values: dict, geometry) -> QgsFeature:
-    feature = QgsFeature(fields)
-    for name, value in values.items():
-        feature.setAttribute(fields.indexOf(name), NULL if value is None else value)
-    feature.setGeometry(geometry)
-    return feature
 
 
 class ChangesAlgorithm(SignMapperAlgorithm):
@@ -340,7 +320,7 @@ class ChangesAlgorithm(SignMapperAlgorithm):
         crs, _note = qgis_crs(drive.crs)
         output = GeoPackageLayers(self.run_outputs.partial(self.OUTPUT))
         centres = [r.pose.centre for r in drive.pairs]
-        fields = schema_fields(changes_schema.FIELDS)
+        fields = declared_qgs_fields(changes_schema.FIELDS)
         writer = output.open_layer("changes", fields, QgsWkbTypes.PointZ, crs,
                                    abstract=f"Sign Mapper: {layer.source()} against {described}")
         import numpy as np
@@ -351,10 +331,10 @@ class ChangesAlgorithm(SignMapperAlgorithm):
             else:
                 east, north, up = change.mapped.position
             up = up if math.isfinite(up) else 0.0
-            point = QgsGeometry(QgsPoint(east, north, up))
-            writer.addFeature(_feature(fields, changes_schema.values(change), point), QgsFeatureSink.FastInsert)
+            writer.addFeature(named_feature(fields, changes_schema.values(change), point_z(east, north, up)),
+                              QgsFeatureSink.FastInsert)
         writer.close()
-        fields = schema_fields(changes_schema.LINE_FIELDS)
+        fields = declared_qgs_fields(changes_schema.LINE_FIELDS)
         writer = output.open_layer("displacements", fields, QgsWkbTypes.LineStringZ, crs,
                                    abstract="Sign Mapper: inventory position to mapped position")
         for change in report.changes:
@@ -362,9 +342,8 @@ class ChangesAlgorithm(SignMapperAlgorithm):
                 continue
             start = with_height(change.inventory, np.array(centres), report.config)
             end = change.mapped.position
-            line = QgsLineString([QgsPoint(*(float(c) for c in start)), QgsPoint(*(float(c) for c in end))])
-            writer.addFeature(_feature(fields, changes_schema.values(change, changes_schema.DISPLACEMENTS),
-                                       QgsGeometry(line)), QgsFeatureSink.FastInsert)
+            writer.addFeature(named_feature(fields, changes_schema.values(change, changes_schema.DISPLACEMENTS),
+                                            line_z([start, end])), QgsFeatureSink.FastInsert)
         writer.close()
         table = dict(run)
         table.update(drive=str(drive.root.resolve()), signs=layer.source(), inventory=described)

@@ -5,11 +5,7 @@ from __future__ import annotations
 from qgis.core import (
     QgsFeature,
     QgsFeatureSink,
-    QgsField,
     QgsFields,
-    QgsGeometry,
-    QgsLineString,
-    QgsPoint,
     QgsProcessing,
     QgsProcessingException,
     QgsProcessingParameterFeatureSink,
@@ -17,21 +13,14 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QVariant
 
+from ..gpkg.fields import line_z, new_feature, point_z, qgs_fields
 from ..signmapper_core.progress import Cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise, qgis_crs
 
-
-def trajectory_fields() -> QgsFields:
-    fields = QgsFields()
-    fields.append(QgsField("pair_id", QVariant.String))
-    fields.append(QgsField("pair_index", QVariant.Int))
-    fields.append(QgsField("time", QVariant.Double))
-    fields.append(QgsField("heading", QVariant.Double))
-    fields.append(QgsField("pitch", QVariant.Double))
-    fields.append(QgsField("roll", QVariant.Double))
-    fields.append(QgsField("image", QVariant.String))
-    return fields
+TRAJECTORY_FIELDS = (("pair_id", QVariant.String), ("pair_index", QVariant.Int), ("time", QVariant.Double),
+                     ("heading", QVariant.Double), ("pitch", QVariant.Double), ("roll", QVariant.Double),
+                     ("image", QVariant.String))
 
 
 class DriveTrajectoryAlgorithm(SignMapperAlgorithm):
@@ -76,19 +65,16 @@ class DriveTrajectoryAlgorithm(SignMapperAlgorithm):
         crs, note = qgis_crs(drive.crs)
         if note:
             feedback.pushInfo(note)
-        fields = trajectory_fields()
+        fields = qgs_fields(TRAJECTORY_FIELDS)
         features, vertices = [], []
         for record in drive.pairs:  # built first: a cancel here leaves no file behind
             if feedback.isCanceled():
                 raise QgsProcessingException(self.tr("Cancelled; nothing written."))
             pose = record.pose
-            vertices.append(QgsPoint(pose.easting, pose.northing, pose.height))
-            feature = QgsFeature(fields)
-            feature.setGeometry(QgsGeometry(QgsPoint(pose.easting, pose.northing, pose.height)))
-            feature.setAttributes(
-                [record.id, record.index, record.time, pose.heading, pose.pitch, pose.roll, str(record.left_path)]
-            )
-            features.append(feature)
+            vertices.append((pose.easting, pose.northing, pose.height))
+            attributes = [record.id, record.index, record.time, pose.heading, pose.pitch, pose.roll,
+                          str(record.left_path)]
+            features.append(new_feature(fields, attributes, point_z(*vertices[-1])))
             feedback.setProgress(50 + 40 * (record.index + 1) / len(drive.pairs))
         sink, dest_id = self.parameterAsSink(parameters, self.OUTPUT, context, fields, QgsWkbTypes.PointZ, crs)
         if sink is None:
@@ -100,7 +86,7 @@ class DriveTrajectoryAlgorithm(SignMapperAlgorithm):
         )
         if track_sink is not None:
             line = QgsFeature()
-            line.setGeometry(QgsGeometry(QgsLineString(vertices)))
+            line.setGeometry(line_z(vertices))
             track_sink.addFeature(line, QgsFeatureSink.FastInsert)
             results[self.TRACK] = track_id
         if feedback.isCanceled():

@@ -8,14 +8,9 @@ from pathlib import Path
 from qgis.core import (
     NULL,
     QgsCoordinateTransform,
-    QgsFeature,
     QgsFeatureRequest,
     QgsFeatureSink,
-    QgsField,
-    QgsFields,
     QgsGeometry,
-    QgsLineString,
-    QgsPoint,
     QgsProcessing,
     QgsProcessingException,
     QgsProcessingOutputNumber,
@@ -28,6 +23,7 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QVariant
 
+from ..gpkg.fields import line_z, new_feature, qgs_fields
 from ..gpkg.output import read_run_table
 from ..signmapper_core.errors import DriveFormatError
 from ..signmapper_core.evaluation.reference_rows import (
@@ -348,9 +344,7 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             raise QgsProcessingException(f"Drive recorded in {path}: {exc}") from exc
 
     def write_statistics(self, parameters, context, report, components):
-        fields = QgsFields()
-        for name, kind in (("table", QVariant.String), ("figure", QVariant.String), ("value", QVariant.Double)):
-            fields.append(QgsField(name, kind))
+        fields = qgs_fields((("table", QVariant.String), ("figure", QVariant.String), ("value", QVariant.Double)))
         sink, dest = self.parameterAsSink(parameters, self.STATISTICS, context, fields, QgsWkbTypes.NoGeometry)
         t1 = report.table1
         rows = [("1", "reference_signs", t1.reference_signs), ("1", "detected_signs", t1.detected_signs),
@@ -363,30 +357,24 @@ class EvaluateAlgorithm(SignMapperAlgorithm):
             rows += [("2", f"{c}_mean", s.mean), ("2", f"{c}_std", s.std), ("2", f"{c}_rms", s.rms),
                      ("2", f"{c}_max", s.max_abs)]
         for table, figure, value in rows:
-            feature = QgsFeature(fields)
-            feature.setAttributes([table, figure, defined(value)])
-            sink.addFeature(feature, QgsFeatureSink.FastInsert)
+            sink.addFeature(new_feature(fields, [table, figure, defined(value)]), QgsFeatureSink.FastInsert)
         return dest
 
     def write_matches(self, parameters, context, signs, report, mapped, refs):
-        fields = QgsFields()
-        for name, kind in (("mapped_fid", QVariant.LongLong), ("mapped_id", QVariant.String),
-                           ("reference_id", QVariant.String), ("correct", QVariant.Bool),
-                           ("across", QVariant.Double), ("along", QVariant.Double), ("height", QVariant.Double),
-                           ("planimetric", QVariant.Double), ("d3", QVariant.Double)):
-            fields.append(QgsField(name, kind))
+        fields = qgs_fields((("mapped_fid", QVariant.LongLong), ("mapped_id", QVariant.String),
+                             ("reference_id", QVariant.String), ("correct", QVariant.Bool),
+                             ("across", QVariant.Double), ("along", QVariant.Double), ("height", QVariant.Double),
+                             ("planimetric", QVariant.Double), ("d3", QVariant.Double)))
         sink, dest = self.parameterAsSink(parameters, self.MATCHES, context, fields, QgsWkbTypes.LineStringZ,
                                           signs.sourceCrs())
         k = 0
         for i, ref in enumerate(report.match):
             if ref < 0:
                 continue
-            a, b = mapped["xyz"][i], refs["xyz"][ref]
-            feature = QgsFeature(fields)
-            feature.setGeometry(QgsGeometry(QgsLineString([QgsPoint(*a), QgsPoint(*b)])))
             comps = [round(float(c), 4) for c in report.differences[k]]
-            feature.setAttributes([mapped["fids"][i], mapped["ids"][i], refs["ids"][ref],
-                                   mapped["ids"][i] == refs["ids"][ref]] + comps)
-            sink.addFeature(feature, QgsFeatureSink.FastInsert)
+            attributes = [mapped["fids"][i], mapped["ids"][i], refs["ids"][ref],
+                          mapped["ids"][i] == refs["ids"][ref]] + comps
+            sink.addFeature(new_feature(fields, attributes, line_z([mapped["xyz"][i], refs["xyz"][ref]])),
+                            QgsFeatureSink.FastInsert)
             k += 1
         return dest

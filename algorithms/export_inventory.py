@@ -6,12 +6,7 @@ from pathlib import Path
 
 from qgis.core import (
     NULL,
-    QgsFeature,
     QgsFeatureSink,
-    QgsField,
-    QgsFields,
-    QgsGeometry,
-    QgsPoint,
     QgsProcessingContext,
     QgsProcessingException,
     QgsProcessingOutputNumber,
@@ -20,7 +15,7 @@ from qgis.core import (
     QgsWkbTypes,
 )
 
-from ..gpkg.fields import QT_TYPES
+from ..gpkg.fields import QT_TYPES, new_feature, point_z, qgs_fields
 from ..gpkg.output import CheckedSink, GeoPackageLayers, layer_uri
 from ..review.layers import gpkg_source
 from ..signmapper_core.output import inventory_export as inventory
@@ -96,18 +91,14 @@ class ExportInventoryAlgorithm(DeliverableAlgorithm):
             sign["crop_path"] = inventory.rebased(sign.get("crop_path"), gpkg_folder, target.parent)
         columns = inventory.columns(language)
         names = inventory.short_names([c.title for c in columns]) if suffix == ".shp" else [c.title for c in columns]
-        fields = QgsFields()
-        for column, name in zip(columns, names):
-            fields.append(QgsField(name, QT_TYPES[column.kind]))
+        fields = qgs_fields((name, QT_TYPES[column.kind]) for column, name in zip(columns, names))
 
         writer = self.open_output(parameters, target, suffix, fields, layer, language, context)
         for k, sign in enumerate(chosen.signs):
             if feedback.isCanceled():
                 raise QgsProcessingException(f"Cancelled; {target} not written.")
-            feature = QgsFeature(fields)
-            feature.setAttributes([NULL if v is None else v for v in inventory.row(sign, language)])
-            if suffix != ".csv":
-                feature.setGeometry(QgsGeometry(QgsPoint(sign["easting"], sign["northing"], sign["elevation"])))
+            point = None if suffix == ".csv" else point_z(sign["easting"], sign["northing"], sign["elevation"])
+            feature = new_feature(fields, [NULL if v is None else v for v in inventory.row(sign, language)], point)
             writer.addFeature(feature, QgsFeatureSink.FastInsert)  # a failed write raises, naming the file
             feedback.setProgress(100.0 * (k + 1) / max(len(chosen.signs), 1))
         writer.close()

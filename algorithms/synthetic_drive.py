@@ -4,12 +4,8 @@ from __future__ import annotations
 
 from qgis.core import (
     QgsCoordinateReferenceSystem,
-    QgsFeature,
     QgsFeatureSink,
-    QgsField,
     QgsFields,
-    QgsGeometry,
-    QgsPoint,
     QgsProcessing,
     QgsProcessingException,
     QgsProcessingParameterBoolean,
@@ -20,6 +16,7 @@ from qgis.core import (
 )
 from qgis.PyQt.QtCore import QVariant
 
+from ..gpkg.fields import new_feature, point_z, qgs_fields
 from ..signmapper_core.progress import Cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
 
@@ -117,11 +114,9 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
         return results
 
     def truth_sink(self, parameters, context, crs) -> TruthLayer | None:
-        fields = QgsFields()
-        for name, kind in (("sign_id", QVariant.String), ("template_id", QVariant.String),
-                           ("width_m", QVariant.Double), ("height_m", QVariant.Double), ("facing", QVariant.Double),
-                           ("plate_of", QVariant.String), ("text", QVariant.String)):
-            fields.append(QgsField(name, kind))
+        fields = qgs_fields((("sign_id", QVariant.String), ("template_id", QVariant.String),
+                             ("width_m", QVariant.Double), ("height_m", QVariant.Double), ("facing", QVariant.Double),
+                             ("plate_of", QVariant.String), ("text", QVariant.String)))
         sink, dest = self.parameterAsSink(parameters, self.TRUTH, context, fields, QgsWkbTypes.PointZ,
                                           QgsCoordinateReferenceSystem(crs))
         if sink is None:
@@ -139,9 +134,8 @@ class TruthLayer:
 
     def write(self, signs) -> None:
         for sign in signs:
-            feature = QgsFeature(self.fields)
-            feature.setGeometry(QgsGeometry(QgsPoint(sign.easting, sign.northing, sign.height)))
-            feature.setAttributes([sign.sign_id, sign.template_id, sign.width_m, sign.height_m, sign.facing,
-                                   sign.plate_of or None, sign.text or None])
+            feature = new_feature(self.fields, [sign.sign_id, sign.template_id, sign.width_m, sign.height_m,
+                                                sign.facing, sign.plate_of or None, sign.text or None],
+                                  point_z(sign.easting, sign.northing, sign.height))
             if not self.sink.addFeature(feature, QgsFeatureSink.FastInsert):
                 raise QgsProcessingException(f"{self.dest}: cannot write the ground truth signs")

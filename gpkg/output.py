@@ -15,9 +15,7 @@ from pathlib import Path
 from qgis.core import (
     QgsCoordinateReferenceSystem,
     QgsCoordinateTransformContext,
-    QgsFeature,
     QgsFeatureSink,
-    QgsField,
     QgsFields,
     QgsLayerMetadata,
     QgsVectorFileWriter,
@@ -27,6 +25,7 @@ from qgis.PyQt.QtCore import QVariant
 
 from ..signmapper_core.output.partial_output import write_failure
 from ..signmapper_core.output.run_table import RUN_TABLE, RunRecordError, encode_run_value, read_run_record
+from .fields import new_feature, qgs_fields
 
 
 class CheckedSink:
@@ -114,14 +113,10 @@ class GeoPackageLayers:
 
     def write_run_table(self, values: dict) -> None:
         """A non-spatial key/value table recording the drive folder and the run's parameters."""
-        fields = QgsFields()
-        fields.append(QgsField("key", QVariant.String))
-        fields.append(QgsField("value", QVariant.String))
+        fields = qgs_fields((("key", QVariant.String), ("value", QVariant.String)))
         writer = self.open_layer(RUN_TABLE, fields, QgsWkbTypes.NoGeometry, QgsCoordinateReferenceSystem())
         for key, value in values.items():
-            feature = QgsFeature(fields)
-            feature.setAttributes([key, encode_run_value(value)])
-            writer.addFeature(feature)
+            writer.addFeature(new_feature(fields, [key, encode_run_value(value)]))
         writer.close()
 
 
