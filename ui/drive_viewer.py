@@ -22,7 +22,7 @@ from qgis.PyQt.QtWidgets import (
     QWidget,
 )
 
-from .hover_focus import FocusOnHover, add_shortcuts
+from .hover_focus import FocusOnHover, add_shortcuts, keeps_dock_keys
 from .image_view import ImageView, OverlayBox
 
 # name -> (button text, shortcut)
@@ -80,8 +80,7 @@ class DriveViewerDock(QDockWidget):
     def _button(self, name: str) -> QPushButton:
         text, key = KEYS[name]
         button = QPushButton(f"{text}  [{QKeySequence(key).toString(QKeySequence.NativeText)}]")
-        button.setFocusPolicy(Qt.TabFocus)
-        self.buttons[name] = button
+        self.buttons[name] = keeps_dock_keys(button)
         return button
 
     def _build_buttons(self) -> QHBoxLayout:

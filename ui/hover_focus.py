@@ -37,6 +37,13 @@ class FocusOnHover(QObject):
         return False
 
 
+def keeps_dock_keys(widget):
+    """``widget``, reached by Tab but not focused by a click: a click on a button or box in a dock must not take the
+    keys from the dock's shortcuts (:func:`add_shortcuts`)."""
+    widget.setFocusPolicy(Qt.TabFocus)
+    return widget
+
+
 def add_shortcuts(dock, keys: Mapping[str, Tuple[str, str]], handlers: Mapping[str, Callable[[], object]]) -> None:
     """An action on ``dock`` for each handler, named as it is and with the (text, key) of ``keys[name]``.
 

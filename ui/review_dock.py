@@ -36,7 +36,7 @@ from qgis.PyQt.QtWidgets import (
 )
 
 from ..signmapper_core.statuses import ACCEPTED, REJECTED, STATUS_COLOURS
-from .hover_focus import FocusOnHover, add_shortcuts
+from .hover_focus import FocusOnHover, add_shortcuts, keeps_dock_keys
 from .image_view import ImageView
 from .review_item import ObservationView, ReviewItem
 from .template_picker import CHOICE_KEYS, TemplateChoice, TemplatePicker
@@ -211,8 +211,7 @@ class ReviewDock(QDockWidget):
         text, key = SHORTCUTS[name]
         button = QPushButton(f"{text} [{key}]")
         button.setToolTip(f"{TOOLTIPS.get(name, text)} ({key})")
-        button.setFocusPolicy(Qt.TabFocus)
-        self.buttons[name] = button
+        self.buttons[name] = keeps_dock_keys(button)
         return button
 
     def _build_buttons(self) -> QGridLayout:
@@ -251,7 +250,7 @@ class ReviewDock(QDockWidget):
         self.follow_box.toggled.connect(self.followToggled)
         grid.addWidget(self.follow_box, 3, 2)
         for box in (self.pair_box, self.advance_box, self.follow_box):
-            box.setFocusPolicy(Qt.TabFocus)  # a click must not take the keys from the dock's shortcuts
+            keeps_dock_keys(box)
 
         b = self.buttons
         b["accept"].clicked.connect(self.acceptRequested)

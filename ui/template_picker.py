@@ -27,6 +27,8 @@ from qgis.PyQt.QtWidgets import (
     QWidget,
 )
 
+from .hover_focus import keeps_dock_keys
+
 ANY = ""
 ID_ROLE = Qt.UserRole
 CHOICE_KEYS = ("1", "2", "3")  # the classifier's next choices, best first (the review dock binds them)
@@ -97,7 +99,7 @@ class TemplatePicker(QWidget):
         self.grid.setMaximumHeight(3 * (icon_px + 30) + 8)
         self.choose_button = QPushButton("Choose")
         self.choose_button.setToolTip("Reclassify as the type selected in the grid (or double click it, or Enter)")
-        self.choose_button.setFocusPolicy(Qt.TabFocus)
+        keeps_dock_keys(self.choose_button)
         self.choose_button.setEnabled(False)
         self._suggested: List[Tuple[str, float]] = []
         self._suggestion_buttons: List[QToolButton] = []
@@ -224,7 +226,7 @@ class TemplatePicker(QWidget):
             button = QToolButton()
             button.setProperty("template_id", choice.id)
             button.setToolButtonStyle(Qt.ToolButtonTextBesideIcon)
-            button.setFocusPolicy(Qt.TabFocus)
+            keeps_dock_keys(button)
             if choice.icon_path:
                 button.setIcon(QIcon(choice.icon_path))
                 button.setIconSize(QSize(self._icon_px, self._icon_px))
