@@ -13,7 +13,7 @@ from qgis.core import (
     QgsProcessingParameterVectorLayer,
 )
 
-from ..signmapper_core.signalo import SignaloError
+from ..signmapper_core.signalo import AZIMUTH_GAP_DEG, POLE_RADIUS_M, SignaloError
 from ..signmapper_core.signalo.schema import check_database
 from ..signmapper_core.statuses import ACCEPTED, MANUAL, REVIEW
 from .base import SignMapperAlgorithm
@@ -66,12 +66,13 @@ class ExportToSignaloAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.POLE_RADIUS, self.tr("Pole radius [m]"),
-                                         QgsProcessingParameterNumber.Double, 0.3, minValue=0.0),
+                                         QgsProcessingParameterNumber.Double, POLE_RADIUS_M, minValue=0.0),
             "Signs planimetrically this close to each other are on one support.", advanced=True,
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.AZIMUTH_GAP, self.tr("Azimuth grouping [°]"),
-                                         QgsProcessingParameterNumber.Double, 30.0, minValue=0.0, maxValue=180.0),
+                                         QgsProcessingParameterNumber.Double, AZIMUTH_GAP_DEG, minValue=0.0,
+                                         maxValue=180.0),
             "Faces of one support whose directions differ by at most this share an azimut.", advanced=True,
         )
         for name, title in (("ADDED", "Signs added"), ("UPDATED", "Signs updated"), ("ALREADY", "Already exported"),

@@ -18,7 +18,10 @@ from qgis.PyQt.QtCore import QVariant
 
 from ..gpkg.fields import new_feature, point_z, qgs_fields
 from ..signmapper_core.progress import Cancelled
+from ..signmapper_core.simulate.config import SimulationConfig
 from .base import CoreFeedback, SignMapperAlgorithm
+
+DEFAULTS = SimulationConfig()  # the camera and noise a drive gets unless the dialog says otherwise
 
 
 class SyntheticDriveAlgorithm(SignMapperAlgorithm):
@@ -58,20 +61,21 @@ class SyntheticDriveAlgorithm(SignMapperAlgorithm):
         self.add_parameter(QgsProcessingParameterBoolean(self.WRITE_DEPTH, self.tr("Write true depth maps"), False),
                            "Also write depth/<id>.npy with the exact depth; off = depth is computed from the "
                            "stereo pair, as with real data.")
-        self.add_parameter(number(self.WIDTH, self.tr("Image width [px]"), number.Integer, 1920, minValue=64,
-                                  maxValue=8192), "Width of the rectified normal images.")
-        self.add_parameter(number(self.HEIGHT, self.tr("Image height [px]"), number.Integer, 1080, minValue=64,
-                                  maxValue=8192), "Height of the rectified normal images.")
-        self.add_parameter(number(self.FX, self.tr("Focal length [px]"), number.Double, 1750.0, minValue=10.0),
-                           "Focal length of the normal images in pixels (fx = fy).")
-        self.add_parameter(number(self.BASELINE, self.tr("Stereo baseline [m]"), number.Double, 0.9, minValue=0.05,
-                                  maxValue=5.0), "Distance of the right camera along the left camera's x axis.")
-        self.add_parameter(number(self.POSITION_SIGMA, self.tr("GNSS position noise σ [m]"), number.Double, 0.02,
-                                  minValue=0.0, maxValue=10.0),
-                           "Standard deviation of the noise added per axis to the recorded positions.")
-        self.add_parameter(number(self.ANGLE_SIGMA, self.tr("INS attitude noise σ [°]"), number.Double, 0.02,
-                                  minValue=0.0, maxValue=5.0),
-                           "Standard deviation of the noise added to the recorded heading, pitch and roll.")
+        for name, title, kind, value, low, high, help_text in (
+                (self.WIDTH, "Image width [px]", number.Integer, DEFAULTS.width, 64, 8192,
+                 "Width of the rectified normal images."),
+                (self.HEIGHT, "Image height [px]", number.Integer, DEFAULTS.height, 64, 8192,
+                 "Height of the rectified normal images."),
+                (self.FX, "Focal length [px]", number.Double, DEFAULTS.fx, 10.0, None,
+                 "Focal length of the normal images in pixels (fx = fy)."),
+                (self.BASELINE, "Stereo baseline [m]", number.Double, DEFAULTS.baseline_m, 0.05, 5.0,
+                 "Distance of the right camera along the left camera's x axis."),
+                (self.POSITION_SIGMA, "GNSS position noise σ [m]", number.Double, DEFAULTS.position_sigma_m, 0.0, 10.0,
+                 "Standard deviation of the noise added per axis to the recorded positions."),
+                (self.ANGLE_SIGMA, "INS attitude noise σ [°]", number.Double, DEFAULTS.angle_sigma_deg, 0.0, 5.0,
+                 "Standard deviation of the noise added to the recorded heading, pitch and roll.")):
+            limits = {"minValue": low} if high is None else {"minValue": low, "maxValue": high}
+            self.add_parameter(number(name, self.tr(title), kind, value, **limits), help_text)
         self.add_parameter(QgsProcessingParameterFolderDestination(self.OUTPUT, self.tr("Drive folder")),
                            "Folder to write the drive into; it must not exist yet or be empty.")
         self.add_parameter(QgsProcessingParameterFeatureSink(self.TRUTH, self.tr("Ground truth signs"),
