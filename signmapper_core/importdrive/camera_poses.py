@@ -1,6 +1,7 @@
 """From recorded body poses to the drive's left-camera poses: the chain of every import.
 
-1. angles in degrees (``angle_units``), positions into the output CRS (``crs_steps``);
+1. angles in degrees (``angle_units``), positions into the output CRS (``crs_steps``); the angles checked
+   against the direction of travel (``angle_units``, ``convention_check``);
 2. body -> local east/north/up (``attitude``), then -> output grid (meridian convergence);
 3. interpolation to the image times for trajectories (``interpolate``);
 4. lever arm and boresight to the raw left camera (``mount``);
@@ -11,15 +12,18 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Callable, Optional
 
 import numpy as np
 
 from ..geometry import Pose, angles_from_rotation
 from .angle_units import check_radians_as_degrees, to_degrees
 from .attitude import Convention, convention, forward_heading
+from .convention_check import check_convention
 from .crs_steps import CrsSteps
 from .mount import Mount
 from .pose_table import PoseTable
+from .travel import travel_legs
 
 NORTHS = ("auto", "true", "grid")
 
@@ -43,20 +47,33 @@ def resolve_north(orientation: Orientation, conv: Convention, steps: CrsSteps) -
     return "grid" if conv.camera_like and not steps.input_geographic else "true"
 
 
-def body_poses(table: PoseTable, orientation: Orientation, steps: CrsSteps) -> tuple[np.ndarray, np.ndarray]:
-    """Body positions (n, 3) in the output CRS and body -> output-grid rotations (n, 3, 3)."""
+def body_poses(table: PoseTable, orientation: Orientation, steps: CrsSteps,
+               note: Callable[[str], None] = lambda _m: None,
+               order: Optional[np.ndarray] = None) -> tuple[np.ndarray, np.ndarray]:
+    """Body positions (n, 3) in the output CRS and body -> output-grid rotations (n, 3, 3).
+
+    The angles are checked against the direction of travel (unit, convention) with the rows in ``order``, the
+    driving order (default: as given); ``note`` gets what could not be checked.
+    """
     conv = convention(orientation.convention)
     angles = to_degrees(table.angles, orientation.unit, table)
-    to_grid = steps.grid_rotations(table.xyz, resolve_north(orientation, conv, steps))
     centres = steps.positions(table.xyz)
+    to_grid: dict[str, np.ndarray] = {}
 
-    def rotations(rows_deg: np.ndarray) -> np.ndarray:
-        return np.stack([g @ conv.rotation(a) for g, a in zip(to_grid, rows_deg)])
+    def rotations(c: Convention, rows_deg: np.ndarray) -> np.ndarray:
+        north = resolve_north(orientation, c, steps)
+        if north not in to_grid:
+            to_grid[north] = steps.grid_rotations(table.xyz, north)
+        return np.stack([g @ c.rotation(a) for g, a in zip(to_grid[north], rows_deg)])
 
+    def headings(c: Convention, rows_deg: np.ndarray) -> np.ndarray:
+        return np.array([forward_heading(r, c) for r in rotations(c, rows_deg)])
+
+    legs = travel_legs(centres, order)
     if orientation.unit == "deg":
-        check_radians_as_degrees(angles, centres, table,
-                                 lambda rows: np.array([forward_heading(r, conv) for r in rotations(rows)]))
-    return centres, rotations(angles)
+        check_radians_as_degrees(angles, legs, table, lambda rows: headings(conv, rows))
+    check_convention(conv, legs, table, lambda c: headings(c, angles), note)
+    return centres, rotations(conv, angles)
 
 
 def drive_poses(centres: np.ndarray, rotations: np.ndarray, mount: Mount, rectify_rotation: np.ndarray) -> list[Pose]:

@@ -190,7 +190,8 @@ def _camera_poses(source: DriveSource, steps: CrsSteps, mount: Mount, rectifier:
         else:
             note(f"{table.path}: no time column; the pairs keep the table's order and get its row numbers as times")
             times = np.array(rows, dtype=float)
-        centres, rotations = body_poses(table.subset(rows), source.orientation, steps)
+        centres, rotations = body_poses(table.subset(rows), source.orientation, steps, note,
+                                        np.argsort(times, kind="stable"))
     else:
         if table.times is None:
             raise ImportInputError(table.path, "a trajectory needs a time column", line=1, field="time")
@@ -198,7 +199,7 @@ def _camera_poses(source: DriveSource, steps: CrsSteps, mount: Mount, rectifier:
         times = np.array([_image_time(source, pair) for pair in source.pairs])
         needed = _bracketing_rows(table.times, times)
         sub = table.subset(needed)
-        epoch_centres, epoch_rotations = body_poses(sub, source.orientation, steps)
+        epoch_centres, epoch_rotations = body_poses(sub, source.orientation, steps, note)
         where = f"image times from {source.image_times_source}" if source.image_times_source else "image times"
         centres, rotations = interpolate(sub.times, epoch_centres, epoch_rotations, times,
                                          [p.id for p in source.pairs], table.path, where, options.max_gap_s)

@@ -36,6 +36,12 @@ ALIASES = {
 GEOGRAPHIC_X = ("lon", "longitude", "long")
 
 
+
+def same_columns(names: tuple[str, ...], others: tuple[str, ...]) -> bool:
+    """Whether two conventions' angle names are found under the same column names (yaw/heading, pitch, roll):
+    then a table read for one holds the other's angles too."""
+    return all(set(ALIASES.get(a, (a,))) == set(ALIASES.get(b, (b,))) for a, b in zip(names, others))
+
 @dataclass(frozen=True)
 class PoseTable:
     """Rows of a pose file: positions and angles as given, with the file's line numbers for messages."""

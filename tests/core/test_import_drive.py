@@ -191,6 +191,16 @@ def test_radians_given_as_degrees_are_refused(survey, tmp_path):
     assert summary.pairs == 3
 
 
+
+def test_navigation_angles_in_the_wrong_frame_are_refused_naming_the_right_one(survey, tmp_path):
+    """NED yaw/pitch/roll (heading 60 degrees) read as ENU: the vehicle would face 30 degrees, off its track."""
+    with pytest.raises(ImportInputError, match=r"trajectory\.csv, line \d+, field 'yaw': the forward direction of the "
+                                               r"enu_ypr angles differs from the direction of travel by 30 degrees "
+                                               r".*set the angle convention to ned_ypr$"):
+        import_drive(tmp_path / "drive", generic_source(trajectory_inputs(
+            survey, orientation=Orientation("enu_ypr", "deg", "auto"))))
+    assert leaves_nothing(tmp_path)
+
 def test_an_output_crs_in_feet_is_refused(survey, tmp_path):
     with pytest.raises(ImportInputError, match="not metres"):
         import_drive(tmp_path / "drive", generic_source(trajectory_inputs(survey)),

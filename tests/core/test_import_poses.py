@@ -9,6 +9,7 @@ from signmapper_core.importdrive.attitude import convention, forward_heading
 from signmapper_core.importdrive.image_pairs import list_pairs
 from signmapper_core.importdrive.interpolate import check_increasing, interpolate
 from signmapper_core.importdrive.pose_table import read_image_times, read_pose_table
+from signmapper_core.importdrive.travel import travel_legs
 
 NED = convention("ned_ypr")
 
@@ -97,12 +98,12 @@ def test_radians_given_as_degrees_are_recognised_against_the_direction_of_travel
     course = 100.0
     radians = np.tile([np.radians(course), 0.01, -0.02], (20, 1))
     with pytest.raises(ImportInputError, match="look like radians given as degrees.*set the angle unit to radians"):
-        check_radians_as_degrees(radians, track(course), Table(), headings)
+        check_radians_as_degrees(radians, travel_legs(track(course)), Table(), headings)
     # small angles in degrees that really are degrees: a drive heading 3 degrees east of north
     degrees = np.tile([3.0, 0.5, -0.3], (20, 1))
-    check_radians_as_degrees(degrees, track(3.0), Table(), headings)
+    check_radians_as_degrees(degrees, travel_legs(track(3.0)), Table(), headings)
     # a standing vehicle gives no course: nothing to judge
-    check_radians_as_degrees(radians, np.zeros((20, 3)), Table(), headings)
+    check_radians_as_degrees(radians, travel_legs(np.zeros((20, 3))), Table(), headings)
 
 
 def test_degrees_given_as_radians_are_an_error_naming_the_row():
