@@ -13,7 +13,7 @@ from .attitude import CONVENTIONS
 from .camera_poses import NORTHS, Orientation
 from .generic import GenericInputs, generic_source
 from .importer import IMAGE_FORMATS, ImportOptions, import_drive
-from .kitti import CAMERAS, kitti_source, utm_crs
+from .kitti import CAMERAS, is_kitti_drive, kitti_source, utm_crs
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -67,6 +67,9 @@ def build_parser() -> argparse.ArgumentParser:
 def source_from_args(args: argparse.Namespace):
     if args.kitti is not None:
         return kitti_source(args.kitti, args.kitti_cameras)
+    if args.left is not None and is_kitti_drive(args.left):
+        raise SystemExit(f"error: {args.left} is a KITTI raw drive folder, which the generic import does not read: "
+                         f"give it as --kitti {args.left}")
     missing = [name for name in ("left", "calibration", "poses") if getattr(args, name) is None]
     if missing:
         raise SystemExit(f"error: give --kitti, or --{', --'.join(missing)}")

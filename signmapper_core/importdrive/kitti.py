@@ -18,6 +18,8 @@ What KITTI's development kit says, turned into a :class:`DriveSource`:
 
 from __future__ import annotations
 
+import os
+import re
 from pathlib import Path
 
 import numpy as np
@@ -34,6 +36,45 @@ from .pose_table import PoseTable
 CAMERAS = {"colour": ("02", "03"), "grey": ("00", "01")}
 INPUT_CRS = "EPSG:4326+5773"   # WGS 84 with EGM96 heights (see module)
 CAMERA_HEIGHT_M = 1.65
+DRIVE_NAME = re.compile(r"\d{4}_\d{2}_\d{2}_drive_\d{4}_(sync|extract)")
+DRIVE_PARTS = ("image_00", "image_01", "image_02", "image_03", "oxts")
+SEARCH_DEPTH = 3    # levels below a given folder searched for drive folders (download folder/date folder/drive)
+LISTED_DRIVES = 5   # drive folders named in a message
+
+
+def is_kitti_drive(folder) -> bool:
+    """Whether ``folder`` looks like a KITTI raw drive folder: it holds a camera's images or the OXTS poses."""
+    return any((Path(folder) / part).is_dir() for part in DRIVE_PARTS)
+
+
+def drive_folders_in(folder) -> list[Path]:
+    """The KITTI raw drive folders (``<date>_drive_<nnnn>_sync`` or ``_extract``) at most ``SEARCH_DEPTH`` levels
+    below ``folder`` (a date, base or download folder), sorted; drive folders are not searched inside."""
+    found = []
+    top = len(Path(folder).parts)
+    for here, folders, _files in os.walk(folder):
+        depth = len(Path(here).parts) - top
+        drives = [name for name in folders if DRIVE_NAME.fullmatch(name)]
+        found += [Path(here) / name for name in drives]
+        folders[:] = [] if depth + 1 >= SEARCH_DEPTH else sorted(set(folders) - set(drives))
+    return sorted(found)
+
+
+def _not_a_drive(folder: Path) -> ImportInputError:
+    """The error for a folder that is no drive folder, naming the drive folders found inside (or above) it."""
+    what = f"is not a KITTI raw drive folder (no {', '.join(p + '/' for p in DRIVE_PARTS[2:])})"
+    if is_kitti_drive(folder.parent):
+        return ImportInputError(folder, f"{what}; it lies in the drive folder {folder.parent}: give that one")
+    drives = drive_folders_in(folder)
+    if not drives:
+        return ImportInputError(folder, f"{what}, and no drive folder (<date>_drive_<nnnn>_sync or _extract) is in "
+                                f"it or {SEARCH_DEPTH - 1} levels below; give a drive folder such as "
+                                "2011_09_26/2011_09_26_drive_0001_sync")
+    names = [str(d.relative_to(folder)) for d in drives[:LISTED_DRIVES]]
+    more = f" and {len(drives) - LISTED_DRIVES} more" if len(drives) > LISTED_DRIVES else ""
+    which = "the drive folder" if len(drives) == 1 else f"{len(drives)} drive folders:"
+    return ImportInputError(folder, f"{what}; it holds {which} {', '.join(names)}{more}; give "
+                            f"{'it' if len(drives) == 1 else 'one of them'} as the KITTI drive folder")
 
 
 def find_calibration_file(folder: Path, name: str) -> Path:
@@ -96,6 +137,8 @@ def kitti_source(folder, cameras: str = "colour") -> DriveSource:
     folder = Path(folder)
     if not folder.is_dir():
         raise ImportInputError(folder, "KITTI drive folder does not exist")
+    if not is_kitti_drive(folder):
+        raise _not_a_drive(folder)
     if cameras not in CAMERAS:
         raise ValueError(f"cameras must be one of {tuple(CAMERAS)}, not {cameras!r}")
     left, right = CAMERAS[cameras]
