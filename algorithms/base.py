@@ -17,6 +17,7 @@ from qgis.core import (
     QgsProcessingAlgorithm,
     QgsProcessingException,
     QgsProcessingParameterDefinition,
+    QgsProcessingParameterEnum,
     QgsProcessingParameterFile,
 )
 from qgis.PyQt.QtCore import QCoreApplication
@@ -30,6 +31,7 @@ from .output_paths import output_problem, path_problems
 from .run_outputs import RunOutputs
 
 ICONS = Path(__file__).resolve().parents[1] / "icons"
+ENUM_NAMES = "signmapper_names"   # metadata of an enum parameter: the names its options are chosen by
 OUTPUTS_HELP = (
     "<p><b>Outputs</b> are written whole or not at all: a failed or cancelled run leaves earlier files as they were, "
     "and a second run writing the same file at the same time is refused. A layer written into an existing "
@@ -93,26 +95,39 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
 
         ``advanced`` parameters are folded under "Advanced Parameters" in the dialog.
         """
-        param.setHelp(self.tr(help_text))
+        text = self.tr(help_text)
+        if isinstance(param, QgsProcessingParameterEnum):
+            text += f" By name in qgis_process: {', '.join(enum_names(param))} (or the option's number)."
+        param.setHelp(text)
         if advanced:
             param.setFlags(param.flags() | QgsProcessingParameterDefinition.FlagAdvanced)
         self.addParameter(param)
         return param
 
+    def named_enum(self, name: str, description: str, choices, **kwargs) -> QgsProcessingParameterEnum:
+        """An enum parameter chosen by number or by name (:func:`enum_numbers`): ``choices`` are (name, title)
+        pairs, the title shown in the dialog, or names shown as they are. ``kwargs`` go to QGIS (defaultValue,
+        allowMultiple, optional)."""
+        pairs = [(choice, choice) if isinstance(choice, str) else choice for choice in choices]
+        param = QgsProcessingParameterEnum(name, self.tr(description), options=[self.tr(t) for _, t in pairs],
+                                           **kwargs)
+        param.setMetadata({**param.metadata(), ENUM_NAMES: [n for n, _ in pairs]})
+        return param
+
     def add_language_parameter(self, name: str, first: str, help_text: str, advanced: bool = False):
         """The output language, offered by name after ``first`` (what an algorithm does when none is chosen)."""
-        from qgis.core import QgsProcessingParameterEnum
-
-
-        options = [first] + [LANGUAGE_NAMES[code] for code in LANGUAGES]
-        return self.add_parameter(QgsProcessingParameterEnum(name, self.tr("Language of the output"),
-                                                             options=options, defaultValue=0), help_text, advanced)
+        choices = [("auto", first)] + [(code, LANGUAGE_NAMES[code]) for code in LANGUAGES]
+        return self.add_parameter(self.named_enum(name, "Language of the output", choices, defaultValue=0),
+                                  help_text, advanced)
 
     def chosen_language(self, parameters, name: str, context):
         """The language code chosen, None for the first option (the algorithm's own default)."""
+        code = self.chosen_name(parameters, name, context)
+        return None if code == "auto" else code
 
-        choice = self.parameterAsEnum(parameters, name, context)
-        return LANGUAGES[choice - 1] if choice > 0 else None
+    def chosen_name(self, parameters, name: str, context) -> str:
+        """The name (:meth:`named_enum`) of the option chosen for the enum parameter ``name``."""
+        return enum_names(self.parameterDefinition(name))[self.parameterAsEnum(parameters, name, context)]
 
     def add_drive_parameter(self, name: str):
         """The drive folder input every drive-reading algorithm starts with."""
@@ -122,7 +137,12 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         )
 
     def checkParameterValues(self, parameters, context):  # noqa: N802
-        """QGIS's own checks, then ours (:meth:`check_inputs`), before the run starts."""
+        """QGIS's own checks, then ours (:meth:`check_inputs`), before the run starts; enum options given by name
+        are checked here (QGIS's own check wants numbers, so it sees them as numbers)."""
+        try:
+            parameters = enum_numbers(self, parameters)
+        except QgsProcessingException as exc:
+            return False, str(exc)
         ok, message = super().checkParameterValues(parameters, context)
         if not ok:
             return ok, message
@@ -179,6 +199,14 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
     def process(self, parameters, context, feedback) -> dict:
         """The algorithm's work (what ``processAlgorithm`` is elsewhere); its outputs are committed after it."""
         raise NotImplementedError
+
+    def parameterAsEnum(self, parameters, name, context):  # noqa: N802 - QGIS's name
+        """QGIS's option number, also of an option given by name (:func:`enum_numbers`)."""
+        return super().parameterAsEnum(enum_numbers(self, parameters, name), name, context)
+
+    def parameterAsEnums(self, parameters, name, context):  # noqa: N802 - QGIS's name
+        """QGIS's option numbers, also of options given by name (comma-separated in qgis_process)."""
+        return super().parameterAsEnums(enum_numbers(self, parameters, name), name, context)
 
     def parameterAsSink(self, parameters, name, context, *args, **kwargs):  # noqa: N802 - QGIS's name
         """QGIS's sink; during a run, for an output given as a file, one that writes the run's partial output and
@@ -244,6 +272,45 @@ class CoreFeedback:
 
     def warn(self, message: str) -> None:
         self.feedback.pushWarning(message)
+
+
+def enum_names(param) -> list[str]:
+    """The names an enum parameter's options are chosen by: those :meth:`SignMapperAlgorithm.named_enum` gave, else
+    the options' texts."""
+    return list(param.metadata().get(ENUM_NAMES) or param.options())
+
+
+def _option_number(param, value):
+    """The option number of one value: a number (or its text) as it is, a name or an option's text (any case) as
+    its number; anything else is QGIS's business."""
+    if not isinstance(value, str) or not value.strip() or value.strip().lstrip("-").isdigit():
+        return value
+    wanted = value.strip().casefold()
+    for choices in (enum_names(param), param.options()):
+        folded = [choice.casefold() for choice in choices]
+        if wanted in folded:
+            return folded.index(wanted)
+    raise QgsProcessingException(
+        f"{param.name()} ({param.description()}): {value.strip()!r} is not one of its options; give one of "
+        f"{', '.join(enum_names(param))}, or the option's number 0 to {len(param.options()) - 1}")
+
+
+def enum_numbers(alg, parameters: dict, only: str | None = None) -> dict:
+    """``parameters`` with every enum option given by name (case-insensitive; a comma-separated list for a
+    multiple choice) replaced by its number, as QGIS wants it; only parameter ``only`` when given.
+    QgsProcessingException naming the parameter and its valid names for a name it does not have."""
+    numbered = dict(parameters or {})
+    for param in alg.parameterDefinitions():
+        if not isinstance(param, QgsProcessingParameterEnum) or (only and param.name() != only):
+            continue
+        value = numbered.get(param.name())
+        if isinstance(value, str) and param.allowMultiple() and "," in value:
+            value = [part for part in value.split(",") if part.strip()]
+        if isinstance(value, (list, tuple)):
+            numbered[param.name()] = [_option_number(param, v) for v in value]
+        elif isinstance(value, str):
+            numbered[param.name()] = _option_number(param, value)
+    return numbered
 
 
 def file_error(exc: OSError) -> str:

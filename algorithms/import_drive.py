@@ -7,7 +7,6 @@ from pathlib import Path
 from qgis.core import (
     QgsProcessingException,
     QgsProcessingOutputNumber,
-    QgsProcessingParameterEnum,
     QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterFolderDestination,
@@ -19,11 +18,11 @@ from ..signmapper_core.errors import DriveFormatError, ImportInputError
 from ..signmapper_core.progress import Cancelled
 from .base import CoreFeedback, SignMapperAlgorithm
 
-PRESETS = ("Generic: image folders, calibration file, pose CSV", "KITTI raw drive folder")
+PRESETS = (("generic", "Generic: image folders, calibration file, pose CSV"), ("kitti", "KITTI raw drive folder"))
 KITTI_CAMERAS = (("colour", "Colour cameras (image_02 left, image_03 right)"),
                  ("grey", "Grey cameras (image_00 left, image_01 right)"))
-POSE_KINDS = ("One row per image (exterior orientation, matched by image id)",
-              "Trajectory (time-stamped, interpolated to the image times)")
+POSE_KINDS = (("per_image", "One row per image (exterior orientation, matched by image id)"),
+              ("trajectory", "Trajectory (time-stamped, interpolated to the image times)"))
 CONVENTION_NAMES = ("ned_ypr", "enu_ypr", "opk", "camera_hpr")
 UNITS = (("deg", "Degrees"), ("rad", "Radians"))
 NORTHS = (("auto", "Automatic (navigation angles: true north; a camera's angles: the grid of a projected input CRS)"),
@@ -44,12 +43,15 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
         "normal images with OpenCV (stereoRectify, initUndistortRectifyMap, remap); the poses are turned into the "
         "left normal image's heading, pitch and roll in the output CRS: angle convention, lever arm and boresight "
         "to the left camera, grid convergence and heights by pyproj. Before any image is written, the inputs are "
-        "checked (image size against the calibration, poses against the image times, angles that look like radians "
-        "given as degrees, a CRS without metres) and the first pair is rectified and its rows checked: the mean "
-        "vertical disparity of matched features must stay below the limit ('Largest mean vertical disparity'). "
+        "checked (image size against the calibration, poses against the image times, a CRS without metres, and the "
+        "angles against the direction of travel: radians given as degrees, or a wrong angle convention, stop the "
+        "import naming the unit or convention that fits; a vehicle standing still is a warning) and the first pair "
+        "is rectified and its rows checked: the mean vertical disparity of matched features must stay below the "
+        "limit ('Largest mean vertical disparity'). "
         "A failed or cancelled import leaves no folder behind. Preview the result with Drive trajectory, then map it "
         "with Map traffic signs. The KITTI preset reads a KITTI raw drive folder (images, OXTS poses, calibration "
-        "files) by itself."
+        "files) by itself; given a date or download folder instead of a drive folder, it names the drive folders "
+        "inside. In qgis_process every choice takes its number or its name, e.g. PRESET=kitti ANGLES=enu_ypr."
     )
 
     PRESET = "PRESET"
@@ -84,8 +86,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
 
         folder, file = QgsProcessingParameterFile.Folder, QgsProcessingParameterFile.File
         number = QgsProcessingParameterNumber
-        self.add_parameter(QgsProcessingParameterEnum(self.PRESET, self.tr("What to import"), options=PRESETS,
-                                                      defaultValue=0),
+        self.add_parameter(self.named_enum(self.PRESET, "What to import", PRESETS, defaultValue=0),
                            "Generic: name the image folders, the calibration file and the pose CSV below. KITTI: "
                            "name a KITTI raw drive folder; images, poses and calibration are found in it.")
         self.add_parameter(QgsProcessingParameterFile(self.KITTI_FOLDER, self.tr("KITTI drive folder"), folder,
@@ -93,8 +94,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
                            "KITTI preset only: a KITTI raw drive folder such as 2011_09_26_drive_0001_sync (rectified "
                            "images) or ..._extract (raw images), with image_02/, image_03/, oxts/; the calib_*.txt "
                            "files in it or in the date folder above.")
-        self.add_parameter(QgsProcessingParameterEnum(self.KITTI_CAMERAS, self.tr("KITTI cameras"),
-                                                      options=[t for _, t in KITTI_CAMERAS], defaultValue=0),
+        self.add_parameter(self.named_enum(self.KITTI_CAMERAS, "KITTI cameras", KITTI_CAMERAS, defaultValue=0),
                            "KITTI preset only: the colour or the grey stereo pair.", advanced=True)
         self.add_parameter(QgsProcessingParameterFile(self.LEFT, self.tr("Left images folder"), folder,
                                                       optional=True),
@@ -123,8 +123,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
                            "image, name; per-image tables), time (trajectories), x/easting/lon/longitude, "
                            "y/northing/lat/latitude, z/height/alt, and the three angles of the convention "
                            "(yaw/heading, pitch, roll or omega, phi, kappa).")
-        self.add_parameter(QgsProcessingParameterEnum(self.POSES_KIND, self.tr("Poses are"), options=POSE_KINDS,
-                                                      defaultValue=0),
+        self.add_parameter(self.named_enum(self.POSES_KIND, "Poses are", POSE_KINDS, defaultValue=0),
                            "One row per image, whose id column names the image (id, file name or file name without "
                            "suffix); or a trajectory whose rows are interpolated to each image's time (positions "
                            "linearly, orientations along the shortest turn; epochs at most 1 s apart).")
@@ -133,20 +132,20 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
                                                       fileFilter="Text tables (*.csv *.txt);;All files (*)"),
                            "For a trajectory: a table with id and time of every image, on the trajectory's clock. "
                            "Every image time must lie within the trajectory.")
-        self.add_parameter(QgsProcessingParameterEnum(self.ANGLES, self.tr("Angle convention"),
-                                                      options=[CONVENTIONS[n].title for n in CONVENTION_NAMES],
-                                                      defaultValue=0),
+        self.add_parameter(self.named_enum(self.ANGLES, "Angle convention",
+                                           [(n, CONVENTIONS[n].title) for n in CONVENTION_NAMES], defaultValue=0),
                            "How the three angles are defined. Navigation NED: heading clockwise from north, pitch "
                            "nose up, roll right side down (body x forward, y right, z down). Navigation ENU (KITTI, "
                            "ROS): yaw counter-clockwise from east, pitch nose down, roll left side up (x forward, y "
                            "left, z up). Omega/phi/kappa: R = Rx(omega) Ry(phi) Rz(kappa), camera looking along -z "
-                           "(omega 90 = looking north, level). Camera heading/pitch/roll: as in poses.csv of a drive.")
-        self.add_parameter(QgsProcessingParameterEnum(self.ANGLE_UNIT, self.tr("Angle unit"),
-                                                      options=[t for _, t in UNITS], defaultValue=0),
+                           "(omega 90 = looking north, level). Camera heading/pitch/roll: as in poses.csv of a drive. "
+                           "The body's forward direction must follow the direction of travel (median over the moving "
+                           "epochs): when it misses it and another convention follows it, the import stops naming that "
+                           "one; a vehicle standing still cannot be checked (a warning).")
+        self.add_parameter(self.named_enum(self.ANGLE_UNIT, "Angle unit", UNITS, defaultValue=0),
                            "Unit of the angles in the pose table. Degrees that behave like radians (the forward "
                            "direction misses the direction of travel) stop the import with a message.")
-        self.add_parameter(QgsProcessingParameterEnum(self.NORTH, self.tr("Angles are against"),
-                                                      options=[t for _, t in NORTHS], defaultValue=0),
+        self.add_parameter(self.named_enum(self.NORTH, "Angles are against", NORTHS, defaultValue=0),
                            "True north (what an INS gives) or the grid north of a projected input CRS (what "
                            "photogrammetric software gives in a projected CRS). The output grid's convergence is "
                            "applied either way.", advanced=True)
@@ -173,8 +172,8 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
                                       minValue=-360.0, maxValue=360.0),
                                f"Camera {angle} relative to the body ({text}); 0, 0, 0 = the camera looks along the "
                                f"body's forward axis (for camera conventions: along the recorded camera's axis).")
-        self.add_parameter(QgsProcessingParameterEnum(self.IMAGE_FORMAT, self.tr("Image format of the drive"),
-                                                      options=[t for _, t in IMAGE_FORMATS], defaultValue=0),
+        self.add_parameter(self.named_enum(self.IMAGE_FORMAT, "Image format of the drive", IMAGE_FORMATS,
+                                           defaultValue=0),
                            "Automatic keeps normal images (already rectified JPEG/PNG/TIFF) byte for byte and writes "
                            "rectified ones as JPEG.", advanced=True)
         self.add_parameter(number(self.JPEG_QUALITY, self.tr("JPEG quality"), number.Integer,
@@ -210,26 +209,31 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
         # delays numpy until used
         from ..signmapper_core.importdrive import GenericInputs, ImportOptions, Orientation, generic_source
         from ..signmapper_core.importdrive.importer import plan_import  # delays numpy until used
-        from ..signmapper_core.importdrive.kitti import kitti_source, utm_crs  # delays numpy until used
+        from ..signmapper_core.importdrive.kitti import is_kitti_drive, kitti_source, utm_crs  # delays numpy
 
         self.check_outputs(parameters, context)
-        kitti = self.parameterAsEnum(parameters, self.PRESET, context) == 1
+        kitti = self.chosen_name(parameters, self.PRESET, context) == "kitti"
         string = self.parameterAsString
         try:
             if kitti:
                 folder = self.parameterAsFile(parameters, self.KITTI_FOLDER, context)
                 if not folder:
                     raise QgsProcessingException("The KITTI preset needs the KITTI drive folder.")
-                cameras = KITTI_CAMERAS[self.parameterAsEnum(parameters, self.KITTI_CAMERAS, context)][0]
+                cameras = self.chosen_name(parameters, self.KITTI_CAMERAS, context)
                 source = kitti_source(folder, cameras)
                 output_crs = string(parameters, self.OUTPUT_CRS, context).strip() or utm_crs(source)
             else:
                 needed = {self.LEFT: "the left images folder", self.CALIBRATION: "the stereo calibration",
                           self.POSES: "the poses"}
                 missing = [text for name, text in needed.items() if not self.parameterAsFile(parameters, name, context)]
+                left = self.parameterAsFile(parameters, self.LEFT, context)
+                given = [f for f in (left, self.parameterAsFile(parameters, self.KITTI_FOLDER, context)) if f]
+                kitti_folder = next((f for f in given if is_kitti_drive(f)), None)
+                if kitti_folder and (missing or kitti_folder == left):
+                    raise QgsProcessingException(self.kitti_preset_hint(kitti_folder))
                 if missing:
                     raise QgsProcessingException(f"A generic import needs {', '.join(missing)}.")
-                trajectory = self.parameterAsEnum(parameters, self.POSES_KIND, context) == 1
+                trajectory = self.chosen_name(parameters, self.POSES_KIND, context) == "trajectory"
                 times = self.parameterAsFile(parameters, self.IMAGE_TIMES, context)
                 if trajectory and not times:
                     raise QgsProcessingException("A trajectory is interpolated to the image times: give the image "
@@ -243,9 +247,9 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
                     poses=Path(self.parameterAsFile(parameters, self.POSES, context)),
                     trajectory=trajectory, image_times=Path(times) if times else None,
                     orientation=Orientation(
-                        CONVENTION_NAMES[self.parameterAsEnum(parameters, self.ANGLES, context)],
-                        UNITS[self.parameterAsEnum(parameters, self.ANGLE_UNIT, context)][0],
-                        NORTHS[self.parameterAsEnum(parameters, self.NORTH, context)][0]),
+                        self.chosen_name(parameters, self.ANGLES, context),
+                        self.chosen_name(parameters, self.ANGLE_UNIT, context),
+                        self.chosen_name(parameters, self.NORTH, context)),
                     input_crs=string(parameters, self.INPUT_CRS, context).strip(),
                     lever_arm_m=tuple(self.parameterAsDouble(parameters, n, context) for n in self.LEVER),
                     boresight_deg=tuple(self.parameterAsDouble(parameters, n, context) for n in self.BORESIGHT)))
@@ -253,7 +257,7 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
             check_image = self.parameterAsFileOutput(parameters, self.CHECK_IMAGE, context)
             options = ImportOptions(
                 output_crs=output_crs,
-                image_format=IMAGE_FORMATS[self.parameterAsEnum(parameters, self.IMAGE_FORMAT, context)][0],
+                image_format=self.chosen_name(parameters, self.IMAGE_FORMAT, context),
                 jpeg_quality=self.parameterAsInt(parameters, self.JPEG_QUALITY, context),
                 max_vertical_disparity_px=self.parameterAsDouble(parameters, self.MAX_VERTICAL_DISPARITY, context),
                 check_image=Path(check_image) if check_image else None)
@@ -262,6 +266,15 @@ class ImportDriveAlgorithm(SignMapperAlgorithm):
         except (ImportInputError, ValueError, OSError) as exc:
             raise QgsProcessingException(f"Import drive: {exc}") from exc
         return source, options, self.parameterAsString(parameters, self.OUTPUT, context)
+
+    def kitti_preset_hint(self, folder: str) -> str:
+        """What to do with a KITTI drive folder given to the generic import, in the dialog's and qgis_process's
+        words."""
+        preset, kitti_folder = (self.parameterDefinition(n).description() for n in (self.PRESET, self.KITTI_FOLDER))
+        name, title = PRESETS[1]
+        return (f"{folder} is a KITTI raw drive folder, which the generic import does not read: set '{preset}' to "
+                f"'{title}' ({self.PRESET}={name} in qgis_process) and give the folder as '{kitti_folder}' "
+                f"({self.KITTI_FOLDER}).")
 
     def process(self, parameters, context, feedback):
         source, options, out_dir = self.settings(parameters, context, check=False)

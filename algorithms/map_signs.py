@@ -11,7 +11,6 @@ from qgis.core import (
     QgsProcessingException,
     QgsProcessingOutputVectorLayer,
     QgsProcessingParameterBoolean,
-    QgsProcessingParameterEnum,
     QgsProcessingParameterFile,
     QgsProcessingParameterFileDestination,
     QgsProcessingParameterNumber,
@@ -125,9 +124,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             "slower stereo matching.",
         )
         self.add_parameter(
-            QgsProcessingParameterEnum(self.COLOURS, self.tr("Sign colours to detect"), options=COLOURS,
-                                       allowMultiple=True,
-                                       defaultValue=[COLOURS.index(c) for c in default("colour", "colours")]),
+            self.named_enum(self.COLOURS, "Sign colours to detect", COLOURS, allowMultiple=True,
+                            defaultValue=[COLOURS.index(c) for c in default("colour", "colours")]),
             "Dominant colours segmented in HSV: red (prohibitions, danger, stop), blue (mandatory, information), "
             "yellow (priority road).",
         )
@@ -155,11 +153,9 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             advanced=True,
         )
         self.add_parameter(
-            QgsProcessingParameterEnum(self.CLASSIFIER, self.tr("Classifier"),
-                                       options=[self.tr(c) for c in CLASSIFIER_CHOICES.values()],
-                                       defaultValue=CLASSIFIERS.index(
-                                           default("classification", "classifier")),
-                                       optional=True),  # models saved before it still run
+            self.named_enum(self.CLASSIFIER, "Classifier", list(CLASSIFIER_CHOICES.items()),
+                            defaultValue=CLASSIFIERS.index(default("classification", "classifier")),
+                            optional=True),  # models saved before it still run
             "How a face gets its sign type among the candidates its colour and shape leave. The learned network "
             "is trained on synthetic faces of the official SSV drawings; its indicator is a calibrated probability "
             "that the type is right. Template matching is the paper's method; its indicator is the correlation "

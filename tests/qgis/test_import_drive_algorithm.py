@@ -65,6 +65,46 @@ def test_inputs_are_checked_before_the_run(registered_plugin, survey, tmp_path, 
     assert not ok and message in text
 
 
+
+@pytest.mark.parametrize("changes", [
+    {"PRESET": "generic", "POSES_KIND": "Trajectory", "ANGLES": "NED_YPR", "ANGLE_UNIT": "deg", "NORTH": "auto",
+     "IMAGE_FORMAT": "jpg"},
+    {"PRESET": "0", "POSES_KIND": "1", "ANGLES": 0},
+])
+def test_options_are_taken_by_name_or_number(registered_plugin, survey, tmp_path, changes):
+    ok, text = check(registered_plugin, generic(survey, OUTPUT=str(tmp_path / "d"), **changes))
+    assert ok, text
+
+
+def test_an_option_name_it_does_not_have_is_refused_with_the_names(registered_plugin, survey, tmp_path):
+    ok, text = check(registered_plugin, generic(survey, OUTPUT=str(tmp_path / "d"), ANGLES="ned"))
+    assert not ok
+    assert text == ("ANGLES (Angle convention): 'ned' is not one of its options; give one of ned_ypr, enu_ypr, opk, "
+                    "camera_hpr, or the option's number 0 to 3")
+
+
+def test_angles_of_the_wrong_convention_are_refused_in_the_dialog(registered_plugin, survey, tmp_path):
+    ok, text = check(registered_plugin, generic(survey, OUTPUT=str(tmp_path / "d"), ANGLES="enu_ypr"))
+    assert not ok and "the angles look like ned_ypr" in text and text.endswith("set the angle convention to ned_ypr")
+
+
+@pytest.mark.parametrize("where", ["KITTI_FOLDER", "LEFT"])
+def test_a_kitti_folder_given_to_the_generic_import_says_to_set_the_preset(registered_plugin, tmp_path, where):
+    folder = make_kitti_drive(tmp_path / "kitti")
+    ok, text = check(registered_plugin, {"PRESET": 0, where: str(folder), "OUTPUT": str(tmp_path / "d")})
+    assert not ok
+    assert text == (f"{folder} is a KITTI raw drive folder, which the generic import does not read: set 'What to "
+                    "import' to 'KITTI raw drive folder' (PRESET=kitti in qgis_process) and give the folder as 'KITTI "
+                    "drive folder' (KITTI_FOLDER).")
+
+
+def test_the_kitti_date_folder_names_the_drive_folder_in_it(registered_plugin, tmp_path):
+    folder = make_kitti_drive(tmp_path / "kitti")
+    ok, text = check(registered_plugin, {"PRESET": "kitti", "KITTI_FOLDER": str(folder.parent),
+                                         "OUTPUT": str(tmp_path / "d")})
+    assert not ok and text.endswith("it holds the drive folder 2011_09_26_drive_0001_sync; give it as the KITTI "
+                                    "drive folder")
+
 def test_images_outside_the_trajectory_are_named_in_the_dialog(registered_plugin, survey, tmp_path):
     times = tmp_path / "times.csv"
     times.write_text("id,time\nimg_000,1000.125\nimg_001,1000.375\nimg_002,999.0\n")

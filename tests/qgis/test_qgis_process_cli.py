@@ -4,8 +4,11 @@ import subprocess
 
 import pytest
 from drive_fixtures import make_drive
+from kitti_folder import make_kitti_drive
 from qgis.core import QgsVectorLayer
 from qgis_process_runner import QGIS_PROCESS, enable_plugin, qgis_process_env, run_algorithm
+
+from signmapper_core.drive.reader import open_drive
 
 
 @pytest.fixture(scope="module")
@@ -39,3 +42,18 @@ def test_invalid_drive_fails_with_the_message(cli_env, tmp_path):
     code, _data, log = run_algorithm(cli_env, "signmapper:drivetrajectory", DRIVE=drive, OUTPUT=tmp_path / "o.gpkg")
     assert code != 0
     assert "no left image left/000001" in log
+
+
+def test_options_by_name_kitti_preset(cli_env, tmp_path):
+    """QGIS 3.22's enum parameters take numbers only; the plugin's take their options' names too."""
+    folder = make_kitti_drive(tmp_path / "kitti")
+    code, data, log = run_algorithm(cli_env, "signmapper:importdrive", PRESET="kitti", KITTI_CAMERAS="Colour",
+                                    KITTI_FOLDER=folder, OUTPUT=tmp_path / "drive")
+    assert code == 0, log
+    assert data["results"]["PAIRS"] == 3
+    assert open_drive(tmp_path / "drive").metadata["import"]["source"].startswith("KITTI raw 2011_09_26_drive_0001")
+    code, _data, log = run_algorithm(cli_env, "signmapper:importdrive", PRESET="kitty", KITTI_FOLDER=folder,
+                                     OUTPUT=tmp_path / "other")
+    assert code != 0 and not (tmp_path / "other").exists()
+    assert ("PRESET (What to import): 'kitty' is not one of its options; give one of generic, kitti, or the option's "
+            "number 0 to 1") in log
