@@ -97,7 +97,8 @@ class SignMapperAlgorithm(QgsProcessingAlgorithm):
         """
         text = self.tr(help_text)
         if isinstance(param, QgsProcessingParameterEnum):
-            text += f" By name in qgis_process: {', '.join(enum_names(param))} (or the option's number)."
+            several = ", several separated by commas" if param.allowMultiple() else ""
+            text += f" By name in qgis_process: {', '.join(enum_names(param))} (or the option's number{several})."
         param.setHelp(text)
         if advanced:
             param.setFlags(param.flags() | QgsProcessingParameterDefinition.FlagAdvanced)

@@ -66,14 +66,17 @@ def body_poses(table: PoseTable, orientation: Orientation, steps: CrsSteps,
             to_grid[north] = steps.grid_rotations(table.xyz, north)
         return np.stack([g @ c.rotation(a) for g, a in zip(to_grid[north], rows_deg)])
 
+    read = rotations(conv, angles)
+
     def headings(c: Convention, rows_deg: np.ndarray) -> np.ndarray:
-        return np.array([forward_heading(r, c) for r in rotations(c, rows_deg)])
+        turned = read if c is conv and rows_deg is angles else rotations(c, rows_deg)
+        return np.array([forward_heading(r, c) for r in turned])
 
     legs = travel_legs(centres, order)
     if orientation.unit == "deg":
         check_radians_as_degrees(angles, legs, table, lambda rows: headings(conv, rows))
     check_convention(conv, legs, table, lambda c: headings(c, angles), note)
-    return centres, rotations(conv, angles)
+    return centres, read
 
 
 def drive_poses(centres: np.ndarray, rotations: np.ndarray, mount: Mount, rectify_rotation: np.ndarray) -> list[Pose]:
