@@ -39,7 +39,7 @@ def figures(tmp_path_factory):
         drive = open_drive(folder, require_truth=True)
         result = map_drive(drive, catalogue, PipelineConfig(), workers=1)
         signs = [s for s in result.signs if s.plate_of is None]
-        reference = mappable_signs(drive, 4.0, 14.0)
+        reference = mappable_signs(drive, result.config.depth)
         trajectory = np.array([[r.pose.easting, r.pose.northing] for r in drive.pairs])
         report = evaluate([s.position for s in signs], [s.template_id for s in signs],
                           [r.position for r in reference], [r.template_id for r in reference], trajectory, 0.75)
