@@ -30,18 +30,22 @@ from ..signmapper_core.output.schema import DETECTIONS, SIGNS, OutputContext
 from ..signmapper_core.output.sign_crops import CropFolder
 from ..signmapper_core.pipeline.classifier_names import CLASSIFIER_CHOICES, CLASSIFIERS
 from ..signmapper_core.pipeline.classifiers import NccClassifier, accept_threshold, classifier_for
-from ..signmapper_core.pipeline.config import default
+from ..signmapper_core.pipeline.config import DepthConfig, default
+from ..signmapper_core.pipeline.depth_range import camera_depth_range
 from ..signmapper_core.progress import Cancelled, check_cancelled
 from ..signmapper_core.run import MAX_SKIPPED_PERCENT
 from ..signmapper_core.run.dask_pairs import scheduler_address
 from ..signmapper_core.run.mapping import map_drive
 from ..signmapper_core.run.setup import RunSetupError, assemble_run
 from ..signmapper_core.sign_colours import SIGN_COLOURS
+from ..signmapper_core.simulate.config import SimulationConfig
 from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise, qgis_crs
 
 COLOURS = list(SIGN_COLOURS)
 NEAR_SETTING, FAR_SETTING = ("depth", "near_m"), ("depth", "far_m")  # the settings the depth range parameters set
+# the range the synthetic drives' camera gets, as the help's example
+PAPER_RANGE = camera_depth_range(SimulationConfig().camera(), DepthConfig(), default("colour", "min_face_px"))
 
 
 class MapSignsAlgorithm(SignMapperAlgorithm):
@@ -109,19 +113,26 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.NEAR, self.tr("Near limit of the depth range [m]"),
-                                         QgsProcessingParameterNumber.Double, default(*NEAR_SETTING), minValue=0.5,
+                                         QgsProcessingParameterNumber.Double, None, optional=True, minValue=0.5,
                                          maxValue=100.0),
-            "Signs closer than this depth (along the optical axis) are not searched; default "
-            f"{default(*NEAR_SETTING):g} m.",
+            "Signs closer than this depth (along the optical axis) are not searched. Empty (the default): from the "
+            "drive's camera, where its disparity search reaches "
+            f"{default('depth', 'max_disparity_share'):.0%} of the image width ({PAPER_RANGE.near_m:g} m for the "
+            "synthetic drives' Full-HD camera, like the one of Cavegn 2011). Setting either limit fixes both (the "
+            "other keeps its default) and turns off the reach at the frame's edges.",
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.FAR, self.tr("Far limit of the depth range [m]"),
-                                         QgsProcessingParameterNumber.Double, default(*FAR_SETTING), minValue=1.0,
+                                         QgsProcessingParameterNumber.Double, None, optional=True, minValue=1.0,
                                          maxValue=200.0),
-            "Signs farther than this depth are not searched (they are measured better in a later pair); default "
-            f"{default(*FAR_SETTING):g} m as in Cavegn (2011). On wide streets signs on the far side only come into "
-            f"view beyond {default(*FAR_SETTING):g} m: about 20 m maps them too, with somewhat larger errors and "
-            "slower stereo matching.",
+            "Signs farther than this depth are not searched (they are measured better in a later pair). Empty (the "
+            "default): from the drive's camera, where its depth is known to "
+            f"{default('depth', 'survey_sigma_m') * 100:g} cm ({PAPER_RANGE.far_m:g} m for the camera above; about "
+            "7 m for KITTI's 1242 x 375 camera). A sign that leaves the view before it comes that close (far to the "
+            "side, high over the road, across a junction) is searched out to where a normal-format disc still spans "
+            f"{default('colour', 'min_face_px')} px and its depth is known to {default('depth', 'placing_sigma_m'):g} "
+            f"m ({PAPER_RANGE.reach_m:g} m for the camera above, about 27 m for KITTI's). The log and the run table "
+            "state the range used.",
         )
         self.add_parameter(
             self.named_enum(self.COLOURS, "Sign colours to detect", COLOURS, allowMultiple=True,
@@ -253,8 +264,8 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         self.scheduler(parameters, context)  # a malformed address is said before the run
         colours = [COLOURS[i] for i in self.parameterAsEnums(parameters, self.COLOURS, context)]
         chosen = {  # (section, setting) -> the dialog's value
-            NEAR_SETTING: self.parameterAsDouble(parameters, self.NEAR, context),
-            FAR_SETTING: self.parameterAsDouble(parameters, self.FAR, context),
+            NEAR_SETTING: self.optional_number(parameters, self.NEAR, context),
+            FAR_SETTING: self.optional_number(parameters, self.FAR, context),
             ("colour", "colours"): tuple(colours),
             ("white", "white_signs"): self.parameterAsBool(parameters, self.WHITE_SIGNS, context),
             ("classification", "exclude"): tuple(self.excluded_ids(parameters, context)),

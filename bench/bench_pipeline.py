@@ -37,12 +37,13 @@ def drive_folder(seed: int, pairs: int) -> Path:
 def expected_signs(drive, record, config, max_angle_deg=45.0):
     """Truth signs whose face centre is in the search space, in the image and facing the camera."""
     from signmapper_core.geometry import world_to_pixel
+    from signmapper_core.pipeline.depth_range import edge_share, in_search_range
 
     out = []
     cam = drive.camera
     for sign in drive.truth or []:
         u, v, z = world_to_pixel(cam, record.pose, sign.position)
-        if not (config.depth.near_m <= z <= config.depth.far_m and 0 <= u < cam.width and 0 <= v < cam.height):
+        if not (0 <= u < cam.width and 0 <= v < cam.height and in_search_range(z, edge_share(cam, u, v), config.depth)):
             continue
         facing = np.radians(sign.facing)
         normal = np.array([np.sin(facing), np.cos(facing), 0.0])
@@ -67,11 +68,12 @@ def main() -> int:
     from signmapper_core.drive.reader import open_drive
     from signmapper_core.pipeline import PipelineConfig, detect_pair
     from signmapper_core.pipeline.config import with_settings
+    from signmapper_core.pipeline.depth_range import config_for_camera
 
     folder = args.drive or drive_folder(args.seed, args.pairs)
     drive = open_drive(folder)
     catalogue = load_catalogue()
-    config = PipelineConfig()
+    config = config_for_camera(PipelineConfig(), drive.camera)  # the range map_drive would search
     if args.mode == "sgbm-full":
         config = with_settings(config, {"depth": {"sgbm_rows_only": False}})
     steps, total = defaultdict(float), 0.0

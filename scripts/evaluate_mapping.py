@@ -221,8 +221,9 @@ def main(argv=None) -> int:
                         help="generated drives: share of sign poles whose lowest sign carries a plate (default: the "
                              "generator's)")
     parser.add_argument("--radius", type=float, default=0.75, help="matching radius in metres")
-    parser.add_argument("--near", type=float, default=DepthConfig.near_m)
-    parser.add_argument("--far", type=float, default=DepthConfig.far_m)
+    parser.add_argument("--near", type=float, default=None, help="nearest depth searched [m] (default: the camera's)")
+    parser.add_argument("--far", type=float, default=None, help="farthest depth searched [m] (default: the camera's); "
+                        "either fixes the range")
     parser.add_argument("--catalogue", type=Path, default=None)
     parser.add_argument("--classifier", default="auto", help="auto, cnn or ncc")
     parser.add_argument("--workers", type=int, default=0, help="worker processes (0 = all cores)")
@@ -243,7 +244,8 @@ def main(argv=None) -> int:
     if not folders:
         parser.error("give drive folders or --generate SEEDS")
     catalogue = load_catalogue(args.catalogue)
-    config = PipelineConfig(depth=DepthConfig(near_m=args.near, far_m=args.far),
+    fixed = {k: v for k, v in (("near_m", args.near), ("far_m", args.far)) if v is not None}
+    config = PipelineConfig(depth=DepthConfig(**fixed, range_from_camera=not fixed),
                             classification=ClassificationConfig(classifier=args.classifier),
                             white=WhiteConfig(white_signs=args.white_signs))
     reports = {"detections": [], "signs": []}
@@ -261,13 +263,14 @@ def main(argv=None) -> int:
     outcome_totals: dict = {}
     for folder in folders:
         drive = open_drive(folder, require_truth=True)
-        reference = mappable_signs(drive, args.near, args.far)
-        ref_xyz, ref_ids = [s.position for s in reference], [s.template_id for s in reference]
         traj = np.array([[r.pose.easting, r.pose.northing] for r in drive.pairs])
         start = time.perf_counter()
         result = map_drive(drive, catalogue, config, warn=lambda message: print(message, file=sys.stderr),
                            workers=args.workers)
         seconds = time.perf_counter() - start  # wall clock: workers map side by side
+        searched = result.config.depth  # the range the drive's camera gave, unless --near/--far fixed it
+        reference = mappable_signs(drive, searched)
+        ref_xyz, ref_ids = [s.position for s in reference], [s.template_id for s in reference]
         signs = [s for s in result.signs if s.plate_of is None]  # plates have their own rows
         sign_detections = [o for o in result.detections if not is_plate(o)]
         head = f"== {folder} ({len(drive.pairs)} pairs, {len(result.skipped)} skipped, " \
@@ -277,11 +280,11 @@ def main(argv=None) -> int:
             reports[kind].append(report)
             if kind == "signs":
                 plate_evidence = [] if args.evidence else None
-                plates = evaluate_plates(drive, result.signs, reference, report.match, args.near, args.far,
+                plates = evaluate_plates(drive, result.signs, reference, report.match, searched,
                                          args.radius, evidence=plate_evidence)
                 plate_totals = plates + plate_totals
                 panel_evidence = [] if args.evidence else None
-                panels = evaluate_panels(drive, signs, reference, report.match, args.near, args.far,
+                panels = evaluate_panels(drive, signs, reference, report.match, searched,
                                          evidence=panel_evidence)
                 panel_totals = panels + panel_totals
                 all_azimuth_errors += azimuth_errors(signs, reference, report)

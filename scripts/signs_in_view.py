@@ -23,15 +23,23 @@ from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive.reader import open_drive
 from signmapper_core.evaluation.families import GROUP_TITLES, GROUPS, catalogue_colour, sign_group
 from signmapper_core.evaluation.visibility import visible_in_pair
-from signmapper_core.pipeline.config import DepthConfig
+from signmapper_core.pipeline.config import DepthConfig, PipelineConfig
+from signmapper_core.pipeline.depth_range import config_for_camera
 
 
-def in_view(truth, camera, poses, near: float, far: float) -> list:
-    """The signs (not plates) of ``truth`` seen face-on within ``near``..``far`` from one of ``poses`` at least."""
-    return [t for t in truth if not t.is_plate and any(visible_in_pair(camera, p, t, near, far) for p in poses)]
+def searched_range(camera, near, far) -> DepthConfig:
+    """The range a mapping of ``camera``'s drive searches: the camera's, or ``near``..``far`` where either is given."""
+    fixed = {k: v for k, v in (("near_m", near), ("far_m", far)) if v is not None}
+    return config_for_camera(PipelineConfig(depth=DepthConfig(**fixed, range_from_camera=not fixed)), camera).depth
 
 
-def planned(seed: int, pairs: int, near: float, far: float) -> list:
+def in_view(truth, camera, poses, near, far) -> list:
+    """The signs (not plates) of ``truth`` seen face-on within the searched range from one of ``poses`` at least."""
+    depth = searched_range(camera, near, far)
+    return [t for t in truth if not t.is_plate and any(visible_in_pair(camera, p, t, depth) for p in poses)]
+
+
+def planned(seed: int, pairs: int, near, far) -> list:
     """The signs in view of the drive ``evaluate_mapping --generate`` would write, from its layout alone."""
     from signmapper_core.simulate import SimulationConfig
     from signmapper_core.simulate.generator import make_scene, make_street, recorded_poses, true_poses
@@ -59,8 +67,8 @@ def main(argv=None) -> int:
     how = parser.add_mutually_exclusive_group()
     how.add_argument("--plan", action="store_true", help="count from the layout, write nothing")
     how.add_argument("--generate", action="store_true", help="write the synthetic drives not there yet")
-    parser.add_argument("--near", type=float, default=DepthConfig.near_m)
-    parser.add_argument("--far", type=float, default=DepthConfig.far_m)
+    parser.add_argument("--near", type=float, default=None, help="nearest depth searched [m] (default: the camera's)")
+    parser.add_argument("--far", type=float, default=None, help="farthest depth searched [m] (default: the camera's)")
     args = parser.parse_args(argv)
     if not args.drives and not args.seeds:
         parser.error("give drive folders or --seeds")
@@ -79,7 +87,8 @@ def main(argv=None) -> int:
         totals += counts
         print(f"{name}: {len(seen)} signs in view; " + ", ".join(f"{g} {counts[g]}" for g in GROUPS if counts[g]),
               flush=True)
-    print(f"== {len(sources)} drives, {sum(totals.values())} signs in view (near {args.near:g} m, far {args.far:g} m)")
+    print(f"== {len(sources)} drives, {sum(totals.values())} signs in view (near {args.near} m, far {args.far} m; "
+          "None: the camera's)")
     for group in GROUPS:
         print(f"  {GROUP_TITLES.get(group, group):<20} {totals[group]:>5}")
     return 0

@@ -55,6 +55,9 @@ def build_parser() -> argparse.ArgumentParser:
                                        "cluster a folder of your own must be at the same path on every worker")
     p.add_argument("--settings-from", metavar="GPKG",
                    help="map with the settings an earlier output's run table records (pipeline, fusion, catalogue)")
+    for flag, limit in (("--near", "nearest"), ("--far", "farthest")):
+        p.add_argument(flag, type=float, default=None, metavar="M",
+                       help=f"{limit} depth searched [m] (default: from the drive's camera; either fixes the range)")
     p.add_argument("--white-signs", action=argparse.BooleanOptionalAction, default=None,
                    help="look for white and grey signs (end-of-restriction discs and panels, white place-name and "
                         "direction panels), as the mapsigns option (default: "
@@ -98,8 +101,10 @@ def settings(args, say):
     from .run.setup import assemble_run  # delays OpenCV and numpy until used
 
     choices = {} if args.white_signs is None else {("white", "white_signs"): args.white_signs}  # given, it wins
+    choices.update({("depth", "near_m"): args.near, ("depth", "far_m"): args.far})  # None: not given
     run = assemble_run(choices, args.settings_from, args.catalogue, warn=say,
-                       labels={"settings_from": "--settings-from", "catalogue": "--catalogue"})
+                       labels={"settings_from": "--settings-from", "catalogue": "--catalogue", "near_m": "--near",
+                               "far_m": "--far"})
     return run.catalogue, run.config, run.fusion
 
 

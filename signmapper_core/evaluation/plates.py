@@ -23,7 +23,7 @@ import numpy as np
 from ..catalogue.plates_ch import kind_of
 from ..pipeline.config import DepthConfig
 from .accuracy import match_to_reference, share_text
-from .visibility import largest_view_px, mappable_signs
+from .visibility import DEFAULT_RANGE, largest_view_px, mappable_signs
 
 MIN_TEXT_PX = 40.0
 KINDS = ("text", "layout", "pictogram")  # catalogue.plates_ch's kinds, in the order reported
@@ -74,8 +74,8 @@ class PlateFigures:
             f"{MIN_TEXT_PX:.0f} px ({share_text(self.texts_right, self.readable_detected)} of the detected)"]
 
 
-def evaluate_plates(drive, signs, sign_reference, sign_match, near_m: float = DepthConfig.near_m,
-                    far_m: float = DepthConfig.far_m, radius_m: float = 0.75, min_text_px: float = MIN_TEXT_PX,
+def evaluate_plates(drive, signs, sign_reference, sign_match, depth: DepthConfig = DEFAULT_RANGE,
+                    radius_m: float = 0.75, min_text_px: float = MIN_TEXT_PX,
                     evidence: Optional[list] = None) -> PlateFigures:
     """Plate figures of one run.
 
@@ -84,7 +84,7 @@ def evaluate_plates(drive, signs, sign_reference, sign_match, near_m: float = De
     against and, per non-plate feature in the order of ``signs``, the index of its
     reference sign or -1 (``EvaluationReport.match``).
     """
-    reference = mappable_signs(drive, near_m, far_m, plates=True)
+    reference = mappable_signs(drive, depth, plates=True)
     mapped = [s for s in signs if s.plate_of is not None]
     sign_truth = {}
     for sign, ref in zip((s for s in signs if s.plate_of is None), sign_match):
@@ -97,7 +97,7 @@ def evaluate_plates(drive, signs, sign_reference, sign_match, near_m: float = De
         kind = kind_of(ref.template_id)
         setattr(figures, kind, getattr(figures, kind) + 1)
         found = [mapped[i] for i in np.flatnonzero(match == k)]
-        largest_px = largest_view_px(drive, ref, near_m, far_m)
+        largest_px = largest_view_px(drive, ref, depth)
         readable = largest_px >= min_text_px and kind != "pictogram"
         figures.readable += readable
         if not found:

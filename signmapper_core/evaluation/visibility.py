@@ -12,7 +12,9 @@ import numpy as np
 
 from ..geometry import world_to_pixel
 from ..pipeline.config import DepthConfig
+from ..pipeline.depth_range import edge_share, in_search_range
 
+DEFAULT_RANGE = DepthConfig()  # the default range without a camera: no reach at the frame's edges
 READABLE_FACE_ANGLE_DEG = 75.0  # a face turned farther than this away from the camera cannot be read
 
 
@@ -21,10 +23,13 @@ def facing_vector(azimuth_deg: float) -> np.ndarray:
     return np.array([np.sin(a), np.cos(a), 0.0])
 
 
-def visible_in_pair(camera, pose, sign, near_m: float, far_m: float,
+def visible_in_pair(camera, pose, sign, depth: DepthConfig = DEFAULT_RANGE,
                     max_face_angle_deg: float = READABLE_FACE_ANGLE_DEG) -> bool:
+    """Whether ``sign``'s centre is in the image within the search range of ``depth`` (its reach at the frame's
+    edges too) with its face turned towards the camera."""
     u, v, z = world_to_pixel(camera, pose, sign.position)
-    if not (near_m <= z <= far_m and 0 <= u <= camera.width - 1 and 0 <= v <= camera.height - 1):
+    if not (0 <= u <= camera.width - 1 and 0 <= v <= camera.height - 1
+            and in_search_range(z, edge_share(camera, u, v), depth)):
         return False
     to_camera = pose.centre - sign.position
     to_camera[2] = 0.0
@@ -35,8 +40,7 @@ def visible_in_pair(camera, pose, sign, near_m: float, far_m: float,
     return cos_angle >= np.cos(np.radians(max_face_angle_deg))
 
 
-def mappable_signs(drive, near_m: float = DepthConfig.near_m, far_m: float = DepthConfig.far_m,
-                   plates: bool = False) -> list:
+def mappable_signs(drive, depth: DepthConfig = DEFAULT_RANGE, plates: bool = False) -> list:
     """Truth signs of ``drive`` seen face-on within the depth range in at least one pair.
 
     Supplementary plates (rows with ``plate_of``) are left out, or with ``plates`` only they are given.
@@ -46,15 +50,15 @@ def mappable_signs(drive, near_m: float = DepthConfig.near_m, far_m: float = Dep
     return [
         sign for sign in drive.truth
         if sign.is_plate == plates
-        and any(visible_in_pair(drive.camera, rec.pose, sign, near_m, far_m) for rec in drive.pairs)
+        and any(visible_in_pair(drive.camera, rec.pose, sign, depth) for rec in drive.pairs)
     ]
 
 
-def largest_view_px(drive, sign, near_m: float = DepthConfig.near_m, far_m: float = DepthConfig.far_m) -> float:
+def largest_view_px(drive, sign, depth: DepthConfig = DEFAULT_RANGE) -> float:
     """Height in pixels of ``sign``'s face in the pair that sees it largest within the depth range (0 if none)."""
     best = 0.0
     for rec in drive.pairs:
-        if visible_in_pair(drive.camera, rec.pose, sign, near_m, far_m):
+        if visible_in_pair(drive.camera, rec.pose, sign, depth):
             z = world_to_pixel(drive.camera, rec.pose, sign.position)[2]
             best = max(best, drive.camera.fy * sign.height_m / z)
     return best

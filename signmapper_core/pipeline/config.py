@@ -206,8 +206,15 @@ class SizeConfig:
 class DepthConfig:
     """The search space (near..far in front of the camera) and depth from stereo when no depth map is given."""
 
-    near_m: float = 4.0  # nearest depth searched [m] (Cavegn 2011): closer faces are cut by the frame
-    far_m: float = 14.0  # farthest depth searched [m] (Cavegn 2011): farther is slower and less accurate
+    near_m: float = 4.0  # nearest depth searched [m]: what the rules below give the paper's camera (Cavegn 2011)
+    far_m: float = 14.0  # farthest depth searched across the frame [m]: likewise
+    # farthest depth searched for a face that leaves the view before it comes within far_m [m] (None: not at all)
+    reach_m: Optional[float] = None
+    range_from_camera: bool = True  # near_m, far_m and reach_m follow the drive's camera by the three rules below
+    max_disparity_share: float = 0.2  # near: the matcher searches disparities up to this share of the image width
+    survey_sigma_m: float = 0.03  # far: the depth is known this well [m], a few centimetres as a survey asks
+    placing_sigma_m: float = 0.5  # reach: depth known this well [m] still places a sign on its side of the road
+    disparity_sigma_px: float = 0.25  # uncertainty of a face's mean disparity [px], sub-pixel stereo on a plane
     search_close_px: int = 15  # holes of a given depth's search space this small [px] are closed before it cuts colours
     search_grow_px: int = 31  # with SGBM depth the search space is grown by this much instead [px]
     face_depth_slack: float = 0.2  # a face's plane depth counts within near x (1 - this) .. far x (1 + this)
@@ -232,6 +239,13 @@ class DepthConfig:
     def __post_init__(self):
         if not 0 < self.near_m < self.far_m:
             raise ValueError(f"need 0 < near_m < far_m, got {self.near_m}, {self.far_m}")
+        if self.reach_m is not None and self.reach_m < self.far_m:
+            raise ValueError(f"need reach_m >= far_m, got {self.reach_m}, {self.far_m}")
+
+    @property
+    def farthest_m(self) -> float:
+        """The farthest depth searched anywhere in the frame."""
+        return max(self.far_m, self.reach_m or self.far_m)
 
 
 @dataclass(frozen=True)

@@ -143,7 +143,8 @@ def sgbm_depth(
     settled; at the image's left edge the pair is padded instead.
     """
     settings = config.depth
-    near_m, far_m, scale, far_factor = settings.near_m, settings.far_m, settings.sgbm_scale, settings.sgbm_far_factor
+    near_m, far_m, scale = settings.near_m, settings.farthest_m, settings.sgbm_scale
+    far_factor = settings.sgbm_far_factor
     block_size = settings.sgbm_block_size
     height, width = left.shape[:2]
     depth = np.full((height, width), np.nan, dtype=np.float32)

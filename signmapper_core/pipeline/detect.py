@@ -36,6 +36,7 @@ from .colour import (
     split_face_merges,
 )
 from .config import PipelineConfig, with_settings
+from .depth_range import edge_share_image, face_depth, in_search_range
 from .depth_sources import depth_source_for
 from .detection import Detection
 from .face_extent import (
@@ -56,7 +57,6 @@ from .hough import find_circles, hough_scale, hough_segments, radius_range_px, r
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
 from .plates import find_plates
-from .search_space import search_space_mask
 from .shape import IDEAL_FILL, catalogue_shape, catalogue_shapes, plausible_outlines
 from .sizing import measure_segment, metric_size, size_readings
 from .text_lines import typed_by_lines
@@ -107,7 +107,7 @@ def stereo_candidate_boxes(pair: PairContext, frame: ColourFrame) -> List[Box]:
     config, camera = pair.config, pair.camera
     heights = [h for e in pair.catalogue for (_, h) in e.formats.values()] or list(config.size.fallback_face_sides_m)
     max_px = config.depth.sgbm_band_max_height * max(heights) * camera.fy / config.depth.near_m
-    min_px = config.depth.sgbm_band_min_height * min(heights) * camera.fy / config.depth.far_m
+    min_px = config.depth.sgbm_band_min_height * min(heights) * camera.fy / config.depth.farthest_m
     return [s.bbox for s in colour_segments(pair, None, frame) if min_px <= s.bbox[3] <= max_px]
 
 
@@ -259,7 +259,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     candidates = segment_candidates(seg, shapes, catalogue, config)
     if not candidates:
         return None
-    size = measure_segment(camera, depth, seg.bbox, seg.surface_mask, config.depth.near_m, config.depth.far_m)
+    size = measure_segment(camera, depth, seg.bbox, seg.surface_mask, config.depth.near_m, config.depth.farthest_m)
     if size is None:
         return None
     fits = size_to_format(seg, candidates, size.depth_m, shape, pair)
@@ -337,7 +337,8 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         status = status if strong else config.hough.hough_max_status
         reason = "" if status == ACCEPTED else FAINT_HOUGH_RING
     u, v = bbox_centre(face)
-    z = face_depth(planarity, camera, u, v, size, config)
+    z = face_depth(planarity.depth_at(camera, u, v), size.depth_m, camera, u, v, config.depth,
+                   config.depth.face_depth_slack)
     if status == ACCEPTED and may_be_a_panels_disc(zone_panels, cls.template_id) and \
             inside_white_panel(left, depth, face, z, config):
         status, reason = REVIEW, ZONE_PANEL_DISC
@@ -352,16 +353,6 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         position=locate(camera, pose, u, v, z), source=seg.source, scores=cls.scores,
         normal_world=world_face_normal(camera, pose, planarity.plane), review_reason=reason,
     )
-
-
-def face_depth(planarity, camera: Camera, u: float, v: float, size, config: PipelineConfig) -> float:
-    """Depth of the face's centre on its fitted plane, or the segment's median depth where the plane puts it
-    outside the depth range (a face reaching past the range's limits)."""
-    z = planarity.depth_at(camera, u, v)
-    slack = config.depth.face_depth_slack
-    if not (np.isfinite(z) and config.depth.near_m * (1.0 - slack) <= z <= config.depth.far_m * (1.0 + slack)):
-        z = size.depth_m
-    return float(z)
 
 
 def matches_no_entry(cls, classifier, config: PipelineConfig) -> bool:
@@ -387,7 +378,8 @@ def _unknown_detection(seg: Segment, reading, shape: str, planarity, size, pair:
     match, face, cls = reading
     camera = pair.camera
     u, v = bbox_centre(face)
-    z = face_depth(planarity, camera, u, v, size, pair.config)
+    z = face_depth(planarity.depth_at(camera, u, v), size.depth_m, camera, u, v, pair.config.depth,
+                   pair.config.depth.face_depth_slack)
     return Detection(
         template_id=UNKNOWN_ID, name=UNKNOWN_ID, colour=seg.colour, shape=catalogue_shape(shape),
         width_m=match.width_m, height_m=match.height_m, format=match.format, detection_indicator=planarity.indicator,
@@ -476,7 +468,7 @@ def detect(pair: PairContext, timings: Optional[dict] = None) -> List[Detection]
             boxes = boxes + context_boxes(whites, config) + panel_context_boxes(panel_fields, config)
     with timer("depth"):
         depth = source.depth_map(left, pair.camera, config, pair.roi, boxes)
-    search = search_space_mask(depth, config.depth.near_m, config.depth.far_m)
+    search = in_search_range(depth, edge_share_image(pair.camera), config.depth)
     if not pair.is_whole_image:
         inside = np.zeros_like(search)
         inside[y0:y1, x0:x1] = True

@@ -64,9 +64,10 @@ class PairContext:
 
     @cached_property
     def smallest_face_px(self) -> float:
-        """Pixels of the smallest side of any format at the far limit: the smallest face worth finding."""
+        """Pixels of the smallest side of any format at the farthest depth searched: the smallest face worth
+        finding."""
         config = self.config
         entries = self.catalogue.filter(exclude=tuple(config.classification.exclude))
         sides = [min(f) for e in entries for f in e.formats.values()]
         smallest = min(sides) if sides else min(config.size.fallback_face_sides_m)
-        return smallest * min(self.camera.fx, self.camera.fy) / config.depth.far_m
+        return smallest * min(self.camera.fx, self.camera.fy) / config.depth.farthest_m

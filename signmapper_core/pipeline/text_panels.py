@@ -23,6 +23,7 @@ from ..fusion.face_normal import world_face_normal
 from ..geometry import Camera
 from ..statuses import ACCEPTED, REVIEW
 from .boxes import centre_inside
+from .depth_range import face_depth
 from .detection import Detection
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
@@ -358,16 +359,14 @@ def judge_panel(field: PanelField, pair: PairContext, depth: np.ndarray, grey: n
     height, width = grey.shape[:2]
     if x < 0 or y < 0 or x + w > width or y + h > height:
         return None
-    size = measure_segment(camera, depth, field.box, field.mask, config.depth.near_m, config.depth.far_m)
+    size = measure_segment(camera, depth, field.box, field.mask, config.depth.near_m, config.depth.farthest_m)
     if size is None or size.coverage < config.planarity.min_depth_coverage:
         return None
     planarity = pair.planarity(depth, field.box, field.mask)
     if planarity.indicator < config.planarity.detection_threshold:
         return None
     u, v = bbox_centre(box)
-    z = planarity.depth_at(camera, u, v)
-    if not np.isfinite(z) or not config.depth.near_m <= z <= config.depth.far_m:
-        z = size.depth_m
+    z = face_depth(planarity.depth_at(camera, u, v), size.depth_m, camera, u, v, config.depth, 0.0)
     width_m, height_m = metric_size(camera, box, z)
     if not kind.fits(width_m, height_m, config.size.size_tolerance):
         return None

@@ -25,6 +25,7 @@ from .boxes import centre_inside, share_inside
 from .classifiers import accept_threshold
 from .classify import ClassificationResult, classify_segment
 from .colour import Segment, inscribed_disc
+from .depth_range import face_depth
 from .detection import Detection
 from .hough import band_colour_shares, outer_ring, weak_colour
 from .locate import bbox_centre, locate
@@ -290,7 +291,7 @@ def _judge_face(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
     ids = white_template_ids(catalogue, cand.shape, seg.bbox, config)
     if not ids:
         return None
-    size = measure_segment(camera, depth, seg.bbox, seg.mask, config.depth.near_m, config.depth.far_m)
+    size = measure_segment(camera, depth, seg.bbox, seg.mask, config.depth.near_m, config.depth.farthest_m)
     if size is None or size.coverage < config.planarity.min_depth_coverage:
         return None
     if cand.shape == "circle":  # a disc seen at an angle: its larger axis is the diameter
@@ -308,10 +309,8 @@ def _judge_face(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
     if planarity.indicator < config.planarity.detection_threshold:
         return None
     u, v = bbox_centre(seg.bbox)
-    z = planarity.depth_at(camera, u, v)
-    slack = config.depth.face_depth_slack
-    if not (np.isfinite(z) and config.depth.near_m * (1.0 - slack) <= z <= config.depth.far_m * (1.0 + slack)):
-        z = size.depth_m
+    z = face_depth(planarity.depth_at(camera, u, v), size.depth_m, camera, u, v, config.depth,
+                   config.depth.face_depth_slack)
     beside = side_share(depth, seg.bbox, z, config)
     if beside is not None and beside > config.white.white_max_side_share:
         return None

@@ -28,6 +28,7 @@ from ..fusion.signs import FusedSign, FusionConfig, Observation, azimuth_deg, fu
 from ..output.run_table import run_record
 from ..pipeline import detect_in_window
 from ..pipeline.classifiers import accept_threshold, classifier_for
+from ..pipeline.depth_range import config_for_camera, range_text
 from ..pipeline.face_extent import carried_discs
 from ..plates.fusion import fuse_plates, is_plate, read_plate_texts
 from ..plates.number_check import check_speed_numbers, speed_limit_signs
@@ -125,8 +126,9 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
 
     Skipped pairs, and pairs without usable depth or colour, are passed to
     ``warn`` as they happen; skipped pairs are listed in the result.
-    ``fusion``'s ``accept_classification`` is replaced by the classifier's threshold (``config`` may set it),
-    its ``far_m`` by ``config.depth.far_m``.
+    ``config``'s depth range follows the drive's camera where it asks so (:func:`.depth_range.config_for_camera`);
+    the result holds the range used. ``fusion``'s ``accept_classification`` is replaced by the classifier's
+    threshold (``config`` may set it), its ``far_m`` by ``config.depth.far_m``.
     ``Cancelled`` is raised when ``is_cancelled()`` turns true; ``MappingError``
     as soon as more than ``max_skipped_share`` (0..1) of the pairs are skipped,
     and when no pair could be mapped at all. ``workers``: processes mapping the
@@ -138,6 +140,9 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     ``detect``: see :func:`map_pairs`.
     """
 
+    config = config_for_camera(config, drive.camera)
+    report(progress, 0.0, f"Searching {range_text(config.depth)} ahead of the camera"
+           + (" (the range its focal length and baseline give)" if config.depth.range_from_camera else ""))
     classifier = classifier_for(catalogue, config)  # a missing or broken model fails here, before any pair
     unread = classifier.unknown(catalogue.ids()) if hasattr(classifier, "unknown") else []
     if unread:

@@ -24,6 +24,7 @@ from ..progress import WarnCallback
 
 Setting = tuple  # (section, name) of a PipelineConfig setting
 NEAR, FAR = ("depth", "near_m"), ("depth", "far_m")
+RANGE_FROM_CAMERA, REACH = ("depth", "range_from_camera"), ("depth", "reach_m")
 EXCLUDE = ("classification", "exclude")
 # what the messages call each input unless the front end names it: keys of ``labels``
 INPUT_WORDS = {"settings_from": "Settings from an earlier output", "catalogue": "Template catalogue",
@@ -81,6 +82,7 @@ def assemble_run(choices: Mapping[Setting, Any], settings_from=None, catalogue_f
     if earlier is not None and defaults_yield:
         choices = {k: v for k, v in choices.items() if not is_default(k, v)}
     base = earlier.config if earlier is not None else PipelineConfig()
+    choices = fixed_range(choices)
     _check_choices(choices, base, catalogue, words)
     changes: dict = {}
     for (section, name), value in choices.items():
@@ -94,6 +96,15 @@ def assemble_run(choices: Mapping[Setting, Any], settings_from=None, catalogue_f
     except ClassifierError as exc:
         raise RunSetupError(f"{words['classifier']}: {exc}") from None
     return RunSetup(catalogue, config, earlier.fusion if earlier is not None else FusionConfig())
+
+
+def fixed_range(choices: Mapping[Setting, Any]) -> dict:
+    """``choices`` where a near or far limit given (not None) fixes the depth range: no longer from the camera,
+    no reach beyond it; a limit given as None is not a choice."""
+    out = {k: v for k, v in choices.items() if not (k in (NEAR, FAR) and v is None)}
+    if NEAR in out or FAR in out:
+        out.update({RANGE_FROM_CAMERA: False, REACH: None})
+    return out
 
 
 def _check_choices(choices: Mapping[Setting, Any], base: PipelineConfig, catalogue, words: Mapping[str, str]):

@@ -506,11 +506,11 @@ def test_a_plate_seen_in_three_pairs_is_one_feature_linked_to_its_sign_with_its_
     plate_detections = [o for o in result.detections if o.sign_id == plate.sign_id]
     assert len(plate_detections) == 3
     assert not [m for m in messages if "plate" in m]
-    reference = mappable_signs(drive)
+    reference = mappable_signs(drive, result.config.depth)
     report = evaluate([s.position for s in signs], [s.template_id for s in signs], [r.position for r in reference],
                       [r.template_id for r in reference], [[0, 0], [1, 1]], 0.75)
     evidence = []
-    figures = evaluate_plates(drive, result.signs, reference, report.match, evidence=evidence)
+    figures = evaluate_plates(drive, result.signs, reference, report.match, result.config.depth, evidence=evidence)
     assert (figures.reference, figures.detected, figures.links_right, figures.false_positives) == (1, 1, 1, 0)
     assert (figures.text, figures.text_typed, figures.typed_right) == (1, 1, 1)
     assert (figures.readable, figures.texts_right) == (1, 1)  # 0.2 m at 8 m: 44 px high
@@ -529,11 +529,11 @@ def test_without_tesseract_plates_are_mapped_and_the_run_says_once_how_to_instal
     about_plates = [m for m in messages if "plate" in m]
     assert len(about_plates) == 1 and INSTALL_HINT in about_plates[0]
     signs = [s for s in result.signs if s.plate_of is None]
-    reference = mappable_signs(drive)
+    reference = mappable_signs(drive, result.config.depth)
     report = evaluate([s.position for s in signs], [s.template_id for s in signs], [r.position for r in reference],
                       [r.template_id for r in reference], [[0, 0], [1, 1]], 0.75)
     evidence = []
-    evaluate_plates(drive, result.signs, reference, report.match, evidence=evidence)
+    evaluate_plates(drive, result.signs, reference, report.match, result.config.depth, evidence=evidence)
     assert len(evidence) == 1 and "typed wrong, text wrong; truth 5.01 '200 m'; mapped plate None" in evidence[0]
 
 

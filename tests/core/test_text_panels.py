@@ -197,11 +197,11 @@ def test_a_text_panel_seen_in_three_pairs_is_one_feature_with_its_text(tmp_path)
     assert (panel.template_id, panel.n_obs, panel.status) == ("4.30", 3, "accepted")
     assert panel.text == "Uster / Egg 4 km" and panel.text_confidence > 0.5
     assert np.linalg.norm(panel.position - centre) < 0.1
-    reference = mappable_signs(drive)
+    reference = mappable_signs(drive, result.config.depth)
     report = evaluate([panel.position], [panel.template_id], [r.position for r in reference],
                       [r.template_id for r in reference], [[0, 0], [1, 1]], 0.75)
     evidence = []
-    figures = evaluate_panels(drive, result.signs, reference, report.match, evidence=evidence)
+    figures = evaluate_panels(drive, result.signs, reference, report.match, result.config.depth, evidence=evidence)
     assert (figures.reference, figures.detected, figures.kinds_right, figures.texts_right) == (1, 1, 1, 1)
     assert evidence == []
 
