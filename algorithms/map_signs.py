@@ -116,10 +116,10 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                                          QgsProcessingParameterNumber.Double, None, optional=True, minValue=0.5,
                                          maxValue=100.0),
             "Signs closer than this depth (along the optical axis) are not searched. Empty (the default): from the "
-            "drive's camera, where its disparity search reaches "
-            f"{default('depth', 'max_disparity_share'):.0%} of the image width ({PAPER_RANGE.near_m:g} m for the "
-            "synthetic drives' Full-HD camera, like the one of Cavegn 2011). Setting either limit fixes both (the "
-            "other keeps its default) and turns off the reach at the frame's edges.",
+            f"drive's camera, where its disparity search reaches {default('depth', 'max_disparity_px'):g} px "
+            f"({PAPER_RANGE.near_m:g} m for the synthetic drives' Full-HD camera, like the one of Cavegn 2011). "
+            "Setting either limit fixes both (the other keeps its default) and turns off the reach at the frame's "
+            "edges.",
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.FAR, self.tr("Far limit of the depth range [m]"),

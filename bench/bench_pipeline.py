@@ -37,7 +37,7 @@ def drive_folder(seed: int, pairs: int) -> Path:
 def expected_signs(drive, record, config, max_angle_deg=45.0):
     """Truth signs whose face centre is in the search space, in the image and facing the camera."""
     from signmapper_core.geometry import world_to_pixel
-    from signmapper_core.pipeline.depth_range import edge_share, in_search_range
+    from signmapper_core.pipeline.search_range import edge_share, in_search_range
 
     out = []
     cam = drive.camera

@@ -12,7 +12,7 @@ import numpy as np
 
 from ..geometry import world_to_pixel
 from ..pipeline.config import DepthConfig
-from ..pipeline.depth_range import edge_share, in_search_range
+from ..pipeline.search_range import edge_share, in_search_range
 
 DEFAULT_RANGE = DepthConfig()  # the default range without a camera: no reach at the frame's edges
 READABLE_FACE_ANGLE_DEG = 75.0  # a face turned farther than this away from the camera cannot be read

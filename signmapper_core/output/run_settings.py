@@ -131,8 +131,18 @@ def pipeline_config_of(data: dict, where: str, warn: Optional[WarnCallback] = No
         unknown = sorted(set(data) - set(SECTIONS))
         if unknown and warn is not None:
             warn(f"{where}: ignored sections this version does not know: {', '.join(unknown)}")
+    data = with_fixed_range(data)
     return PipelineConfig(**{name: settings_of(cls, data[name], f"{where}, section {name}", warn)
                              for name, cls in SECTIONS.items() if name in data})
+
+
+def with_fixed_range(sections: dict) -> dict:
+    """``{section: {setting: value}}`` where a depth section recorded before the range followed the camera (no
+    ``range_from_camera``) keeps its range as recorded: that run searched exactly its near..far."""
+    depth = sections.get("depth")
+    if not isinstance(depth, dict) or "range_from_camera" in depth:
+        return sections
+    return {**sections, "depth": {**depth, "range_from_camera": False}}
 
 
 @dataclass(frozen=True)
@@ -203,6 +213,6 @@ def recorded_config(record: dict):
     if record.get("classifier") in CLASSIFIERS:  # the strategy that ran, recorded from the first version on
         changes.setdefault("classification", {})["classifier"] = record["classifier"]
     try:
-        return with_settings(PipelineConfig(), changes)
+        return with_settings(PipelineConfig(), with_fixed_range(changes))
     except (TypeError, ValueError):
         return PipelineConfig()

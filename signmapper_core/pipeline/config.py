@@ -211,7 +211,7 @@ class DepthConfig:
     # farthest depth searched for a face that leaves the view before it comes within far_m [m] (None: not at all)
     reach_m: Optional[float] = None
     range_from_camera: bool = True  # near_m, far_m and reach_m follow the drive's camera by the three rules below
-    max_disparity_share: float = 0.2  # near: the matcher searches disparities up to this share of the image width
+    max_disparity_px: float = 384.0  # near: the matcher searches disparities up to this [px], its cost's bound
     survey_sigma_m: float = 0.03  # far: the depth is known this well [m], a few centimetres as a survey asks
     placing_sigma_m: float = 0.5  # reach: depth known this well [m] still places a sign on its side of the road
     disparity_sigma_px: float = 0.25  # uncertainty of a face's mean disparity [px], sub-pixel stereo on a plane

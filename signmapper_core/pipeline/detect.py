@@ -36,7 +36,6 @@ from .colour import (
     split_face_merges,
 )
 from .config import PipelineConfig, with_settings
-from .depth_range import edge_share_image, face_depth, in_search_range
 from .depth_sources import depth_source_for
 from .detection import Detection
 from .face_extent import (
@@ -57,6 +56,7 @@ from .hough import find_circles, hough_scale, hough_segments, radius_range_px, r
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
 from .plates import find_plates
+from .search_range import edge_share_image, face_depth, in_search_range
 from .shape import IDEAL_FILL, catalogue_shape, catalogue_shapes, plausible_outlines
 from .sizing import measure_segment, metric_size, size_readings
 from .text_lines import typed_by_lines

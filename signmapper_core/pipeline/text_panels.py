@@ -23,11 +23,11 @@ from ..fusion.face_normal import world_face_normal
 from ..geometry import Camera
 from ..statuses import ACCEPTED, REVIEW
 from .boxes import centre_inside
-from .depth_range import face_depth
 from .detection import Detection
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
 from .scene_colour import median_u8
+from .search_range import face_depth
 from .sizing import measure_segment, metric_size
 from .white_outlines import bright_achromatic, filled
 from .white_signs import coloured_share, network_reading, pole_share, side_shares, support_share

@@ -25,11 +25,11 @@ from .boxes import centre_inside, share_inside
 from .classifiers import accept_threshold
 from .classify import ClassificationResult, classify_segment
 from .colour import Segment, inscribed_disc
-from .depth_range import face_depth
 from .detection import Detection
 from .hough import band_colour_shares, outer_ring, weak_colour
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
+from .search_range import face_depth
 from .search_space import valid_depth
 from .shape import catalogue_shapes
 from .sizing import measure_segment, metric_size, round_to_format

@@ -6,16 +6,8 @@ import pytest
 
 from signmapper_core.geometry import Camera
 from signmapper_core.pipeline.config import ColourConfig, DepthConfig, PipelineConfig
-from signmapper_core.pipeline.depth_range import (
-    camera_depth_range,
-    config_for_camera,
-    depth_known_to,
-    edge_share,
-    edge_share_image,
-    face_depth,
-    in_search_range,
-    range_text,
-)
+from signmapper_core.pipeline.depth_range import camera_depth_range, config_for_camera, depth_known_to, range_text
+from signmapper_core.pipeline.search_range import edge_share, edge_share_image, face_depth, in_search_range
 from signmapper_core.run.setup import assemble_run
 from signmapper_core.simulate.config import SimulationConfig
 
@@ -33,7 +25,7 @@ def test_the_papers_camera_gives_the_papers_range():
 
 def test_a_kitti_camera_measures_well_less_far_but_reaches_a_far_sign_at_the_edge():
     depth = camera_depth_range(KITTI, DepthConfig(), MIN_FACE_PX)
-    assert (depth.near_m, depth.far_m) == (2.0, 7.0)
+    assert (depth.near_m, depth.far_m) == (1.0, 7.0)
     # the no-stopping sign of KITTI 0001 is seen at 24-27 m, 15-22 m left of the track: inside the reach
     assert depth.reach_m == 27.0
     assert 0.025 < DepthConfig().survey_sigma_m < 0.035

@@ -32,7 +32,8 @@ def _output(path, config=RECORDED, catalogue=str(DEFAULT_CATALOGUE_DIR), **rows)
 
 def test_without_a_record_the_choices_go_over_the_defaults():
     run = assemble_run({("depth", "far_m"): 25.0, ("white", "white_signs"): False})
-    assert run.config == with_settings(PipelineConfig(), {"depth": {"far_m": 25.0}, "white": {"white_signs": False}})
+    fixed = {"far_m": 25.0, "range_from_camera": False, "reach_m": None}  # a limit given fixes the range
+    assert run.config == with_settings(PipelineConfig(), {"depth": fixed, "white": {"white_signs": False}})
     assert run.fusion == FusionConfig() and run.catalogue.folder == DEFAULT_CATALOGUE_DIR
 
 

@@ -1,0 +1,56 @@
+"""Where a depth range is searched: near..far anywhere in the frame, and out to the reach where a face leaves
+the view before it comes within far.
+
+Driving straight on, a point at share e of the way from the principal point to the frame's edge
+(:func:`edge_share`) at depth Z leaves the view at depth Z e; where that is beyond far, the sign is never seen
+closer, and its views out to the reach are the best it gets (``pipeline/depth_range.py`` sets the limits).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import numpy as np
+
+from ..geometry import Camera
+from .config import DepthConfig
+
+
+def edge_share(camera: Camera, u, v):
+    """How far (u, v) is from the principal point towards the frame's nearest edge it moves to, 0..1:
+    the larger of the horizontal and vertical shares (a point leaves the view by whichever edge it reaches
+    first)."""
+    u, v = np.asarray(u, dtype=np.float32), np.asarray(v, dtype=np.float32)
+    right, bottom = camera.width - 1 - camera.cx, camera.height - 1 - camera.cy
+    du = np.where(u >= camera.cx, (u - camera.cx) / right, (camera.cx - u) / camera.cx)
+    dv = np.where(v >= camera.cy, (v - camera.cy) / bottom, (camera.cy - v) / camera.cy)
+    return np.clip(np.maximum(du, dv), 0.0, 1.0)
+
+
+@lru_cache(maxsize=4)
+def edge_share_image(camera: Camera) -> np.ndarray:
+    """:func:`edge_share` of every pixel (float32, height x width)."""
+    shares = edge_share(camera, np.arange(camera.width, dtype=np.float32)[None, :],
+                        np.arange(camera.height, dtype=np.float32)[:, None]).astype(np.float32)
+    shares.flags.writeable = False  # cached and shared by every pair of the camera
+    return shares
+
+
+def in_search_range(z, edge, depth: DepthConfig, slack: float = 0.0):
+    """Whether depth ``z`` at edge share ``edge`` is searched: near..far anywhere, and up to the reach where
+    the face leaves the view before it comes within far. ``slack`` widens every limit by that share."""
+    z = np.asarray(z, dtype=np.float32)
+    with np.errstate(invalid="ignore"):
+        inside = (z >= depth.near_m * (1.0 - slack)) & (z <= depth.far_m * (1.0 + slack))
+        if depth.reach_m and depth.reach_m > depth.far_m:
+            inside |= (z * edge >= depth.far_m * (1.0 - slack)) & (z <= depth.reach_m * (1.0 + slack))
+    return inside
+
+
+def face_depth(plane_depth: float, median_depth: float, camera: Camera, u: float, v: float, depth: DepthConfig,
+               slack: float) -> float:
+    """Depth of a face's centre (u, v): on its fitted plane, or the segment's median depth where the plane
+    puts it outside the search range widened by ``slack`` (a face reaching past the range's limits)."""
+    if np.isfinite(plane_depth) and in_search_range(plane_depth, edge_share(camera, u, v), depth, slack):
+        return float(plane_depth)
+    return float(median_depth)
