@@ -63,8 +63,12 @@ def git_dir(repo: Path) -> Path:
     raise SourceError(f"{repo}: not a git directory (no objects/ and HEAD in it or in its .git)")
 
 
+def _git_command(gitdir: Path, *args: str) -> list:
+    return ["git", f"--git-dir={gitdir}", *args]
+
+
 def _git(gitdir: Path, *args: str) -> subprocess.CompletedProcess:
-    return subprocess.run(["git", f"--git-dir={gitdir}", *args], capture_output=True, check=False)
+    return subprocess.run(_git_command(gitdir, *args), capture_output=True, check=False)
 
 
 def check_source(gitdir: Path) -> None:
@@ -81,7 +85,7 @@ def extract(gitdir: Path, into: Path) -> None:
     """The taken folders and files of ``SOURCE_COMMIT`` under ``into`` as KITTI lays them out (``into/2011_09_26``)."""
     paths = [folder for folder, _ in SOURCE_FOLDERS] + [CALIBRATION_FOLDER]
     renames = [(f"{CALIBRATION_FOLDER}/", "")] + [(f"{src}/", f"{dst}/") for src, dst in SOURCE_FOLDERS]
-    command = ["git", f"--git-dir={gitdir}", "archive", "--format=tar", SOURCE_COMMIT, "--", *paths]
+    command = _git_command(gitdir, "archive", "--format=tar", SOURCE_COMMIT, "--", *paths)
     unreadable = None
     with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE) as git:
         try:
