@@ -34,7 +34,7 @@ QGIS_PROFILE_PLUGINS := $(HOME)/.local/share/QGIS/QGIS3/profiles/default/python/
 TRAIN_VENV := .venv-train
 TRAIN_PY := $(TRAIN_VENV)/bin/python
 
-.PHONY: setup apt build-apt venv test test-core demo screenshots desktop-check lint zip deploy catalogue catalogue-sheet import-model train-classifier calibrate-classifier clean help
+.PHONY: setup apt build-apt venv test test-core demo screenshots desktop-check lint zip deploy catalogue catalogue-sheet import-model train-classifier calibrate-classifier kitti-drive clean help
 
 help:
 	@echo "make setup     Debian packages (QGIS), venv with pinned requirements"
@@ -50,6 +50,7 @@ help:
 	@echo "make train-classifier  retrain templates/ch/classifier (own venv with PyTorch; ~1 h on 2 cores)"
 	@echo "make calibrate-classifier REAL_DATA=DIR  fit its indicator on the tune half of real photographs"
 	@echo "make import-model rebuild models/import_and_map_signs.model3 from the registered algorithms"
+	@echo "make kitti-drive KITTI_REPO=GIT_DIR  KITTI drive 0001 into the cache tests/core/test_kitti_drive.py maps"
 
 setup: apt venv
 
@@ -160,6 +161,14 @@ zip: venv
 
 import-model: venv
 	$(PY) -m scripts.make_import_model
+
+# KITTI raw drive 2011_09_26_drive_0001 (CC BY-NC-SA, never committed) from a local git copy into the cache of
+# tests/core/test_kitti_drive.py ($$SIGNMAPPER_KITTI_CACHE or ~/.cache/sign_mapper/kitti; tests/data/kitti/README.md);
+# git and the standard library are all it needs
+kitti-drive:
+	@if [ -z "$(KITTI_REPO)" ]; then \
+		echo "usage: make kitti-drive KITTI_REPO=<git dir holding the drive> (tests/data/kitti/README.md)"; exit 2; fi
+	$(SYSTEM_PYTHON) -m scripts.kitti_drive --repo "$(KITTI_REPO)"
 
 deploy:
 	mkdir -p $(QGIS_PROFILE_PLUGINS)
