@@ -173,9 +173,9 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
         raise MappingError(f"no pair could be mapped: {total} of {total} pairs skipped (first: pair "
                            f"{skipped[0].record.id}: {skipped[0].error})")
     report(progress, PAIRS_SHARE, f"Fusing {len(detections)} detections into signs")
-    signs = fuse_observations([o for o in detections if not is_plate(o)], fusion,
+    signs = fuse_observations([o for o in detections if not is_plate(o)], drive.camera, fusion,
                               carried_discs(catalogue, config.colour.hsv_ranges))
-    plates = fuse_plates(detections, signs, fusion)
+    plates = fuse_plates(detections, signs, drive.camera, fusion)
     panels = [s for s in signs if is_text_panel(s.template_id)]
     if plates or panels:
         report(progress, PAIRS_SHARE, f"Reading the text of {len(plates)} supplementary plates and {len(panels)} "
