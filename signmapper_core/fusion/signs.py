@@ -147,6 +147,15 @@ class FusionConfig:
     # the digits of a sign mapped as a speed limit (number_check.py): read in this many of its largest voters' views;
     # an accepted sign goes to review when more of them read another speed limit's number than its own
     number_readings: int = 3
+    # a sign's face centre must be this high above the road beside it [m] (plausibility.py): a deliberately loose
+    # bound below any sign's mounting (the lowest, keep-left/right signs on traffic-island bollards, stand higher)
+    min_centre_above_road_m: float = 0.2
+    # ...its face must look at most this far from the direction to the trajectory [deg]: a sign beside the road
+    # faces along it (~90°), one on the back of a pole the other carriageway (~90°); beyond, it looks at the houses
+    max_face_turn_deg: float = 135.0
+    # ...and it must stand at most this far beside the trajectory [m]: a deliberately loose bound beyond the far side
+    # of a four-lane street with pavements, seen from its outer lane
+    max_lateral_m: float = 25.0
 
 
 @dataclass
