@@ -152,9 +152,9 @@ class FusionConfig:
     # a sign's face centre must be this high above the road beside it [m] (plausibility.py): a deliberately loose
     # bound below any sign's mounting (the lowest, keep-left/right signs on traffic-island bollards, stand higher)
     min_centre_above_road_m: float = 0.2
-    # ...its face must look at most this far from the direction to the trajectory [deg]: a sign beside the road
-    # faces along it (~90°), one on the back of a pole the other carriageway (~90°); beyond, it looks at the houses
-    max_face_turn_deg: float = 135.0
+    # ...its face look at most this far from the direction to the trajectory [deg]: a sign beside the road faces along
+    # it, one on the back of a pole the other carriageway (both ~90°), a far face's fitted plane errs by up to ~40°
+    max_face_turn_deg: float = 150.0
     # ...and it must stand at most this far beside the trajectory [m]: a deliberately loose bound beyond the far side
     # of a four-lane street with pavements, seen from its outer lane
     max_lateral_m: float = 25.0

@@ -19,7 +19,7 @@ NORTH = np.array([0.0, 1.0, 0.0])
 EAST = np.array([1.0, 0.0, 0.0])
 
 
-def sign_at(position, normal=WEST, pairs=range(3, 8)):
+def sign_at(position, normal=WEST, pairs=(3, 4, 5, 6, 7)):
     (sign,) = fuse_observations(seen_from(np.array(position, float), pairs, normal=normal), CAMERA, CONFIG)
     assert sign.status == "accepted"
     return sign
