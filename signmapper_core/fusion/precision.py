@@ -18,6 +18,8 @@ from typing import Sequence
 
 import numpy as np
 
+from ..geometry import Camera
+
 ROBUST_SIGMA = 1.4826  # a normal distribution's σ per median absolute deviation
 
 
@@ -32,7 +34,7 @@ class StereoPrecision:
     pose_sigma_m: float
 
     @classmethod
-    def of(cls, camera, config) -> StereoPrecision:
+    def of(cls, camera: Camera, config) -> StereoPrecision:
         """Of a drive's ``geometry.Camera`` and a ``FusionConfig``."""
         return cls(float(camera.fx), float(camera.baseline_m), config.disparity_sigma_px, config.image_sigma_px,
                    config.pose_sigma_m)

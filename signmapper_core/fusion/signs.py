@@ -25,6 +25,7 @@ from typing import Mapping, Optional, Sequence
 import numpy as np
 
 from ..catalogue.model import UNKNOWN_ID
+from ..geometry import Camera
 from ..output.review_reasons import DOUBTFUL_READINGS, sign_reason
 from ..pipeline.config import DepthConfig
 from ..plates.zone_panels import may_be_disc_of
@@ -254,10 +255,6 @@ class _Track:
     @property
     def last_pair(self) -> int:
         return self.observations[-1].pair_index
-
-    @property
-    def position(self) -> np.ndarray:
-        return self.estimate.position
 
     @property
     def face(self) -> np.ndarray:
@@ -490,11 +487,10 @@ def _merge_tracks(tracks: list[list[Observation]], config: FusionConfig,
 
 @dataclass(frozen=True)
 class SignPosition:
-    """Where a sign is, how precisely, and from which of its views."""
+    """Where a sign is and how precisely."""
 
     estimate: Estimate  # the views' information-weighted position; covariance scaled by their variance factor
     sight: np.ndarray  # unit mean line of sight of those views
-    views: list  # the observations it was computed from: the voters but those that disagree with the rest
 
     def sigmas(self) -> tuple[float, float, float]:
         """(σ along the line of sight, σ across it per axis, 3D σ) [m]."""
@@ -516,7 +512,7 @@ def sign_position(observations: Sequence[Observation], precision: StereoPrecisio
     rays = [(p - observations[i].camera_centre) / max(np.linalg.norm(p - observations[i].camera_centre), 1e-9)
             for i, p in zip(kept, positions)]
     sight = np.sum(rays, axis=0)
-    return SignPosition(scaled, sight / max(float(np.linalg.norm(sight)), 1e-9), [observations[i] for i in kept])
+    return SignPosition(scaled, sight / max(float(np.linalg.norm(sight)), 1e-9))
 
 
 def azimuth_deg(direction: np.ndarray) -> Optional[float]:
@@ -576,7 +572,7 @@ def _doubtful(track: Sequence[Observation], min_views: int) -> bool:
         all(o.review_reason in DOUBTFUL_READINGS for o in track)
 
 
-def fuse_observations(observations: Sequence[Observation], camera, config: Optional[FusionConfig] = None,
+def fuse_observations(observations: Sequence[Observation], camera: Camera, config: Optional[FusionConfig] = None,
                       carried_discs: Optional[Mapping[str, str]] = None) -> list[FusedSign]:
     """One :class:`FusedSign` per physical sign, numbered from 1 in order of first sight.
 

@@ -21,6 +21,7 @@ from typing import Callable, Optional, Sequence
 from ..catalogue.text_panels import is_text_panel
 from ..fusion.precision import StereoPrecision
 from ..fusion.signs import FusedSign, FusionConfig, Observation, _merge_tracks, build_tracks, fuse_track
+from ..geometry import Camera
 from ..progress import WarnCallback, send_warning
 from .formats import PLATE_ID
 from .ocr import OcrError, OcrUnavailable, read_texts
@@ -32,7 +33,7 @@ def is_plate(observation: Observation) -> bool:
     return getattr(observation.detection, "plate_of", None) is not None
 
 
-def fuse_plates(observations: Sequence[Observation], signs: Sequence[FusedSign], camera,
+def fuse_plates(observations: Sequence[Observation], signs: Sequence[FusedSign], camera: Camera,
                 config: Optional[FusionConfig] = None) -> list[FusedSign]:
     """One :class:`FusedSign` per physical plate (``plate_of`` = its sign's id), numbered after ``signs``.
 
