@@ -228,13 +228,21 @@ def _merged_by_definition(tracks, config):
     from signmapper_core.fusion.signs import _one_sign, _TrackSummary
 
     precision = StereoPrecision.of(CAMERA, config)
+    summaries = {}  # a track's summary by its observations: the same track is summarised once
+
+    def summary(track):
+        key = tuple(id(o) for o in track)
+        if key not in summaries:
+            summaries[key] = _TrackSummary.of(track, precision)
+        return summaries[key]
+
     tracks = [list(t) for t in tracks]
     merged = True
     while merged:
         merged = False
         for i in range(len(tracks)):
             for j in range(i + 1, len(tracks)):
-                if _one_sign(_TrackSummary.of(tracks[i], precision), _TrackSummary.of(tracks[j], precision), config):
+                if _one_sign(summary(tracks[i]), summary(tracks[j]), config):
                     tracks[i] = sorted(tracks[i] + tracks[j], key=lambda o: o.pair_index)
                     del tracks[j]
                     merged = True
