@@ -160,10 +160,19 @@ class FusionConfig:
     # of a four-lane street with pavements, seen from its outer lane
     max_lateral_m: float = 25.0
 
+    def __post_init__(self):
+        if not (self.disparity_sigma_px > 0 and self.image_sigma_px > 0):
+            raise ValueError(f"disparity_sigma_px and image_sigma_px must be positive (a view's precision), got "
+                             f"{self.disparity_sigma_px}, {self.image_sigma_px}")
+        if self.pose_sigma_m < 0 or self.gate_sigmas < 0:
+            raise ValueError(f"pose_sigma_m and gate_sigmas must not be negative, got {self.pose_sigma_m}, "
+                             f"{self.gate_sigmas}")
+
 
 @dataclass
 class FusedSign:
-    """One physical sign: class by weighted vote, robust position, the observations it was fused from."""
+    """One physical sign: class by weighted vote, position from its views by their precision, the observations it
+    was fused from."""
 
     sign_id: int
     template_id: str

@@ -179,3 +179,10 @@ def test_the_gate_is_the_fixed_distance_for_precise_views_and_follows_the_sigma_
     assert gate_distance(np.array([0.0, 0.61, 0.0]), precise, 0.6, 3.0) > 1.0
     assert gate_distance(np.array([1.5, 0.0, 0.0]), uncertain_along_x, 0.6, 3.0) < 1.0  # 3 σ along
     assert gate_distance(np.array([0.0, 0.65, 0.0]), uncertain_along_x, 0.6, 3.0) > 1.0  # not across
+
+
+@pytest.mark.parametrize("setting, value", [("disparity_sigma_px", 0.0), ("image_sigma_px", -1.0),
+                                            ("pose_sigma_m", -0.01), ("gate_sigmas", -3.0)])
+def test_precision_settings_that_would_break_the_model_are_refused_by_name(setting, value):
+    with pytest.raises(ValueError, match=setting):
+        FusionConfig(**{setting: value})
