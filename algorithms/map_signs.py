@@ -24,6 +24,7 @@ from ..gpkg.output import GeoPackageLayers, layer_uri
 from ..gpkg.styles import OutputStyler, embed_default_styles
 from ..signmapper_core.drive.clock import drive_start, first_time
 from ..signmapper_core.errors import ClusterError, DriveFormatError, MappingError
+from ..signmapper_core.fusion.signs import FusionConfig
 from ..signmapper_core.output import run_table, schema
 from ..signmapper_core.output.geopackage_file import OUR_TABLES
 from ..signmapper_core.output.schema import DETECTIONS, SIGNS, OutputContext
@@ -43,6 +44,7 @@ from .base import CoreFeedback, SignMapperAlgorithm
 from .drive_input import open_drive_or_raise, qgis_crs
 
 COLOURS = list(SIGN_COLOURS)
+_FUSION = FusionConfig()  # the defaults the help states
 NEAR_SETTING, FAR_SETTING = ("depth", "near_m"), ("depth", "far_m")  # the settings the depth range parameters set
 # the range the synthetic drives' camera gets, as the help's example
 PAPER_RANGE = camera_depth_range(SimulationConfig().camera(), DepthConfig(), default("colour", "min_face_px"))
@@ -62,8 +64,22 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
         "indicator: the network's calibrated probability, or the correlation score) and the 3D position of the "
         "sign centre from the pair's pose. Writes a GeoPackage with the layer 'detections' (one PointZ per sign per "
         "pair, in the drive's CRS), the layer 'signs' (the detections of each physical sign fused into one point with "
-        "class by weighted vote, number of observations, position spread and face azimuth) and the table "
+        "class by weighted vote, number of observations, position σ and face azimuth) and the table "
         "'signmapper_run' recording the drive folder and parameters. "
+        "A sign's position comes from all the pairs it was seen in, each weighted by how precisely stereo places it "
+        "(depth error Z²·σ_d/(f·B) along the line of sight, Z·σ_px/f across, with the drive's focal length f and "
+        f"baseline B, σ_d = {_FUSION.disparity_sigma_px:g} px and σ_px = {_FUSION.image_sigma_px:g} px), and it "
+        "reports its estimated σ along the line of sight and across it (sigma_along_m, sigma_across_m); views of "
+        "one far sign whose depths scatter along their line of sight are fused as one sign. "
+        "Plausibility: a sign that would be accepted but is mapped where or as no sign can be goes to review with "
+        "its reason: its face centre less than "
+        f"{_FUSION.min_centre_above_road_m:g} m above the road beside it (a deliberately loose bound below the "
+        "lowest mounted signs, the keep-left/right signs on traffic-island bollards; the road is the camera's path "
+        "less the camera height, so this applies only where drive.json states vehicle.camera_height_m), its face "
+        f"looking more than {_FUSION.max_face_turn_deg:g}° away from the direction to the vehicle's path (a sign "
+        "beside the road or on the back of its pole is ~90°), or it stands more than "
+        f"{_FUSION.max_lateral_m:g} m beside the path (a deliberately loose bound beyond the far side of a "
+        "four-lane street). Nothing is dropped: a person decides. "
         "A pair with a corrupt or missing image is logged and skipped; when more than a set share of the pairs "
         "(or all of them) cannot be mapped, the run fails. A failed or cancelled run writes nothing and leaves an "
         "earlier output as it was. Written into an existing GeoPackage, only the layers above are replaced: the "

@@ -21,6 +21,13 @@ from pathlib import Path
 import numpy as np
 
 
+def observation_spread(sign) -> float:
+    """RMS 3D distance of the positions of a fused sign's observations of its id from its position [m]: how well
+    the imported poses place one sign from several pairs (``sigma_m`` is the position's estimated error instead)."""
+    views = [o for o in sign.observations if o.template_id == sign.template_id] or sign.observations
+    return float(np.sqrt(np.mean([np.sum((o.position - sign.position) ** 2) for o in views])))
+
+
 def main(argv=None) -> int:
     from signmapper_core.pipeline.config import DepthConfig
 
@@ -66,10 +73,11 @@ def main(argv=None) -> int:
         result = map_drive(drive, load_catalogue(), PipelineConfig())
         print(f"mapping: {len(result.detections)} detections, {len(result.signs)} signs, "
               f"{len(result.skipped)} pairs skipped, {time.perf_counter() - started:.1f} s")
+        spreads = {sign.sign_id: observation_spread(sign) for sign in result.signs}
         for sign in result.signs:
-            spread = "" if sign.sigma_m is None else f", spread of its observations {100 * sign.sigma_m:.1f} cm"
+            spread = f", spread of its observations {100 * spreads[sign.sign_id]:.1f} cm" if sign.n_obs > 1 else ""
             print(f"  sign {sign.sign_id}: {sign.template_id} seen in {sign.n_obs} pair(s){spread}, {sign.status}")
-        several = [s.sigma_m for s in result.signs if s.n_obs > 1 and s.sigma_m is not None]
+        several = [spreads[s.sign_id] for s in result.signs if s.n_obs > 1]
         if several:
             print(f"signs seen in several pairs: {len(several)}, spread of their observations median "
                   f"{100 * np.median(several):.1f} cm, max {100 * np.max(several):.1f} cm")

@@ -24,7 +24,8 @@ REPO_ROOT = Path(__file__).resolve().parents[1]
 # on writing, so a last-digit flip is possible across platforms); geometry to 0.1 mm.
 FLOAT_TOLERANCE = {
     "detection_indicator": 1.1e-4, "classification_indicator": 1.1e-4, "vote_share": 1.1e-3, "sigma_m": 1.1e-4,
-    "azimuth": 0.11, "mount_height_m": 0.011, "u": 0.011, "v": 0.011, "depth_m": 1.1e-3, "geometry": 1e-4,
+    "sigma_along_m": 1.1e-4, "sigma_across_m": 1.1e-4, "azimuth": 0.11, "mount_height_m": 0.011, "u": 0.011,
+    "v": 0.011, "depth_m": 1.1e-3, "geometry": 1e-4,
     "easting": 1.1e-3, "northing": 1.1e-3, "elevation": 1.1e-3,
 }
 DEFAULT_TOLERANCE = 1e-9

@@ -29,9 +29,16 @@ def road_height_near(position: np.ndarray, camera_centres: np.ndarray, camera_he
     return float(centres[nearest, 2] - camera_height_m)
 
 
+def height_above_road(position: np.ndarray, camera_centres: np.ndarray,
+                      camera_height_m: Optional[float]) -> Optional[float]:
+    """Height of ``position`` above the road beside it, or None when the camera height is unknown."""
+    if camera_height_m is None or len(camera_centres) == 0:
+        return None
+    return float(position[2] - road_height_near(position, camera_centres, camera_height_m))
+
+
 def mounting_height(position: np.ndarray, face_height_m: float, camera_centres: np.ndarray,
                     camera_height_m: Optional[float]) -> Optional[float]:
     """Lower edge of the face above the road, or None when the camera height is unknown."""
-    if camera_height_m is None or len(camera_centres) == 0:
-        return None
-    return float(position[2] - face_height_m / 2.0 - road_height_near(position, camera_centres, camera_height_m))
+    centre = height_above_road(position, camera_centres, camera_height_m)
+    return None if centre is None else centre - face_height_m / 2.0

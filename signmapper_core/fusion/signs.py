@@ -4,12 +4,15 @@ At 5 pairs/s a sign is seen in about five pairs within 4-14 m. Observations are
 chained in driving order into tracks (3D proximity, compatible colour and shape,
 a consistent face direction, at most one observation per pair, and no long gap),
 then tracks of the same sign from separate passes are merged. Each sign gets a
-robust, weighted position, a class by weighted vote, its standard size, the
-spread of its observations and its face azimuth.
+position from all its views weighted by their precision (:mod:`.precision`: stereo
+places a far face poorly along its line of sight), that position's σ along and
+across the line of sight, a class by weighted vote, its standard size and its face azimuth.
 
 The gates keep apart what must stay apart: two signs stacked on one pole are
 ~0.7 m apart vertically (vertical gate 0.3 m), back-to-back signs face opposite
 ways (face gate 60°), and two identical signs a few metres apart exceed the 3D gate.
+Each gate reaches ``gate_sigmas`` σ of the difference it tests where that is wider:
+along the line of sight of far views, whose depth is uncertain by a metre at 25 m.
 """
 
 from __future__ import annotations
@@ -22,10 +25,12 @@ from typing import Mapping, Optional, Sequence
 import numpy as np
 
 from ..catalogue.model import UNKNOWN_ID
+from ..geometry import Camera
 from ..output.review_reasons import DOUBTFUL_READINGS, sign_reason
 from ..pipeline.config import DepthConfig
 from ..plates.zone_panels import may_be_disc_of
 from ..statuses import ACCEPTED, REVIEW
+from .precision import Estimate, StereoPrecision, along_across, combined, gate_distance, inliers, variance_factor
 
 
 def _reads(path: str, doc: str) -> property:
@@ -78,12 +83,19 @@ class Observation:
 
 @dataclass(frozen=True)
 class FusionConfig:
-    gate_m: float = 0.6  # 3D distance from a track's position
-    vertical_gate_m: float = 0.3  # stacked signs are ~0.7 m apart
+    gate_m: float = 0.6  # 3D distance from a track's position [m], where gate_sigmas σ of it are less
+    vertical_gate_m: float = 0.3  # the same vertically [m]: stacked signs are ~0.7 m apart
     face_gate_deg: float = 60.0  # back-to-back signs face ~180° apart
     max_gap_pairs: int = 4  # a track not seen for longer is closed
-    merge_gate_m: float = 0.35  # tracks of one sign from separate passes
-    outlier_min_m: float = 0.10  # observations beyond max(this, 3 robust σ) from the median are not averaged
+    merge_gate_m: float = 0.35  # tracks of one sign from separate passes [m], where gate_sigmas σ are less
+    outlier_min_m: float = 0.10  # views beyond max(this [m], gate_sigmas σ, the spread) from the median are left out
+    gate_sigmas: float = 3.0  # the gates reach this many σ of the difference they test (precision.gate_distance)
+    # a face centre's disparity error [px] (depth error Z²σ_d/(f·B)): KITTI's ~0.5 (issue 45), SGBM on the synthetic
+    # drives 0.3 (docs/measurements.md); the larger, as a gate too tight splits a far sign in two
+    disparity_sigma_px: float = 0.5
+    # a face centre's image position error [px] (error across Z·σ/f): ~1 at KITTI's size, 2-3 on Full HD's larger faces
+    image_sigma_px: float = 1.5
+    pose_sigma_m: float = 0.02  # the trajectory's position error per axis [m] (GNSS/INS), added to every view's
     accept_vote_share: float = 0.6
     accept_classification: float = 0.6  # the classifier's threshold for "accepted" (mapping passes it)
     # a sign's voters need this share of the way from that threshold to 1 as their mean: the views of one sign
@@ -138,11 +150,29 @@ class FusionConfig:
     # the digits of a sign mapped as a speed limit (number_check.py): read in this many of its largest voters' views;
     # an accepted sign goes to review when more of them read another speed limit's number than its own
     number_readings: int = 3
+    # a sign's face centre must be this high above the road beside it [m] (plausibility.py): a deliberately loose
+    # bound below any sign's mounting (the lowest, keep-left/right signs on traffic-island bollards, stand higher)
+    min_centre_above_road_m: float = 0.2
+    # ...its face look at most this far from the direction to the trajectory [deg]: a sign beside the road faces along
+    # it, one on the back of a pole the other carriageway (both ~90°), a far face's fitted plane errs by up to ~40°
+    max_face_turn_deg: float = 150.0
+    # ...and it must stand at most this far beside the trajectory [m]: a deliberately loose bound beyond the far side
+    # of a four-lane street with pavements, seen from its outer lane
+    max_lateral_m: float = 25.0
+
+    def __post_init__(self):
+        if not (self.disparity_sigma_px > 0 and self.image_sigma_px > 0):
+            raise ValueError(f"disparity_sigma_px and image_sigma_px must be positive (a view's precision), got "
+                             f"{self.disparity_sigma_px}, {self.image_sigma_px}")
+        if self.pose_sigma_m < 0 or self.gate_sigmas < 0:
+            raise ValueError(f"pose_sigma_m and gate_sigmas must not be negative, got {self.pose_sigma_m}, "
+                             f"{self.gate_sigmas}")
 
 
 @dataclass
 class FusedSign:
-    """One physical sign: class by weighted vote, robust position, the observations it was fused from."""
+    """One physical sign: class by weighted vote, position from its views by their precision, the observations it
+    was fused from."""
 
     sign_id: int
     template_id: str
@@ -152,7 +182,7 @@ class FusedSign:
     position: np.ndarray
     n_obs: int
     vote_share: float
-    sigma_m: Optional[float]  # RMS 3D distance of the contributing positions from the fused one
+    sigma_m: Optional[float]  # 3D standard error of the position [m] (√(σ_along² + 2 σ_across²)); None: unknown
     azimuth: Optional[float]  # direction the face looks towards, degrees from grid north
     detection_indicator: float
     classification_indicator: float
@@ -164,6 +194,8 @@ class FusedSign:
     text: Optional[str] = None  # a plate's text as read (lines joined by " / "), None when not read
     text_confidence: Optional[float] = None  # 0..1: OCR confidence and agreement of its readings
     review_reason: Optional[str] = None  # why it is in review (review_reasons); None when accepted
+    sigma_along_m: Optional[float] = None  # standard error of the position along the mean line of sight [m]
+    sigma_across_m: Optional[float] = None  # ...and across it, per axis [m]; None: unknown (a sign added by hand)
 
     name = _reads("best.name", "template name (of the best observation)")
     colour = _reads("best.colour", "segmented colour (of the best observation)")
@@ -222,37 +254,62 @@ def mean_face(observations: Sequence[Observation]) -> np.ndarray:
 
 
 class _Track:
-    def __init__(self, obs: Observation):
+    """Observations of one sign in driving order and the position of all of them (weighted by precision)."""
+
+    def __init__(self, obs: Observation, precision: StereoPrecision):
         self.observations = [obs]
+        self.precision = precision
+        self.estimate = view_estimate(obs, precision)
 
     @property
     def last_pair(self) -> int:
         return self.observations[-1].pair_index
 
     @property
-    def position(self) -> np.ndarray:
-        return np.median(np.array([o.position for o in self.observations]), axis=0)
-
-    @property
     def face(self) -> np.ndarray:
         return mean_face(self.observations)
 
+    def add(self, obs: Observation) -> None:
+        self.observations.append(obs)
+        self.estimate = track_estimate(self.observations, self.precision)
+
     def cost(self, obs: Observation, config: FusionConfig) -> Optional[float]:
-        """Distance to ``obs`` if it may continue this track, else None."""
+        """How far ``obs`` is from this track, in units of the gate (:func:`within_gates`), if it may continue it,
+        else None."""
         if not _compatible(obs, self.observations[-1]):
             return None
         if obs.pair_index - self.last_pair > config.max_gap_pairs or obs.pair_index == self.last_pair:
             return None
-        delta = obs.position - self.position
-        if abs(delta[2]) > config.vertical_gate_m:
+        distance = within_gates(view_estimate(obs, self.precision), self.estimate, config.gate_m, config)
+        if distance is None or _angle_deg(self.face, _face_direction(obs)) > config.face_gate_deg:
             return None
-        dist = float(np.linalg.norm(delta))
-        if dist > config.gate_m or _angle_deg(self.face, _face_direction(obs)) > config.face_gate_deg:
-            return None
-        return dist
+        return distance
 
 
-def _assign_pair(tracks: list, open_ids: list, observations: Sequence[Observation], config: FusionConfig):
+def view_estimate(obs: Observation, precision: StereoPrecision) -> Estimate:
+    """One view's position and covariance (:mod:`.precision`)."""
+    return Estimate(np.asarray(obs.position, float), precision.covariance(obs.position, obs.camera_centre, obs.depth_m))
+
+
+def track_estimate(observations: Sequence[Observation], precision: StereoPrecision) -> Estimate:
+    """The information-weighted position of ``observations`` and its covariance (no view left out)."""
+    views = [view_estimate(o, precision) for o in observations]
+    return combined([v.position for v in views], [v.covariance for v in views])
+
+
+def within_gates(a: Estimate, b: Estimate, gate_m: float, config: FusionConfig) -> Optional[float]:
+    """The distance of two positions in units of the gate ``gate_m`` (widened to ``gate_sigmas`` σ of their
+    difference, :func:`.precision.gate_distance`) when they are within it and within the vertical gate (widened
+    alike), else None."""
+    delta, covariance = a.position - b.position, a.covariance + b.covariance
+    if gate_distance(delta[2:], covariance[2:, 2:], config.vertical_gate_m, config.gate_sigmas) > 1.0:
+        return None
+    distance = gate_distance(delta, covariance, gate_m, config.gate_sigmas)
+    return distance if distance <= 1.0 else None
+
+
+def _assign_pair(tracks: list, open_ids: list, observations: Sequence[Observation], config: FusionConfig,
+                 precision: StereoPrecision):
     """Greedy nearest assignment of one pair's observations to open tracks, one each."""
     candidates = []
     for oi, obs in enumerate(observations):
@@ -264,16 +321,18 @@ def _assign_pair(tracks: list, open_ids: list, observations: Sequence[Observatio
     for _cost, oi, ti in sorted(candidates):
         if oi in used_obs or ti in used_tracks:
             continue
-        tracks[ti].observations.append(observations[oi])
+        tracks[ti].add(observations[oi])
         used_obs.add(oi)
         used_tracks.add(ti)
     for oi, obs in enumerate(observations):
         if oi not in used_obs:
-            tracks.append(_Track(obs))
+            tracks.append(_Track(obs, precision))
 
 
-def build_tracks(observations: Sequence[Observation], config: FusionConfig) -> list[list[Observation]]:
-    """Chain observations in driving order into tracks of one sign each."""
+def build_tracks(observations: Sequence[Observation], config: FusionConfig,
+                 precision: StereoPrecision) -> list[list[Observation]]:
+    """Chain observations in driving order into tracks of one sign each (a pair's observations taken left to
+    right, so the tracks do not depend on the order they are given in)."""
     by_pair = defaultdict(list)
     for obs in observations:
         by_pair[obs.pair_index].append(obs)
@@ -282,7 +341,8 @@ def build_tracks(observations: Sequence[Observation], config: FusionConfig) -> l
     for pair_index in sorted(by_pair):
         open_ids = [i for i in open_ids if pair_index - tracks[i].last_pair <= config.max_gap_pairs]
         before = len(tracks)
-        _assign_pair(tracks, open_ids, by_pair[pair_index], config)
+        in_pair = sorted(by_pair[pair_index], key=lambda o: (o.u, o.v, o.template_id or ""))
+        _assign_pair(tracks, open_ids, in_pair, config, precision)
         open_ids += range(before, len(tracks))
     return [t.observations for t in tracks]
 
@@ -320,31 +380,40 @@ class _TrackSummary:
 
     observations: list
     pairs: set
-    position: np.ndarray  # median of the observations' positions
+    estimate: Estimate  # of all its observations (track_estimate)
     colours: set
     winner: str  # the class the weighted vote gives it
     face: np.ndarray
 
+    @property
+    def position(self) -> np.ndarray:
+        return self.estimate.position
+
     @classmethod
-    def of(cls, observations: list) -> _TrackSummary:
-        return cls(observations, {o.pair_index for o in observations},
-                   np.median([o.position for o in observations], axis=0), {o.colour for o in observations},
-                   _vote(observations)[0], mean_face(observations))
+    def of(cls, observations: list, precision: StereoPrecision) -> _TrackSummary:
+        return cls(observations, {o.pair_index for o in observations}, track_estimate(observations, precision),
+                   {o.colour for o in observations}, _vote(observations)[0], mean_face(observations))
 
 
 def _one_sign(a: _TrackSummary, b: _TrackSummary, config: FusionConfig) -> bool:
     """Whether two tracks are one sign (the test of :func:`_merge_tracks`)."""
     if a.pairs & b.pairs:
         return False  # seen side by side in one pair: two signs
-    return (np.linalg.norm(a.position - b.position) <= config.merge_gate_m
-            and abs(a.position[2] - b.position[2]) <= config.vertical_gate_m
+    return (within_gates(a.estimate, b.estimate, config.merge_gate_m, config) is not None
             and bool(a.colours & b.colours or a.winner == b.winner)
             and _angle_deg(a.face, b.face) <= config.face_gate_deg)
 
 
+def _merge_reach(summaries, config: FusionConfig) -> float:
+    """The farthest apart (horizontally) two of these tracks can be and still be one sign: the merge gate widened
+    by ``gate_sigmas`` σ of the least precise two. Joining tracks only makes their positions more precise."""
+    largest = max((float(np.linalg.eigvalsh(s.estimate.covariance[:2, :2])[-1]) for s in summaries), default=0.0)
+    return float(np.sqrt(config.merge_gate_m ** 2 + config.gate_sigmas ** 2 * 2.0 * largest))
+
+
 class _Neighbours:
-    """Tracks by the grid cell of their median position: only tracks in neighbouring cells can be within the
-    merge gate, so a long drive's thousands of tracks are not all compared with each other."""
+    """Tracks by the grid cell of their position: only tracks in neighbouring cells can be within the merge gate
+    (cells as wide as its reach), so a long drive's thousands of tracks are not all compared with each other."""
 
     def __init__(self, cell_m: float):
         self.cell_m = cell_m
@@ -376,11 +445,12 @@ class _Neighbours:
         return sorted(found)
 
 
-def _merge_tracks(tracks: list[list[Observation]], config: FusionConfig) -> list[list[Observation]]:
+def _merge_tracks(tracks: list[list[Observation]], config: FusionConfig,
+                  precision: StereoPrecision) -> list[list[Observation]]:
     """Join tracks of one sign: separate passes, a long occlusion, or a sign read two ways.
 
-    Two tracks never seen in the same pair, of one colour, within ``merge_gate_m``
-    and facing the same way are one sign even when their classes differ (a zone
+    Two tracks never seen in the same pair, of one colour, within ``merge_gate_m`` (or ``gate_sigmas`` σ of their
+    difference) and facing the same way are one sign even when their classes differ (a zone
     panel read as its inner speed ring in some pairs); the weighted vote then
     decides its class. Distinct signs this close are back-to-back (face gate) or
     stacked (vertical gate).
@@ -390,15 +460,15 @@ def _merge_tracks(tracks: list[list[Observation]], config: FusionConfig) -> list
     tracks in neighbouring cells of a grid are compared, and after a join only the pairs that the grown track
     can have changed: earlier tracks with it first, then it with later ones.
     """
-    summaries = {i: _TrackSummary.of(list(t)) for i, t in enumerate(tracks)}
-    grid = _Neighbours(max(config.merge_gate_m, 0.5))
+    summaries = {i: _TrackSummary.of(list(t), precision) for i, t in enumerate(tracks)}
+    grid = _Neighbours(max(_merge_reach(summaries.values(), config), 0.5))
     for i, summary in summaries.items():
         grid.put(i, summary.position)
 
     def join(keep: int, gone: int) -> None:
         observations = sorted(summaries[keep].observations + summaries[gone].observations,
                               key=lambda o: o.pair_index)
-        summaries[keep] = _TrackSummary.of(observations)
+        summaries[keep] = _TrackSummary.of(observations, precision)
         del summaries[gone]
         grid.drop(gone)
         grid.put(keep, summaries[keep].position)
@@ -424,21 +494,34 @@ def _merge_tracks(tracks: list[list[Observation]], config: FusionConfig) -> list
     return [summaries[i].observations for i in sorted(summaries)]
 
 
-def robust_position(observations: Sequence[Observation], outlier_min_m: float,
-                    ) -> tuple[np.ndarray, list[Observation]]:
-    """Weighted mean of the observations near the median; weight ~ indicators / depth² (error grows with Z²).
+@dataclass(frozen=True)
+class SignPosition:
+    """Where a sign is and how precisely."""
 
-    Observations farther from the median than max(``outlier_min_m``, 3 robust σ)
-    (σ from the median absolute distance) are left out of the mean.
-    """
-    pts = np.array([o.position for o in observations])
-    median = np.median(pts, axis=0)
-    dist = np.linalg.norm(pts - median, axis=1)
-    limit = max(outlier_min_m, 3.0 * 1.4826 * float(np.median(dist)))
-    inliers = [o for o, d in zip(observations, dist) if d <= limit] or list(observations)
-    w = np.array([max(o.detection_indicator * o.classification_indicator, 1e-3) / max(o.depth_m, 0.5) ** 2
-                  for o in inliers])
-    return (np.array([o.position for o in inliers]) * w[:, None]).sum(axis=0) / w.sum(), inliers
+    estimate: Estimate  # the views' information-weighted position; covariance scaled by their variance factor
+    sight: np.ndarray  # unit mean line of sight of those views
+
+    def sigmas(self) -> tuple[float, float, float]:
+        """(σ along the line of sight, σ across it per axis, 3D σ) [m]."""
+        along, across = along_across(self.estimate.covariance, self.sight)
+        return along, across, float(np.sqrt(np.trace(self.estimate.covariance)))
+
+
+def sign_position(observations: Sequence[Observation], precision: StereoPrecision,
+                  config: FusionConfig) -> SignPosition:
+    """The position of a sign from all its views, each weighted by its precision (:mod:`.precision`), and its
+    covariance. Views that disagree with the rest (:func:`.precision.inliers`: a bad depth in one pair) are left
+    out; the covariance grows when the views scatter more than their precision says (``variance_factor``)."""
+    views = [view_estimate(o, precision) for o in observations]
+    kept = inliers([v.position for v in views], [v.covariance for v in views], config.outlier_min_m,
+                   config.gate_sigmas)
+    positions, covariances = [views[i].position for i in kept], [views[i].covariance for i in kept]
+    estimate = combined(positions, covariances)
+    scaled = Estimate(estimate.position, variance_factor(positions, covariances, estimate) * estimate.covariance)
+    rays = [(p - observations[i].camera_centre) / max(np.linalg.norm(p - observations[i].camera_centre), 1e-9)
+            for i, p in zip(kept, positions)]
+    sight = np.sum(rays, axis=0)
+    return SignPosition(scaled, sight / max(float(np.linalg.norm(sight)), 1e-9))
 
 
 def azimuth_deg(direction: np.ndarray) -> Optional[float]:
@@ -459,14 +542,15 @@ def sign_accept_threshold(config: FusionConfig) -> float:
     return _share_of_way(config.accept_classification, config.accept_margin)
 
 
-def fuse_track(sign_id: int, observations: Sequence[Observation], config: FusionConfig,
+def fuse_track(sign_id: int, observations: Sequence[Observation], config: FusionConfig, precision: StereoPrecision,
                carried_discs: Optional[Mapping[str, str]] = None) -> FusedSign:
-    """One sign of a track: class by weighted vote (:func:`_vote`); position, size and indicators from the
-    observations that read that class (the voters), accepted when enough of them agree clearly."""
+    """One sign of a track: class by weighted vote (:func:`_vote`); position (:func:`sign_position`), size and
+    indicators from the observations that read that class (the voters), accepted when enough of them agree
+    clearly."""
     template_id, share = _vote(observations, carried_discs)
     voters = [o for o in observations if o.template_id == template_id]
-    position, inliers = robust_position(voters, config.outlier_min_m)
-    sigma = float(np.sqrt(np.mean([np.sum((o.position - position) ** 2) for o in inliers])))
+    located = sign_position(voters, precision, config)
+    sigma_along, sigma_across, sigma = located.sigmas()
     formats = defaultdict(float)
     for o in voters:
         formats[(o.format, o.width_m, o.height_m)] += o.classification_indicator
@@ -482,10 +566,11 @@ def fuse_track(sign_id: int, observations: Sequence[Observation], config: Fusion
         reason = None  # a single, very clear observation, not at the far end of the range
     accepted = reason is None
     return FusedSign(
-        sign_id=sign_id, template_id=template_id, width_m=width, height_m=height, format=fmt, position=position,
-        n_obs=len(observations), vote_share=share, sigma_m=sigma, azimuth=azimuth_deg(mean_face(voters)),
-        detection_indicator=det_ind, classification_indicator=cls_ind, status=ACCEPTED if accepted else REVIEW,
-        best=best, observations=list(observations), review_reason=reason,
+        sign_id=sign_id, template_id=template_id, width_m=width, height_m=height, format=fmt,
+        position=located.estimate.position, n_obs=len(observations), vote_share=share, sigma_m=sigma,
+        azimuth=azimuth_deg(mean_face(voters)), detection_indicator=det_ind, classification_indicator=cls_ind,
+        status=ACCEPTED if accepted else REVIEW, best=best, observations=list(observations), review_reason=reason,
+        sigma_along_m=sigma_along, sigma_across_m=sigma_across,
     )
 
 
@@ -496,18 +581,21 @@ def _doubtful(track: Sequence[Observation], min_views: int) -> bool:
         all(o.review_reason in DOUBTFUL_READINGS for o in track)
 
 
-def fuse_observations(observations: Sequence[Observation], config: Optional[FusionConfig] = None,
+def fuse_observations(observations: Sequence[Observation], camera: Camera, config: Optional[FusionConfig] = None,
                       carried_discs: Optional[Mapping[str, str]] = None) -> list[FusedSign]:
     """One :class:`FusedSign` per physical sign, numbered from 1 in order of first sight.
 
-    Each observation's ``sign_id`` is set to the sign it was fused into. ``carried_discs``: the catalogue's
-    zone panels and the disc sign each carries (``pipeline.face_extent.carried_discs``; see :func:`_vote`).
+    ``camera``: the drive's ``geometry.Camera`` (its focal length and baseline set how precise each view's
+    depth is). Each observation's ``sign_id`` is set to the sign it was fused into. ``carried_discs``: the
+    catalogue's zone panels and the disc sign each carries (``pipeline.face_extent.carried_discs``; see
+    :func:`_vote`).
     """
     config = config or FusionConfig()
-    tracks = _merge_tracks(build_tracks(observations, config), config)
+    precision = StereoPrecision.of(camera, config)
+    tracks = _merge_tracks(build_tracks(observations, config, precision), config, precision)
     tracks = [t for t in tracks if not _doubtful(t, config.doubtful_min_views)]
     tracks.sort(key=lambda t: (t[0].pair_index, t[0].position[0], t[0].position[1]))
-    signs = [fuse_track(i, t, config, carried_discs) for i, t in enumerate(tracks, start=1)]
+    signs = [fuse_track(i, t, config, precision, carried_discs) for i, t in enumerate(tracks, start=1)]
     for sign in signs:
         for obs in sign.observations:
             obs.sign_id = sign.sign_id

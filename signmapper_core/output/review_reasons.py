@@ -29,6 +29,10 @@ VIEWS_DISAGREE = "views disagree on the id"
 BELOW_SIGN_THRESHOLD = "views' mean indicator below the sign's threshold"
 NO_VIEW_ACCEPTED = "no view accepted"
 DIGITS_PREFIX = "digits read as "
+# a fused sign that cannot be where or as it was mapped (fusion/plausibility.py)
+MOUNTED_TOO_LOW = "face lower than any sign is mounted"
+FACES_AWAY = "face turned away from the road"
+FAR_FROM_ROAD = "farther from the road than any sign"
 
 
 def reason_shown(item) -> Optional[str]:

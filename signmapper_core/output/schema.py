@@ -243,9 +243,19 @@ FIELDS = (
           **_names("Observations", "Beobachtungen", "Observations", "Osservazioni")),
     Field("vote_share", REAL, "Share of the weighted vote its template won, 0-1.", decimals=3,
           sign=lambda s: s.vote_share, **_names("Vote share", "Stimmenanteil", "Part des votes", "Quota di voti")),
-    Field("sigma_m", REAL, "RMS 3D distance of the voters' positions from the fused one [m].", decimals=4,
-          sign=lambda s: s.sigma_m, **_names("Position spread σ [m]", "Streuung σ [m]", "Dispersion σ [m]",
-                                            "Dispersione σ [m]")),
+    Field("sigma_m", REAL, "Estimated 3D standard error of the position [m]: from each view's stereo precision "
+          "(worse along the line of sight, with the square of the depth), widened when the views scatter more than "
+          "that; empty where it cannot be estimated (a sign added by hand).", decimals=4,
+          sign=lambda s: s.sigma_m, **_names("Position σ [m]", "Positions-σ [m]", "σ de position [m]",
+                                            "σ della posizione [m]")),
+    Field("sigma_along_m", REAL, "Its part along the mean line of sight from the camera [m]: depth from stereo is "
+          "least sure there.", decimals=4, sign=lambda s: s.sigma_along_m,
+          **_names("σ along line of sight [m]", "σ längs Sichtlinie [m]", "σ le long de la visée [m]",
+                   "σ lungo la linea di vista [m]")),
+    Field("sigma_across_m", REAL, "Its part across the line of sight, per axis (sideways and in height) [m].",
+          decimals=4, sign=lambda s: s.sigma_across_m,
+          **_names("σ across line of sight [m]", "σ quer zur Sichtlinie [m]", "σ en travers de la visée [m]",
+                   "σ trasversale alla linea di vista [m]")),
     Field("crop_path", TEXT, "Image crop of the sign from its best pair, relative to the GeoPackage (written when "
           "asked for), so the sign can be checked without the drive.", contextual=True,
           sign=lambda s, ctx: ctx.crops.get(s.sign_id),

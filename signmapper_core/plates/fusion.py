@@ -19,7 +19,9 @@ from dataclasses import replace
 from typing import Callable, Optional, Sequence
 
 from ..catalogue.text_panels import is_text_panel
+from ..fusion.precision import StereoPrecision
 from ..fusion.signs import FusedSign, FusionConfig, Observation, _merge_tracks, build_tracks, fuse_track
+from ..geometry import Camera
 from ..progress import WarnCallback, send_warning
 from .formats import PLATE_ID
 from .ocr import OcrError, OcrUnavailable, read_texts
@@ -31,18 +33,19 @@ def is_plate(observation: Observation) -> bool:
     return getattr(observation.detection, "plate_of", None) is not None
 
 
-def fuse_plates(observations: Sequence[Observation], signs: Sequence[FusedSign],
+def fuse_plates(observations: Sequence[Observation], signs: Sequence[FusedSign], camera: Camera,
                 config: Optional[FusionConfig] = None) -> list[FusedSign]:
     """One :class:`FusedSign` per physical plate (``plate_of`` = its sign's id), numbered after ``signs``.
 
     ``observations``: every observation of the run (signs and plates); the signs'
     ``sign_id`` must be set (:func:`fusion.fuse_observations`). Each plate
-    observation's ``sign_id`` is set to its plate.
+    observation's ``sign_id`` is set to its plate. ``camera``: the drive's, as for the signs.
     """
     config = config or FusionConfig()
+    precision = StereoPrecision.of(camera, config)
     sign_of = {id(o.detection): o.sign_id for o in observations if not is_plate(o)}
     plates = [o for o in observations if is_plate(o)]
-    tracks = _merge_tracks(build_tracks(plates, config), config)
+    tracks = _merge_tracks(build_tracks(plates, config, precision), config, precision)
     tracks.sort(key=lambda t: (t[0].pair_index, t[0].position[0], t[0].position[1]))
     first = max((s.sign_id for s in signs), default=0) + 1
     # a plate's indicator is the plate step's own score, not the network's probability: the signs' margin
@@ -50,7 +53,7 @@ def fuse_plates(observations: Sequence[Observation], signs: Sequence[FusedSign],
     plate_config = replace(config, accept_margin=0.0)
     fused = []
     for number, track in enumerate(tracks, start=first):
-        plate = fuse_track(number, track, plate_config)
+        plate = fuse_track(number, track, plate_config, precision)
         votes = defaultdict(float)
         for obs in track:
             host = sign_of.get(id(obs.detection.plate_of))

@@ -1,4 +1,5 @@
-"""Mapping a drive: every pair through the pipeline, the detections fused into signs, their mounting heights.
+"""Mapping a drive: every pair through the pipeline, the detections fused into signs, their mounting heights
+and plausibility.
 
 This is the one capability every front end uses (the ``mapsigns`` algorithm,
 ``scripts/evaluate_mapping.py``, the benchmarks, the review's "add missed sign").
@@ -24,6 +25,7 @@ from ..catalogue.text_panels import is_text_panel
 from ..drive.reader import Drive, PairRecord
 from ..errors import MappingError
 from ..fusion.mounting import camera_height_above_road, mounting_height
+from ..fusion.plausibility import hold_implausible
 from ..fusion.signs import FusedSign, FusionConfig, Observation, azimuth_deg, fuse_observations
 from ..output.run_table import run_record
 from ..pipeline import detect_in_window
@@ -118,11 +120,19 @@ def set_mounting_heights(drive: Drive, signs: list[FusedSign]) -> None:
         sign.mount_height_m = mounting_height(sign.position, sign.height_m, centres, camera_height)
 
 
+def check_plausibility(drive: Drive, signs: list[FusedSign], fusion: FusionConfig) -> int:
+    """Accepted signs that cannot be where or as they were mapped (too low, turned away from the road, too far
+    beside it: ``plausibility``) sent to review with the reason; returns how many."""
+    path = np.array([r.pose.centre for r in drive.pairs])
+    return hold_implausible(signs, path, camera_height_above_road(drive.metadata), fusion)
+
+
 def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallback] = None,
               is_cancelled: Optional[CancelCheck] = None, warn: Optional[WarnCallback] = None,
               fusion: Optional[FusionConfig] = None, max_skipped_share: float = 1.0,
               workers: Optional[int] = None, detect=None, scheduler=None) -> MappingResult:
-    """Detect the signs of every pair, fuse them into physical signs and give each its mounting height.
+    """Detect the signs of every pair, fuse them into physical signs and give each its mounting height; an
+    accepted sign that cannot be where or as it was mapped goes to review (:func:`check_plausibility`).
 
     Skipped pairs, and pairs without usable depth or colour, are passed to
     ``warn`` as they happen; skipped pairs are listed in the result.
@@ -178,9 +188,9 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
         raise MappingError(f"no pair could be mapped: {total} of {total} pairs skipped (first: pair "
                            f"{skipped[0].record.id}: {skipped[0].error})")
     report(progress, PAIRS_SHARE, f"Fusing {len(detections)} detections into signs")
-    signs = fuse_observations([o for o in detections if not is_plate(o)], fusion,
+    signs = fuse_observations([o for o in detections if not is_plate(o)], drive.camera, fusion,
                               carried_discs(catalogue, config.colour.hsv_ranges))
-    plates = fuse_plates(detections, signs, fusion)
+    plates = fuse_plates(detections, signs, drive.camera, fusion)
     panels = [s for s in signs if is_text_panel(s.template_id)]
     if plates or panels:
         report(progress, PAIRS_SHARE, f"Reading the text of {len(plates)} supplementary plates and {len(panels)} "
@@ -195,6 +205,10 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
                                "read another number")
     signs += plates
     set_mounting_heights(drive, signs)
+    held = check_plausibility(drive, signs, fusion)
+    if held:
+        send_warning(warn, f"{held} sign{'s' if held > 1 else ''} sent to review: mapped where or as no sign can be "
+                           "(below any sign's mounting, turned away from the road, or far beside it)")
     report(progress, 1.0, f"{len(detections)} detections fused into {len(signs)} signs")
     return MappingResult(drive, catalogue, config, detections, signs, skipped, seconds, load_seconds,
                          classifier.name, accept, fusion)

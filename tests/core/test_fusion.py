@@ -5,11 +5,12 @@ import pytest
 
 from signmapper_core.drive.reader import PairRecord
 from signmapper_core.fusion.signs import FusionConfig, Observation, fuse_observations
-from signmapper_core.geometry import Pose
+from signmapper_core.geometry import Camera, Pose
 from signmapper_core.pipeline.detection import Detection
 
 WEST = np.array([-1.0, 0.0, 0.0])  # face looking west, towards a vehicle driving east
 EAST = np.array([1.0, 0.0, 0.0])
+CAMERA = Camera(1920, 1080, 1750.0, 1750.0, 959.5, 539.5, 0.9)  # the synthetic drives' Full-HD camera
 
 
 def camera_at(pair_index: int) -> np.ndarray:
@@ -37,7 +38,7 @@ def seen_from(pos, pairs, **kwargs):
 
 def test_one_sign_in_five_pairs_is_one_feature():
     truth = np.array([20.0, 3.0, 2.5])
-    signs = fuse_observations(seen_from(truth, range(3, 8), noise=0.03))
+    signs = fuse_observations(seen_from(truth, range(3, 8), noise=0.03), CAMERA)
     assert len(signs) == 1
     sign = signs[0]
     assert sign.n_obs == 5 and sign.template_id == "2.30-50" and sign.vote_share == pytest.approx(1.0)
@@ -51,14 +52,15 @@ def test_one_sign_in_five_pairs_is_one_feature():
 def test_stacked_signs_on_one_pole_stay_apart():
     upper, lower = np.array([20.0, 3.0, 3.2]), np.array([20.0, 3.0, 2.5])
     obs = seen_from(upper, range(3, 8), noise=0.03) + seen_from(lower, range(3, 8), template_id="2.01", noise=0.03)
-    signs = fuse_observations(obs)
+    signs = fuse_observations(obs, CAMERA)
     assert sorted(s.template_id for s in signs) == ["2.01", "2.30-50"]
     assert {s.n_obs for s in signs} == {5}
 
 
 def test_stacked_identical_signs_stay_apart():
     upper, lower = np.array([20.0, 3.0, 3.2]), np.array([20.0, 3.0, 2.5])
-    signs = fuse_observations(seen_from(upper, range(3, 8), noise=0.02) + seen_from(lower, range(3, 8), noise=0.02))
+    signs = fuse_observations(seen_from(upper, range(3, 8), noise=0.02) + seen_from(lower, range(3, 8), noise=0.02),
+                              CAMERA)
     assert len(signs) == 2
     assert sorted(round(s.position[2], 1) for s in signs) == [2.5, 3.2]
 
@@ -68,14 +70,14 @@ def test_back_to_back_signs_stay_apart():
     front = seen_from(pole + [-0.03, 0, 0], range(3, 8), normal=WEST, noise=0.02)
     # The back-facing sign is seen on the way back (pairs 40-44), facing east.
     back = [observe(pole + [0.03, 0, 0], k, normal=EAST, template_id="2.30-50") for k in range(40, 45)]
-    signs = fuse_observations(front + back)
+    signs = fuse_observations(front + back, CAMERA)
     assert len(signs) == 2
     assert sorted(round(s.azimuth) for s in signs) == [90, 270]
 
 
 def test_identical_signs_a_few_metres_apart_stay_apart():
     a, b = np.array([20.0, 3.0, 2.5]), np.array([23.0, 3.0, 2.5])
-    signs = fuse_observations(seen_from(a, range(3, 8), noise=0.03) + seen_from(b, range(4, 9), noise=0.03))
+    signs = fuse_observations(seen_from(a, range(3, 8), noise=0.03) + seen_from(b, range(4, 9), noise=0.03), CAMERA)
     assert len(signs) == 2
     assert all(s.n_obs == 5 for s in signs)
 
@@ -84,7 +86,7 @@ def test_outlier_observation_does_not_pull_the_position():
     truth = np.array([20.0, 3.0, 2.5])
     obs = seen_from(truth, range(3, 8), noise=0.01)
     obs[2].detection.position = truth + [0.25, 0.0, 0.1]  # a bad depth in one pair, still inside the gate
-    sign = fuse_observations(obs)[0]
+    sign = fuse_observations(obs, CAMERA)[0]
     assert sign.n_obs == 5
     assert np.linalg.norm(sign.position - truth) < 0.02
 
@@ -93,7 +95,7 @@ def test_weighted_vote_and_share():
     truth = np.array([20.0, 3.0, 2.5])
     obs = seen_from(truth, range(3, 8), noise=0.01)
     obs[1].detection.template_id = "2.30-60"
-    sign = fuse_observations(obs)[0]
+    sign = fuse_observations(obs, CAMERA)[0]
     assert sign.template_id == "2.30-50"
     assert sign.vote_share == pytest.approx(0.8)
 
@@ -101,13 +103,13 @@ def test_weighted_vote_and_share():
 def test_a_sign_whose_views_disagree_waits_for_review_and_says_so():
     truth = np.array([20.0, 3.0, 2.5])
     views = seen_from(truth, [3, 4, 5], cls=0.99) + seen_from(truth, [6, 7], template_id="2.30-60", cls=0.99)
-    (sign,) = fuse_observations(views, FusionConfig(accept_classification=0.9, accept_vote_share=0.7))
+    (sign,) = fuse_observations(views, CAMERA, FusionConfig(accept_classification=0.9, accept_vote_share=0.7))
     assert sign.template_id == "2.30-50" and sign.vote_share == pytest.approx(0.6)
     assert sign.status == "review" and sign.review_reason == "views disagree on the id"
 
 
 def test_single_weak_observation_goes_to_review_not_dropped():
-    signs = fuse_observations([observe([20.0, 3.0, 2.5], 4, cls=0.55, det=0.6)])
+    signs = fuse_observations([observe([20.0, 3.0, 2.5], 4, cls=0.55, det=0.6)], CAMERA)
     assert len(signs) == 1 and signs[0].status == "review" and signs[0].n_obs == 1
 
 
@@ -116,10 +118,10 @@ def test_a_sign_seen_twice_needs_two_thirds_of_the_way_from_the_classifiers_thre
     """With a calibrated threshold of 0.9, the voters' mean must reach 0.9 + 2/3 x 0.1 = 0.967: a design misread
     in every view is misread with about 0.95 in each; with accept_margin 0 the threshold itself is enough."""
     seen_twice = [observe([20.0, 3.0, 2.5], k, cls=c) for k, c in ((5, cls - 0.01), (6, cls + 0.01))]
-    (sign,) = fuse_observations(seen_twice, FusionConfig(accept_classification=0.9))
+    (sign,) = fuse_observations(seen_twice, CAMERA, FusionConfig(accept_classification=0.9))
     assert sign.status == status and sign.n_obs == 2
     assert sign.review_reason == (None if status == "accepted" else "views' mean indicator below the sign's threshold")
-    (sign,) = fuse_observations(seen_twice, FusionConfig(accept_classification=0.9, accept_margin=0.0))
+    (sign,) = fuse_observations(seen_twice, CAMERA, FusionConfig(accept_classification=0.9, accept_margin=0.0))
     assert sign.status == "accepted"
 
 
@@ -128,14 +130,15 @@ def test_a_sign_seen_once_needs_more_than_one_seen_twice(cls, status):
     """One observation must close 40 % of the rest of the way from the threshold of a sign seen twice (0.967 with
     the classifier's 0.9) to 1: 0.98."""
     config = FusionConfig(accept_classification=0.9, accept_single_observation=True)
-    signs = fuse_observations([observe([20.0, 3.0, 2.5], 6, cls=cls)], config)  # 8.5 m away
+    signs = fuse_observations([observe([20.0, 3.0, 2.5], 6, cls=cls)], CAMERA, config)  # 8.5 m away
     assert [s.status for s in signs] == [status]
 
 
 def test_by_default_a_sign_seen_once_waits_for_review_however_clear():
-    (sign,) = fuse_observations([observe([20.0, 3.0, 2.5], 6, cls=0.99)], FusionConfig(accept_classification=0.9))
+    (sign,) = fuse_observations([observe([20.0, 3.0, 2.5], 6, cls=0.99)], CAMERA,
+                                FusionConfig(accept_classification=0.9))
     assert sign.status == "review" and sign.n_obs == 1 and sign.review_reason == "seen in one pair only"
-    seen_twice = fuse_observations([observe([20.0, 3.0, 2.5], k, cls=0.99) for k in (5, 6)],
+    seen_twice = fuse_observations([observe([20.0, 3.0, 2.5], k, cls=0.99) for k in (5, 6)], CAMERA,
                                    FusionConfig(accept_classification=0.9))
     assert [s.status for s in seen_twice] == ["accepted"]
 
@@ -146,9 +149,9 @@ def test_a_sign_seen_once_near_the_far_limit_stays_for_review(pair, far_m, statu
     can be measured into the range, even a very clear reading waits for review; 8.5 m away (pair 6) it does not,
     nor at 12.4 m when the range reaches 20 m."""
     config = FusionConfig(accept_classification=0.9, far_m=far_m, accept_single_observation=True)
-    (sign,) = fuse_observations([observe([20.0, 3.0, 2.5], pair, cls=0.99)], config)
+    (sign,) = fuse_observations([observe([20.0, 3.0, 2.5], pair, cls=0.99)], CAMERA, config)
     assert sign.status == status
-    seen_twice = fuse_observations([observe([20.0, 3.0, 2.5], k, cls=0.99) for k in (3, 4)], config)
+    seen_twice = fuse_observations([observe([20.0, 3.0, 2.5], k, cls=0.99) for k in (3, 4)], CAMERA, config)
     assert [s.status for s in seen_twice] == ["accepted"]  # two observations: the rule for one does not apply
 
 
@@ -156,15 +159,15 @@ def test_same_sign_on_a_second_pass_is_merged():
     truth = np.array([20.0, 3.0, 2.5])
     first = seen_from(truth, range(3, 8), noise=0.02)
     second = seen_from(truth, range(60, 64), noise=0.02)
-    signs = fuse_observations(first + second)
+    signs = fuse_observations(first + second, CAMERA)
     assert len(signs) == 1 and signs[0].n_obs == 9
 
 
 def test_long_gap_without_merge_gate_gives_two_tracks():
     truth = np.array([20.0, 3.0, 2.5])
-    config = FusionConfig(merge_gate_m=0.0)
+    config = FusionConfig(merge_gate_m=0.0, gate_sigmas=0.0)  # no merge gate, however precise the tracks
     signs = fuse_observations(seen_from(truth, range(3, 6), noise=0.02) + seen_from(truth, range(30, 33), noise=0.02),
-                              config)
+                              CAMERA, config)
     assert len(signs) == 2
 
 
@@ -175,7 +178,7 @@ def test_sign_read_as_two_shapes_is_one_sign_with_the_majority_class():
     panel = seen_from(panel_centre, [3, 4, 6], template_id="2.59.1-30", shape="rectangle", noise=0.01,
                       fmt=("normal", 0.5, 0.7))
     ring = seen_from(ring_centre, [5, 7], template_id="2.30-80", noise=0.01)
-    signs = fuse_observations(panel + ring)
+    signs = fuse_observations(panel + ring, CAMERA)
     assert len(signs) == 1
     assert signs[0].template_id == "2.59.1-30" and signs[0].n_obs == 5
     assert signs[0].vote_share == pytest.approx(0.6)
@@ -189,7 +192,7 @@ def test_noisy_vertical_tilt_of_the_normals_does_not_split_a_sign():
     for k, o in enumerate(obs):
         tilt = np.radians(40.0 if k % 2 else -40.0)
         o.detection.normal_world = np.array([-np.cos(tilt), 0.0, np.sin(tilt)])  # looking west, tilted
-    signs = fuse_observations(obs)
+    signs = fuse_observations(obs, CAMERA)
     assert len(signs) == 1 and signs[0].n_obs == 5
     assert signs[0].azimuth == pytest.approx(270.0)
 
@@ -199,7 +202,7 @@ def test_two_coloured_sign_found_by_either_colour_is_one_sign():
     obs = seen_from(truth, range(3, 8), template_id="4.09", shape="square", noise=0.01, fmt=("normal", 0.6, 0.6))
     for k, o in enumerate(obs):
         o.detection.colour = "red" if k % 2 else "blue"
-    signs = fuse_observations(obs)
+    signs = fuse_observations(obs, CAMERA)
     assert len(signs) == 1 and signs[0].n_obs == 5 and signs[0].template_id == "4.09"
 
 
@@ -211,7 +214,7 @@ def test_observations_wrap_their_detection_and_are_linked_to_their_sign_by_id():
         o.id = i
     obs[0].detection.template_id = "2.30-60"  # the observation reads its detection, it keeps no copy
     assert obs[0].template_id == "2.30-60" and obs[0].pair_id == "000003" and obs[0].time == pytest.approx(0.6)
-    signs = fuse_observations(obs)
+    signs = fuse_observations(obs, CAMERA)
     assert [s.sign_id for s in signs] == [1, 2]
     assert [o.sign_id for o in obs] == [1] * 5 + [2]
     assert {o.id for o in signs[0].observations} == {1, 2, 3, 4, 5}
@@ -221,7 +224,17 @@ def test_observations_wrap_their_detection_and_are_linked_to_their_sign_by_id():
 def _merged_by_definition(tracks, config):
     """The merge rule read literally: the first pair of tracks (earlier, then later) that is one sign joins, the
     later into the earlier, and the search starts again from the beginning."""
+    from signmapper_core.fusion.precision import StereoPrecision
     from signmapper_core.fusion.signs import _one_sign, _TrackSummary
+
+    precision = StereoPrecision.of(CAMERA, config)
+    summaries = {}  # a track's summary by its observations: the same track is summarised once
+
+    def summary(track):
+        key = tuple(id(o) for o in track)
+        if key not in summaries:
+            summaries[key] = _TrackSummary.of(track, precision)
+        return summaries[key]
 
     tracks = [list(t) for t in tracks]
     merged = True
@@ -229,7 +242,7 @@ def _merged_by_definition(tracks, config):
         merged = False
         for i in range(len(tracks)):
             for j in range(i + 1, len(tracks)):
-                if _one_sign(_TrackSummary.of(tracks[i]), _TrackSummary.of(tracks[j]), config):
+                if _one_sign(summary(tracks[i]), summary(tracks[j]), config):
                     tracks[i] = sorted(tracks[i] + tracks[j], key=lambda o: o.pair_index)
                     del tracks[j]
                     merged = True
@@ -241,6 +254,7 @@ def _merged_by_definition(tracks, config):
 
 @pytest.mark.parametrize("seed", range(6))
 def test_track_merging_compares_neighbours_only_and_joins_in_the_order_of_its_rule(seed):
+    from signmapper_core.fusion.precision import StereoPrecision
     from signmapper_core.fusion.signs import _merge_tracks
 
     rng = np.random.default_rng(seed)
@@ -255,7 +269,7 @@ def test_track_merging_compares_neighbours_only_and_joins_in_the_order_of_its_ru
                       normal=WEST if rng.random() < 0.8 else EAST)
         tracks.append([observe(site, k, **kwargs) for k in range(start, start + int(rng.integers(1, 4)))])
     expected = _merged_by_definition(tracks, config)
-    got = _merge_tracks(tracks, config)
+    got = _merge_tracks(tracks, config, StereoPrecision.of(CAMERA, config))
     assert len(expected) < len(tracks)  # the scene does merge
     assert [[id(o) for o in t] for t in got] == [[id(o) for o in t] for t in expected]
 
@@ -274,14 +288,14 @@ def test_doubtful_disc_readings_of_a_zone_panel_count_for_the_panel_but_do_not_a
     # the panel's white missed: its "30" disc read alone, unsure (fresh drive 1100-1109's 2.59.1 and 2.59.3)
     discs = doubtful(seen_from(truth, [3, 4, 6], template_id="2.30-80", cls=0.85))
     panel = seen_from(truth, [5], template_id="2.59.1-30", shape="rectangle", cls=0.93, fmt=("normal", 0.5, 0.7))
-    (alone,) = fuse_observations(discs + panel)
+    (alone,) = fuse_observations(discs + panel, CAMERA)
     assert alone.template_id == "2.30-80"  # without the catalogue's zone panels
-    (sign,) = fuse_observations(discs + panel, carried_discs=ZONES)
+    (sign,) = fuse_observations(discs + panel, CAMERA, carried_discs=ZONES)
     assert sign.template_id == "2.59.1-30" and sign.vote_share == pytest.approx(1.0) and sign.n_obs == 4
     assert (sign.format, sign.width_m, sign.height_m) == ("normal", 0.5, 0.7)  # from the panel's own reading
     assert sign.status == "review"  # one view read the panel: a person confirms it
     more = seen_from(truth, [7], template_id="2.59.1-30", shape="rectangle", cls=0.95, fmt=("normal", 0.5, 0.7))
-    (seen_twice,) = fuse_observations(discs + panel + more, carried_discs=ZONES)
+    (seen_twice,) = fuse_observations(discs + panel + more, CAMERA, carried_discs=ZONES)
     assert seen_twice.template_id == "2.59.1-30" and seen_twice.status == "accepted"
 
 
@@ -289,10 +303,10 @@ def test_only_a_confident_panel_reading_claims_discs_and_only_its_own_disc():
     truth = np.array([20.0, 3.0, 2.5])
     discs = doubtful(seen_from(truth, [3, 4, 6], template_id="2.30-80", cls=0.85))
     unsure_panel = doubtful(seen_from(truth, [5], template_id="2.59.1-30", shape="rectangle", cls=0.7))
-    (sign,) = fuse_observations(discs + unsure_panel, carried_discs=ZONES)
+    (sign,) = fuse_observations(discs + unsure_panel, CAMERA, carried_discs=ZONES)
     assert sign.template_id == "2.30-80"  # a doubtful panel reading does not outvote three discs
     blue = seen_from(truth, [5], template_id="2.59.3", shape="rectangle", colour="blue", cls=0.95)
-    signs = fuse_observations(discs + blue, carried_discs=ZONES)
+    signs = fuse_observations(discs + blue, CAMERA, carried_discs=ZONES)
     assert "2.30-80" in {s.template_id for s in signs}  # a pedestrian-zone panel does not claim speed limits
 
 
@@ -301,12 +315,12 @@ def test_a_disc_sign_read_clearly_stays_itself_though_read_as_a_zone_panel_from_
     # drive 1107: a 2.30-100 over a plate read as 2.59.1 at 13.6 m (0.98), then as itself at 1.00 three times
     afar = seen_from(truth, [3], template_id="2.59.1-30", shape="rectangle", cls=0.98)
     near = seen_from(truth, [4, 5, 6], template_id="2.30-100", cls=1.0)
-    (sign,) = fuse_observations(afar + near, carried_discs=ZONES)
+    (sign,) = fuse_observations(afar + near, CAMERA, carried_discs=ZONES)
     assert sign.template_id == "2.30-100" and sign.status == "accepted"
     # drive 1088: a 2.14 over a plate read as 2.59.1 at 13 and 11 m, as 2.14 at 9 and 7 m (no speed limit)
     afar = seen_from(truth, [3, 4], template_id="2.59.1-30", shape="rectangle", cls=0.99, det=0.97)
     near = doubtful(seen_from(truth, [5, 6], template_id="2.14", cls=1.0, det=0.99))
-    (sign,) = fuse_observations(afar + near, carried_discs=ZONES)
+    (sign,) = fuse_observations(afar + near, CAMERA, carried_discs=ZONES)
     assert sign.template_id == "2.14"
 
 
@@ -320,8 +334,8 @@ def test_a_plate_is_accepted_on_the_classifiers_threshold_without_the_signs_marg
     plates_seen = [observe([20.0, 3.0, 2.0], k, template_id="5.xx", cls=0.93) for k in (5, 6)]
     for plate, sign in zip(plates_seen, signs_seen):
         plate.detection.plate_of = sign.detection
-    (sign,) = fuse_observations(signs_seen, config)
-    (plate,) = fuse_plates(signs_seen + plates_seen, [sign], config)
+    (sign,) = fuse_observations(signs_seen, CAMERA, config)
+    (plate,) = fuse_plates(signs_seen + plates_seen, [sign], CAMERA, config)
     assert sign.status == "accepted" and plate.plate_of == sign.sign_id
     assert plate.status == "accepted" and plate.classification_indicator == pytest.approx(0.93)
 
@@ -333,13 +347,13 @@ def test_views_held_for_review_make_no_accepted_sign_on_their_own():
     truth = np.array([20.0, 3.0, 2.5])
     held = doubtful(seen_from(truth, [3, 4, 5, 6], template_id="2.30-30", cls=0.99))
     held[0].detection.review_reason = "a zone panel's disc read alone"
-    (sign,) = fuse_observations(held, FusionConfig(accept_classification=0.9))
+    (sign,) = fuse_observations(held, CAMERA, FusionConfig(accept_classification=0.9))
     assert sign.template_id == "2.30-30" and sign.status == "review"
     # the reason names what held the views: a rule, or for views without one their indicator
     assert sign.review_reason == ("no view accepted: a zone panel's disc read alone; "
                                   "indicator below the acceptance threshold")
     held[2].detection.status = "accepted"
-    (sign,) = fuse_observations(held, FusionConfig(accept_classification=0.9))
+    (sign,) = fuse_observations(held, CAMERA, FusionConfig(accept_classification=0.9))
     assert sign.status == "accepted"
 
 
@@ -350,9 +364,9 @@ def test_a_zone_panels_disc_held_for_review_counts_for_the_panel_read_once():
     panel = seen_from(truth, [5], template_id="2.59.3", shape="rectangle", colour="blue", cls=1.0,
                       fmt=("normal", 0.6, 0.9))
     discs = seen_from(truth, [3, 7], template_id="2.61", colour="blue", cls=0.97, det=0.98)
-    (sign,) = fuse_observations(discs + panel, carried_discs=ZONES)
+    (sign,) = fuse_observations(discs + panel, CAMERA, carried_discs=ZONES)
     assert sign.template_id == "2.61"  # confident disc readings outvote the panel
-    (sign,) = fuse_observations(doubtful(discs) + panel, carried_discs=ZONES)
+    (sign,) = fuse_observations(doubtful(discs) + panel, CAMERA, carried_discs=ZONES)
     assert sign.template_id == "2.59.3" and sign.n_obs == 3 and sign.vote_share == pytest.approx(1.0)
 
 
@@ -370,11 +384,11 @@ def test_a_sign_read_only_off_format_or_as_unknown_is_mapped_when_seen_twice():
            + _held(seen_from(cone, [12], template_id="unknown", colour="orange"), NO_ENTRY_MATCHES)
            + _held(seen_from(other, [22, 23], fmt=("measured", 0.3, 0.3)), OFF_FORMAT)
            + _held(seen_from(near + [0, 40, 0], [30]), ""))  # another reading held once: mapped, in review
-    signs = fuse_observations(obs)
+    signs = fuse_observations(obs, CAMERA)
     assert [(s.n_obs, s.status) for s in signs] == [(2, "review"), (1, "review")]
     assert np.linalg.norm(signs[0].position - other) < 0.01
     assert [o.sign_id for o in obs] == [None, None, 1, 1, 2]  # the views of no sign belong to none
-    assert len(fuse_observations(obs, FusionConfig(doubtful_min_views=1))) == 4
+    assert len(fuse_observations(obs, CAMERA, FusionConfig(doubtful_min_views=1))) == 4
 
 
 def test_views_reading_no_catalogue_sign_do_not_outvote_one_that_reads_an_id():
@@ -383,9 +397,9 @@ def test_views_reading_no_catalogue_sign_do_not_outvote_one_that_reads_an_id():
     truth = np.array([20.0, 3.0, 2.5])
     unknown = _held(seen_from(truth, [3, 6], template_id="unknown", cls=0.94), NO_ENTRY_MATCHES)
     named = seen_from(truth, [4, 5], template_id="3.07", colour="red", cls=0.8)
-    (sign,) = fuse_observations(unknown + named)
+    (sign,) = fuse_observations(unknown + named, CAMERA)
     assert sign.template_id == "3.07" and sign.status == "review"
     assert sign.vote_share == pytest.approx(0.8 / (0.8 + 0.94))  # the unknown views' weight kept in the share
     (alone,) = fuse_observations(_held(seen_from(truth, [3, 6], template_id="unknown", cls=0.94),
-                                       NO_ENTRY_MATCHES))
+                                       NO_ENTRY_MATCHES), CAMERA)
     assert alone.template_id == "unknown"

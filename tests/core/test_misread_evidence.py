@@ -1,6 +1,7 @@
 """Per-observation evidence of misread fused signs, on constructed observations."""
 
 import numpy as np
+from test_fusion import CAMERA
 
 from signmapper_core.drive.reader import PairRecord
 from signmapper_core.evaluation.accuracy import evaluate
@@ -34,7 +35,7 @@ def test_misread_sign_lists_each_observation_with_the_true_ids_score_and_a_right
            observe(misread, 4, "3.01", {"3.01": 0.95}, shape="octagon"),
            observe(misread, 5, "2.07", {"2.07": 0.57, "2.11": 0.01})]
     obs += [observe(right, k, "2.01", {"2.01": 0.97, "2.02": 0.01}) for k in (13, 14)]
-    signs = fuse_observations(obs)
+    signs = fuse_observations(obs, CAMERA)
     reference_ids = ["2.11", "2.01"]
     report = evaluate([s.position for s in signs], [s.template_id for s in signs], [misread, right], reference_ids,
                       np.array([[0.0, 0.0], [60.0, 0.0]]), 0.75)
@@ -52,7 +53,7 @@ def test_false_positive_lists_its_observations_without_a_true_id_and_matched_sig
     nowhere, right = [70.0, -3.0, 2.5], [40.0, 3.0, 2.5]
     obs = [observe(nowhere, k, "2.30-50", {"2.30-50": 0.93, "2.30-60": 0.05}) for k in (30, 31)]
     obs += [observe(right, k, "2.01", {"2.01": 0.97}) for k in (13, 14)]
-    signs = fuse_observations(obs)
+    signs = fuse_observations(obs, CAMERA)
     report = evaluate([s.position for s in signs], [s.template_id for s in signs], [right], ["2.01"],
                       np.array([[0.0, 0.0], [80.0, 0.0]]), 0.75)
     lines = false_positive_lines(signs, report.match, top=1)
@@ -74,7 +75,7 @@ def test_position_lines_list_the_signs_off_by_more_than_the_limit_largest_first_
     obs = [observe([20.0, 3.1, 2.5], k, "2.01", {"2.01": 0.97}) for k in (3, 4)]
     obs += [observe([40.0, 3.0, 2.9], k, "2.01", {"2.01": 0.97}) for k in (13, 14, 15)]
     obs += [observe(exact, k, "2.01", {"2.01": 0.97}) for k in (23, 24)]
-    signs = fuse_observations(obs)
+    signs = fuse_observations(obs, CAMERA)
     reference = [Truth("2.01", near), Truth("2.02", far_off), Truth("2.01", exact)]
     report = evaluate([s.position for s in signs], [s.template_id for s in signs], [t.position for t in reference],
                       [t.template_id for t in reference], np.array([[0.0, 0.0], [80.0, 0.0]]), 0.75)

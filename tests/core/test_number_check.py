@@ -6,7 +6,7 @@ from __future__ import annotations
 import cv2
 import numpy as np
 import pytest
-from test_fusion import seen_from
+from test_fusion import CAMERA, seen_from
 
 from signmapper_core.catalogue import load_catalogue
 from signmapper_core.fusion.signs import fuse_observations
@@ -119,7 +119,7 @@ def signs_with_bands(template_id: str, count: int, heights=(60, 70, 80, 50)):
     for obs, height in zip(observations, heights):
         obs.detection.bbox = (0, 0, height, height)
         obs.detection.crop = np.full((height // 2, height), 200, np.uint8)
-    return fuse_observations(observations)
+    return fuse_observations(observations, CAMERA)
 
 
 def test_an_accepted_speed_limit_whose_digits_read_another_number_goes_to_review():

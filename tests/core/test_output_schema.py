@@ -2,6 +2,7 @@
 
 import numpy as np
 import pytest
+from test_fusion import CAMERA
 
 from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive.reader import PairRecord
@@ -25,7 +26,7 @@ def observation(pair_index, position, status="accepted", u=512.345678, depth=9.8
 def fused():
     truth = np.array([2600020.0, 1200003.0, 404.5])
     observations = [observation(k, truth + [0.01 * k, 0.0, 0.0], depth=20.0 - 2.0 * k) for k in range(3, 7)]
-    return fuse_observations(observations)[0], observations
+    return fuse_observations(observations, CAMERA)[0], observations
 
 
 def test_each_layer_has_its_fields_once_in_the_declared_order():
@@ -105,7 +106,7 @@ def test_survey_fields_come_first_with_coordinates_and_aliases_in_four_languages
     names = [f.name for f in schema.fields(schema.SIGNS)]
     assert names.index("elevation") < names.index("u") and names.index("timestamp") < names.index("bbox_x")
     assert schema.field(schema.SIGNS, "template_id").alias("it") == "Tipo di segnale (OSS)"
-    assert schema.field(schema.SIGNS, "sigma_m").alias("xx") == "Position spread σ [m]"  # unknown: English
+    assert schema.field(schema.SIGNS, "sigma_m").alias("xx") == "Position σ [m]"  # unknown: English
     assert [schema.language_of(x) for x in ("fr_CH", "de", "it-IT", "C", "", "rm_CH")] == ["fr", "de", "it", "en",
                                                                                          "en", "en"]
 
