@@ -90,9 +90,7 @@ class FusionConfig:
     merge_gate_m: float = 0.35  # tracks of one sign from separate passes [m], where gate_sigmas σ are less
     outlier_min_m: float = 0.10  # views beyond max(this [m], gate_sigmas σ, the spread) from the median are left out
     gate_sigmas: float = 3.0  # the gates reach this many σ of the difference they test (precision.gate_distance)
-    # a face centre's disparity error [px] (depth error Z²σ_d/(f·B)): KITTI's ~0.5 (issue 45), SGBM on the synthetic
-    # drives 0.3 (docs/measurements.md); the larger, as a gate too tight splits a far sign in two
-    disparity_sigma_px: float = 0.5
+    disparity_sigma_px: float = DepthConfig.disparity_sigma_px  # a face centre's disparity error [px] (mapping sets it)
     # a face centre's image position error [px] (error across Z·σ/f): ~1 at KITTI's size, 2-3 on Full HD's larger faces
     image_sigma_px: float = 1.5
     pose_sigma_m: float = 0.02  # the trajectory's position error per axis [m] (GNSS/INS), added to every view's

@@ -212,9 +212,11 @@ class DepthConfig:
     reach_m: Optional[float] = None
     range_from_camera: bool = True  # near_m, far_m and reach_m follow the drive's camera by the three rules below
     max_disparity_px: float = 384.0  # near: the matcher searches disparities up to this [px], its cost's bound
-    survey_sigma_m: float = 0.03  # far: the depth is known this well [m], a few centimetres as a survey asks
-    placing_sigma_m: float = 0.5  # reach: depth known this well [m] still places a sign on its side of the road
-    disparity_sigma_px: float = 0.25  # uncertainty of a face's mean disparity [px], sub-pixel stereo on a plane
+    survey_sigma_m: float = 0.06  # far: one view's depth is known this well [m], a few centimetres as a survey asks
+    placing_sigma_m: float = 1.0  # reach: depth known this well [m] still places a sign on its side of the road
+    # a face centre's disparity error [px] (depth error Z²σ_d/(f·B)): KITTI's ~0.5 (issue 45), SGBM on the synthetic
+    # drives 0.3 (docs/measurements.md); the larger, as a gate too tight splits a far sign in two
+    disparity_sigma_px: float = 0.5
     search_close_px: int = 15  # holes of a given depth's search space this small [px] are closed before it cuts colours
     search_grow_px: int = 31  # with SGBM depth the search space is grown by this much instead [px]
     face_depth_slack: float = 0.2  # a face's plane depth counts within near x (1 - this) .. far x (1 + this)

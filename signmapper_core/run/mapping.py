@@ -162,7 +162,8 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
                            "by template matching instead; retrain it (make train-classifier)")
     accept = accept_threshold(classifier, config)
     # always the classifier's threshold and the run's depth range
-    fusion = replace(fusion or FusionConfig(), accept_classification=accept, far_m=config.depth.far_m)
+    fusion = replace(fusion or FusionConfig(), accept_classification=accept, far_m=config.depth.far_m,
+                     disparity_sigma_px=config.depth.disparity_sigma_px)
     detections, skipped, seconds, load_seconds, total = [], [], 0.0, 0.0, len(drive.pairs)
     workers = worker_count(workers, total)
     with closing(map_pairs(drive, catalogue, config, is_cancelled, workers, detect, scheduler, warn)) as results:

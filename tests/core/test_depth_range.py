@@ -19,7 +19,7 @@ MIN_FACE_PX = ColourConfig().min_face_px
 def test_the_papers_camera_gives_the_papers_range():
     depth = camera_depth_range(PAPER, DepthConfig(), MIN_FACE_PX)
     assert (depth.near_m, depth.far_m) == (4.0, 14.0)
-    assert depth.reach_m == 56.0  # depth known to 0.5 m (a 60 cm disc would span 19 px there)
+    assert depth.reach_m == 56.0  # depth known to 1 m (a 60 cm disc would span 19 px there)
     assert range_text(depth) == "4-14 m (to 56 m for signs that leave the view before 14 m)"
 
 
@@ -28,8 +28,8 @@ def test_a_kitti_camera_measures_well_less_far_but_reaches_a_far_sign_at_the_edg
     assert (depth.near_m, depth.far_m) == (1.0, 7.0)
     # the no-stopping sign of KITTI 0001 is seen at 24-27 m, 15-22 m left of the track: inside the reach
     assert depth.reach_m == 27.0
-    assert 0.025 < DepthConfig().survey_sigma_m < 0.035
-    assert depth_known_to(KITTI, 0.03, 0.25) == pytest.approx(6.8, abs=0.05)
+    assert 0.03 <= DepthConfig().survey_sigma_m <= 0.1  # a few centimetres
+    assert depth_known_to(KITTI, 0.06, 0.5) == pytest.approx(6.8, abs=0.05)
 
 
 def test_a_range_set_by_hand_is_kept():
