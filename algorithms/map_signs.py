@@ -32,7 +32,7 @@ from ..signmapper_core.output.sign_crops import CropFolder
 from ..signmapper_core.pipeline.classifier_names import CLASSIFIER_CHOICES, CLASSIFIERS
 from ..signmapper_core.pipeline.classifiers import NccClassifier, accept_threshold, classifier_for
 from ..signmapper_core.pipeline.config import DepthConfig, default
-from ..signmapper_core.pipeline.depth_range import camera_depth_range
+from ..signmapper_core.pipeline.depth_range import camera_reach
 from ..signmapper_core.progress import Cancelled, check_cancelled
 from ..signmapper_core.run import MAX_SKIPPED_PERCENT
 from ..signmapper_core.run.dask_pairs import scheduler_address
@@ -46,8 +46,8 @@ from .drive_input import open_drive_or_raise, qgis_crs
 COLOURS = list(SIGN_COLOURS)
 _FUSION = FusionConfig()  # the defaults the help states
 NEAR_SETTING, FAR_SETTING = ("depth", "near_m"), ("depth", "far_m")  # the settings the depth range parameters set
-# the range the synthetic drives' camera gets, as the help's example
-PAPER_RANGE = camera_depth_range(SimulationConfig().camera(), DepthConfig(), default("colour", "min_face_px"))
+# the reach the synthetic drives' camera gets, as the help's example
+PAPER_REACH = camera_reach(SimulationConfig().camera(), DepthConfig(), default("colour", "min_face_px"))
 
 
 class MapSignsAlgorithm(SignMapperAlgorithm):
@@ -131,24 +131,21 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
             QgsProcessingParameterNumber(self.NEAR, self.tr("Near limit of the depth range [m]"),
                                          QgsProcessingParameterNumber.Double, None, optional=True, minValue=0.5,
                                          maxValue=100.0),
-            "Signs closer than this depth (along the optical axis) are not searched. Empty (the default): from the "
-            f"drive's camera, where its disparity search reaches {default('depth', 'max_disparity_px'):g} px "
-            f"({PAPER_RANGE.near_m:g} m for the synthetic drives' Full-HD camera, like the one of Cavegn 2011). "
-            "Setting either limit fixes both (the other keeps its default) and turns off the reach at the frame's "
-            "edges.",
+            "Signs closer than this depth (along the optical axis) are not searched: they are cut by the frame. Empty "
+            f"(the default): {default(*NEAR_SETTING):g} m as in Cavegn (2011). Setting either limit fixes the range to "
+            "the two limits (the other keeps its default) and turns off the reach beyond the far limit.",
         )
         self.add_parameter(
             QgsProcessingParameterNumber(self.FAR, self.tr("Far limit of the depth range [m]"),
                                          QgsProcessingParameterNumber.Double, None, optional=True, minValue=1.0,
                                          maxValue=200.0),
-            "Signs farther than this depth are not searched (they are measured better in a later pair). Empty (the "
-            "default): from the drive's camera, where its depth is known to "
-            f"{default('depth', 'survey_sigma_m') * 100:g} cm ({PAPER_RANGE.far_m:g} m for the camera above; about "
-            "7 m for KITTI's 1242 x 375 camera). A sign that leaves the view before it comes that close (far to the "
-            "side, high over the road, across a junction) is searched out to where a normal-format disc still spans "
-            f"{default('colour', 'min_face_px')} px and its depth is known to {default('depth', 'placing_sigma_m'):g} "
-            f"m ({PAPER_RANGE.reach_m:g} m for the camera above, about 27 m for KITTI's). The log and the run table "
-            "state the range used.",
+            "Signs farther than this depth are searched in a later pair, where they are measured better. Empty (the "
+            f"default): {default(*FAR_SETTING):g} m as in Cavegn (2011), and a sign that leaves the view before it "
+            "comes that close (far to the side on a wide street, high over the road, across a junction) is searched "
+            "beyond it, where it is seen best: out to the reach the drive's camera gives, where a normal 60 cm disc "
+            f"still spans {default('colour', 'min_face_px')} px and one view's depth is known to "
+            f"{default('depth', 'placing_sigma_m'):g} m ({PAPER_REACH.reach_m:g} m for the synthetic drives' Full-HD "
+            "camera, about 27 m for KITTI's 1242 x 375 one). The log and the run table state the range used.",
         )
         self.add_parameter(
             self.named_enum(self.COLOURS, "Sign colours to detect", COLOURS, allowMultiple=True,

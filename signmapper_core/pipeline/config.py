@@ -206,16 +206,13 @@ class SizeConfig:
 class DepthConfig:
     """The search space (near..far in front of the camera) and depth from stereo when no depth map is given."""
 
-    near_m: float = 4.0  # nearest depth searched [m]: what the rules below give the paper's camera (Cavegn 2011)
-    far_m: float = 14.0  # farthest depth searched across the frame [m]: likewise
+    near_m: float = 4.0  # nearest depth searched [m] (Cavegn 2011): closer faces are cut by the frame
+    far_m: float = 14.0  # farthest depth searched across the frame [m] (Cavegn 2011): every sign comes this close
     # farthest depth searched for a face that leaves the view before it comes within far_m [m] (None: not at all)
     reach_m: Optional[float] = None
-    range_from_camera: bool = True  # near_m, far_m and reach_m follow the drive's camera by the three rules below
-    max_disparity_px: float = 384.0  # near: the matcher searches disparities up to this [px], its cost's bound
-    survey_sigma_m: float = 0.06  # far: one view's depth is known this well [m], a few centimetres as a survey asks
-    placing_sigma_m: float = 1.0  # reach: depth known this well [m] still places a sign on its side of the road
-    # a face centre's disparity error [px] (depth error Z²σ_d/(f·B)): KITTI's ~0.5 (issue 45), SGBM on the synthetic
-    # drives 0.3 (docs/measurements.md); the larger, as a gate too tight splits a far sign in two
+    range_from_camera: bool = True  # reach_m follows the drive's camera (pipeline/depth_range.py); off: as set
+    placing_sigma_m: float = 1.0  # reach: one view's depth known this well [m] still places a sign by its road
+    # a face centre's disparity error [px], depth error Z²σ/(f·B): KITTI's ~0.5 (issue 45), the larger one measured
     disparity_sigma_px: float = 0.5
     search_close_px: int = 15  # holes of a given depth's search space this small [px] are closed before it cuts colours
     search_grow_px: int = 31  # with SGBM depth the search space is grown by this much instead [px]

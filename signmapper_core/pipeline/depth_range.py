@@ -1,17 +1,14 @@
-"""The search range a drive's camera gives: near and far limits across the frame, and a reach at its edges.
+"""The reach a drive's camera gives: how far beyond the far limit a sign that never comes closer is searched.
 
-A stereo depth's uncertainty grows with the square of the depth, σ_Z = Z² σ_d / (f B), so how far a camera
-measures a sign well depends on its focal length f and baseline B, not on a constant. Three rules:
+Between near and far (the paper's 4-14 m, ``DepthConfig``) every sign is searched in every pair. A sign that
+leaves the view before it comes within far (far to the side on a wide street, high over the road, across a
+junction) is searched beyond it, where it is seen best: out to where a normal-format disc (SSV Annex 1, 60 cm)
+still spans ``ColourConfig.min_face_px`` and one view's depth, whose error grows as σ_Z = Z² σ_d / (f B), is
+known to ``placing_sigma_m``. Which faces leave the view first: ``search_range.py``.
 
-- **far**: the depth is still known to ``survey_sigma_m`` (a few centimetres): Z = sqrt(σ f B / σ_d).
-- **near**: the matcher's disparity search reaches ``max_disparity_px``: Z = f B / d_max. Its cost grows with the
-  disparities searched; closer faces are mostly cut by the frame anyway.
-- **reach**: a sign that leaves the view before it comes within *far* (far to the side, high over the road,
-  across a junction) is searched where it is seen best, out to where a normal-format disc (SSV Annex 1,
-  60 cm) still spans ``ColourConfig.min_face_px`` and its depth is known to ``placing_sigma_m``.
-
-For the paper's camera (1920 x 1080, f = 1750 px, B = 0.9 m) the first two give 4 and 14 m, the range Cavegn
-(2011) searched. Where a face will leave the view before it comes within *far*: ``search_range.py``.
+Near and far stay the paper's for every camera: derived from a camera by the same precision rule (one view's
+depth known to 6 cm gives the paper's camera 4-14 m), they shrink to 1-7 m for KITTI's 1242 x 375 camera, and
+the fewer views cost recognition there (docs/measurements.md, 2026-12-07).
 """
 
 from __future__ import annotations
@@ -36,16 +33,11 @@ def readable_depth(camera: Camera, face_m: float, min_face_px: float) -> float:
     return min(camera.fx, camera.fy) * face_m / min_face_px
 
 
-def camera_depth_range(camera: Camera, depth: DepthConfig, min_face_px: float) -> DepthConfig:
-    """``depth`` with near_m, far_m and reach_m from ``camera`` by the module's rules, in whole metres
-    (near at least 1 m; far above near; reach at least far)."""
-    near = camera.fx * camera.baseline_m / depth.max_disparity_px
-    far = depth_known_to(camera, depth.survey_sigma_m, depth.disparity_sigma_px)
+def camera_reach(camera: Camera, depth: DepthConfig, min_face_px: float) -> DepthConfig:
+    """``depth`` with the reach ``camera`` gives by the module's rule, in whole metres (at least far)."""
     reach = min(readable_depth(camera, READ_FACE_M, min_face_px),
                 depth_known_to(camera, depth.placing_sigma_m, depth.disparity_sigma_px))
-    near_m = max(1.0, float(round(near)))
-    far_m = max(near_m + 1.0, float(round(far)))
-    return dataclasses.replace(depth, near_m=near_m, far_m=far_m, reach_m=max(far_m, float(round(reach))))
+    return dataclasses.replace(depth, reach_m=max(depth.far_m, float(round(reach))))
 
 
 def range_text(depth: DepthConfig) -> str:
@@ -57,8 +49,8 @@ def range_text(depth: DepthConfig) -> str:
 
 
 def config_for_camera(config, camera: Camera):
-    """``config`` (a PipelineConfig) with the depth range of ``camera`` where it asks for one
+    """``config`` (a PipelineConfig) with the reach of ``camera`` where it asks for one
     (``depth.range_from_camera``), else as it is."""
     if not config.depth.range_from_camera:
         return config
-    return dataclasses.replace(config, depth=camera_depth_range(camera, config.depth, config.colour.min_face_px))
+    return dataclasses.replace(config, depth=camera_reach(camera, config.depth, config.colour.min_face_px))

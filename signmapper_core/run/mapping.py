@@ -152,7 +152,7 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
 
     config = config_for_camera(config, drive.camera)
     report(progress, 0.0, f"Searching {range_text(config.depth)} ahead of the camera"
-           + (" (the range its focal length and baseline give)" if config.depth.range_from_camera else ""))
+           + (" (the reach its focal length and baseline give)" if config.depth.range_from_camera else ""))
     classifier = classifier_for(catalogue, config)  # a missing or broken model fails here, before any pair
     unread = classifier.unknown(catalogue.ids()) if hasattr(classifier, "unknown") else []
     if unread:

@@ -1,12 +1,12 @@
-"""The search range a drive's camera gives (issue 45 item 1): the paper's 4-14 m from its camera, a shorter
-precise range and a reach at the frame's edges for a low-resolution camera, and the run set up from it."""
+"""The reach a drive's camera gives (issue 45 item 1): beyond the paper's 4-14 m where a face leaves the view
+before it comes within far, out to where it is still read and placed; and the run set up with it."""
 
 import numpy as np
 import pytest
 
 from signmapper_core.geometry import Camera
 from signmapper_core.pipeline.config import ColourConfig, DepthConfig, PipelineConfig
-from signmapper_core.pipeline.depth_range import camera_depth_range, config_for_camera, depth_known_to, range_text
+from signmapper_core.pipeline.depth_range import camera_reach, config_for_camera, depth_known_to, range_text
 from signmapper_core.pipeline.search_range import edge_share, edge_share_image, face_depth, in_search_range
 from signmapper_core.run.setup import assemble_run
 from signmapper_core.simulate.config import SimulationConfig
@@ -16,26 +16,25 @@ KITTI = Camera(width=1242, height=375, fx=721.5, fy=721.5, cx=609.6, cy=172.9, b
 MIN_FACE_PX = ColourConfig().min_face_px
 
 
-def test_the_papers_camera_gives_the_papers_range():
-    depth = camera_depth_range(PAPER, DepthConfig(), MIN_FACE_PX)
+def test_the_papers_camera_reaches_56_m():
+    depth = camera_reach(PAPER, DepthConfig(), MIN_FACE_PX)
     assert (depth.near_m, depth.far_m) == (4.0, 14.0)
     assert depth.reach_m == 56.0  # depth known to 1 m (a 60 cm disc would span 19 px there)
     assert range_text(depth) == "4-14 m (to 56 m for signs that leave the view before 14 m)"
 
 
-def test_a_kitti_camera_measures_well_less_far_but_reaches_a_far_sign_at_the_edge():
-    depth = camera_depth_range(KITTI, DepthConfig(), MIN_FACE_PX)
-    assert (depth.near_m, depth.far_m) == (1.0, 7.0)
-    # the no-stopping sign of KITTI 0001 is seen at 24-27 m, 15-22 m left of the track: inside the reach
+def test_a_kitti_camera_reaches_the_far_sign_of_its_drive():
+    depth = camera_reach(KITTI, DepthConfig(), MIN_FACE_PX)
+    assert (depth.near_m, depth.far_m) == (4.0, 14.0)
+    # the no-stopping sign of KITTI 0001 is seen at 24-27 m, 15-20 m left of the track: inside the reach
     assert depth.reach_m == 27.0
-    assert 0.03 <= DepthConfig().survey_sigma_m <= 0.1  # a few centimetres
-    assert depth_known_to(KITTI, 0.06, 0.5) == pytest.approx(6.8, abs=0.05)
+    assert depth_known_to(KITTI, 1.0, 0.5) == pytest.approx(27.8, abs=0.05)  # a 60 cm disc spans 16 px at 27.1 m
 
 
 def test_a_range_set_by_hand_is_kept():
     fixed = PipelineConfig(depth=DepthConfig(near_m=3.0, far_m=30.0, range_from_camera=False))
     assert config_for_camera(fixed, KITTI) is fixed
-    assert config_for_camera(PipelineConfig(), KITTI).depth.far_m == 7.0
+    assert config_for_camera(PipelineConfig(), KITTI).depth.reach_m == 27.0
 
 
 def test_edge_share_is_zero_at_the_principal_point_and_one_at_the_frame():
@@ -57,7 +56,7 @@ def test_depth_times_edge_share_is_where_a_point_leaves_the_view():
 
 
 def test_the_search_range_reaches_beyond_far_only_where_a_face_leaves_the_view_first():
-    depth = camera_depth_range(PAPER, DepthConfig(), MIN_FACE_PX)  # 4-14 m, reach 56 m
+    depth = camera_reach(PAPER, DepthConfig(), MIN_FACE_PX)  # 4-14 m, reach 56 m
     z = np.array([3.0, 10.0, 20.0, 20.0, 30.0, 30.0, 60.0])
     edge = np.array([0.0, 0.0, 0.0, 1.0, 0.4, 0.5, 1.0])
     assert in_search_range(z, edge, depth).tolist() == [False, True, False, True, False, True, False]
@@ -67,7 +66,7 @@ def test_the_search_range_reaches_beyond_far_only_where_a_face_leaves_the_view_f
 
 
 def test_a_face_keeps_its_plane_depth_inside_the_range_else_its_median():
-    depth = camera_depth_range(PAPER, DepthConfig(), MIN_FACE_PX)
+    depth = camera_reach(PAPER, DepthConfig(), MIN_FACE_PX)
     assert face_depth(30.0, 29.0, PAPER, 10.0, PAPER.cy, depth, 0.0) == 30.0  # at the frame's edge: reach
     assert face_depth(30.0, 13.0, PAPER, PAPER.cx, PAPER.cy, depth, 0.0) == 13.0  # in the middle: beyond far
     assert face_depth(float("nan"), 8.0, PAPER, PAPER.cx, PAPER.cy, depth, 0.0) == 8.0
