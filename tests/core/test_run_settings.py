@@ -47,7 +47,9 @@ RECORD_V2_A6850FD = Path(__file__).parent.parent / "data" / "run_record_v2_a6850
 # the records hold the colours segmented then (red, blue and yellow; green, brown and orange came with the whole
 # catalogue), the white step's and the plates' settings of their day where they have those sections
 THREE_COLOURS = ("red", "blue", "yellow")
-DEFAULTS_THEN = PipelineConfig(scene=SceneConfig(weak_shapes={"yellow": ("diamond",)}),
+# records of before the reach kept their range: exactly near..far (no range_from_camera in them)
+DEFAULTS_THEN = PipelineConfig(depth=DepthConfig(range_from_camera=False),
+                               scene=SceneConfig(weak_shapes={"yellow": ("diamond",)}),
                                classification=ClassificationConfig(min_surround_score=0.5),
                                colour=ColourConfig(colours=THREE_COLOURS, hsv_ranges={
                                    c: ColourConfig().hsv_ranges[c] for c in THREE_COLOURS}))
@@ -96,7 +98,7 @@ def test_unknown_sections_and_keys_are_warned_about_and_ignored_missing_ones_kee
     warnings = []
     data = {"depth": {"near_m": 6.0, "later_setting": 1}, "stitching": {"other": [2]}}
     config = pipeline_config_of(data, "file.gpkg", warnings.append)
-    assert config == PipelineConfig(depth=DepthConfig(near_m=6.0))
+    assert config == PipelineConfig(depth=DepthConfig(near_m=6.0, range_from_camera=False))  # its range as recorded
     assert warnings == ["file.gpkg: ignored sections this version does not know: stitching",
                         "file.gpkg, section depth: ignored settings this version does not know: later_setting"]
 

@@ -26,7 +26,9 @@ from signmapper_core.pipeline.config import (
 # not the defaults: depth range, colours, both thresholds and an excluded type
 CHANGED = {"NEAR": 5.0, "FAR": 16.0, "COLOURS": [0, 1], "DETECTION_THRESHOLD": 0.6,
            "CLASSIFICATION_THRESHOLD": 0.7, "EXCLUDE": "2.30-120", "WHITE_SIGNS": False}
-EXPECTED = PipelineConfig(depth=DepthConfig(near_m=5.0, far_m=16.0), colour=ColourConfig(colours=("red", "blue")),
+# a limit given fixes the range: no reach beyond it
+EXPECTED = PipelineConfig(depth=DepthConfig(near_m=5.0, far_m=16.0, range_from_camera=False),
+                          colour=ColourConfig(colours=("red", "blue")),
                           planarity=PlanarityConfig(detection_threshold=0.6),
                           classification=ClassificationConfig(classification_threshold=0.7, exclude=("2.30-120",)),
                           white=WhiteConfig(white_signs=False))
