@@ -56,7 +56,7 @@ from .hough import find_circles, hough_scale, hough_segments, radius_range_px, r
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
 from .plates import find_plates
-from .search_range import edge_share_image, face_depth, in_search_range
+from .search_range import edge_share_image, face_depth, face_depth_limits, face_in_range, in_search_range
 from .shape import IDEAL_FILL, catalogue_shape, catalogue_shapes, plausible_outlines
 from .sizing import measure_segment, metric_size, size_readings
 from .text_lines import typed_by_lines
@@ -259,8 +259,9 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     candidates = segment_candidates(seg, shapes, catalogue, config)
     if not candidates:
         return None
-    size = measure_segment(camera, depth, seg.bbox, seg.surface_mask, config.depth.near_m, config.depth.farthest_m)
-    if size is None:
+    limits = face_depth_limits(camera, seg.bbox, config.depth)
+    size = measure_segment(camera, depth, seg.bbox, seg.surface_mask, *limits)
+    if size is None or not face_in_range(camera, seg.bbox, size.depth_m, config.depth):
         return None
     fits = size_to_format(seg, candidates, size.depth_m, shape, pair)
     if not fits:

@@ -54,3 +54,22 @@ def face_depth(plane_depth: float, median_depth: float, camera: Camera, u: float
     if np.isfinite(plane_depth) and in_search_range(plane_depth, edge_share(camera, u, v), depth, slack):
         return float(plane_depth)
     return float(median_depth)
+
+
+def _box_edge_share(camera: Camera, bbox) -> float:
+    x, y, w, h = bbox
+    return float(edge_share(camera, x + (w - 1) / 2.0, y + (h - 1) / 2.0))
+
+
+def face_depth_limits(camera: Camera, bbox, depth: DepthConfig) -> tuple:
+    """(nearest, farthest) depth a face in pixel box ``bbox`` (x, y, w, h) is measured within: near..far, or out to
+    the reach where its centre is far enough out for a face there to leave the view before far."""
+    edge = _box_edge_share(camera, bbox)
+    reaches = depth.reach_m and depth.reach_m > depth.far_m and edge * depth.reach_m >= depth.far_m
+    return depth.near_m, depth.reach_m if reaches else depth.far_m
+
+
+def face_in_range(camera: Camera, bbox, z: float, depth: DepthConfig) -> bool:
+    """Whether a face in pixel box ``bbox`` measured at depth ``z`` lies in the search range (its limits widened
+    by ``face_depth_slack``): a face beside one in range, taken in by the search space's growth, is not."""
+    return bool(in_search_range(z, _box_edge_share(camera, bbox), depth, depth.face_depth_slack))

@@ -27,7 +27,7 @@ from .detection import Detection
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
 from .scene_colour import median_u8
-from .search_range import face_depth
+from .search_range import face_depth, face_depth_limits, face_in_range
 from .sizing import measure_segment, metric_size
 from .white_outlines import bright_achromatic, filled
 from .white_signs import coloured_share, network_reading, pole_share, side_shares, support_share
@@ -359,8 +359,9 @@ def judge_panel(field: PanelField, pair: PairContext, depth: np.ndarray, grey: n
     height, width = grey.shape[:2]
     if x < 0 or y < 0 or x + w > width or y + h > height:
         return None
-    size = measure_segment(camera, depth, field.box, field.mask, config.depth.near_m, config.depth.farthest_m)
-    if size is None or size.coverage < config.planarity.min_depth_coverage:
+    size = measure_segment(camera, depth, field.box, field.mask, *face_depth_limits(camera, field.box, config.depth))
+    if size is None or size.coverage < config.planarity.min_depth_coverage or \
+            not face_in_range(camera, field.box, size.depth_m, config.depth):
         return None
     planarity = pair.planarity(depth, field.box, field.mask)
     if planarity.indicator < config.planarity.detection_threshold:

@@ -29,7 +29,7 @@ from .detection import Detection
 from .hough import band_colour_shares, outer_ring, weak_colour
 from .locate import bbox_centre, locate
 from .pair_context import PairContext
-from .search_range import face_depth
+from .search_range import face_depth, face_depth_limits, face_in_range
 from .search_space import valid_depth
 from .shape import catalogue_shapes
 from .sizing import measure_segment, metric_size, round_to_format
@@ -291,8 +291,9 @@ def _judge_face(cand: WhiteCandidate, pair: PairContext, depth: np.ndarray, grey
     ids = white_template_ids(catalogue, cand.shape, seg.bbox, config)
     if not ids:
         return None
-    size = measure_segment(camera, depth, seg.bbox, seg.mask, config.depth.near_m, config.depth.farthest_m)
-    if size is None or size.coverage < config.planarity.min_depth_coverage:
+    size = measure_segment(camera, depth, seg.bbox, seg.mask, *face_depth_limits(camera, seg.bbox, config.depth))
+    if size is None or size.coverage < config.planarity.min_depth_coverage or \
+            not face_in_range(camera, seg.bbox, size.depth_m, config.depth):
         return None
     if cand.shape == "circle":  # a disc seen at an angle: its larger axis is the diameter
         side = max(w, h)

@@ -7,7 +7,14 @@ import pytest
 from signmapper_core.geometry import Camera
 from signmapper_core.pipeline.config import ColourConfig, DepthConfig, PipelineConfig
 from signmapper_core.pipeline.depth_range import camera_reach, config_for_camera, depth_known_to, range_text
-from signmapper_core.pipeline.search_range import edge_share, edge_share_image, face_depth, in_search_range
+from signmapper_core.pipeline.search_range import (
+    edge_share,
+    edge_share_image,
+    face_depth,
+    face_depth_limits,
+    face_in_range,
+    in_search_range,
+)
 from signmapper_core.run.setup import assemble_run
 from signmapper_core.simulate.config import SimulationConfig
 
@@ -83,3 +90,15 @@ def test_a_run_takes_the_camera_range_unless_a_limit_is_given():
 def test_reach_below_far_is_refused():
     with pytest.raises(ValueError, match="reach_m >= far_m"):
         DepthConfig(far_m=14.0, reach_m=10.0)
+
+
+def test_a_face_is_measured_out_to_the_reach_only_where_it_leaves_the_view_first():
+    depth = camera_reach(PAPER, DepthConfig(), MIN_FACE_PX)  # 4-14 m, reach 56 m
+    middle, edge = (950, 500, 20, 20), (20, 500, 20, 20)
+    assert face_depth_limits(PAPER, middle, depth) == (4.0, 14.0)
+    assert face_depth_limits(PAPER, edge, depth) == (4.0, 56.0)
+    assert face_in_range(PAPER, edge, 30.0, depth) and not face_in_range(PAPER, middle, 30.0, depth)
+    # a face the search space's growth took in beside one in range: 26 m at a quarter of the way out leaves the
+    # view at 6.5 m, so it comes within 14 m later and is measured then
+    quarter = (int(PAPER.cx + 0.27 * (1919 - PAPER.cx)) - 10, 530, 20, 20)
+    assert not face_in_range(PAPER, quarter, 26.0, depth) and face_in_range(PAPER, quarter, 12.0, depth)
