@@ -69,19 +69,23 @@ class Figures:
     detected: int = 0
     duplicates: int = 0
     merged: int = 0
+    features: int = 0
+    false_positives: int = 0
     along: list = field(default_factory=list)
     across: list = field(default_factory=list)
     errors_3d: list = field(default_factory=list)
 
     def __add__(self, other: Figures) -> Figures:
         return Figures(self.in_view + other.in_view, self.detected + other.detected,
-                       self.duplicates + other.duplicates, self.merged + other.merged, self.along + other.along,
+                       self.duplicates + other.duplicates, self.merged + other.merged, self.features + other.features,
+                       self.false_positives + other.false_positives, self.along + other.along,
                        self.across + other.across, self.errors_3d + other.errors_3d)
 
     def line(self, name: str) -> str:
         share = 100.0 * self.detected / self.in_view if self.in_view else float("nan")
         return (f"{name}: in view {self.in_view}, detected {self.detected} ({share:.1f} %), >1 feature "
-                f"{self.duplicates}, merged {self.merged}; {len(self.along)} matched: RMS along/σ "
+                f"{self.duplicates}, merged {self.merged}, features {self.features} of which false positives "
+                f"{self.false_positives}; {len(self.along)} matched: RMS along/σ "
                 f"{rms(self.along):.2f}, across/σ {rms(self.across):.2f}, 3D RMS {100 * rms(self.errors_3d):.1f} cm")
 
 
@@ -91,7 +95,8 @@ def drive_figures(signs, reference, radius_m: float, trajectory_xy) -> Figures:
     mapped_xyz, mapped_ids = positions_ids(signs)
     report = evaluate(mapped_xyz, mapped_ids, ref_xyz, [s.template_id for s in reference], trajectory_xy, radius_m)
     figures = Figures(len(reference), report.table1.detected_signs, report.table1.duplicates,
-                      merged_features(mapped_xyz, ref_xyz, report.match, radius_m))
+                      merged_features(mapped_xyz, ref_xyz, report.match, radius_m), len(signs),
+                      report.table1.false_positive_detections)
     for sign, ref in zip(signs, report.match):
         if ref < 0 or not sign.sigma_along_m or not sign.sigma_across_m:
             continue
