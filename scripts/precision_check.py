@@ -3,10 +3,11 @@
     python -m scripts.precision_check DRIVE [DRIVE ...] [--workers 1] [--radius 0.75]
 
 Per drive and over all: reference signs in view (the mapped range, as ``evaluate_mapping``), detected, reference
-signs with more than one feature (duplicates), features lying within the radius of two reference signs one of
-which has no feature of its own (two signs merged into one), and the RMS of the error along the sign's mean line of
-sight (the mean of the unit rays from its views' cameras) divided by ``sigma_along_m`` and of the error across it,
-per axis, divided by ``sigma_across_m``: near 1 when the σ are honest. Plates are left out, as in Table 2.
+signs with more than one feature (duplicates), features whose views lie within the radius of two reference signs,
+one of which has no feature of its own (two signs merged into one), and the RMS of the error along the sign's
+mean line of sight (the mean of the unit rays from its views' cameras) divided by ``sigma_along_m`` and of the error
+across it, per axis, divided by ``sigma_across_m``: near 1 when the σ are honest. Plates are left out, as in
+Table 2.
 """
 
 from __future__ import annotations
@@ -21,7 +22,7 @@ import numpy as np
 from scripts.evaluate_mapping import positions_ids
 from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive.reader import open_drive
-from signmapper_core.evaluation.accuracy import evaluate
+from signmapper_core.evaluation.accuracy import evaluate, match_to_reference
 from signmapper_core.evaluation.visibility import mappable_signs
 from signmapper_core.pipeline import PipelineConfig
 from signmapper_core.run.mapping import map_drive
@@ -46,15 +47,16 @@ def error_ratios(error, sight, sigma_along: float, sigma_across: float) -> tuple
     return along / sigma_along, across / sigma_across
 
 
-def merged_features(mapped_xyz, reference_xyz, match, radius_m: float) -> int:
-    """Features within ``radius_m`` of two or more reference signs, at least one of which matched no feature:
-    two signs mapped as one."""
-    mapped_xyz, reference_xyz = np.asarray(mapped_xyz, float).reshape(-1, 3), np.asarray(reference_xyz, float)
-    if not len(mapped_xyz) or not len(reference_xyz):
-        return 0
-    unmatched = np.setdiff1d(np.arange(len(reference_xyz)), match[match >= 0])
-    near = np.linalg.norm(mapped_xyz[:, None, :] - reference_xyz[None, :, :], axis=2) <= radius_m
-    return int(sum(1 for row in near if row.sum() >= 2 and row[unmatched].any()))
+def merged_features(view_positions, reference_xyz, match, radius_m: float) -> int:
+    """Features whose views (``view_positions``: per feature, the positions its views measured) lie within
+    ``radius_m`` of two or more reference signs, one of which no feature matched: two signs fused into one."""
+    reference_xyz = np.asarray(reference_xyz, float).reshape(-1, 3)
+    unmatched = set(range(len(reference_xyz))) - set(int(m) for m in match if m >= 0)
+    merged = 0
+    for views in view_positions:
+        seen = set(int(r) for r in match_to_reference(np.asarray(views, float), reference_xyz, radius_m) if r >= 0)
+        merged += len(seen) >= 2 and bool(seen & unmatched)
+    return merged
 
 
 def rms(values) -> float:
@@ -95,7 +97,8 @@ def drive_figures(signs, reference, radius_m: float, trajectory_xy) -> Figures:
     mapped_xyz, mapped_ids = positions_ids(signs)
     report = evaluate(mapped_xyz, mapped_ids, ref_xyz, [s.template_id for s in reference], trajectory_xy, radius_m)
     figures = Figures(len(reference), report.table1.detected_signs, report.table1.duplicates,
-                      merged_features(mapped_xyz, ref_xyz, report.match, radius_m), len(signs),
+                      merged_features([[o.position for o in s.observations] for s in signs], ref_xyz, report.match,
+                                      radius_m), len(signs),
                       report.table1.false_positive_detections)
     for sign, ref in zip(signs, report.match):
         if ref < 0 or not sign.sigma_along_m or not sign.sigma_across_m:

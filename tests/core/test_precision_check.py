@@ -22,8 +22,10 @@ def test_mean_sight_is_the_mean_of_the_views_unit_rays():
     assert sight == pytest.approx(np.array([1.0, 1.0, 0.0]) / np.sqrt(2))
 
 
-def test_merged_counts_a_feature_between_two_signs_one_of_them_left_without_one():
-    reference = np.array([[0.0, 0.0, 2.0], [0.6, 0.0, 2.0], [10.0, 0.0, 2.0]])
-    mapped = np.array([[0.3, 0.0, 2.0], [10.0, 0.1, 2.0]])
-    assert merged_features(mapped, reference, np.array([0, 2]), 0.75) == 1
-    assert merged_features(mapped, reference[:1], np.array([0, -1]), 0.75) == 0
+def test_merged_counts_a_feature_whose_views_saw_two_signs_one_of_them_left_without_one():
+    reference = np.array([[0.0, 0.0, 2.0], [1.0, 0.0, 2.0], [10.0, 0.0, 2.0]])
+    merged = [[0.05, 0.0, 2.0], [0.95, 0.0, 2.0]]  # views of signs 0 and 1 fused into one feature, matched to 0
+    alone = [[10.0, 0.1, 2.0], [10.1, 0.0, 2.0]]
+    assert merged_features([merged, alone], reference, np.array([0, 2]), 0.75) == 1
+    # both signs with a feature of their own: the stray view is no merge
+    assert merged_features([merged, alone, [[1.0, 0.0, 2.0]]], reference, np.array([0, 2, 1]), 0.75) == 0
