@@ -8,6 +8,7 @@ import pytest
 
 from signmapper_core.drive.reader import open_drive
 from signmapper_core.simulate import SimulationConfig, generate_drive
+from signmapper_core.simulate.__main__ import build_parser, config_from_args
 from signmapper_core.simulate.generator import make_scene, make_street
 from signmapper_core.simulate.scene_pieces import LANE_CENTRE
 
@@ -53,3 +54,10 @@ def test_wide_street_settings_are_checked():
         SimulationConfig(sign_offset_m=(9.0, 8.0)).validate()
     with pytest.raises(ValueError, match="right_sign_share"):
         SimulationConfig(right_sign_share=1.5).validate()
+
+
+def test_command_line_sets_a_wide_street():
+    wide = config_from_args(build_parser().parse_args(["out", "--sign-offset", "8", "25", "--right-share", "0.5"]))
+    assert wide.sign_offset_m == (8.0, 25.0) and wide.right_sign_share == 0.5
+    plain = config_from_args(build_parser().parse_args(["out"]))
+    assert plain.sign_offset_m is None and plain.right_sign_share is None
