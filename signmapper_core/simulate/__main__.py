@@ -67,6 +67,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--plate-share", type=float, default=d.plate_share,
                    help="share of sign poles whose lowest sign carries a supplementary plate, plus white text "
                         f"plates on façades (default {d.plate_share:g})")
+    p.add_argument("--sign-offset", type=float, nargs=2, metavar=("MIN", "MAX"), default=d.sign_offset_m,
+                   help="a wide street: each sign spot's first sign at a lateral distance from the vehicle's track "
+                        "drawn uniformly between MIN and MAX metres, façades set back behind (default: at the kerb)")
+    p.add_argument("--right-share", type=float, default=d.right_sign_share,
+                   help="share of the sign spots on the right of the street (default: the generator's)")
     p.add_argument("--quiet", action="store_true", help="no progress output")
     return p
 
@@ -81,7 +86,9 @@ def config_from_args(args: argparse.Namespace) -> SimulationConfig:
         distractor_density=args.distractor_density, jpeg_quality=args.jpeg_quality, crs=args.crs,
         start_easting=args.start[0], start_northing=args.start[1], start_height=args.start[2],
         face_artwork=args.face_artwork, master_share=args.master_share, white_sign_share=args.white_sign_share,
-        plate_share=args.plate_share)
+        plate_share=args.plate_share,
+        sign_offset_m=tuple(args.sign_offset) if args.sign_offset is not None else None,
+        right_sign_share=args.right_share)
     if args.sign_set == DRAWABLE:
         for name, value in DRAWABLE_SIGNS.items():
             setattr(cfg, name, value)

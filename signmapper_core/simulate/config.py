@@ -73,6 +73,12 @@ class SimulationConfig:
     # sign poles that carry them instead of coloured signs; > 0 also adds white distractors (white shop signs,
     # white vans, white emblems). 0 keeps every drive of before as it was. The whole catalogue has its own share.
     white_sign_share: float = 0.0
+    # Wide streets (simulate/wide_street.py): lateral distance [m] of each sign spot's first sign from the vehicle's
+    # track, drawn uniformly in this range, the spot moved sideways as a whole and the façades set back behind the
+    # farthest; None: the signs stand at the kerb as before. right_sign_share: share of the spots on the right of
+    # the street (None: sign_mounts.RIGHT_SIDE_SHARE). Both None, every drive of before stays as it was.
+    sign_offset_m: tuple[float, float] | None = None
+    right_sign_share: float | None = None
     # Georeference.
     crs: str = "EPSG:2056"
     start_easting: float = 2600000.0
@@ -103,6 +109,10 @@ class SimulationConfig:
             (0.0 <= self.master_share <= 1.0, "master_share must be within 0..1"),
             (0.0 <= self.plate_share <= 1.0, "plate_share must be within 0..1"),
             (0.0 <= self.white_sign_share <= 1.0, "white_sign_share must be within 0..1"),
+            (self.sign_offset_m is None or 0.0 <= self.sign_offset_m[0] <= self.sign_offset_m[1],
+             "sign_offset_m must be (min, max) with 0 <= min <= max"),
+            (self.right_sign_share is None or 0.0 <= self.right_sign_share <= 1.0,
+             "right_sign_share must be within 0..1"),
             (self.sign_set in (WHOLE, DRAWABLE), f"sign_set must be {WHOLE!r} or {DRAWABLE!r}"),
             (self.sign_set == DRAWABLE or self.white_sign_share == 0.0,
              f"white_sign_share applies to sign_set {DRAWABLE!r}: the whole catalogue places white signs in its "

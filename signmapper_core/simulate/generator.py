@@ -22,9 +22,10 @@ from ..progress import CancelCheck, ProgressCallback, check_cancelled, report
 from . import textures as tx
 from .config import WHOLE, SimulationConfig, SimulationSummary
 from .faces import FaceOptions, sign_kinds, white_sign_kinds
-from .layout import CARRIAGEWAY, Scene, build_scene
+from .layout import Scene, build_scene
 from .rasterizer import Rasterizer, TextureCache
 from .realism import apply_effects, draw_effects
+from .scene_pieces import LANE_CENTRE
 from .sign_mix import POLE, whole_mix
 from .street import Street
 
@@ -55,7 +56,7 @@ def true_poses(config: SimulationConfig, street: Street | None = None) -> list[P
     yaw, pitch, roll, lateral = wander(0.4), wander(0.25), wander(0.3), wander(0.12)
     poses = []
     for i, s in enumerate(s_cam):
-        p = street.point(s, CARRIAGEWAY[1] / 2 + lateral[i], config.camera_height_m)
+        p = street.point(s, LANE_CENTRE + lateral[i], config.camera_height_m)
         heading = np.degrees(street.heading(s)) + yaw[i]
         pit = np.degrees(np.arctan(street.grade(s))) + pitch[i]
         poses.append(Pose(float(p[0]), float(p[1]), float(p[2]), float(heading % 360.0), float(pit), float(roll[i])))
@@ -89,7 +90,8 @@ def make_scene(config: SimulationConfig, street: Street | None = None) -> Scene:
     return build_scene(street, config.seed, float(s_cam[0]), float(s_cam[-1]), config.fx, config.sign_density,
                        config.distractor_density, kinds, realism,
                        FaceOptions.from_config(config), config.plate_share,
-                       white_sign_kinds() if config.white_sign_share > 0 else [], config.white_sign_share, mix)
+                       white_sign_kinds() if config.white_sign_share > 0 else [], config.white_sign_share, mix,
+                       config.sign_offset_m, config.right_sign_share)
 
 
 def right_pose(pose: Pose, baseline_m: float) -> Pose:

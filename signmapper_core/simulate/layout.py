@@ -30,6 +30,7 @@ from .street import Street
 from .street_body import buildings, lamp_post, road
 from .surfaces import Surface
 from .text_panel_poles import TEXT_PANEL_SHARE, text_panel_pole
+from .wide_street import FACADE_BEHIND_M, move_aside
 
 BIN_M = 10.0
 
@@ -65,8 +66,8 @@ class Scene:
 def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float, fx: float,
                 sign_density: float, distractor_density: float, kinds: list[SignKind], realism: dict,
                 face_options: FaceOptions | None = None, plate_share: float = 0.0,
-                white_kinds: list[SignKind] | None = None, white_share: float = 0.0, mix: SignMix | None = None
-                ) -> Scene:
+                white_kinds: list[SignKind] | None = None, white_share: float = 0.0, mix: SignMix | None = None,
+                sign_offset_m: tuple[float, float] | None = None, right_share: float | None = None) -> Scene:
     """Lay out the whole street: road, buildings, signs (where the drive passes them), distractors.
 
     ``mix``: the signs of the whole catalogue (``sign_mix``), each spot mounted as its part says
@@ -76,7 +77,11 @@ def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float
     of ``kinds``; white signs stand on single or stacked poles (none hangs overhead), about a third of the
     white poles carry a text panel instead (``text_panel_poles``), and white distractors join the others.
     ``plate_share``: share of the poles whose lowest sign carries a supplementary plate (``plate_layout``).
+    ``sign_offset_m``: a wide street (``wide_street``), each spot's first sign at a lateral distance from the track
+    drawn uniformly in this range, façades set back behind; ``right_share``: share of the spots on the right
+    (None: ``RIGHT_SIDE_SHARE``). Both left as they are, the drives of before come out as they were.
     """
+    right_share = RIGHT_SIDE_SHARE if right_share is None else right_share
     keys = TextureKeys(seed)
     pieces = Pieces(street, keys)
     look = PanelLook(fx, face_options or FaceOptions(), realism["weathering"], realism["shadows"],
@@ -97,29 +102,20 @@ def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float
         spots = kept
     zebras = [float(s) for s in rng.uniform(s_cam_first + 10, s_end - 20, max(0, int((s_end - 30) // 150)))]
     road(pieces, s_end, zebras, realism["shadows"])
-    facades = buildings(pieces, s_end)
+    facades = buildings(pieces, s_end, 0.0 if sign_offset_m is None else max(sign_offset_m) + FACADE_BEHIND_M)
     for s in np.arange(rng.uniform(5, 25), s_end, rng.uniform(25, 35)):
         if all(abs(s - x) > 2 for x in spots):
             lamp_post(pieces, float(s), SIDEWALK_RIGHT[0] + 0.5)
     sign_rng = keys.rng(1, 2)
     text_panel_rng = keys.rng(1, 33)  # drawn from only on white poles
+    offset_rng = keys.rng(1, 34)  # drawn from only on wide streets
     signs: list[PlacedSign] = []
     for s in spots:
-        if mix is not None:
-            signs += sign_spot(pieces, look, s, mix, sign_rng, text_panel_rng, facades)
-            continue
-        u = sign_rng.random()
-        side = 1 if sign_rng.random() < RIGHT_SIDE_SHARE else -1
-        # drawn only when white signs are asked for, so drives without them stay as they were
-        white = bool(white_kinds) and white_share > 0 and sign_rng.random() < white_share
-        pole_kinds = white_kinds if white else kinds
-        form = pole_form(u)
-        if white and form == "overhead":
-            form = "stacked"  # no white sign hangs overhead
-        if white and text_panel_rng.random() < TEXT_PANEL_SHARE:
-            signs += text_panel_pole(pieces, look, s, text_panel_rng, side)
-        else:
-            signs += sign_pole(pieces, look, s, pole_kinds, sign_rng, 1 if form == "overhead" else side, form)
+        first_surface, first_sign = len(pieces.surfaces), len(signs)
+        signs += _spot(pieces, look, s, mix, kinds, sign_rng, text_panel_rng, facades, white_kinds, white_share,
+                       right_share)
+        if sign_offset_m is not None:
+            move_aside(pieces, signs[first_sign:], first_surface, s, float(offset_rng.uniform(*sign_offset_m)))
     if distractor_density > 0:
         signs += distractors(pieces, look, s_cam_first, s_end - 10, distractor_density, keys.rng(1, 3), spots, kinds,
                              facades)
@@ -130,6 +126,25 @@ def build_scene(street: Street, seed: int, s_cam_first: float, s_cam_last: float
                                    facades)
     _number_truth(signs)
     return Scene(street, pieces.surfaces, signs)
+
+
+def _spot(pieces: Pieces, look: PanelLook, s: float, mix: SignMix | None, kinds: list[SignKind],
+          sign_rng: np.random.Generator, text_panel_rng: np.random.Generator, facades, white_kinds, white_share: float,
+          right_share: float) -> list[PlacedSign]:
+    """The signs of the spot at ``s``: of the whole catalogue's ``mix``, or of the drives of before."""
+    if mix is not None:
+        return sign_spot(pieces, look, s, mix, sign_rng, text_panel_rng, facades, right_share)
+    u = sign_rng.random()
+    side = 1 if sign_rng.random() < right_share else -1
+    # drawn only when white signs are asked for, so drives without them stay as they were
+    white = bool(white_kinds) and white_share > 0 and sign_rng.random() < white_share
+    pole_kinds = white_kinds if white else kinds
+    form = pole_form(u)
+    if white and form == "overhead":
+        form = "stacked"  # no white sign hangs overhead
+    if white and text_panel_rng.random() < TEXT_PANEL_SHARE:
+        return text_panel_pole(pieces, look, s, text_panel_rng, side)
+    return sign_pole(pieces, look, s, pole_kinds, sign_rng, 1 if form == "overhead" else side, form)
 
 
 def _number_truth(signs: list[PlacedSign]) -> None:

@@ -26,6 +26,7 @@ CARRIAGEWAY = (-3.3, 3.3)
 PARKING_LEFT = (-5.3, -3.3)
 SIDEWALK_RIGHT = (3.3, 6.3)
 SIDEWALK_LEFT = (-7.8, -5.3)
+LANE_CENTRE = CARRIAGEWAY[1] / 2  # the vehicle's track: the middle of the right lane
 KERB_H = 0.12
 
 

@@ -57,11 +57,12 @@ def roadside_room(facades: list[FacadeSpan], s: float, side: int) -> float:
 
 
 def sign_spot(pieces: Pieces, look: PanelLook, s: float, mix: SignMix, rng: np.random.Generator,
-              text_rng: np.random.Generator, facades: list[FacadeSpan]) -> list[PlacedSign]:
-    """The signs of one spot at ``s``: a part of ``mix`` by weight, mounted its way; draws from ``rng`` (text
-    panels from ``text_rng``)."""
+              text_rng: np.random.Generator, facades: list[FacadeSpan], right_share: float = RIGHT_SIDE_SHARE
+              ) -> list[PlacedSign]:
+    """The signs of one spot at ``s``: a part of ``mix`` by weight, mounted its way, on the right in
+    ``right_share`` of the spots; draws from ``rng`` (text panels from ``text_rng``)."""
     u = rng.random()
-    side = 1 if rng.random() < RIGHT_SIDE_SHARE else -1
+    side = 1 if rng.random() < right_share else -1
     part, kinds = mix.pick_part(rng)
     if part.mount == TEXT_PANEL:
         return text_panel_pole(pieces, look, s, text_rng, side)

@@ -10,7 +10,7 @@ from . import textures as tx
 from .faces import SignFace, SignKind, draw_sign_face, pick_format
 from .panels import PanelLook, PlacedSign, face_shape
 from .plate_layout import PLATE_MAX_GAP_M, add_plate
-from .scene_pieces import CARRIAGEWAY, KERB_H, PARKING_LEFT, SIDEWALK_RIGHT, UP, Pieces
+from .scene_pieces import CARRIAGEWAY, KERB_H, LANE_CENTRE, PARKING_LEFT, SIDEWALK_RIGHT, UP, Pieces
 from .sign_mix import pick_kind
 from .surfaces import Texture, TextureSource, rect_surface
 
@@ -153,7 +153,7 @@ def occluder(pieces: Pieces, s, l_sign, size_m, h_sign, rng) -> None:
     roughly a quarter to a half of the face rather than all of it.
     """
     d_before = rng.uniform(1.0, 2.5)
-    l_cam = CARRIAGEWAY[1] / 2
+    l_cam = LANE_CENTRE
     frac = d_before / 9.0  # where the line of sight from ~9 m crosses
     l_sight = l_sign + (l_cam - l_sign) * frac
     h_sight = h_sign + (2.4 - h_sign) * frac

@@ -133,8 +133,9 @@ def _verge_texture(keys: TextureKeys, width) -> TextureSource:
     return TextureSource(key, w, h, make)
 
 
-def buildings(pieces: Pieces, s_end: float) -> list[FacadeSpan]:
-    """Façades on both sides, with side walls, and trees in the gaps; the façades' spans."""
+def buildings(pieces: Pieces, s_end: float, setback_m: float = 0.0) -> list[FacadeSpan]:
+    """Façades on both sides, with side walls, and trees in the gaps; the façades' spans. ``setback_m``: façades
+    and trees that much farther from the street (a wide street's open verge)."""
     spans = []
     for side in (1, -1):
         rng = pieces.keys.rng(1, 10, side + 2)
@@ -144,10 +145,12 @@ def buildings(pieces: Pieces, s_end: float) -> list[FacadeSpan]:
             if rng.random() < 0.2:
                 gap = rng.uniform(4, 10)
                 l_tree = SIDEWALK_RIGHT[1] + rng.uniform(2, 6) if side > 0 else SIDEWALK_LEFT[0] - rng.uniform(2, 6)
+                l_tree += side * setback_m
                 tree(pieces, s + gap / 2, l_tree, rng)
                 s += gap
             setback = rng.uniform(0.0, 4.0)
             l_f = SIDEWALK_RIGHT[1] + setback if side > 0 else SIDEWALK_LEFT[0] - setback
+            l_f += side * setback_m
             spans.append(facade(pieces, s, s + width, l_f, rng.uniform(8, 18), side, rng))
             if setback > 2.0 and rng.random() < 0.6:
                 hedge(pieces, s + 0.5, s + width - 0.5, l_f - side * (setback - 0.6))
