@@ -2,7 +2,7 @@ import cv2
 import numpy as np
 from pipeline_scenes import CAMERA, noisy_background, pixels_for
 
-from signmapper_core.pipeline.config import PipelineConfig, with_settings
+from signmapper_core.pipeline.config import DepthConfig, PipelineConfig, with_settings
 from signmapper_core.pipeline.hough import (
     circle_segment,
     find_circles,
@@ -12,7 +12,7 @@ from signmapper_core.pipeline.hough import (
     ringed_field,
     weak_colour,
 )
-from signmapper_core.pipeline.search_space import search_space_mask
+from signmapper_core.pipeline.search_range import in_search_range
 
 CONFIG = PipelineConfig()
 SLACK = CONFIG.hough.hough_radius_slack
@@ -38,7 +38,7 @@ def test_radius_range_covers_round_formats_in_the_search_space():
 def test_faded_red_ring_is_found_and_named_red():
     faded_red = (120, 115, 165)  # saturation ~ 80: below the red threshold of the colour step
     image, depth, r = _scene(faded_red, (200, 200, 200))
-    search = search_space_mask(depth, 4.0, 14.0)
+    search = in_search_range(depth, np.zeros_like(depth), DepthConfig())
     circles = find_circles(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6], SLACK), 0.5, CONFIG)
     segs = hough_segments(image, circles, CONFIG)
     assert len(segs) >= 1
@@ -50,14 +50,14 @@ def test_faded_red_ring_is_found_and_named_red():
 
 def test_white_round_sign_is_found_from_the_depth_edge():
     image, depth, r = _scene((160, 160, 160), (160, 160, 160))  # same grey as the background
-    search = search_space_mask(depth, 4.0, 14.0)
+    search = in_search_range(depth, np.zeros_like(depth), DepthConfig())
     circles = find_circles(image, search, *radius_range_px(CAMERA.fx, 4.0, 14.0, [0.4, 0.6], SLACK), 0.5, CONFIG)
     assert any(abs(u - 300) < 4 and abs(v - 180) < 4 and abs(rr - r) < 4 for u, v, rr in circles)
 
 
 def test_nothing_in_the_search_space_means_no_circles():
     image, depth, _ = _scene((120, 115, 165), (200, 200, 200), z=20.0)
-    search = search_space_mask(depth, 4.0, 14.0)
+    search = in_search_range(depth, np.zeros_like(depth), DepthConfig())
     assert hough_segments(image, find_circles(image, search, 10, 60, 0.5, CONFIG), CONFIG) == []
 
 
