@@ -91,6 +91,13 @@ def drive_config(seed: int, pairs: int, depth: bool, legacy_faces: bool = False,
     return DRIVES / name, config
 
 
+def depth_settings(near, far) -> DepthConfig:
+    """The depth section of ``--near``/``--far``: the defaults and the camera's reach, or, where either is given,
+    exactly that range (as ``mapsigns`` and ``python -m signmapper_core.map`` do)."""
+    fixed = {k: v for k, v in (("near_m", near), ("far_m", far)) if v is not None}
+    return DepthConfig(**fixed, range_from_camera=not fixed)
+
+
 def drive_folder(*args, **kwargs) -> Path:
     """The folder of :func:`drive_config`'s drive, which must have been generated."""
     out, _config = drive_config(*args, **kwargs)
@@ -221,9 +228,12 @@ def main(argv=None) -> int:
                         help="generated drives: share of sign poles whose lowest sign carries a plate (default: the "
                              "generator's)")
     parser.add_argument("--radius", type=float, default=0.75, help="matching radius in metres")
-    parser.add_argument("--near", type=float, default=None, help="nearest depth searched [m] (default: the camera's)")
-    parser.add_argument("--far", type=float, default=None, help="farthest depth searched [m] (default: the camera's); "
-                        "either fixes the range")
+    parser.add_argument("--near", type=float, default=None,
+                        help=f"nearest depth searched [m] (default: {DepthConfig.near_m:g}, and the camera's reach "
+                        "beyond far)")
+    parser.add_argument("--far", type=float, default=None,
+                        help=f"farthest depth searched [m] (default: {DepthConfig.far_m:g}); either fixes the range, "
+                        "without reach")
     parser.add_argument("--catalogue", type=Path, default=None)
     parser.add_argument("--classifier", default="auto", help="auto, cnn or ncc")
     parser.add_argument("--workers", type=int, default=0, help="worker processes (0 = all cores)")
@@ -244,8 +254,7 @@ def main(argv=None) -> int:
     if not folders:
         parser.error("give drive folders or --generate SEEDS")
     catalogue = load_catalogue(args.catalogue)
-    fixed = {k: v for k, v in (("near_m", args.near), ("far_m", args.far)) if v is not None}
-    config = PipelineConfig(depth=DepthConfig(**fixed, range_from_camera=not fixed),
+    config = PipelineConfig(depth=depth_settings(args.near, args.far),
                             classification=ClassificationConfig(classifier=args.classifier),
                             white=WhiteConfig(white_signs=args.white_signs))
     reports = {"detections": [], "signs": []}

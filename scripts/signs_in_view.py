@@ -18,7 +18,7 @@ import sys
 from collections import Counter
 from pathlib import Path
 
-from scripts.evaluate_mapping import drive_folder, generated_drive
+from scripts.evaluate_mapping import depth_settings, drive_folder, generated_drive
 from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive.reader import open_drive
 from signmapper_core.evaluation.families import GROUP_TITLES, GROUPS, catalogue_colour, sign_group
@@ -29,8 +29,7 @@ from signmapper_core.pipeline.depth_range import config_for_camera
 
 def searched_range(camera, near, far) -> DepthConfig:
     """The range a mapping of ``camera``'s drive searches: the camera's, or ``near``..``far`` where either is given."""
-    fixed = {k: v for k, v in (("near_m", near), ("far_m", far)) if v is not None}
-    return config_for_camera(PipelineConfig(depth=DepthConfig(**fixed, range_from_camera=not fixed)), camera).depth
+    return config_for_camera(PipelineConfig(depth=depth_settings(near, far)), camera).depth
 
 
 def in_view(truth, camera, poses, near, far) -> list:
@@ -67,8 +66,12 @@ def main(argv=None) -> int:
     how = parser.add_mutually_exclusive_group()
     how.add_argument("--plan", action="store_true", help="count from the layout, write nothing")
     how.add_argument("--generate", action="store_true", help="write the synthetic drives not there yet")
-    parser.add_argument("--near", type=float, default=None, help="nearest depth searched [m] (default: the camera's)")
-    parser.add_argument("--far", type=float, default=None, help="farthest depth searched [m] (default: the camera's)")
+    parser.add_argument("--near", type=float, default=None,
+                        help=f"nearest depth searched [m] (default: {DepthConfig.near_m:g}, and the camera's reach "
+                        "beyond far)")
+    parser.add_argument("--far", type=float, default=None,
+                        help=f"farthest depth searched [m] (default: {DepthConfig.far_m:g}); either fixes the range, "
+                        "without reach")
     args = parser.parse_args(argv)
     if not args.drives and not args.seeds:
         parser.error("give drive folders or --seeds")
@@ -88,7 +91,7 @@ def main(argv=None) -> int:
         print(f"{name}: {len(seen)} signs in view; " + ", ".join(f"{g} {counts[g]}" for g in GROUPS if counts[g]),
               flush=True)
     print(f"== {len(sources)} drives, {sum(totals.values())} signs in view (near {args.near} m, far {args.far} m; "
-          "None: the camera's)")
+          "None: the default and the camera's reach)")
     for group in GROUPS:
         print(f"  {GROUP_TITLES.get(group, group):<20} {totals[group]:>5}")
     return 0

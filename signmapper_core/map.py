@@ -35,7 +35,7 @@ PRINT_EVERY_S = 5.0  # a progress line at most this often
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from .pipeline.config import WhiteConfig  # the settings alone: no OpenCV
+    from .pipeline.config import DepthConfig, WhiteConfig  # the settings alone: no OpenCV
 
     p = argparse.ArgumentParser(
         prog="python -m signmapper_core.map",
@@ -57,7 +57,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="map with the settings an earlier output's run table records (pipeline, fusion, catalogue)")
     for flag, limit in (("--near", "nearest"), ("--far", "farthest")):
         p.add_argument(flag, type=float, default=None, metavar="M",
-                       help=f"{limit} depth searched [m] (default: from the drive's camera; either fixes the range)")
+                       help=f"{limit} depth searched [m] (default: {DepthConfig.near_m:g}-{DepthConfig.far_m:g} m "
+                            "and, beyond, the reach the drive's camera gives; either fixes the range, without reach)")
     p.add_argument("--white-signs", action=argparse.BooleanOptionalAction, default=None,
                    help="look for white and grey signs (end-of-restriction discs and panels, white place-name and "
                         "direction panels), as the mapsigns option (default: "

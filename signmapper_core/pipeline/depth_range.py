@@ -41,7 +41,7 @@ def camera_reach(camera: Camera, depth: DepthConfig, min_face_px: float) -> Dept
 
 
 def range_text(depth: DepthConfig) -> str:
-    """'4-14 m (to 56 m at the frame's edges)' for the log and the run's summary."""
+    """'4-14 m (to 56 m for signs that leave the view before 14 m)' for the log."""
     text = f"{depth.near_m:g}-{depth.far_m:g} m"
     if depth.reach_m and depth.reach_m > depth.far_m:
         text += f" (to {depth.reach_m:g} m for signs that leave the view before {depth.far_m:g} m)"

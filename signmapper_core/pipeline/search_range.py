@@ -14,6 +14,7 @@ import numpy as np
 
 from ..geometry import Camera
 from .config import DepthConfig
+from .locate import bbox_centre
 
 
 def edge_share(camera: Camera, u, v):
@@ -57,8 +58,7 @@ def face_depth(plane_depth: float, median_depth: float, camera: Camera, u: float
 
 
 def _box_edge_share(camera: Camera, bbox) -> float:
-    x, y, w, h = bbox
-    return float(edge_share(camera, x + (w - 1) / 2.0, y + (h - 1) / 2.0))
+    return float(edge_share(camera, *bbox_centre(bbox)))
 
 
 def face_depth_limits(camera: Camera, bbox, depth: DepthConfig) -> tuple:
