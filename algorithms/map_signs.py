@@ -140,12 +140,13 @@ class MapSignsAlgorithm(SignMapperAlgorithm):
                                          QgsProcessingParameterNumber.Double, None, optional=True, minValue=1.0,
                                          maxValue=200.0),
             "Signs farther than this depth are searched in a later pair, where they are measured better. Empty (the "
-            f"default): {default(*FAR_SETTING):g} m as in Cavegn (2011), and a sign that leaves the view before it "
-            "comes that close (far to the side on a wide street, high over the road, across a junction) is searched "
-            "beyond it, where it is seen best: out to the reach the drive's camera gives, where a normal 60 cm disc "
-            f"still spans {default('colour', 'min_face_px')} px and one view's depth is known to "
-            f"{default('depth', 'placing_sigma_m'):g} m ({PAPER_REACH.reach_m:g} m for the synthetic drives' Full-HD "
-            "camera, about 27 m for KITTI's 1242 x 375 one). The log and the run table state the range used.",
+            f"default): {default(*FAR_SETTING):g} m as in Cavegn (2011), and a sign never seen that close (it leaves "
+            "the view first, far to the side on a wide street or high over the road; or the drive ends or turns off "
+            "before it) is searched beyond it, where it is seen best: out to the reach the drive's camera gives, "
+            f"where a normal 60 cm disc still spans {default('colour', 'min_face_px')} px and one view's depth is "
+            f"known to {default('depth', 'placing_sigma_m'):g} m ({PAPER_REACH.reach_m:g} m for the synthetic drives' "
+            "Full-HD camera, about 27 m for KITTI's 1242 x 375 one); such a sign needs two views. The log and the run "
+            "table state the range used.",
         )
         self.add_parameter(
             self.named_enum(self.COLOURS, "Sign colours to detect", COLOURS, allowMultiple=True,

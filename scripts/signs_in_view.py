@@ -22,7 +22,7 @@ from scripts.evaluate_mapping import depth_settings, drive_folder, generated_dri
 from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive.reader import open_drive
 from signmapper_core.evaluation.families import GROUP_TITLES, GROUPS, catalogue_colour, sign_group
-from signmapper_core.evaluation.visibility import visible_in_pair
+from signmapper_core.evaluation.visibility import pose_ranges, visible_in_pair
 from signmapper_core.pipeline.config import DepthConfig, PipelineConfig
 from signmapper_core.pipeline.depth_range import config_for_camera
 
@@ -34,8 +34,9 @@ def searched_range(camera, near, far) -> DepthConfig:
 
 def in_view(truth, camera, poses, near, far) -> list:
     """The signs (not plates) of ``truth`` seen face-on within the searched range from one of ``poses`` at least."""
-    depth = searched_range(camera, near, far)
-    return [t for t in truth if not t.is_plate and any(visible_in_pair(camera, p, t, depth) for p in poses)]
+    ranges = pose_ranges(list(poses), searched_range(camera, near, far))
+    return [t for t in truth if not t.is_plate
+            and any(visible_in_pair(camera, p, t, pair_range) for p, pair_range in zip(poses, ranges))]
 
 
 def planned(seed: int, pairs: int, near, far) -> list:

@@ -56,6 +56,7 @@ class PairRecord:
     left_path: Path
     right_path: Path | None
     depth_path: Path | None
+    ahead_m: float | None = None  # set by the mapping: drive/path_ahead.py (None: not known, the path goes on)
 
 
 @dataclass(frozen=True)

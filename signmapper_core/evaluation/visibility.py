@@ -8,11 +8,14 @@ vehicle never saw does not count as missed.
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
+from ..drive.path_ahead import path_ahead
 from ..geometry import world_to_pixel
 from ..pipeline.config import DepthConfig
-from ..pipeline.search_range import edge_share, in_search_range
+from ..pipeline.search_range import edge_share, in_search_range, path_limit_m
 
 DEFAULT_RANGE = DepthConfig()  # the default range without a camera: no reach at the frame's edges
 READABLE_FACE_ANGLE_DEG = 75.0  # a face turned farther than this away from the camera cannot be read
@@ -40,6 +43,20 @@ def visible_in_pair(camera, pose, sign, depth: DepthConfig = DEFAULT_RANGE,
     return cos_angle >= np.cos(np.radians(max_face_angle_deg))
 
 
+def pose_ranges(poses, depth: DepthConfig) -> list:
+    """The search range from each of a drive's ``poses``: ``depth`` with the pose's path ahead where it has a
+    reach, as the mapping searches it."""
+    if path_limit_m(depth) <= 0 or not poses:
+        return [depth] * len(poses)
+    ahead = path_ahead(poses, depth.turn_deg, path_limit_m(depth))
+    return [dataclasses.replace(depth, ahead_m=float(a)) for a in ahead]
+
+
+def pair_ranges(drive, depth: DepthConfig) -> list:
+    """:func:`pose_ranges` of the poses of ``drive``'s pairs."""
+    return pose_ranges([record.pose for record in drive.pairs], depth)
+
+
 def mappable_signs(drive, depth: DepthConfig = DEFAULT_RANGE, plates: bool = False) -> list:
     """Truth signs of ``drive`` seen face-on within the depth range in at least one pair.
 
@@ -47,18 +64,20 @@ def mappable_signs(drive, depth: DepthConfig = DEFAULT_RANGE, plates: bool = Fal
     """
     if not drive.truth:
         return []
+    ranges = pair_ranges(drive, depth)
     return [
         sign for sign in drive.truth
         if sign.is_plate == plates
-        and any(visible_in_pair(drive.camera, rec.pose, sign, depth) for rec in drive.pairs)
+        and any(visible_in_pair(drive.camera, rec.pose, sign, pair_range)
+                for rec, pair_range in zip(drive.pairs, ranges))
     ]
 
 
 def largest_view_px(drive, sign, depth: DepthConfig = DEFAULT_RANGE) -> float:
     """Height in pixels of ``sign``'s face in the pair that sees it largest within the depth range (0 if none)."""
     best = 0.0
-    for rec in drive.pairs:
-        if visible_in_pair(drive.camera, rec.pose, sign, depth):
+    for rec, pair_range in zip(drive.pairs, pair_ranges(drive, depth)):
+        if visible_in_pair(drive.camera, rec.pose, sign, pair_range):
             z = world_to_pixel(drive.camera, rec.pose, sign.position)[2]
             best = max(best, drive.camera.fy * sign.height_m / z)
     return best

@@ -119,6 +119,10 @@ class FusionConfig:
     # once, such a face was a sign beyond the range measured into it or street furniture (a traffic cone)
     # in all 3 cases on drives 9001/9002 with the whole catalogue (2026-12-06)
     doubtful_min_views: int = 2
+    # a sign seen only beyond far_m (in the reach) is mapped only when seen in at least this many pairs: one such
+    # view places it to a metre at best, and at the drive's end a car's two rear lights 17 m ahead of the last pair
+    # were read as cycle-route boards (drive 9002, 2026-12-07)
+    far_min_views: int = 2
     # supplementary plates' text (plate_fusion.py): read from the crops of a plate's this many largest (nearest)
     # observations; more add OCR time and rarely a better text
     plate_readings: int = 3
@@ -572,11 +576,12 @@ def fuse_track(sign_id: int, observations: Sequence[Observation], config: Fusion
     )
 
 
-def _doubtful(track: Sequence[Observation], min_views: int) -> bool:
-    """Whether a track is too little seen for what its views read: a size no standard format has, or no sign of
-    the catalogue, in fewer than ``min_views`` pairs."""
-    return len({o.pair_index for o in track}) < min_views and \
-        all(o.review_reason in DOUBTFUL_READINGS for o in track)
+def _doubtful(track: Sequence[Observation], config: FusionConfig) -> bool:
+    """Whether a track is too little seen for what its views read (a size no standard format has, or no sign of
+    the catalogue: ``doubtful_min_views``) or for where they saw it (beyond far only: ``far_min_views``)."""
+    views = len({o.pair_index for o in track})
+    return (views < config.doubtful_min_views and all(o.review_reason in DOUBTFUL_READINGS for o in track)) or \
+        (views < config.far_min_views and all(o.depth_m > config.far_m for o in track))
 
 
 def fuse_observations(observations: Sequence[Observation], camera: Camera, config: Optional[FusionConfig] = None,
@@ -591,7 +596,7 @@ def fuse_observations(observations: Sequence[Observation], camera: Camera, confi
     config = config or FusionConfig()
     precision = StereoPrecision.of(camera, config)
     tracks = _merge_tracks(build_tracks(observations, config, precision), config, precision)
-    tracks = [t for t in tracks if not _doubtful(t, config.doubtful_min_views)]
+    tracks = [t for t in tracks if not _doubtful(t, config)]
     tracks.sort(key=lambda t: (t[0].pair_index, t[0].position[0], t[0].position[1]))
     signs = [fuse_track(i, t, config, precision, carried_discs) for i, t in enumerate(tracks, start=1)]
     for sign in signs:

@@ -56,7 +56,7 @@ RUN_KEYS = (
     RunKey("near_m", "Near limit of the depth range [m].", lambda r: r.config.depth.near_m,
            setting=("depth", "near_m")),
     RunKey("far_m", "Far limit of the depth range [m].", lambda r: r.config.depth.far_m, setting=("depth", "far_m")),
-    RunKey("reach_m", "Farthest depth searched for signs that leave the view before the far limit [m]; null: none.",
+    RunKey("reach_m", "Farthest depth searched for signs never seen within the far limit [m]; null: none.",
            lambda r: r.config.depth.reach_m, setting=("depth", "reach_m")),
     RunKey("range_from_camera", "Whether the depth range came from the drive's camera (else set by hand).",
            lambda r: r.config.depth.range_from_camera, setting=("depth", "range_from_camera")),

@@ -208,9 +208,11 @@ class DepthConfig:
 
     near_m: float = 4.0  # nearest depth searched [m] (Cavegn 2011): closer faces are cut by the frame
     far_m: float = 14.0  # farthest depth searched across the frame [m] (Cavegn 2011): every sign comes this close
-    # farthest depth searched for a face that leaves the view before it comes within far_m [m] (None: not at all)
+    # farthest depth searched for a face never seen within far_m (search_range.py) [m] (None: not at all)
     reach_m: Optional[float] = None
     range_from_camera: bool = True  # reach_m follows the drive's camera (pipeline/depth_range.py); off: as set
+    ahead_m: Optional[float] = None  # a pair's camera moves on this far [m] before the drive ends or turns (None: on)
+    turn_deg: float = 45.0  # a camera looking farther away than this from a pair's has turned off its path [deg]
     placing_sigma_m: float = 1.0  # reach: one view's depth known this well [m] still places a sign by its road
     # a face centre's disparity error [px], depth error Z²σ/(f·B): KITTI's ~0.5 (issue 45), the larger one measured
     disparity_sigma_px: float = 0.5

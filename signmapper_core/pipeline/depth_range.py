@@ -1,10 +1,11 @@
 """The reach a drive's camera gives: how far beyond the far limit a sign that never comes closer is searched.
 
 Between near and far (the paper's 4-14 m, ``DepthConfig``) every sign is searched in every pair. A sign that
-leaves the view before it comes within far (far to the side on a wide street, high over the road, across a
-junction) is searched beyond it, where it is seen best: out to where a normal-format disc (SSV Annex 1, 60 cm)
-still spans ``ColourConfig.min_face_px`` and one view's depth, whose error grows as σ_Z = Z² σ_d / (f B), is
-known to ``placing_sigma_m``. Which faces leave the view first: ``search_range.py``.
+is never seen within far (it leaves the view first: far to the side on a wide street, high over the road; or the
+drive ends or turns off before it: ``drive/path_ahead.py``) is searched beyond it, where it is seen best: out
+to where a normal-format disc (SSV Annex 1, 60 cm) still spans ``ColourConfig.min_face_px`` and one view's
+depth, whose error grows as σ_Z = Z² σ_d / (f B), is known to ``placing_sigma_m``. Which faces those are:
+``search_range.py``.
 
 Near and far stay the paper's for every camera: derived from a camera by the same precision rule (one view's
 depth known to 6 cm gives the paper's camera 4-14 m), they shrink to 1-7 m for KITTI's 1242 x 375 camera, and
@@ -41,11 +42,18 @@ def camera_reach(camera: Camera, depth: DepthConfig, min_face_px: float) -> Dept
 
 
 def range_text(depth: DepthConfig) -> str:
-    """'4-14 m (to 56 m for signs that leave the view before 14 m)' for the log."""
+    """'4-14 m (to 56 m for signs never seen within 14 m)' for the log."""
     text = f"{depth.near_m:g}-{depth.far_m:g} m"
     if depth.reach_m and depth.reach_m > depth.far_m:
-        text += f" (to {depth.reach_m:g} m for signs that leave the view before {depth.far_m:g} m)"
+        text += f" (to {depth.reach_m:g} m for signs never seen within {depth.far_m:g} m)"
     return text
+
+
+def config_for_pair(config, ahead_m):
+    """``config`` (a PipelineConfig) with one pair's path ahead (``PairRecord.ahead_m``) where it has a reach."""
+    if ahead_m is None or not config.depth.reach_m or config.depth.reach_m <= config.depth.far_m:
+        return config
+    return dataclasses.replace(config, depth=dataclasses.replace(config.depth, ahead_m=float(ahead_m)))
 
 
 def config_for_camera(config, camera: Camera):

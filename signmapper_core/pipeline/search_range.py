@@ -1,9 +1,11 @@
-"""Where a depth range is searched: near..far anywhere in the frame, and out to the reach where a face leaves
-the view before it comes within far.
+"""Where a depth range is searched: near..far anywhere in the frame, and out to the reach where a face is never
+seen within far.
 
 Driving straight on, a point at share e of the way from the principal point to the frame's edge
-(:func:`edge_share`) at depth Z leaves the view at depth Z e; where that is beyond far, the sign is never seen
-closer, and its views out to the reach are the best it gets (``pipeline/depth_range.py`` sets the limits).
+(:func:`edge_share`) at depth Z leaves the view at depth Z e; and where the camera moves on only d along its axis
+before the drive ends or turns (``DepthConfig.ahead_m``, ``drive/path_ahead.py``), it comes no closer than Z - d.
+Where either is beyond far, the sign is never seen closer, and its views out to the reach are the best it gets
+(``pipeline/depth_range.py`` sets the limits).
 """
 
 from __future__ import annotations
@@ -37,14 +39,31 @@ def edge_share_image(camera: Camera) -> np.ndarray:
     return shares
 
 
+def closest_depth(z, edge, depth: DepthConfig):
+    """The depth a face at depth ``z`` and edge share ``edge`` comes to at the closest before it leaves the view
+    (z x edge) or the camera stops coming nearer (z - ``depth.ahead_m``), whichever is farther."""
+    z = np.asarray(z, dtype=np.float32)
+    closest = z * edge
+    if depth.ahead_m is not None:
+        closest = np.maximum(closest, z - np.float32(depth.ahead_m))
+    return closest
+
+
+def path_limit_m(depth: DepthConfig) -> float:
+    """How far ahead a pair's path matters: a camera that moves on this far brings every face within the reach
+    within far (0: no reach, the path does not matter)."""
+    return max(0.0, (depth.reach_m or depth.far_m) - depth.far_m)
+
+
 def in_search_range(z, edge, depth: DepthConfig, slack: float = 0.0):
     """Whether depth ``z`` at edge share ``edge`` is searched: near..far anywhere, and up to the reach where
-    the face leaves the view before it comes within far. ``slack`` widens every limit by that share."""
+    the face is never seen within far (:func:`closest_depth`). ``slack`` widens every limit by that share."""
     z = np.asarray(z, dtype=np.float32)
     with np.errstate(invalid="ignore"):
         inside = (z >= depth.near_m * (1.0 - slack)) & (z <= depth.far_m * (1.0 + slack))
         if depth.reach_m and depth.reach_m > depth.far_m:
-            inside |= (z * edge >= depth.far_m * (1.0 - slack)) & (z <= depth.reach_m * (1.0 + slack))
+            inside |= ((closest_depth(z, edge, depth) >= depth.far_m * (1.0 - slack))
+                       & (z <= depth.reach_m * (1.0 + slack)))
     return inside
 
 
@@ -63,9 +82,10 @@ def _box_edge_share(camera: Camera, bbox) -> float:
 
 def face_depth_limits(camera: Camera, bbox, depth: DepthConfig) -> tuple:
     """(nearest, farthest) depth a face in pixel box ``bbox`` (x, y, w, h) is measured within: near..far, or out to
-    the reach where its centre is far enough out for a face there to leave the view before far."""
+    the reach where a face there at the reach is never seen within far."""
     edge = _box_edge_share(camera, bbox)
-    reaches = depth.reach_m and depth.reach_m > depth.far_m and edge * depth.reach_m >= depth.far_m
+    reaches = (depth.reach_m and depth.reach_m > depth.far_m
+               and closest_depth(depth.reach_m, edge, depth) >= depth.far_m)
     return depth.near_m, depth.reach_m if reaches else depth.far_m
 
 

@@ -88,7 +88,8 @@ def pair_job(drive, record, catalogue, config, detect=None) -> dict:
         "root": str(drive.root), "crs": drive.crs, "camera": dataclasses.asdict(drive.camera),
         "record": {"index": record.index, "id": record.id, "time": record.time,
                    "pose": dataclasses.asdict(record.pose), "left_path": str(record.left_path),
-                   "right_path": _text(record.right_path), "depth_path": _text(record.depth_path)},
+                   "right_path": _text(record.right_path), "depth_path": _text(record.depth_path),
+                   "ahead_m": record.ahead_m},
         "catalogue": None if bundled else str(folder), "config": settings_dict(config), "detect": detect,
     }
 
@@ -151,7 +152,7 @@ def map_pair_task(job: dict) -> dict:
     cv2.setNumThreads(1)  # a worker runs a pair per thread: the cores are shared out by Dask's threads
     r = job["record"]
     record = PairRecord(r["index"], r["id"], r["time"], Pose(**r["pose"]), Path(r["left_path"]),
-                        _path(r["right_path"]), _path(r["depth_path"]))
+                        _path(r["right_path"]), _path(r["depth_path"]), r.get("ahead_m"))
     drive = Drive(Path(job["root"]), job["crs"], Camera(**job["camera"]), [record])
     config = _config(json.dumps(job["config"], sort_keys=True))
     result = map_pair(drive, record, _catalogue(job["catalogue"]), config, job["detect"])

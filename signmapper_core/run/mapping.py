@@ -22,6 +22,7 @@ from typing import Iterator, Optional
 import numpy as np
 
 from ..catalogue.text_panels import is_text_panel
+from ..drive.path_ahead import with_path_ahead
 from ..drive.reader import Drive, PairRecord
 from ..errors import MappingError
 from ..fusion.mounting import camera_height_above_road, mounting_height
@@ -32,6 +33,7 @@ from ..pipeline import detect_in_window
 from ..pipeline.classifiers import accept_threshold, classifier_for
 from ..pipeline.depth_range import config_for_camera, range_text
 from ..pipeline.face_extent import carried_discs
+from ..pipeline.search_range import path_limit_m
 from ..plates.fusion import fuse_plates, is_plate, read_plate_texts
 from ..plates.number_check import check_speed_numbers, speed_limit_signs
 from ..plates.printed_numbers import printed_numbers
@@ -136,9 +138,10 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
 
     Skipped pairs, and pairs without usable depth or colour, are passed to
     ``warn`` as they happen; skipped pairs are listed in the result.
-    ``config``'s depth range follows the drive's camera where it asks so (:func:`.depth_range.config_for_camera`);
-    the result holds the range used. ``fusion``'s ``accept_classification`` is replaced by the classifier's
-    threshold (``config`` may set it), its ``far_m`` by ``config.depth.far_m``.
+    ``config``'s depth range follows the drive's camera where it asks so (:func:`.depth_range.config_for_camera`),
+    and each pair's also the path ahead of it (``drive/path_ahead.py``); the result holds the range used.
+    ``fusion``'s ``accept_classification`` is replaced by the classifier's threshold (``config`` may set it), its
+    ``far_m`` by ``config.depth.far_m``.
     ``Cancelled`` is raised when ``is_cancelled()`` turns true; ``MappingError``
     as soon as more than ``max_skipped_share`` (0..1) of the pairs are skipped,
     and when no pair could be mapped at all. ``workers``: processes mapping the
@@ -151,6 +154,8 @@ def map_drive(drive: Drive, catalogue, config, progress: Optional[ProgressCallba
     """
 
     config = config_for_camera(config, drive.camera)
+    if path_limit_m(config.depth) > 0:  # faces the drive's end or a turn keeps beyond far are searched to the reach
+        drive = with_path_ahead(drive, config.depth.turn_deg, path_limit_m(config.depth))
     report(progress, 0.0, f"Searching {range_text(config.depth)} ahead of the camera"
            + (" (the reach its focal length and baseline give)" if config.depth.range_from_camera else ""))
     classifier = classifier_for(catalogue, config)  # a missing or broken model fails here, before any pair

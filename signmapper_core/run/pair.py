@@ -46,6 +46,8 @@ def load_pair(drive: Drive, record: PairRecord):
 
 def map_pair(drive: Drive, record: PairRecord, catalogue, config, detect=None) -> PairResult:
     """The detections of one pair, or why it was skipped (files unreadable, or the detection raised)."""
+    from ..pipeline.depth_range import config_for_pair  # delays numpy until used
+
     if detect is None:
         from ..pipeline import detect_pair as detect  # OpenCV is imported only when mapping actually runs
     start = _time.perf_counter()
@@ -55,7 +57,8 @@ def map_pair(drive: Drive, record: PairRecord, catalogue, config, detect=None) -
         return PairResult(record, error=str(exc), seconds=_time.perf_counter() - start, stage=READ)
     loaded = _time.perf_counter()
     try:
-        detections = detect(left, depth, right, drive.camera, record.pose, catalogue, config)
+        detections = detect(left, depth, right, drive.camera, record.pose, catalogue,
+                            config_for_pair(config, record.ahead_m))
     except Exception as exc:  # noqa: BLE001 - one pair's failure is reported, the run goes on
         return PairResult(record, error=f"detection failed: {type(exc).__name__}: {exc}",
                           seconds=_time.perf_counter() - start, load_seconds=loaded - start, stage=DETECT,

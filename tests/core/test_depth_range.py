@@ -27,7 +27,7 @@ def test_the_papers_camera_reaches_56_m():
     depth = camera_reach(PAPER, DepthConfig(), MIN_FACE_PX)
     assert (depth.near_m, depth.far_m) == (4.0, 14.0)
     assert depth.reach_m == 56.0  # depth known to 1 m (a 60 cm disc would span 19 px there)
-    assert range_text(depth) == "4-14 m (to 56 m for signs that leave the view before 14 m)"
+    assert range_text(depth) == "4-14 m (to 56 m for signs never seen within 14 m)"
 
 
 def test_a_kitti_camera_reaches_the_far_sign_of_its_drive():

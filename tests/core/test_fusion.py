@@ -1,5 +1,7 @@
 """Fusion of per-pair detections into physical signs, on constructed observations."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
@@ -384,11 +386,28 @@ def test_a_sign_read_only_off_format_or_as_unknown_is_mapped_when_seen_twice():
            + _held(seen_from(cone, [12], template_id="unknown", colour="orange"), NO_ENTRY_MATCHES)
            + _held(seen_from(other, [22, 23], fmt=("measured", 0.3, 0.3)), OFF_FORMAT)
            + _held(seen_from(near + [0, 40, 0], [30]), ""))  # another reading held once: mapped, in review
-    signs = fuse_observations(obs, CAMERA)
+    within = FusionConfig(far_m=60.0)  # these views are 14-58 m away: a range fixed to 60 m holds them
+    signs = fuse_observations(obs, CAMERA, within)
     assert [(s.n_obs, s.status) for s in signs] == [(2, "review"), (1, "review")]
     assert np.linalg.norm(signs[0].position - other) < 0.01
     assert [o.sign_id for o in obs] == [None, None, 1, 1, 2]  # the views of no sign belong to none
-    assert len(fuse_observations(obs, CAMERA, FusionConfig(doubtful_min_views=1))) == 4
+    assert len(fuse_observations(obs, CAMERA, replace(within, doubtful_min_views=1))) == 4
+
+
+def test_a_sign_seen_only_beyond_far_is_mapped_when_seen_twice():
+    """Issue 45: beyond far (the reach) one view places a face to a metre at best; a car's rear lights ahead of a
+    drive's last pair were read as boards once each."""
+    config = FusionConfig(far_m=14.0)
+    once_far, twice_far, once_near = np.array([40.0, 3.0, 2.5]), np.array([80.0, 3.0, 2.5]), np.array([120.0, 3.0, 2.5])
+    obs = (seen_from(once_far, [10])  # 20 m away, seen once
+           + seen_from(twice_far, [29, 30])  # 22 and 20 m away
+           + seen_from(once_near, [55]))  # 10 m away, seen once
+    assert [round(o.depth_m) for o in obs] == [20, 22, 20, 10]
+    signs = fuse_observations(obs, CAMERA, config)
+    assert [s.n_obs for s in signs] == [2, 1]
+    assert np.linalg.norm(signs[0].position - twice_far) < 0.05 and np.linalg.norm(signs[1].position - once_near) < 0.05
+    assert len(fuse_observations(obs, CAMERA, FusionConfig(far_m=14.0, far_min_views=1))) == 3
+    assert len(fuse_observations(obs, CAMERA, FusionConfig(far_m=30.0))) == 3  # a range fixed to 30 m: all within
 
 
 def test_views_reading_no_catalogue_sign_do_not_outvote_one_that_reads_an_id():

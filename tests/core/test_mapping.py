@@ -64,7 +64,7 @@ def test_run_record_names_drive_catalogue_and_settings(mapped, drive_dir):
     assert Path(record["drive"]) == drive_dir.resolve() and record["crs"] == "EPSG:2056"
     # the drive's half-size camera (960 x 540, fx 875 px, 0.9 m) reaches 33 m: a 60 cm disc spans 16 px there
     assert (record["near_m"], record["far_m"], record["reach_m"]) == (4.0, 14.0, 33.0) and record["range_from_camera"]
-    searching = "Searching 4-14 m (to 33 m for signs that leave the view before 14 m)"
+    searching = "Searching 4-14 m (to 33 m for signs never seen within 14 m)"
     assert any(m.startswith(searching) for _, m in mapped[1])
     assert record["colours"] == ["red", "blue", "yellow", "green", "brown", "orange"]  # every coloured family
     settings = run_settings(json.loads(json.dumps(record)), "record")  # the whole configuration, as JSON

@@ -486,7 +486,7 @@ def _write_drive(root, catalogue, lines=("200 m",), n=3):
     plate = centre + [0.0, 0.0, -(0.30 + 0.04 + 0.10)]
     write_truth_csv(root, [TruthSign("s1", "2.30-50", *centre, 0.6, 0.6, facing),
                            TruthSign("s2", "5.01", *plate, 0.6, 0.2, facing, plate_of="s1", text=" / ".join(lines)),
-                           TruthSign("s3", "5.00-1", *(plate + [30.0, 0, 0]), 0.6, 0.2, facing, plate_of="s1",
+                           TruthSign("s3", "5.00-1", *(plate - [30.0, 0, 0]), 0.6, 0.2, facing, plate_of="s1",
                                      text="never in view")])
     return open_drive(root)
 
