@@ -1,6 +1,6 @@
 """Calibrate the learned classifier's indicator on the tune half of the real photographs.
 
-    python -m scripts.calibrate_classifier --data /work/data/real [--split tune] [--max-wrong 0.015]
+    python -m scripts.calibrate_classifier --data /work/data/real [--source gtsrb|gtsdb] [--max-wrong 0.015]
 
 The network is trained on synthetic faces only; on real photographs it is more
 sure of itself than it should be. This fits three numbers on real photographs
@@ -11,6 +11,11 @@ the accepted signs carry a wrong id, and the open set's limit: the logit that
 its best candidate less well is mapped as unknown). Both are written into the model card with
 what they were fitted on. Report figures on the other half (``--split report``
 of ``scripts.evaluate_real_photos``), never on this one.
+
+``--source`` picks the photographs: ``gtsrb``, the GTSRB test crops (``crops.csv``; the shipped card's),
+whose tune and report halves share physical signs (the test set has no track ids to split by), or
+``gtsdb``, the sign boxes of the GTSDB tune scenes (``scenes.csv``, read from the photograph as a crop is),
+split by scene, so that no physical sign is on both sides.
 """
 
 from __future__ import annotations
@@ -25,6 +30,22 @@ from signmapper_core.catalogue import load_catalogue
 from signmapper_core.pipeline.classifiers import LearnedClassifier, load_model_card, model_card_path
 from signmapper_core.pipeline.classifiers.calibration import acceptance_threshold
 from signmapper_core.validation import load_manifest
+
+# --source -> (manifest, what the card says it was calibrated on)
+SOURCES = {
+    "gtsrb": ("crops.csv", "real photographs (GTSRB test crops), tune half of scripts/realset manifests; never "
+                           "trained on; its halves share physical signs (no track ids)"),
+    "gtsdb": ("scenes.csv", "real photographs (GTSDB sign boxes of the tune scenes), tune half of "
+                            "scripts/realset manifests, split by scene; never trained on"),
+}
+
+
+def calibration_signs(data: Path, source: str, split: str, known_ids, catalogue, limit: int = 0):
+    """The signs of ``source``'s manifest in ``split`` that the catalogue and the network know; the first
+    ``limit`` of them if given (to try the code path)."""
+    manifest = data / SOURCES[source][0]
+    signs = [s for s in load_manifest(manifest, known_ids=known_ids) if s.split == split and s.ssv_id in catalogue]
+    return signs[:limit] if limit else signs
 
 
 def candidate_logits(classifier: LearnedClassifier, catalogue, signs):
@@ -74,19 +95,29 @@ def unknown_limit(rows, right: np.ndarray, percentile: float) -> float:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--data", type=Path, required=True, help="folder with crops.csv (scripts/realset)")
+    parser.add_argument("--data", type=Path, required=True,
+                        help="folder with crops.csv and scenes.csv (scripts/realset)")
+    parser.add_argument("--source", default="gtsrb", choices=sorted(SOURCES),
+                        help="gtsrb: the GTSRB tune crops (crops.csv), whose halves share physical signs; gtsdb: the "
+                             "sign boxes of the GTSDB tune scenes (scenes.csv), split by scene (default: "
+                             "%(default)s)")
     parser.add_argument("--split", default="tune", choices=("tune",), help="only the tune half may be fitted on")
+    parser.add_argument("--limit", type=int, default=0,
+                        help="only the first N signs, to try the code path (needs --dry-run)")
     parser.add_argument("--model", type=Path, default=None, help="model folder (default: the catalogue's)")
     parser.add_argument("--max-wrong", type=float, default=0.015, help="wrong share allowed among accepted signs")
     parser.add_argument("--unknown-percentile", type=float, default=2.0,
                         help="real signs read right that the open set's limit may take for unknown, in %%")
     parser.add_argument("--dry-run", action="store_true", help="print, do not write the model card")
     args = parser.parse_args(argv)
+    if args.limit and not args.dry_run:
+        parser.error("--limit calibrates on a few signs only: use it with --dry-run")
     catalogue = load_catalogue()
     card_path = (args.model / "model.json") if args.model else model_card_path(catalogue.folder)
     classifier = LearnedClassifier(load_model_card(card_path))
-    signs = [s for s in load_manifest(args.data / "crops.csv", known_ids=set(classifier.card.classes))
-             if s.split == args.split and s.ssv_id in catalogue]
+    signs = calibration_signs(args.data, args.source, args.split, set(classifier.card.classes), catalogue,
+                              args.limit)
+    manifest = args.data / SOURCES[args.source][0]
     rows = candidate_logits(classifier, catalogue, signs)
     before = classifier.card.temperature
     temperature = fit_temperature(rows)
@@ -95,7 +126,7 @@ def main(argv=None) -> int:
     accepted = best >= threshold
     limit = unknown_limit(rows, right, args.unknown_percentile)
     print(f"open set: unknown below logit {limit:.2f} (synthetic: {classifier.card.unknown_logit})")
-    print(f"{len(rows)} real signs ({args.data / 'crops.csv'}, split {args.split}): correct {right.mean():.3f}; "
+    print(f"{len(rows)} real signs ({manifest}, split {args.split}): correct {right.mean():.3f}; "
           f"temperature {before:.3f} -> {temperature:.3f}; threshold {threshold:.3f} accepts {accepted.mean():.3f} "
           f"with {(~right[accepted]).mean() if accepted.any() else 0:.4f} wrong")
     if args.dry_run:
@@ -105,7 +136,7 @@ def main(argv=None) -> int:
     card["accept_threshold"] = round(threshold, 4)
     card["unknown_logit"] = round(limit, 3)
     card["calibration"] = {
-        "data": "real photographs (GTSRB test crops), tune half of scripts/realset manifests; never trained on",
+        "data": SOURCES[args.source][1],
         "signs": len(rows), "max_wrong": args.max_wrong,
         "accepted_share": round(float(accepted.mean()), 4),
         "wrong_among_accepted": round(float((~right[accepted]).mean()) if accepted.any() else 0.0, 4),

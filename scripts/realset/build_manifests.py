@@ -12,8 +12,9 @@ Expects, below DATA (see scripts/realset/README.md for where they come from):
 Classes are mapped to SSV ids with ``gtsrb_to_ssv.csv`` (same class ids for both sets); classes
 without a catalogue counterpart are left out of the manifests (scenes: listed in scenes_other.csv so
 that segments on them are not counted as false positives). The split is a deterministic half split by
-a hash of the file name (GTSRB test crops carry no track id) or of the scene image (GTSDB).
-Every image is opened once to check its size against the ground truth.
+a hash of the file name (GTSRB test crops carry no track id) or, for GTSDB, of the scene's first photograph
+(``scenes.py``: consecutive photographs of one place are one scene, in one half; the ``scene`` column names
+it, empty for GTSRB crops). Every image is opened once to check its size against the ground truth.
 """
 
 from __future__ import annotations
@@ -27,8 +28,9 @@ from pathlib import Path
 
 import cv2
 
+from scripts.realset.scenes import SAME_PLACE_MATCHES, consecutive_matches, scene_groups, scene_of
 from signmapper_core.catalogue import load_catalogue
-from signmapper_core.validation import IMAGE_LIST_COLUMNS, MANIFEST_COLUMNS
+from signmapper_core.validation import IMAGE_LIST_COLUMNS, MANIFEST_COLUMNS, SCENE_COLUMN
 
 HERE = Path(__file__).resolve().parent
 
@@ -39,6 +41,26 @@ GTSDB_SIZE = (1360, 800)
 def half_split(key: str) -> str:
     """'tune' or 'report', half each, stable across runs and machines."""
     return "tune" if hashlib.sha1(key.encode("utf-8")).digest()[0] % 2 == 0 else "report"
+
+
+def scene_halves(scenes: dict) -> dict:
+    """Photograph name -> half, by its scene's id (``scene_of``): a scene is never split."""
+    return {name: half_split(scene) for name, scene in scenes.items()}
+
+
+def gtsdb_scenes(images) -> dict:
+    """Photograph stem -> scene id for the GTSDB photographs, in name order (``scenes.py``)."""
+    names = [path.stem for path in images]
+    return scene_of(names, scene_groups(consecutive_matches(images), SAME_PLACE_MATCHES))
+
+
+def scene_summary(scenes: dict) -> str:
+    """Counts only: scenes, their sizes, photographs whose half differs from the split by photograph."""
+    sizes = Counter(Counter(scenes.values()).values())
+    moved = sum(1 for name, half in scene_halves(scenes).items() if half != half_split(name))
+    return (f"{len(set(scenes.values()))} scenes of {len(scenes)} photographs (size: count "
+            f"{', '.join(f'{k}: {n}' for k, n in sorted(sizes.items()))}); {moved} photographs in another half "
+            "than split by photograph")
 
 
 def read_mapping(path: Path, catalogue_ids) -> dict:
@@ -82,14 +104,15 @@ def gtsrb_rows(data: Path, mapping: dict):
             x1, y1 = int(r["Roi.X2"]) + 1, int(r["Roi.Y2"]) + 1  # inclusive -> exclusive
             x1, y1 = min(x1, size[0]), min(y1, size[1])
             ssv_id, group = mapping[cls]
-            rows.append([rel, x0, y0, x1, y1, ssv_id, group, half_split(r["Filename"]), "gtsrb-test"])
+            rows.append([rel, x0, y0, x1, y1, ssv_id, group, half_split(r["Filename"]), "gtsrb-test", ""])
     return rows, skipped
 
 
-def gtsdb_rows(data: Path, mapping: dict):
-    """(manifest rows, image-list rows, unmapped-sign rows) of the GTSDB scenes."""
+def gtsdb_rows(data: Path, mapping: dict, scenes: dict):
+    """(manifest rows, image-list rows, unmapped-sign rows) of the GTSDB photographs; ``scenes``: stem -> scene."""
     gt = data / "gtsdb" / "gt.txt"
     images = sorted((data / "gtsdb" / "images").glob("*.jpg"))
+    halves = scene_halves(scenes)
     signs, other = [], []
     count = Counter()
     seen = set()
@@ -108,7 +131,8 @@ def gtsdb_rows(data: Path, mapping: dict):
         cls = int(cls)
         if cls in mapping:
             ssv_id, group = mapping[cls]
-            signs.append([rel, *box, ssv_id, group, half_split(Path(name).stem), "gtsdb"])
+            stem = Path(name).stem
+            signs.append([rel, *box, ssv_id, group, halves[stem], "gtsdb", scenes[stem]])
             count[rel] += 1
         else:
             other.append([rel, *box, cls])
@@ -118,7 +142,7 @@ def gtsdb_rows(data: Path, mapping: dict):
         size = image_size(path)
         if size != GTSDB_SIZE:
             raise SystemExit(f"{path}: {size[0]}x{size[1]}, expected {GTSDB_SIZE[0]}x{GTSDB_SIZE[1]}")
-        listing.append([rel, size[0], size[1], half_split(path.stem), "gtsdb", count[rel]])
+        listing.append([rel, size[0], size[1], halves[path.stem], "gtsdb", count[rel], scenes[path.stem]])
     return signs, listing, other
 
 
@@ -136,15 +160,17 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     mapping = read_mapping(args.mapping, {e.id for e in load_catalogue()})
     crops, skipped = gtsrb_rows(args.data, mapping)
-    scenes, listing, other = gtsdb_rows(args.data, mapping)
-    write(args.data / "crops.csv", MANIFEST_COLUMNS, crops)
-    write(args.data / "scenes.csv", MANIFEST_COLUMNS, scenes)
-    write(args.data / "scenes_images.csv", IMAGE_LIST_COLUMNS, listing)
+    places = gtsdb_scenes(sorted((args.data / "gtsdb" / "images").glob("*.jpg")))
+    scenes, listing, other = gtsdb_rows(args.data, mapping, places)
+    write(args.data / "crops.csv", (*MANIFEST_COLUMNS, SCENE_COLUMN), crops)
+    write(args.data / "scenes.csv", (*MANIFEST_COLUMNS, SCENE_COLUMN), scenes)
+    write(args.data / "scenes_images.csv", (*IMAGE_LIST_COLUMNS, SCENE_COLUMN), listing)
     write(args.data / "scenes_other.csv", ("image", "x0", "y0", "x1", "y1", "class_id"), other)
     print(f"crops.csv: {len(crops)} signs (left out, unmapped GTSRB classes: "
           f"{', '.join(f'{c}: {n}' for c, n in sorted(skipped.items()))})")
     print(f"scenes.csv: {len(scenes)} signs in {sum(1 for r in listing if r[5])} of {len(listing)} images; "
           f"{len(other)} unmapped signs in scenes_other.csv")
+    print(scene_summary(places))
     return 0
 
 

@@ -28,6 +28,7 @@ import cv2
 from signmapper_core.validation import (
     IMAGE_LIST_COLUMNS,
     MANIFEST_COLUMNS,
+    SCENE_COLUMN,
     load_manifest,
     load_scene_list,
 )
@@ -109,10 +110,10 @@ def build(data: Path, out: Path, n_crops: int, n_scenes: int, with_gtsrb: bool, 
     for scene in sorted(chosen_scenes, key=lambda s: s.image.name):
         rel = f"gtsdb/images/{scene.image.name}"
         shutil.copyfile(scene.image, out / rel)
-        listing.append([rel, scene.width, scene.height, scene.split, scene.source, scene.signs])
+        listing.append([rel, scene.width, scene.height, scene.split, scene.source, scene.signs, scene.scene])
         for s in by_image[scene.image]:
             x, y, w, h = s.bbox
-            scene_rows.append([rel, x, y, x + w, y + h, s.ssv_id, s.group, s.split, s.source])
+            scene_rows.append([rel, x, y, x + w, y + h, s.ssv_id, s.group, s.split, s.source, s.scene])
     other_rows = []
     names = {f"gtsdb/images/{s.image.name}" for s in chosen_scenes}
     other_path = data / "scenes_other.csv"
@@ -141,11 +142,11 @@ def build(data: Path, out: Path, n_crops: int, n_scenes: int, with_gtsrb: bool, 
         if not cv2.imwrite(str(out / rel), image[cy0:cy1, cx0:cx1]):
             raise SystemExit(f"cannot write {out / rel}")
         crop_rows.append([rel, x - cx0, y - cy0, x - cx0 + w, y - cy0 + h, sign.ssv_id, sign.group, sign.split,
-                          source])
+                          source, sign.scene])
 
-    write(out / "crops.csv", MANIFEST_COLUMNS, crop_rows)
-    write(out / "scenes.csv", MANIFEST_COLUMNS, scene_rows)
-    write(out / "scenes_images.csv", IMAGE_LIST_COLUMNS, listing)
+    write(out / "crops.csv", (*MANIFEST_COLUMNS, SCENE_COLUMN), crop_rows)
+    write(out / "scenes.csv", (*MANIFEST_COLUMNS, SCENE_COLUMN), scene_rows)
+    write(out / "scenes_images.csv", (*IMAGE_LIST_COLUMNS, SCENE_COLUMN), listing)
     write(out / "scenes_other.csv", ("image", "x0", "y0", "x1", "y1", "class_id"), other_rows)
     for name in ("gtsdb/ReadMe.txt",) + (("gtsrb/Readme-Images-Final-test.txt",) if with_gtsrb else ()):
         if (data / name).is_file():

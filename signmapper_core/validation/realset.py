@@ -14,6 +14,11 @@ is ``tune`` or ``report`` (figures are reported on ``report`` only).
 ``scenes_images.csv``: every scene photograph, also those without a sign (for
 false-positive counts), columns ``image,width,height,split,source,signs``.
 
+Either kind may add a column ``scene``: the place a photograph shows (photographs
+of one place, where one physical sign may be seen twice, share it; empty when
+unknown, as for GTSRB crops, which have no track ids). The halves are meant to
+share no physical sign, so every row of one scene must be in the same split.
+
 Every row is checked on reading; an error names the file, the line and the
 field, so a broken manifest never turns into a silent miscount.
 """
@@ -33,6 +38,7 @@ from ..errors import InputFileError
 
 MANIFEST_COLUMNS = ("image", "x0", "y0", "x1", "y1", "ssv_id", "group", "split", "source")
 IMAGE_LIST_COLUMNS = ("image", "width", "height", "split", "source", "signs")
+SCENE_COLUMN = "scene"  # optional in both kinds of manifest
 GROUPS = ("same", "differs")
 SPLITS = ("tune", "report")
 _ID_PATTERN = re.compile(r"^[0-9A-Za-z]+(\.[0-9A-Za-z]+)*(-[0-9A-Za-z.]+)?$")
@@ -65,6 +71,7 @@ class RealSign:
     source: str  # data set the photograph comes from, e.g. "gtsrb-test"
     manifest: str = ""  # manifest file and line, for messages
     line: int = 0
+    scene: str = ""  # the place photographed ("" = unknown); one scene is in one split
 
     @property
     def size_px(self) -> int:
@@ -92,6 +99,7 @@ class SceneImage:
     split: str
     source: str
     signs: int  # signs of the manifest in this photograph (0: only false positives possible)
+    scene: str = ""  # the place photographed ("" = unknown); one scene is in one split
 
 
 def _read_rows(path: Path, columns: Sequence[str]) -> Iterable[Tuple[int, dict]]:
@@ -147,6 +155,17 @@ def _source(path, line, row) -> str:
     return row["source"]
 
 
+def _scene(path, line, row, split: str, splits_seen: dict) -> str:
+    """The row's scene ("" without the column); a scene met before in the other split is an error."""
+    scene = row.get(SCENE_COLUMN) or ""
+    if scene:
+        first = splits_seen.setdefault(scene, (split, line))
+        if first[0] != split:
+            raise ManifestError(path, f"scene {scene!r} is {split} here but {first[0]} on line {first[1]}: "
+                                "a scene belongs to one split", line, SCENE_COLUMN)
+    return scene
+
+
 def load_manifest(path, root=None, known_ids: Optional[Iterable[str]] = None,
                   check_files: bool = True) -> List[RealSign]:
     """The signs of a ``crops.csv`` / ``scenes.csv`` manifest, every row checked.
@@ -159,7 +178,7 @@ def load_manifest(path, root=None, known_ids: Optional[Iterable[str]] = None,
     root = Path(root) if root is not None else path.parent
     known = set(known_ids) if known_ids is not None else None
     signs: List[RealSign] = []
-    seen = {}
+    seen, scene_splits = {}, {}
     for line, row in _read_rows(path, MANIFEST_COLUMNS):
         image = _image_path(path, line, row, root, check_files)
         x0, y0, x1, y1 = (_int(path, line, row, c) for c in ("x0", "y0", "x1", "y1"))
@@ -179,7 +198,8 @@ def load_manifest(path, root=None, known_ids: Optional[Iterable[str]] = None,
             raise ManifestError(path, f"the same image and box as line {seen[key]}", line)
         seen[key] = line
         signs.append(RealSign(image, (x0, y0, x1 - x0, y1 - y0), ssv_id, group, split,
-                              _source(path, line, row), str(path), line))
+                              _source(path, line, row), str(path), line,
+                              _scene(path, line, row, split, scene_splits)))
     if not signs:
         raise ManifestError(path, "no signs listed")
     return signs
@@ -190,15 +210,16 @@ def load_scene_list(path, root=None, check_files: bool = True) -> List[SceneImag
     path = Path(path)
     root = Path(root) if root is not None else path.parent
     scenes: List[SceneImage] = []
-    seen = {}
+    seen, scene_splits = {}, {}
     for line, row in _read_rows(path, IMAGE_LIST_COLUMNS):
         image = _image_path(path, line, row, root, check_files)
         if row["image"] in seen:
             raise ManifestError(path, f"image listed twice (first on line {seen[row['image']]})", line, "image")
         seen[row["image"]] = line
         width, height = _int(path, line, row, "width", 1), _int(path, line, row, "height", 1)
-        scenes.append(SceneImage(image, width, height, _choice(path, line, row, "split", SPLITS),
-                                 _source(path, line, row), _int(path, line, row, "signs")))
+        split = _choice(path, line, row, "split", SPLITS)
+        scenes.append(SceneImage(image, width, height, split, _source(path, line, row),
+                                 _int(path, line, row, "signs"), _scene(path, line, row, split, scene_splits)))
     if not scenes:
         raise ManifestError(path, "no images listed")
     return scenes

@@ -154,3 +154,25 @@ def test_scene_list_reads_every_image_and_checks_rows(folder):
     path.write_text("image,width,height,split,source,signs\ngtsrb/a.png,0,30,tune,gtsdb,2\n", encoding="utf-8")
     with pytest.raises(ManifestError, match=r"line 2, field 'width': must be >= 1, got 0"):
         load_scene_list(path)
+
+
+def test_the_scene_column_is_optional_and_a_scene_is_in_one_split(folder):
+    path = _manifest(folder, "gtsrb/a.png,10,5,30,20,3.01,same,tune,g")
+    assert load_manifest(path)[0].scene == ""  # manifests written before the column read as before
+    path.write_text(HEADER + ",scene\n"
+                    "gtsrb/a.png,10,5,30,20,3.01,same,tune,g,00112\n"
+                    "gtsrb/b.png,10,5,30,20,3.01,same,tune,g,00112\n"
+                    "gtsrb/b.png,0,0,9,9,3.01,same,report,g,\n", encoding="utf-8")
+    assert [s.scene for s in load_manifest(path)] == ["00112", "00112", ""]
+    path.write_text(HEADER + ",scene\n"
+                    "gtsrb/a.png,10,5,30,20,3.01,same,tune,g,00112\n"
+                    "gtsrb/b.png,10,5,30,20,3.01,same,report,g,00112\n", encoding="utf-8")
+    with pytest.raises(ManifestError, match=r"line 3, field 'scene': scene '00112' is report here but tune on "
+                                            r"line 2: a scene belongs to one split"):
+        load_manifest(path)
+    listing = folder / "scenes_images.csv"
+    listing.write_text("image,width,height,split,source,signs,scene\n"
+                       "gtsrb/a.png,40,30,tune,gtsdb,2,00110\n"
+                       "gtsrb/b.png,64,48,report,gtsdb,0,00110\n", encoding="utf-8")
+    with pytest.raises(ManifestError, match=r"line 3, field 'scene': scene '00110' is report here but tune"):
+        load_scene_list(listing)
