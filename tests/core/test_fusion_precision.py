@@ -5,6 +5,8 @@ the left image, its column, row and disparity get normal errors of the settings'
 them, as the pipeline does, on a pose with the trajectory's error.
 """
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
@@ -16,7 +18,9 @@ from signmapper_core.pipeline.detection import Detection
 
 KITTI = Camera(1242, 375, 721.5, 721.5, 609.6, 172.9, 0.54)  # KITTI's rectified colour camera
 FULL_HD = Camera(1920, 1080, 1750.0, 1750.0, 959.5, 539.5, 0.9)  # the synthetic drives' camera
-CONFIG = FusionConfig()
+# the precision of views wherever they are: a sign seen once beyond far is kept (the mapping drops it, far_min_views;
+# tested in test_fusion.py)
+CONFIG = FusionConfig(far_min_views=1)
 WEST = np.array([-1.0, 0.0, 0.0])
 CAMERA_HEIGHT = 1.65
 
@@ -69,7 +73,7 @@ def test_a_far_sign_seen_in_several_pairs_with_realistic_depth_noise_is_one_sign
     truth = np.array([60.0, 4.0, 2.2])
     views = seen_between(KITTI, truth, 23.5, 28.0, 1.1, rng)
     assert len(views) == 4
-    (sign,) = fuse_observations(views, KITTI)
+    (sign,) = fuse_observations(views, KITTI, CONFIG)
     assert sign.n_obs == 4
     along, across = components(sign, truth)
     assert abs(along) < 3.0 * sign.sigma_along_m and across < 3.0 * sign.sigma_across_m
@@ -82,7 +86,7 @@ def test_the_fixed_gate_alone_splits_the_far_sign():
     split = 0
     for seed in range(12):
         views = seen_between(KITTI, np.array([60.0, 4.0, 2.2]), 23.5, 28.0, 1.1, np.random.default_rng(seed))
-        split += len(fuse_observations(views, KITTI, FusionConfig(gate_sigmas=0.0))) > 1
+        split += len(fuse_observations(views, KITTI, replace(CONFIG, gate_sigmas=0.0))) > 1
     assert split >= 6
 
 
@@ -94,7 +98,7 @@ def test_two_near_signs_on_one_pole_08_m_apart_stay_two(camera, offset):
     lower = np.array([40.0, 4.0, 2.2])
     upper = lower + offset
     views = seen_between(camera, lower, 5.0, 14.0, 2.2, rng) + seen_between(camera, upper, 5.0, 14.0, 2.2, rng)
-    signs = fuse_observations(views, camera)
+    signs = fuse_observations(views, camera, CONFIG)
     assert sorted(s.n_obs for s in signs) == [4, 4]
     found = sorted(signs, key=lambda s: float(s.position @ np.asarray(offset)))
     assert np.linalg.norm(found[0].position - lower) < 0.15 and np.linalg.norm(found[1].position - upper) < 0.15
@@ -107,7 +111,7 @@ def test_the_precision_weighted_position_beats_the_plain_mean():
     weighted, plain = [], []
     for _ in range(200):
         views = [view(KITTI, truth, k, 1.0, rng) for k in (32, 40, 48, 54)]
-        (sign,) = fuse_observations(views, KITTI)
+        (sign,) = fuse_observations(views, KITTI, CONFIG)
         weighted.append(np.linalg.norm(sign.position - truth))
         plain.append(np.linalg.norm(np.mean([o.position for o in views], axis=0) - truth))
     rms_weighted, rms_plain = np.sqrt(np.mean(np.square(weighted))), np.sqrt(np.mean(np.square(plain)))
@@ -123,7 +127,7 @@ def test_reported_sigmas_match_the_errors_of_many_simulated_signs():
         truth = np.array([100.0, rng.uniform(-8.0, 8.0), rng.uniform(1.5, 5.0)])
         last = pairs_between(truth, rng.uniform(5.0, 25.0), 40.0, 1.1)[-1]  # the nearest view, 5-25 m away
         views = [view(KITTI, truth, k, 1.1, rng) for k in range(last - int(rng.integers(0, 6)), last + 1)]
-        (sign,) = fuse_observations(views, KITTI)
+        (sign,) = fuse_observations(views, KITTI, CONFIG)
         a, c = components(sign, truth)
         along.append(a / sign.sigma_along_m)
         across.append(c / sign.sigma_across_m)
@@ -135,7 +139,7 @@ def test_reported_sigmas_match_the_errors_of_many_simulated_signs():
 def test_a_sign_seen_once_reports_its_views_precision_not_zero():
     rng = np.random.default_rng(1)
     truth = np.array([60.0, 4.0, 2.2])
-    (sign,) = fuse_observations([view(KITTI, truth, 35, 1.0, rng, exact=True)], KITTI)  # 25 m ahead
+    (sign,) = fuse_observations([view(KITTI, truth, 35, 1.0, rng, exact=True)], KITTI, CONFIG)  # 25 m ahead
     precision = StereoPrecision.of(KITTI, CONFIG)
     along, across = precision.sigmas(25.0, float(np.linalg.norm(truth - sign.best.camera_centre)))
     assert sign.sigma_along_m == pytest.approx(np.hypot(along, CONFIG.pose_sigma_m), rel=0.02)
@@ -149,10 +153,10 @@ def test_views_that_scatter_more_than_their_precision_widen_the_sigma():
     rng = np.random.default_rng(2)
     truth = np.array([40.0, 4.0, 2.2])
     views = seen_between(FULL_HD, truth, 5.0, 14.0, 2.2, rng, exact=True)
-    (exact,) = fuse_observations(views, FULL_HD)
+    (exact,) = fuse_observations(views, FULL_HD, CONFIG)
     for o in views:
         o.detection.position = o.position + rng.normal(0.0, 0.10, 3)
-    (scattered,) = fuse_observations(views, FULL_HD)
+    (scattered,) = fuse_observations(views, FULL_HD, CONFIG)
     assert scattered.n_obs == 4 and scattered.sigma_m > 2.5 * exact.sigma_m
     assert np.linalg.norm(scattered.position - truth) < 3.0 * scattered.sigma_m
 
@@ -162,10 +166,10 @@ def test_fusion_does_not_depend_on_the_order_of_the_observations():
     views = []
     for truth in ([40.0, 4.0, 2.2], [40.0, 4.0, 3.0], [70.0, -5.0, 2.5], [90.0, 4.0, 2.2]):
         views += seen_between(KITTI, np.array(truth), 5.0, 28.0, 1.1, rng)
-    first = fuse_observations(views, KITTI)
+    first = fuse_observations(views, KITTI, CONFIG)
     shuffled = list(views)
     np.random.default_rng(0).shuffle(shuffled)
-    second = fuse_observations(shuffled, KITTI)
+    second = fuse_observations(shuffled, KITTI, CONFIG)
     assert [(s.n_obs, s.template_id) for s in first] == [(s.n_obs, s.template_id) for s in second]
     for a, b in zip(first, second):
         assert np.allclose(a.position, b.position, atol=1e-9)
