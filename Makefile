@@ -48,7 +48,7 @@ help:
 	@echo "make deploy    link this checkout into the default QGIS profile"
 	@echo "make catalogue SVG=DIR  rebuild templates/ch from the official drawings in DIR (deterministic)"
 	@echo "make train-classifier  retrain templates/ch/classifier (own venv with PyTorch; ~1 h on 2 cores)"
-	@echo "make calibrate-classifier REAL_DATA=DIR  fit its indicator on the tune half of real photographs"
+	@echo "make calibrate-classifier REAL_DATA=DIR [CALIBRATE_ARGS=--source gtsdb]  fit its indicator on the tune half of real photographs"
 	@echo "make import-model rebuild models/import_and_map_signs.model3 from the registered algorithms"
 	@echo "make kitti-drive KITTI_REPO=GIT_DIR  KITTI drive 0001 into the cache tests/core/test_kitti_drive.py maps"
 
@@ -149,9 +149,11 @@ TRAIN_ARGS ?= --design-variants
 train-classifier: apt $(TRAIN_VENV)/.installed
 	PYTHONPATH= $(TRAIN_PY) -m training.train --catalogue templates/ch --threads 2 --workers 2 $(TRAIN_ARGS)
 
-# temperature and acceptance threshold fitted on the tune half of the real photographs (scripts/realset)
+# temperature and acceptance threshold fitted on the tune half of the real photographs (scripts/realset);
+# CALIBRATE_ARGS="--source gtsdb" fits on the GTSDB tune scenes instead of the GTSRB tune crops
+CALIBRATE_ARGS ?=
 calibrate-classifier: venv
-	$(PY) -m scripts.calibrate_classifier --data $(REAL_DATA)
+	$(PY) -m scripts.calibrate_classifier --data $(REAL_DATA) $(CALIBRATE_ARGS)
 
 catalogue-sheet: venv
 	$(PY) -m signmapper_core.catalogue.sheet docs/catalogue-sheet.png
