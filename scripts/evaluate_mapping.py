@@ -98,6 +98,16 @@ def depth_settings(near, far) -> DepthConfig:
     return DepthConfig(**fixed, range_from_camera=not fixed)
 
 
+def add_depth_range_arguments(parser) -> None:
+    """``--near`` and ``--far``, read by :func:`depth_settings`."""
+    parser.add_argument("--near", type=float, default=None,
+                        help=f"nearest depth searched [m] (default: {DepthConfig.near_m:g}, and the camera's reach "
+                        "beyond far)")
+    parser.add_argument("--far", type=float, default=None,
+                        help=f"farthest depth searched [m] (default: {DepthConfig.far_m:g}); either fixes the range, "
+                        "without reach")
+
+
 def drive_folder(*args, **kwargs) -> Path:
     """The folder of :func:`drive_config`'s drive, which must have been generated."""
     out, _config = drive_config(*args, **kwargs)
@@ -228,12 +238,7 @@ def main(argv=None) -> int:
                         help="generated drives: share of sign poles whose lowest sign carries a plate (default: the "
                              "generator's)")
     parser.add_argument("--radius", type=float, default=0.75, help="matching radius in metres")
-    parser.add_argument("--near", type=float, default=None,
-                        help=f"nearest depth searched [m] (default: {DepthConfig.near_m:g}, and the camera's reach "
-                        "beyond far)")
-    parser.add_argument("--far", type=float, default=None,
-                        help=f"farthest depth searched [m] (default: {DepthConfig.far_m:g}); either fixes the range, "
-                        "without reach")
+    add_depth_range_arguments(parser)
     parser.add_argument("--catalogue", type=Path, default=None)
     parser.add_argument("--classifier", default="auto", help="auto, cnn or ncc")
     parser.add_argument("--workers", type=int, default=0, help="worker processes (0 = all cores)")

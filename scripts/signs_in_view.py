@@ -18,7 +18,7 @@ import sys
 from collections import Counter
 from pathlib import Path
 
-from scripts.evaluate_mapping import depth_settings, drive_folder, generated_drive
+from scripts.evaluate_mapping import add_depth_range_arguments, depth_settings, drive_folder, generated_drive
 from signmapper_core.catalogue import load_catalogue
 from signmapper_core.drive.reader import open_drive
 from signmapper_core.evaluation.families import GROUP_TITLES, GROUPS, catalogue_colour, sign_group
@@ -67,12 +67,7 @@ def main(argv=None) -> int:
     how = parser.add_mutually_exclusive_group()
     how.add_argument("--plan", action="store_true", help="count from the layout, write nothing")
     how.add_argument("--generate", action="store_true", help="write the synthetic drives not there yet")
-    parser.add_argument("--near", type=float, default=None,
-                        help=f"nearest depth searched [m] (default: {DepthConfig.near_m:g}, and the camera's reach "
-                        "beyond far)")
-    parser.add_argument("--far", type=float, default=None,
-                        help=f"farthest depth searched [m] (default: {DepthConfig.far_m:g}); either fixes the range, "
-                        "without reach")
+    add_depth_range_arguments(parser)
     args = parser.parse_args(argv)
     if not args.drives and not args.seeds:
         parser.error("give drive folders or --seeds")
