@@ -54,6 +54,12 @@ def contents(path: Path) -> dict:
     return {"layers": layers, "styles": styles, "run": run}
 
 
+def finished(path: Path) -> tuple:
+    """What every complete mapsigns output of one drive shares: its layers' counts, styles and run settings."""
+    found = contents(path)
+    return found["layers"], found["styles"], {k: v for k, v in found["run"].items() if k != "run_id"}
+
+
 @pytest.fixture
 def project(run, tmp_path) -> Path:
     """keep.gpkg: a mapsigns output (layers, styles, run table) with the user's own layer 'roads' added."""
@@ -173,6 +179,7 @@ def test_kills_at_random_moments_never_damage_the_earlier_output(cli_env, run, s
     out = tmp_path / "signs.gpkg"
     run("signmapper:mapsigns", {"DRIVE": str(small_drive), "OUTPUT": str(out), "CROPS": True})
     before, crops = digest(out), sorted(p.name for p in (tmp_path / "signs_crops").iterdir())
+    finished_before = finished(out)
     moments = random.Random(46).sample(range(1, 60), 4)  # tenths of the run: starting, mapping, writing
     started = time.monotonic()
     probe = subprocess.run([QGIS_PROCESS, "run", "signmapper:mapsigns", "--", f"DRIVE={small_drive}",
@@ -192,6 +199,9 @@ def test_kills_at_random_moments_never_damage_the_earlier_output(cli_env, run, s
         victim.wait()
         if victim.returncode == 0:  # it finished first: its own complete output
             before, crops = digest(out), sorted(p.name for p in (tmp_path / "signs_crops").iterdir())
+        elif digest(out) != before:  # killed after putting its output in place: complete, as the earlier one
+            assert finished(out) == finished_before
+            before = digest(out)
         assert digest(out) == before and QgsVectorLayer(f"{out}|layername=signs", "s", "ogr").featureCount() >= 2
         assert sorted(p.name for p in (tmp_path / "signs_crops").iterdir()) == crops
         left_behind |= {p.name for p in tmp_path.iterdir() if p.name.startswith(".")}
