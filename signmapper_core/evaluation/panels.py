@@ -15,7 +15,7 @@ from typing import Optional, Sequence
 from ..catalogue.text_panels import is_text_panel
 from ..pipeline.config import DepthConfig
 from .accuracy import share_text
-from .visibility import DEFAULT_RANGE, largest_view_px
+from .visibility import DEFAULT_RANGE, largest_view_px, pair_ranges
 
 MIN_LINE_PX = 20.0  # a line of a panel's lettering fills about half its line's height: ~10 px letters
 
@@ -47,12 +47,13 @@ def evaluate_panels(drive, signs: Sequence, reference: Sequence, match: Sequence
     """Text panel figures of one run. ``signs``: the fused signs (no plates) in the order of ``match``, the
     index of each one's reference sign in ``reference`` or -1 (``EvaluationReport.match``)."""
     figures = PanelFigures()
+    ranges = pair_ranges(drive, depth)
     for k, ref in enumerate(reference):
         if not is_text_panel(ref.template_id):
             continue
         figures.reference += 1
         lines = max(1, len((ref.text or "").split(" / ")))
-        largest_px = largest_view_px(drive, ref, depth)
+        largest_px = largest_view_px(drive, ref, ranges)
         readable = largest_px / lines >= min_line_px
         figures.readable += readable
         found = [s for s, m in zip(signs, match) if m == k]

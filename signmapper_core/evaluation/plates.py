@@ -23,7 +23,7 @@ import numpy as np
 from ..catalogue.plates_ch import kind_of
 from ..pipeline.config import DepthConfig
 from .accuracy import match_to_reference, share_text
-from .visibility import DEFAULT_RANGE, largest_view_px, mappable_signs
+from .visibility import DEFAULT_RANGE, largest_view_px, mappable_signs, pair_ranges
 
 MIN_TEXT_PX = 40.0
 KINDS = ("text", "layout", "pictogram")  # catalogue.plates_ch's kinds, in the order reported
@@ -93,11 +93,12 @@ def evaluate_plates(drive, signs, sign_reference, sign_match, depth: DepthConfig
     match = match_to_reference(np.array([p.position for p in mapped]).reshape(-1, 3),
                                np.array([r.position for r in reference]).reshape(-1, 3), radius_m)
     figures.false_positives = int((match < 0).sum())
+    ranges = pair_ranges(drive, depth)
     for k, ref in enumerate(reference):
         kind = kind_of(ref.template_id)
         setattr(figures, kind, getattr(figures, kind) + 1)
         found = [mapped[i] for i in np.flatnonzero(match == k)]
-        largest_px = largest_view_px(drive, ref, depth)
+        largest_px = largest_view_px(drive, ref, ranges)
         readable = largest_px >= min_text_px and kind != "pictogram"
         figures.readable += readable
         if not found:

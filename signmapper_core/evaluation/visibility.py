@@ -73,10 +73,11 @@ def mappable_signs(drive, depth: DepthConfig = DEFAULT_RANGE, plates: bool = Fal
     ]
 
 
-def largest_view_px(drive, sign, depth: DepthConfig = DEFAULT_RANGE) -> float:
-    """Height in pixels of ``sign``'s face in the pair that sees it largest within the depth range (0 if none)."""
+def largest_view_px(drive, sign, ranges: list) -> float:
+    """Height in pixels of ``sign``'s face in the pair that sees it largest within its search range (0 if none);
+    ``ranges``: :func:`pair_ranges` of the drive, computed once for all its signs."""
     best = 0.0
-    for rec, pair_range in zip(drive.pairs, pair_ranges(drive, depth)):
+    for rec, pair_range in zip(drive.pairs, ranges):
         if visible_in_pair(drive.camera, rec.pose, sign, pair_range):
             z = world_to_pixel(drive.camera, rec.pose, sign.position)[2]
             best = max(best, drive.camera.fy * sign.height_m / z)
