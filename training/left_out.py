@@ -12,6 +12,7 @@ import numpy as np
 from signmapper_core.catalogue.text_panels import is_text_panel
 
 LEFT_OUT_SHARE = 0.1
+IDS_FILE = "left_out.txt"  # the ids left out, one a line: what evaluate_mapping's --ids @FILE reads
 
 
 REPORT_SEED = 4401  # the measured split (docs/measurements.md)
@@ -30,7 +31,8 @@ def left_out_ids(catalogue_ids, seed: int, share: float = LEFT_OUT_SHARE, beside
 
 def catalogue_without(source, target, ids) -> list:
     """Write catalogue folder ``target``: ``source``'s catalogue without the entries ``ids`` (images linked, no
-    classifier). Returns the ids left out. The open-set run maps with it and a network trained on it."""
+    classifier) and the ids in its :data:`IDS_FILE`. Returns the ids left out. The open-set run maps with it and
+    a network trained on it."""
     import json
     from pathlib import Path
 
@@ -48,6 +50,7 @@ def catalogue_without(source, target, ids) -> list:
         if not link.exists():
             link.symlink_to((source / folder).resolve())
     (target / "catalogue.json").write_text(json.dumps(data, ensure_ascii=False, indent=1) + "\n", encoding="utf-8")
+    (target / IDS_FILE).write_text("".join(f"{t}\n" for t in sorted(ids)), encoding="utf-8")
     return sorted(ids)
 
 
