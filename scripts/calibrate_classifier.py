@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -38,6 +39,13 @@ SOURCES = {
     "gtsdb": ("scenes.csv", "real photographs (GTSDB sign boxes of the tune scenes), tune half of "
                             "scripts/realset manifests, split by scene; never trained on"),
 }
+
+
+def model_catalogue(model: Path | None) -> Path | None:
+    """The catalogue folder a model folder sits in (``<catalogue>/classifier``), or None (the bundled one)."""
+    if model is not None and (Path(model).resolve().parent / "catalogue.json").is_file():
+        return Path(model).resolve().parent
+    return None
 
 
 def calibration_signs(data: Path, source: str, split: str, known_ids, catalogue, limit: int = 0):
@@ -104,6 +112,9 @@ def main(argv=None) -> int:
     parser.add_argument("--split", default="tune", choices=("tune",), help="only the tune half may be fitted on")
     parser.add_argument("--limit", type=int, default=0,
                         help="only the first N signs, to try the code path (needs --dry-run)")
+    parser.add_argument("--catalogue", type=Path, default=None,
+                        help="catalogue folder the network reads for (default: the one holding --model, else the "
+                             "bundled one): a sign's candidates are its entries of the same colour and shape")
     parser.add_argument("--model", type=Path, default=None, help="model folder (default: the catalogue's)")
     parser.add_argument("--max-wrong", type=float, default=0.015, help="wrong share allowed among accepted signs")
     parser.add_argument("--unknown-percentile", type=float, default=2.0,
@@ -112,12 +123,16 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     if args.limit and not args.dry_run:
         parser.error("--limit calibrates on a few signs only: use it with --dry-run")
-    catalogue = load_catalogue()
+    catalogue = load_catalogue(args.catalogue or model_catalogue(args.model))
     card_path = (args.model / "model.json") if args.model else model_card_path(catalogue.folder)
     classifier = LearnedClassifier(load_model_card(card_path))
     signs = calibration_signs(args.data, args.source, args.split, set(classifier.card.classes), catalogue,
                               args.limit)
     manifest = args.data / SOURCES[args.source][0]
+    if not signs:
+        print(f"{manifest}: no {args.split} signs of an id that catalogue {catalogue.folder} and the network "
+              f"{card_path} both know", file=sys.stderr)
+        return 1
     rows = candidate_logits(classifier, catalogue, signs)
     before = classifier.card.temperature
     temperature = fit_temperature(rows)
