@@ -2,6 +2,7 @@
 
     python -m scripts.evaluate_real_photos classify --data DIR [--split report] [--limit N] [--seed 0] [--read-digits]
     python -m scripts.evaluate_real_photos detect --data DIR [--split report] [--limit N] [--seed 0]
+    python -m scripts.evaluate_real_photos open-set --catalogue DIR --data DIR [--split tune]
 
 ``DIR`` holds crops.csv, scenes.csv, scenes_images.csv and the photographs (see
 scripts/realset/README.md); default: $SIGNMAPPER_REAL_DATA, else the committed subset
@@ -16,6 +17,10 @@ colour segments of all passes, split faces merged, Hough circles for weak rims -
 candidate templates with their face boxes, as in ``evaluate_segment`` before sizing). A sign's
 face is found when a segment's face box has IoU >= 0.5 with the truth box and the true id is among
 that reading's candidates; a segment is on the sign when IoU >= 0.3 or its centre lies in the box.
+
+open-set: the signs of ids a catalogue lacks (``training.left_out``), read by the network trained for it among
+its entries of the sign's colour and shape: how many come out as unknown (the open set's limit), as no sign, in
+review or accepted with another id.
 
 Every table is split by group (``same``: the Swiss pictogram; ``differs``: same meaning, other
 drawing) and by the sign's size in the photograph (longer side < 30 px, >= 30 px).
@@ -195,6 +200,61 @@ def run_classify(args, catalogue, config: PipelineConfig) -> int:
     return 0
 
 
+OPEN_SET_OUTCOMES = ("unknown", "no sign", "review as another id", "accepted as another id", "no candidate")
+
+
+def open_set_outcome(result, clf, config: PipelineConfig) -> str:
+    """How a face of an id the network never saw comes out of its reading, as the pipeline judges a reading
+    (``detect.matches_no_entry``, then the indicator's floors): mapped as unknown, not reported (no sign, or below
+    the floor), in review or accepted with another id; no candidate: the network knows none of its colour and
+    shape (the pipeline then asks template matching)."""
+    from signmapper_core.pipeline.classifiers import accept_threshold, min_score
+    from signmapper_core.pipeline.detect import matches_no_entry
+
+    if result.template_id is None:
+        return "no candidate"
+    if matches_no_entry(result, clf, config):
+        return "unknown"
+    if result.score < min_score(clf, config):
+        return "no sign"
+    return "accepted as another id" if result.score >= accept_threshold(clf, config) else "review as another id"
+
+
+def run_open_set(args, catalogue, config: PipelineConfig) -> int:
+    """The signs of ids ``--catalogue`` lacks (a network trained without them, ``training.left_out``), read by its
+    network among its entries of the sign's true colour and shape (the bundled catalogue's entry gives them)."""
+    from signmapper_core.pipeline.classifiers import LearnedClassifier, load_model_card, model_card_path
+
+    bundled = load_catalogue()
+    model = args.model or model_card_path(catalogue.folder).parent
+    clf = LearnedClassifier(load_model_card(Path(model) / "model.json"))
+    signs = select([s for s in load_manifest(args.data / args.manifest, known_ids={e.id for e in bundled})
+                    if s.ssv_id not in catalogue], args.split, args.limit, args.seed)
+    records = []
+    for sign in signs:
+        entry = bundled[sign.ssv_id]
+        candidates = [e.id for e in catalogue.filter(colours=[entry.colour], shapes=[entry.shape])]
+        result = clf.classify(sign.load_image(), sign.bbox, candidates)
+        records.append({"sign": sign, "outcome": open_set_outcome(result, clf, config), "id": result.template_id})
+    print(f"open set ({clf.name} {model}, catalogue {catalogue.folder}) on {args.data / args.manifest}: "
+          f"split={args.split}, {len(records)} signs of ids the catalogue lacks; perfect box")
+
+    def columns(sel):
+        return [pct(sum(r["outcome"] == o for r in sel), len(sel)) for o in OPEN_SET_OUTCOMES]
+
+    breakdowns(records, columns, OPEN_SET_OUTCOMES, "Open set")
+    by_id = defaultdict(list)
+    for r in records:
+        by_id[r["sign"].ssv_id].append(r)
+    rows = [[sid, by_id[sid][0]["sign"].group, len(by_id[sid])] + columns(by_id[sid])
+            + [", ".join(f"{k} {v}" for k, v in Counter(r["id"] for r in by_id[sid] if r["outcome"] in
+                                                         OPEN_SET_OUTCOMES[2:4]).most_common(3)) or "-"]
+            for sid in sorted(by_id, key=lambda s: (by_id[s][0]["sign"].group, s))]
+    print_table("Open set per SSV id (read as: most frequent other ids)",
+                ["ssv_id", "group", "n"] + list(OPEN_SET_OUTCOMES) + ["read as"], rows)
+    return 0
+
+
 def _centre_in(a, b) -> bool:
     cx, cy = a[0] + a[2] / 2.0, a[1] + a[3] / 2.0
     return b[0] <= cx < b[0] + b[2] and b[1] <= cy < b[1] + b[3]
@@ -282,7 +342,7 @@ def run_detect(args, catalogue, config: PipelineConfig) -> int:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("mode", choices=("classify", "detect"))
+    parser.add_argument("mode", choices=("classify", "detect", "open-set"))
     parser.add_argument("--data", type=Path, default=None,
                         help="folder with the manifests (default $SIGNMAPPER_REAL_DATA or tests/data/real-signs)")
     parser.add_argument("--split", choices=("tune", "report", "all"), default="tune")
@@ -293,6 +353,9 @@ def main(argv=None) -> int:
                         help="classify: the signs to classify (crops.csv: GTSRB crops; scenes.csv: the signs of the "
                              "GTSDB photographs, split by photograph)")
     parser.add_argument("--model", type=Path, default=None, help="evaluate the network in this model folder instead")
+    parser.add_argument("--catalogue", type=Path, default=None,
+                        help="open-set: the catalogue the network was trained for (training.left_out writes one); "
+                             "its network is its classifier folder unless --model names another")
     parser.add_argument("--read-digits", action="store_true",
                         help="classify: the mapping's digits check on accepted speed-limit readings (Tesseract): a "
                              "reading whose digits say another speed limit's number no longer counts as accepted")
@@ -300,9 +363,11 @@ def main(argv=None) -> int:
     args.data = (args.data or default_data()).resolve()
     if not (args.data / "crops.csv").is_file():
         raise SystemExit(f"{args.data}: no crops.csv; pass --data or set SIGNMAPPER_REAL_DATA")
-    catalogue = load_catalogue()
+    if args.mode == "open-set" and args.catalogue is None:
+        parser.error("open-set needs --catalogue: the catalogue without the ids the network never saw")
+    catalogue = load_catalogue(args.catalogue)
     config = PipelineConfig()
-    run = run_classify if args.mode == "classify" else run_detect
+    run = {"classify": run_classify, "detect": run_detect, "open-set": run_open_set}[args.mode]
     return run(args, catalogue, config)
 
 

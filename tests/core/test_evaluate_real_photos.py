@@ -261,3 +261,48 @@ def test_smoke_on_the_committed_subset(catalogue, capsys):
     assert "split=report, 20 signs" in capsys.readouterr().out
     assert evaluate.main(["detect", "--data", str(folder), "--split", "report", "--limit", "5"]) == 0
     assert "5 images" in capsys.readouterr().out
+
+
+def test_open_set_outcomes_follow_the_pipelines_judgement():
+    """A reading of an id the network never saw: unknown below the open set's limit (unless the network calls it
+    no sign), then the indicator's floors, as ``detect`` judges it."""
+    from types import SimpleNamespace
+
+    from signmapper_core.pipeline import PipelineConfig
+    from signmapper_core.pipeline.classify import ClassificationResult
+
+    clf = SimpleNamespace(unknown_logit=5.0, accept_threshold=0.9, min_score=0.25)
+    config = PipelineConfig()
+    outcome = evaluate.open_set_outcome
+    assert outcome(ClassificationResult(None, 0.0), clf, config) == "no candidate"
+    assert outcome(ClassificationResult("2.30-60", 0.99, fit=4.0, background=0.1), clf, config) == "unknown"
+    assert outcome(ClassificationResult("2.30-60", 0.99, fit=4.0, background=0.8), clf, config) == \
+        "accepted as another id"
+    assert outcome(ClassificationResult("2.30-60", 0.7, fit=6.0), clf, config) == "review as another id"
+    assert outcome(ClassificationResult("2.30-60", 0.95, fit=6.0), clf, config) == "accepted as another id"
+    assert outcome(ClassificationResult("2.30-60", 0.01, fit=6.0), clf, config) == "no sign"
+
+
+def test_open_set_reads_the_signs_of_ids_the_catalogue_lacks_among_its_other_entries(tiny_set, catalogue, tmp_path,
+                                                                                     capsys):
+    """The shipped network with a catalogue lacking 3.02 and 2.30-50 (as ``training.left_out`` writes one): the
+    two crops of those ids are read, the 1.22 it keeps is not; 2.30-50 is never given its own id (not a
+    candidate); 3.02 has no other entry of its colour and shape."""
+    from signmapper_core.pipeline.classifiers import model_card_path
+    from training.left_out import catalogue_without
+
+    catalogue_without(catalogue.folder, tmp_path / "without", ["3.02", "2.30-50"])
+    model = model_card_path(catalogue.folder).parent
+    assert evaluate.main(["open-set", "--data", str(tiny_set), "--split", "all", "--catalogue",
+                          str(tmp_path / "without"), "--model", str(model)]) == 0
+    out = capsys.readouterr().out
+    assert "split=all, 2 signs of ids the catalogue lacks" in out
+    others = [e for e in catalogue.filter(colours=[catalogue["3.02"].colour], shapes=[catalogue["3.02"].shape])
+              if e.id != "3.02"]
+    row = _table_row(out, "Open set per SSV id", "3.02", "same")
+    assert row[2] == "1" and (row[7] == "100.0%") == (not others)
+    row = _table_row(out, "Open set per SSV id", "2.30-50", "same")
+    assert row[2] == "1" and row[7] == "0.0%" and "2.30-50" not in row[8:]
+    with pytest.raises(SystemExit) as stop:
+        evaluate.main(["open-set", "--data", str(tiny_set)])
+    assert stop.value.code == 2
