@@ -48,11 +48,13 @@ def model_catalogue(model: Path | None) -> Path | None:
     return None
 
 
-def calibration_signs(data: Path, source: str, split: str, known_ids, catalogue, limit: int = 0):
-    """The signs of ``source``'s manifest in ``split`` that the catalogue and the network know; the first
-    ``limit`` of them if given (to try the code path)."""
+def calibration_signs(data: Path, source: str, split: str, network_ids, catalogue, limit: int = 0):
+    """The signs of ``source``'s manifest in ``split`` that the catalogue and the network (``network_ids``) know;
+    the first ``limit`` of them if given (to try the code path). The manifest holds ids of the bundled catalogue,
+    also those an open-set network was trained without."""
     manifest = data / SOURCES[source][0]
-    signs = [s for s in load_manifest(manifest, known_ids=known_ids) if s.split == split and s.ssv_id in catalogue]
+    signs = [s for s in load_manifest(manifest, known_ids=set(load_catalogue().ids()))
+             if s.split == split and s.ssv_id in catalogue and s.ssv_id in network_ids]
     return signs[:limit] if limit else signs
 
 
