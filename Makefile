@@ -47,7 +47,7 @@ help:
 	@echo "make zip       dist/sign_mapper.zip, installable in QGIS"
 	@echo "make deploy    link this checkout into the default QGIS profile"
 	@echo "make catalogue SVG=DIR  rebuild templates/ch from the official drawings in DIR (deterministic)"
-	@echo "make train-classifier  retrain templates/ch/classifier (own venv with PyTorch; ~1 h on 2 cores)"
+	@echo "make train-classifier  retrain templates/ch/classifier (own venv with PyTorch; ~2.5 h on 2 cores)"
 	@echo "make calibrate-classifier REAL_DATA=DIR [CALIBRATE_ARGS=--source gtsdb]  fit its indicator on the tune half of real photographs"
 	@echo "make open-set [OPEN_SET_SEED=4401] how signs of ids the network never saw come out (~3 h; REAL_DATA=DIR)"
 	@echo "make import-model rebuild models/import_and_map_signs.model3 from the registered algorithms"
