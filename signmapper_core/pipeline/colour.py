@@ -32,7 +32,7 @@ from .boxes import box_iou, nonzero_box, touches_border
 from .bright_fields import bright_faces
 from .config import ColourConfig, HsvRange, PipelineConfig
 from .scene_colour import apply_gains, chroma_at_least, scene_colour
-from .shape import CROSS_OUTLINES, classify_shape, plausible_outlines
+from .shape import CROSS_OUTLINES, DOUBLE_CROSS_OUTLINES, classify_shape, plausible_outlines
 
 
 @dataclass
@@ -448,6 +448,37 @@ def merge_segments(a: Segment, b: Segment) -> Segment:
                    a.touches_border or b.touches_border, a.source, 1.0, pieces)
 
 
+def union_segment(a: Segment, b: Segment) -> Segment:
+    """One segment of two parts of one face whose outline is theirs together, not their hull: a double cross's
+    cross and the chevron beneath it, whose hull would lose the cross's outline."""
+    x0, y0 = min(a.bbox[0], b.bbox[0]), min(a.bbox[1], b.bbox[1])
+    x1 = max(a.bbox[0] + a.bbox[2], b.bbox[0] + b.bbox[2])
+    y1 = max(a.bbox[1] + a.bbox[3], b.bbox[1] + b.bbox[3])
+    mask = np.zeros((y1 - y0, x1 - x0), np.uint8)
+    for seg in (a, b):
+        sx, sy, sw, sh = seg.bbox
+        mask[sy - y0 : sy - y0 + sh, sx - x0 : sx - x0 + sw] |= seg.mask
+    points = np.vstack([a.contour.reshape(-1, 2), b.contour.reshape(-1, 2)])
+    area = int(np.count_nonzero(mask))
+    solidity = min(1.0, area / max(1.0, cv2.contourArea(cv2.convexHull(points))))
+    return Segment(a.colour, (x0, y0, x1 - x0, y1 - y0), mask, points, area, a.touches_border or b.touches_border,
+                   a.source, solidity)
+
+
+def double_cross(a: Segment, b: Segment, config) -> Optional[Segment]:
+    """The two parts of a double St Andrew's cross (3.23, 3.25) as one face, or None: one part above the other,
+    their columns overlapping by ``split_min_span_overlap``, a gap of at most ``merge_max_gap`` of their size,
+    and together an outline of a double cross (``shape.CROSS_OUTLINES``) fitting as well as a cross must."""
+    (ax, ay, aw, ah), (bx, by, bw, bh) = a.bbox, b.bbox
+    w, h = max(ax + aw, bx + bw) - min(ax, bx), max(ay + ah, by + bh) - min(ay, by)
+    if _span_overlap(ax, ax + aw, bx, bx + bw) < config.colour.split_min_span_overlap \
+            or box_gap(a.bbox, b.bbox) > config.colour.merge_max_gap * max(w, h):
+        return None
+    union = union_segment(a, b)
+    result = classify_shape(union.mask, CROSS_MIN_FIT, config.shape.compare_fill_window)
+    return union if result.shape in DOUBLE_CROSS_OUTLINES else None
+
+
 def is_piece(seg: Segment) -> bool:
     """Whether a segment may be a piece of a face: not a face's whole outline found as such (a white frame, the
     disc read from its half), nor a ring's white field: a bar or pole splits a ring, and two fields close to each
@@ -492,7 +523,7 @@ def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment
     offset along both axes, overlapping along each by ``split_min_diagonal_overlap``.
     The hull of both is kept when its outline fits an ideal shape (``min_shape_fit``)
     better, by ``split_min_gain``, than each piece does: the whole face is then judged
-    before its pieces.
+    before its pieces. A double cross's two parts are kept as they are, together (:func:`double_cross`).
     """
     min_fit, max_gap_fraction = config.shape.min_shape_fit, config.colour.merge_max_gap
     max_aspect = config.colour.merge_max_aspect
@@ -507,6 +538,10 @@ def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment
 
     out = []
     for i, a, j, b in _piece_pairs(segments):
+        crosses = double_cross(a, b, config)
+        if crosses is not None:
+            out.append((crosses, i, j))
+            continue
         (ax, ay, aw, ah), (bx, by, bw, bh) = a.bbox, b.bbox
         x0, y0 = min(ax, bx), min(ay, by)
         w, h = max(ax + aw, bx + bw) - x0, max(ay + ah, by + bh) - y0

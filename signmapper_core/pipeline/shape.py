@@ -48,6 +48,7 @@ CROSS_OUTLINES = {
     "cross-double": _CROSS_DOUBLE,
     "cross-double-upright": _CROSS_DOUBLE_UPRIGHT,
 }
+DOUBLE_CROSS_OUTLINES = ("cross-double", "cross-double-upright")  # two parts: found as two colour segments
 IDEAL_FILL = {"circle": np.pi / 4, "triangle": 0.5, "triangle-down": 0.5, "octagon": 2 / (1 + np.sqrt(2)),
               "diamond": 0.5, "rectangle": 1.0, "cross": 0.5, "cross-upright": 0.5, "cross-double": 0.54,
               "cross-double-upright": 0.53}

@@ -70,6 +70,20 @@ def test_a_face_of_no_standard_size_is_mapped_in_review_where_its_reading_is_cle
     assert detect_pair(left, depth, None, CAMERA, POSE, catalogue, strict) == []
 
 
+@pytest.mark.parametrize("ahead", [6.0, 10.0])
+def test_a_double_cross_is_one_face_of_its_two_parts(catalogue, ahead):
+    """The cross and the chevron beneath it are two colour segments; their hull loses the cross's outline (read
+    as a board), and the cross alone was read as the single cross 3.22 and accepted."""
+    entry = catalogue["3.23"]
+    face = _size(entry, 1.0)
+    sign = _world(ahead, -1.0, 0.3)
+    left, depth, _ = sign_scene(catalogue, "3.23", face, sign, seed=2)
+    (det,) = detect_pair(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig(classification=NCC))
+    assert (det.template_id, det.shape, det.format) == ("3.23", "cross", "measured")
+    assert det.width_m == pytest.approx(face[0], rel=0.06) and det.height_m == pytest.approx(face[1], rel=0.06)
+    assert np.linalg.norm(det.position - sign) < 0.06
+
+
 def test_only_a_cross_keeps_its_outline_far_from_convex(catalogue):
     _, alpha = catalogue.render("3.22", 120)
     cross = (alpha > 127).astype(np.uint8) * 255
