@@ -22,6 +22,12 @@ def centre_inside(a, b) -> bool:
     return x <= cu < x + w and y <= cv < y + h
 
 
+def union_box(a, b) -> tuple:
+    """The smallest box (x, y, w, h) holding both boxes."""
+    x0, y0 = min(a[0], b[0]), min(a[1], b[1])
+    return x0, y0, max(a[0] + a[2], b[0] + b[2]) - x0, max(a[1] + a[3], b[1] + b[3]) - y0
+
+
 def box_iou(a, b) -> float:
     """Intersection over union of two boxes; 0.0 when they do not overlap."""
     inter = intersection_area(a, b)

@@ -28,7 +28,7 @@ from typing import Dict, Iterable, List, Optional, Sequence, Tuple
 import cv2
 import numpy as np
 
-from .boxes import box_iou, nonzero_box, touches_border
+from .boxes import box_iou, nonzero_box, touches_border, union_box
 from .bright_fields import bright_faces
 from .config import ColourConfig, HsvRange, PipelineConfig
 from .scene_colour import apply_gains, chroma_at_least, scene_colour
@@ -451,26 +451,23 @@ def merge_segments(a: Segment, b: Segment) -> Segment:
 def union_segment(a: Segment, b: Segment) -> Segment:
     """One segment of two parts of one face whose outline is theirs together, not their hull: a double cross's
     cross and the chevron beneath it, whose hull would lose the cross's outline."""
-    x0, y0 = min(a.bbox[0], b.bbox[0]), min(a.bbox[1], b.bbox[1])
-    x1 = max(a.bbox[0] + a.bbox[2], b.bbox[0] + b.bbox[2])
-    y1 = max(a.bbox[1] + a.bbox[3], b.bbox[1] + b.bbox[3])
-    mask = np.zeros((y1 - y0, x1 - x0), np.uint8)
+    x0, y0, w, h = union_box(a.bbox, b.bbox)
+    mask = np.zeros((h, w), np.uint8)
     for seg in (a, b):
         sx, sy, sw, sh = seg.bbox
         mask[sy - y0 : sy - y0 + sh, sx - x0 : sx - x0 + sw] |= seg.mask
     points = np.vstack([a.contour.reshape(-1, 2), b.contour.reshape(-1, 2)])
     area = int(np.count_nonzero(mask))
     solidity = min(1.0, area / max(1.0, cv2.contourArea(cv2.convexHull(points))))
-    return Segment(a.colour, (x0, y0, x1 - x0, y1 - y0), mask, points, area, a.touches_border or b.touches_border,
-                   a.source, solidity)
+    return Segment(a.colour, (x0, y0, w, h), mask, points, area, a.touches_border or b.touches_border, a.source,
+                   solidity)
 
 
 def double_cross(a: Segment, b: Segment, config) -> Optional[Segment]:
     """The two parts of a double St Andrew's cross (3.23, 3.25) as one face, or None: one part above the other,
     their columns overlapping by ``split_min_span_overlap``, a gap of at most ``merge_max_gap`` of their size,
     and together an outline of a double cross (``shape.CROSS_OUTLINES``) fitting as well as a cross must."""
-    (ax, ay, aw, ah), (bx, by, bw, bh) = a.bbox, b.bbox
-    w, h = max(ax + aw, bx + bw) - min(ax, bx), max(ay + ah, by + bh) - min(ay, by)
+    (ax, _, aw, _), (bx, _, bw, _), (_, _, w, h) = a.bbox, b.bbox, union_box(a.bbox, b.bbox)
     if _span_overlap(ax, ax + aw, bx, bx + bw) < config.colour.split_min_span_overlap \
             or box_gap(a.bbox, b.bbox) > config.colour.merge_max_gap * max(w, h):
         return None
@@ -498,10 +495,7 @@ def merge_candidates(segments: Sequence[Segment], max_gap_fraction: float, max_a
         for b in segments[i + 1 :]:
             if a.colour != b.colour or not (is_piece(a) and is_piece(b)):
                 continue
-            x0, y0 = min(a.bbox[0], b.bbox[0]), min(a.bbox[1], b.bbox[1])
-            x1 = max(a.bbox[0] + a.bbox[2], b.bbox[0] + b.bbox[2])
-            y1 = max(a.bbox[1] + a.bbox[3], b.bbox[1] + b.bbox[3])
-            w, h = x1 - x0, y1 - y0
+            _, _, w, h = union_box(a.bbox, b.bbox)
             if box_gap(a.bbox, b.bbox) > max_gap_fraction * max(w, h) or max(w, h) > max_aspect * min(w, h):
                 continue
             out.append(merge_segments(a, b))
@@ -542,9 +536,7 @@ def split_face_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment
         if crosses is not None:
             out.append((crosses, i, j))
             continue
-        (ax, ay, aw, ah), (bx, by, bw, bh) = a.bbox, b.bbox
-        x0, y0 = min(ax, bx), min(ay, by)
-        w, h = max(ax + aw, bx + bw) - x0, max(ay + ah, by + bh) - y0
+        (ax, ay, aw, ah), (bx, by, bw, bh), (_, _, w, h) = a.bbox, b.bbox, union_box(a.bbox, b.bbox)
         if box_gap(a.bbox, b.bbox) > max_gap_fraction * max(w, h) or max(w, h) > max_aspect * min(w, h):
             continue
         across = _span_overlap(ax, ax + aw, bx, bx + bw)  # of the columns: one above the other
@@ -581,11 +573,9 @@ def board_merges(segments: Sequence[Segment], config) -> List[Tuple[Segment, int
                                   config.colour.board_min_aspect)
     out = []
     for i, a, j, b in _piece_pairs(segments):
-        (ax, ay, aw, ah), (bx, by, bw, bh) = a.bbox, b.bbox
-        height = max(ay + ah, by + bh) - min(ay, by)
+        (ax, ay, aw, ah), (bx, by, bw, bh), (_, _, width, height) = a.bbox, b.bbox, union_box(a.bbox, b.bbox)
         level = abs(ay - by) <= align * height and abs(ay + ah - by - bh) <= align * height
         gap = max(ax, bx) - min(ax + aw, bx + bw)
-        width = max(ax + aw, bx + bw) - min(ax, bx)
         if level and 0 <= gap <= max_gap * height and width >= min_aspect * height:
             out.append((merge_segments(a, b), i, j))
     return out
