@@ -299,6 +299,7 @@ class ClassificationConfig:
     text_lines_max_column_ink: float = 0.8  # a column this full of "text" is a pole or post in front
     text_lines_row_share: float = 0.03  # a row with this share of text pixels is text (a gap between lines: none)
     text_lines_min_height: float = 0.08  # a line is a band of text rows at least this x the face's height
+    text_lines_min_band_share: float = 0.5  # ... and at least this x the highest band (umlauts above a line: none)
     same_sign_max_iou: float = 0.3  # detections of a pair overlapping more [IoU] are one sign: the best is kept...
     part_max_area_share: float = 0.7  # ...but one in an accepted face, at most this share of it, is its part
 

@@ -303,6 +303,10 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     of_best_fit = [r for r in readings if catalogue[r[2].template_id].shape in best_fit_shapes]
     of_outline = [r for r in of_best_fit if r[2].score >= accept]
     pool = good_panels or of_outline or of_best_fit or readings or panels
+    # a face is the open set's only where no reading matches an entry: a reading's score is a probability among
+    # its own candidates, so a reading of one candidate (a board grown by a rim it lacks, a pointer read off a
+    # rectangle) scores high whatever it shows, and must not hide a reading that matches its entry
+    pool = [r for r in pool if matches_its_entry(r[2], classifier, config)] or pool
     # near-ties (a confident network reads the face and its rimless part alike) go to the earliest reading: the
     # face as the colour extent implies it comes before the rims measured in the image
     top = max((r[2].score for r in pool), default=0.0)
@@ -354,6 +358,13 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         position=locate(camera, pose, u, v, z), source=seg.source, scores=cls.scores,
         normal_world=world_face_normal(camera, pose, planarity.plane), review_reason=reason,
     )
+
+
+def matches_its_entry(cls, classifier, config: PipelineConfig) -> bool:
+    """Whether a reading's best candidate has a logit as high as the network gives the signs it reads right (the
+    open set's limit, where its model card calibrates one): a match whatever the number of candidates."""
+    limit = getattr(classifier, "unknown_logit", None)
+    return config.classification.open_set and limit is not None and cls.fit >= limit
 
 
 def matches_no_entry(cls, classifier, config: PipelineConfig) -> bool:

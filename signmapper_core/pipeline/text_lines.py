@@ -1,8 +1,8 @@
 """Counting the lines of text on a direction sign's face, to type it within its group of line counts.
 
 The face's field is its most common colour; text (white on brown, blue or green, black on orange) is every
-pixel far from it. Rows holding text form one band per line; a band narrower than a share of the face's height
-is a stroke of the border or a speck, not a line.
+pixel far from it. Rows holding text form one band per line; a band narrower than a share of the face's height,
+or than half the highest band, is a stroke of the border, a speck or a line's accents, not a line.
 """
 
 from __future__ import annotations
@@ -42,7 +42,11 @@ def text_line_count(bgr: np.ndarray, bbox, config) -> Optional[int]:
     rows = ink.mean(axis=1) >= config.text_lines_row_share
     edges = np.flatnonzero(np.diff(np.concatenate(([0], rows.astype(np.int8), [0]))))
     bands = edges[1::2] - edges[0::2]
-    lines = int((bands >= config.text_lines_min_height * h).sum())
+    if bands.size == 0:
+        return None
+    # a line's band is as high as the others (one font a sign): a thinner one is accents or a descender's tail
+    least = max(config.text_lines_min_height * h, config.text_lines_min_band_share * bands.max())
+    lines = int((bands >= least).sum())
     return lines or None
 
 

@@ -106,6 +106,20 @@ def test_a_tourist_board_is_typed_by_its_lines_of_text(catalogue, template_id, a
     assert np.linalg.norm(dets[0].position - sign) < 0.06
 
 
+@pytest.mark.parametrize("template_id", ["0.1-1.1", "4.31-2"])
+@pytest.mark.parametrize("ahead", [6.0, 9.0, 12.0])
+def test_a_reading_of_one_candidate_does_not_hide_the_reading_that_matches(catalogue, template_id, ahead):
+    """A rectangular tourist board is also read as the pointer 0.1 (alone in its group: 0.99 whatever the face
+    shows, its logit below the open set's limit) and was mapped as `unknown`; a reading that matches its entry
+    comes first (the shipped network reads here, as on a drive)."""
+    entry = catalogue[template_id]
+    sign = _world(ahead, -1.0, 0.3)
+    left, depth, _ = sign_scene(catalogue, template_id, _size(entry, 1.2), sign, seed=2)
+    dets = detect_pair(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig())
+    assert [(d.template_id, d.status) for d in dets] == [(template_id, "accepted")]
+    assert np.linalg.norm(dets[0].position - sign) < 0.06
+
+
 def test_a_brown_board_segmented_as_red_is_offered_its_brown_entries(catalogue):
     """Tourist brown lies inside red's thresholds (dark red): the colour cut must not decide between them."""
     config = PipelineConfig()

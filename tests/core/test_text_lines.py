@@ -52,3 +52,13 @@ def test_a_reading_in_a_group_takes_the_member_with_the_counted_lines(catalogue)
     assert typed_by_lines("2.01", face, box, catalogue, CONFIG) == "2.01"  # in no group: as read
     blank = np.full_like(face, (30, 60, 120))  # no text at all: nothing counted, the reading stays
     assert typed_by_lines("4.34", blank, box, catalogue, CONFIG) == "4.34"
+
+
+def test_accents_above_a_line_are_no_line_of_their_own():
+    """'Zürich' over 'Basel' on a board 21 px high: the umlauts are a band two rows high, one row above their
+    line; counted as a line they typed a two-line motorway pointer as its three-line sibling."""
+    face = np.full((21, 80, 3), (60, 120, 0), np.uint8)  # a green field
+    face[4:6, 21:23] = face[4:6, 29:31] = 255  # the dots
+    face[7:12, 16:64:3] = 255  # the first line's strokes
+    face[14:19, 16:58:3] = 255  # the second's
+    assert text_line_count(face, (0, 0, 80, 21), CONFIG) == 2
