@@ -293,9 +293,14 @@ class ClassificationConfig:
     unknown_min_print: float = 0.01  # ...and only with this share of edge pixels inside: a plain patch is no sign
     unknown_print_inset: float = 0.1  # that inside: the segment without this share of each side
     unknown_print_canny: Tuple[int, int] = (50, 150)  # Canny thresholds of those edges [grey levels]
+    # a face sized as measured (a board, a pointer, a sign off its formats) shows print as an unknown face must
+    # (unknown_min_print) inside its segment without this share of each side: a car's tail light is a plain patch
+    measured_print_inset: float = 0.2
     text_lines_min_px: int = 18  # direction signs are told by their lines of text on faces this high [px]
     text_lines_inset: Tuple[float, float] = (0.2, 0.06)  # (width, height) share cut off each side: border, a tip
     text_lines_contrast: float = 60.0  # text is this far from the field's colour [Lab distance]
+    text_lines_field_window: float = 0.25  # the field's colour: the median over a window this x the face's height...
+    text_lines_local_field_px: int = 40  # ...on faces this high [px]; on lower ones, the median of the whole face
     text_lines_max_column_ink: float = 0.8  # a column this full of "text" is a pole or post in front
     text_lines_row_share: float = 0.03  # a row with this share of text pixels is text (a gap between lines: none)
     text_lines_min_height: float = 0.08  # a line is a band of text rows at least this x the face's height

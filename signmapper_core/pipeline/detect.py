@@ -305,8 +305,10 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     pool = good_panels or of_outline or of_best_fit or readings or panels
     # a face is the open set's only where no reading matches an entry: a reading's score is a probability among
     # its own candidates, so a reading of one candidate (a board grown by a rim it lacks, a pointer read off a
-    # rectangle) scores high whatever it shows, and must not hide a reading that matches its entry
-    pool = [r for r in pool if matches_its_entry(r[2], classifier, config)] or pool
+    # rectangle) scores high whatever it shows, and must not hide a reading that matches its entry (clearly
+    # enough to be mapped: one that would not be must not turn the face from `unknown` into nothing)
+    pool = [r for r in pool if matches_its_entry(r[2], classifier, config) and
+            r[2].score >= min_score(classifier, config)] or pool
     # near-ties (a confident network reads the face and its rimless part alike) go to the earliest reading: the
     # face as the colour extent implies it comes before the rims measured in the image
     top = max((r[2].score for r in pool), default=0.0)
@@ -325,6 +327,9 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     if best is None or best[2].score < floor:
         return None
     match, face, cls = best
+    if match.format == MEASURED and not _carries_print(left, seg.bbox, config.classification,
+                                                       config.classification.measured_print_inset):
+        return None
     cls = replace(cls, template_id=typed_by_lines(cls.template_id, left, face, catalogue, config.classification))
     off_format = _off_format(match, catalogue[cls.template_id])
     if off_format and cls.score < accept:  # a size no standard sign has needs a clear reading
@@ -377,10 +382,12 @@ def matches_no_entry(cls, classifier, config: PipelineConfig) -> bool:
     return cls.fit < limit and cls.background < config.classification.unknown_max_background
 
 
-def _carries_print(left: np.ndarray, bbox, classification) -> bool:
-    """Whether the colour segment ``bbox`` shows print enough to be a sign no entry matches."""
+def _carries_print(left: np.ndarray, bbox, classification, inset: Optional[float] = None) -> bool:
+    """Whether the colour segment ``bbox`` shows print enough to be a sign no entry matches (inside ``inset`` of
+    each side, by default ``unknown_print_inset``)."""
     low, high = classification.unknown_print_canny
-    share = print_share(left, bbox, classification.unknown_print_inset, low, high)
+    inset = classification.unknown_print_inset if inset is None else inset
+    share = print_share(left, bbox, inset, low, high)
     return share >= classification.unknown_min_print
 
 
