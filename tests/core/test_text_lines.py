@@ -63,13 +63,3 @@ def test_accents_above_a_line_are_no_line_of_their_own():
     face[14:19, 16:58:3] = 255  # the second's
     assert text_line_count(face, (0, 0, 80, 21), CONFIG) == 2
 
-
-def test_a_shadow_across_a_board_is_no_text(catalogue):
-    """A shadow over the lower right of a place-name board (4.27-3, three lines) filled the gaps between its
-    lines with "text" rows, so it was counted and typed as 4.27-2."""
-    face = _drawing(catalogue, "4.27-3", 270)
-    h, w = face.shape[:2]
-    yy, xx = np.mgrid[0:h, 0:w]
-    shade = (xx / w + yy / h) > 0.9  # beyond a diagonal
-    face[shade] = (face[shade] * 0.45).astype(np.uint8)
-    assert text_line_count(face, (0, 0, w, h), CONFIG) == 3
