@@ -212,11 +212,15 @@ def classify_segment(
     return ClassificationResult(best_id, float(np.clip(fine[best_id][0], 0.0, 1.0)), scores)
 
 
-def surround_score(image: np.ndarray, face, catalogue, template_id: str, extent, grow: float) -> float:
+def surround_score(image: np.ndarray, face, catalogue, template_id: str, extent, grow: float,
+                   max_saturation: Optional[int] = None) -> float:
     """NCC of a template's face outside its coloured part, at the face box without search.
 
     Tells a zone panel (white field and text around the red ring) from a round
     sign on a wall: only the pixels outside the colour part, grown by ``grow`` of the face, count.
+    With ``max_saturation``, a surround the drawing has achromatic (its median saturation at most that) must be
+    so in the image too, else -1: the grey levels of a pale blue sky around a disc high on a pole match a zone
+    panel's white.
     """
     x, y, w, h = face
     height, width = image.shape[:2]
@@ -228,5 +232,12 @@ def surround_score(image: np.ndarray, face, catalogue, template_id: str, extent,
           max(0, int((fx0 - grow) * w)) : int(np.ceil((fx1 + grow) * w))] = 0
     if np.count_nonzero(alpha) < 16:
         return -1.0
-    score, _ = match_score(image[y : y + h, x : x + w], tmpl, alpha)
+    crop = image[y : y + h, x : x + w]
+    if max_saturation is not None:
+        around = alpha > 0
+        drawn = np.median(cv2.cvtColor(tmpl, cv2.COLOR_BGR2HSV)[..., 1][around])
+        seen = np.median(cv2.cvtColor(crop, cv2.COLOR_BGR2HSV)[..., 1][around])
+        if drawn <= max_saturation < seen:
+            return -1.0
+    score, _ = match_score(crop, tmpl, alpha)
     return score

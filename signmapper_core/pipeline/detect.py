@@ -287,8 +287,8 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
         board_part = (ext[2] - ext[0]) * (ext[3] - ext[1]) if match.format == MEASURED else 1.0
         if catalogue[cls.template_id].shape in same_shapes and board_part >= config.classification.min_face_part:
             readings.append((match, face, cls))  # the face is the segment (maybe with a rim)
-        elif surround_score(left, face, catalogue, cls.template_id, ext, config.classification.surround_grow) >= \
-                config.classification.min_surround_score:
+        elif surround_score(left, face, catalogue, cls.template_id, ext, config.classification.surround_grow,
+                            config.white.white_max_saturation) >= config.classification.min_surround_score:
             panels.append((match, face, cls))
         elif cls.template_id in zone_panels and inside_white_panel(left, depth, seg.bbox, size.depth_m, config):
             held_panels.append((match, face, cls))

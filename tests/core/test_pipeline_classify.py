@@ -244,3 +244,23 @@ def test_templates_rendered_on_several_threads_are_those_rendered_one_after_the_
     assert list(threaded) == list(serial)  # catalogue order
     for template_id, (bgr, alpha) in serial.items():
         assert np.array_equal(threaded[template_id][0], bgr) and np.array_equal(threaded[template_id][1], alpha)
+
+
+def test_a_pale_blue_sky_around_a_disc_is_no_zone_panel(catalogue):
+    """A no-parking disc (2.50) high on a pole against a pale blue sky, read from its blue field: by grey levels its
+    red ring and the sky matched the ring and white of the no-parking zone panel 2.59.1-NP around that field, and
+    the panel was accepted; the sky's colour tells it apart."""
+    from signmapper_core.pipeline.classify import surround_score
+
+    ring = colour_extent(catalogue, "2.59.1-NP", "red", DEFAULT_HSV_RANGES)
+    field = colour_extent(catalogue, "2.59.1-NP", "blue", DEFAULT_HSV_RANGES)
+    panel_bgr, panel_alpha = catalogue.render("2.59.1-NP", (60, 90))
+    panel = noisy_background(200, 200, seed=1)
+    paste(panel, panel_bgr, panel_alpha, 50, 40)
+    assert surround_score(panel, (50, 40, 60, 90), catalogue, "2.59.1-NP", field, GROW, 60) > 0.5
+    sky = np.zeros((200, 200, 3), np.uint8)
+    sky[:] = cv2.cvtColor(np.uint8([[[113, 73, 229]]]), cv2.COLOR_HSV2BGR)[0, 0]  # as measured on a drive
+    disc_bgr, disc_alpha = catalogue.render("2.50", (int((ring[2] - ring[0]) * 60), int((ring[3] - ring[1]) * 90)))
+    paste(sky, disc_bgr, disc_alpha, 50 + int(ring[0] * 60), 40 + int(ring[1] * 90))
+    assert surround_score(sky, (50, 40, 60, 90), catalogue, "2.59.1-NP", field, GROW) > 0.3  # grey levels alone
+    assert surround_score(sky, (50, 40, 60, 90), catalogue, "2.59.1-NP", field, GROW, 60) == -1.0
