@@ -24,6 +24,8 @@ from .config import TEMPLATE_GEOMETRY
 from .shape import IDEAL_POLYGONS, classify_shape
 
 FULL = (0.0, 0.0, 1.0, 1.0)
+# outlines of the panels a part of another colour is found in (a zone panel's disc, a white pointer's blue symbol)
+PANEL_SHAPES = ("rectangle", "square", "pointer")
 _cache: Dict[tuple, tuple] = {}
 Extent = Tuple[float, float, float, float]  # x0, y0, x1, y1 as fractions of the face box
 
@@ -190,7 +192,8 @@ def candidate_entries(catalogue, colour: str, shapes: Iterable[str], hsv_ranges,
 
     - entries of that colour and shape (extent as measured, FULL if not measurable);
     - entries of another allowed colour and that shape outlined by this colour;
-    - rectangular panels carrying an inset part of this colour and shape (zone signs).
+    - panels (rectangles, squares, pointers) carrying an inset part of this colour and shape (zone signs, a white
+      pointer's blue parking symbol).
 
     Kept per catalogue like the templates' parts it is read from: a pair asks for the same few
     (colour, shapes) readings again and again.
@@ -213,7 +216,7 @@ def _candidate_entries(catalogue, colour: str, shapes, hsv_ranges, allowed, excl
             continue
         elif extent == FULL and entry.shape in shapes:
             out.append((entry, extent))
-        elif entry.shape in ("rectangle", "square") and part_shape in shapes and _panel_part(extent):
+        elif entry.shape in PANEL_SHAPES and part_shape in shapes and _panel_part(extent):
             out.append((entry, extent))
         elif entry.shape in shapes and part_shape in shapes and reads_as(catalogue, entry, colour, hsv_ranges):
             out.append((entry, extent))  # its own colour reads as this one: the network tells them apart

@@ -120,6 +120,20 @@ def test_a_reading_of_one_candidate_does_not_hide_the_reading_that_matches(catal
     assert np.linalg.norm(dets[0].position - sign) < 0.06
 
 
+@pytest.mark.parametrize("template_id", ["4.46", "4.46.1"])
+@pytest.mark.parametrize("ahead", [6.0, 9.0])
+def test_a_white_pointer_is_found_by_its_blue_parking_symbol(catalogue, template_id, ahead):
+    """The blue square of a white parking pointer is a part of a panel, as a zone panel's disc is: read alone it
+    was mapped as `unknown` (0.21 m wide), the pointer around it not at all."""
+    entry = catalogue[template_id]
+    face = _size(entry, 1.2)
+    sign = _world(ahead, -1.0, 0.3)
+    left, depth, _ = sign_scene(catalogue, template_id, face, sign, seed=2)
+    dets = detect_pair(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig())
+    assert [(d.template_id, d.status) for d in dets] == [(template_id, "accepted")]
+    assert dets[0].width_m == pytest.approx(face[0], rel=0.05) and np.linalg.norm(dets[0].position - sign) < 0.03
+
+
 @pytest.mark.parametrize("ahead", [5.0, 7.0])
 def test_a_cars_tail_lights_are_no_boards(catalogue, ahead):
     """Plain red rectangles on a white car's back were read as the cycle-route table 4.50.6 (no standard size,
