@@ -120,6 +120,17 @@ def test_a_reading_of_one_candidate_does_not_hide_the_reading_that_matches(catal
     assert np.linalg.norm(dets[0].position - sign) < 0.06
 
 
+@pytest.mark.parametrize("face, ahead", [("small", 5.0), ("normal", 7.0), ("normal", 9.0)])
+def test_a_one_way_street_for_cyclists_is_not_read_as_its_upper_square(catalogue, face, ahead):
+    """4.08.1 is the one-way square 4.08 with a white lower part: the square read alone (0.997) and the face grown
+    by that part (1.00) tied, and the earlier reading, the square, was accepted, its lower part a plate."""
+    sign = _world(ahead, -1.0, 0.3)
+    left, depth, _ = sign_scene(catalogue, "4.08.1", face, sign, seed=2)
+    dets = detect_pair(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig())
+    assert [(d.template_id, d.status, d.format) for d in dets] == [("4.08.1", "accepted", face)]
+    assert np.linalg.norm(dets[0].position - sign) < 0.03
+
+
 @pytest.mark.parametrize("template_id", ["4.46", "4.46.1"])
 @pytest.mark.parametrize("ahead", [6.0, 9.0])
 def test_a_white_pointer_is_found_by_its_blue_parking_symbol(catalogue, template_id, ahead):
