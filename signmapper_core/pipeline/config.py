@@ -293,9 +293,7 @@ class ClassificationConfig:
     unknown_min_print: float = 0.01  # ...and only with this share of edge pixels inside: a plain patch is no sign
     unknown_print_inset: float = 0.1  # that inside: the segment without this share of each side
     unknown_print_canny: Tuple[int, int] = (50, 150)  # Canny thresholds of those edges [grey levels]
-    # a face sized as measured (a board, a pointer, a sign off its formats) shows print as an unknown face must
-    # (unknown_min_print) inside its segment without this share of each side: a car's tail light is a plain patch
-    measured_print_inset: float = 0.2
+    measured_print_inset: float = 0.2  # a face sized as measured shows such print this far inside (tail lights: none)
     text_lines_min_px: int = 18  # direction signs are told by their lines of text on faces this high [px]
     text_lines_inset: Tuple[float, float] = (0.2, 0.06)  # (width, height) share cut off each side: border, a tip
     text_lines_contrast: float = 60.0  # text is this far from the field's colour [Lab distance]
