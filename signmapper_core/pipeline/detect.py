@@ -370,19 +370,25 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     )
 
 
+def _open_set_limit(classifier, config: PipelineConfig) -> Optional[float]:
+    """The logit the network gives the signs it reads right (its model card's ``unknown_logit``), or None where the
+    open set is off or not calibrated."""
+    return getattr(classifier, "unknown_logit", None) if config.classification.open_set else None
+
+
 def matches_its_entry(cls, classifier, config: PipelineConfig) -> bool:
     """Whether a reading's best candidate has a logit as high as the network gives the signs it reads right (the
-    open set's limit, where its model card calibrates one): a match whatever the number of candidates."""
-    limit = getattr(classifier, "unknown_logit", None)
-    return config.classification.open_set and limit is not None and cls.fit >= limit
+    open set's limit): a match whatever the number of candidates."""
+    limit = _open_set_limit(classifier, config)
+    return limit is not None and cls.fit >= limit
 
 
 def matches_no_entry(cls, classifier, config: PipelineConfig) -> bool:
     """Whether a sign-like face's reading is the open set's: its network (where its model card calibrates this)
     gives none of its candidates a logit as high as it gives the signs it reads right, and does not call it no
     sign."""
-    limit = getattr(classifier, "unknown_logit", None)
-    if not config.classification.open_set or limit is None:
+    limit = _open_set_limit(classifier, config)
+    if limit is None:
         return False
     return cls.fit < limit and cls.background < config.classification.unknown_max_background
 

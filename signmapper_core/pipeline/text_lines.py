@@ -2,7 +2,7 @@
 
 The face's field is its most common colour; text (white on brown, blue or green, black on orange) is every
 pixel far from it. Rows holding text form one band per line; a band narrower than a share of the face's height,
-or than half the highest band, is a stroke of the border, a speck or a line's accents, not a line.
+or than a share of the highest band, is a stroke of the border, a speck or a line's accents, not a line.
 """
 
 from __future__ import annotations
