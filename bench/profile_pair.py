@@ -1,6 +1,6 @@
 """Where the time of mapping one pair goes: cProfile over ``mapping.map_pair`` (decoding included), one process.
 
-    python -m bench.profile_pair [--drive build/drives/seed2001-100-stereo] [--pairs 10] [--top 25]
+    python -m bench.profile_pair [--drive build/drives/seed2001-100-stereo] [--pairs 10] [--top 25] [--callees NAME]
 
 Profiles the first ``--pairs`` pairs of a drive (JPEG pairs, depth by SGBM) after
 one warm-up pair (classifier loaded, OpenCV initialised), with OpenCV on one
@@ -26,6 +26,8 @@ def main() -> int:
     parser.add_argument("--drive", type=Path, default=DRIVES / "seed2001-100-stereo")
     parser.add_argument("--pairs", type=int, default=10)
     parser.add_argument("--top", type=int, default=25)
+    parser.add_argument("--callees", metavar="NAME",
+                        help="also print what the functions of this name spend their time in (e.g. read_face)")
     args = parser.parse_args()
     import cv2
 
@@ -54,6 +56,9 @@ def main() -> int:
     for cumulative, own, calls, where in sorted(rows, reverse=True)[: args.top]:
         print(f"{cumulative * 1000 / len(records):22.1f} {own * 1000 / len(records):14.1f} "
               f"{calls / len(records):10.1f}  {where}")
+    if args.callees:
+        print(f"\nwithin {args.callees}:")
+        stats.print_callees(f":[0-9]+\\({args.callees}\\)")
     return 0
 
 

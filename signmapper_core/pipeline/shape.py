@@ -124,6 +124,18 @@ def mask_iou(a: np.ndarray, b: np.ndarray, counts: Optional[Tuple[int, int]] = N
     return float(inter) / union if union else 0.0
 
 
+def fill_ratio(mask: np.ndarray) -> float:
+    """Share of a mask's bounding box (the mask's own array) that it fills."""
+    height, width = mask.shape[:2]
+    return float(np.count_nonzero(mask)) / float(width * height) if width * height else 0.0
+
+
+def shapes_tried(fill: float, fill_window: float) -> Tuple[str, ...]:
+    """The shapes :func:`classify_shape` fits to a mask of this fill ratio: those whose ideal fill ratio is within
+    ``fill_window`` of it."""
+    return tuple(shape for shape, ideal_fill in IDEAL_FILL.items() if abs(fill - ideal_fill) <= fill_window)
+
+
 def classify_shape(mask: np.ndarray, min_fit: float, fill_window: float) -> ShapeResult:
     """Shape of a filled segment mask cropped to its bounding box.
 
@@ -132,7 +144,7 @@ def classify_shape(mask: np.ndarray, min_fit: float, fill_window: float) -> Shap
     """
     height, width = mask.shape[:2]
     area = float(np.count_nonzero(mask))
-    fill = area / float(width * height) if width * height else 0.0
+    fill = area / float(width * height) if width * height else 0.0  # fill_ratio, its pixels counted once
     # findContours reads any nonzero byte as 1: a uint8 mask needs no conversion
     contours, _ = cv2.findContours(mask if mask.dtype == np.uint8 else (mask > 0).astype(np.uint8),
                                    cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_NONE)
@@ -147,10 +159,9 @@ def classify_shape(mask: np.ndarray, min_fit: float, fill_window: float) -> Shap
     fits = {}
     pixels = mask > 0
     count = int(area) if mask.dtype in (np.uint8, np.bool_) else int(np.count_nonzero(pixels))
-    for shape, ideal_fill in IDEAL_FILL.items():
-        if abs(fill - ideal_fill) <= fill_window:
-            ideal, ideal_count = _ideal_pixels(shape, width, height)
-            fits[shape] = mask_iou(pixels, ideal, (count, ideal_count))
+    for shape in shapes_tried(fill, fill_window):
+        ideal, ideal_count = _ideal_pixels(shape, width, height)
+        fits[shape] = mask_iou(pixels, ideal, (count, ideal_count))
     best = max(fits, key=fits.get) if fits else None
     if best is None or fits[best] < min_fit:
         return ShapeResult(None, fits.get(best, 0.0) if best else 0.0, fill, circularity, corners, fits)

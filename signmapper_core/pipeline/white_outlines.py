@@ -25,7 +25,7 @@ from .boxes import box_iou
 from .colour import Segment
 from .config import PipelineConfig
 from .scene_colour import median_u8
-from .shape import classify_shape
+from .shape import classify_shape, fill_ratio, shapes_tried
 
 Box = Tuple[int, int, int, int]  # x, y, w, h
 
@@ -318,45 +318,89 @@ def outlines_in_reach(gradients: Tuple[np.ndarray, np.ndarray], boxes: Sequence[
 def read_face(mask: np.ndarray, box: Box, gradients: Tuple[np.ndarray, np.ndarray], config: PipelineConfig
               ) -> List[Tuple[str, Box, np.ndarray]]:
     """The readings (shape, box, outline mask in that box) of the face that the joined cells ``mask`` (in
-    ``box``) fill: a rectangle whose sides lie on strong edges, and, unless the cells' hull fits a rectangle,
-    the smallest circle around them when its perimeter lies on strong edges (a field cut by a stripe band
-    still spans the disc's diameter). A zone panel cut by its stripes may read as both: depth and the
-    templates decide."""
-    x, y, w, h = box
+    ``box``) fill: :func:`read_faces` of that one union."""
+    return read_faces([(mask, box)], gradients, config)[0]
+
+
+def read_faces(unions: Sequence[Tuple[np.ndarray, Box]], gradients: Tuple[np.ndarray, np.ndarray],
+               config: PipelineConfig) -> List[List[Tuple[str, Box, np.ndarray]]]:
+    """The readings (shape, box, outline mask in that box) of each face that joined cells fill (``unions``:
+    their mask and its box): a rectangle whose sides lie on strong edges, and, unless the cells' hull fits a
+    rectangle, the smallest circle around them when its perimeter lies on strong edges (a field cut by a stripe
+    band still spans the disc's diameter). A zone panel cut by its stripes may read as both: depth and the
+    templates decide.
+
+    Many unions of a pair share their box (small cells inside it join without widening it): a panel's outline
+    depends on the box alone and is read once per box, and the outlines of all unions are measured in one call
+    each (:func:`box_edge_supports`, :func:`edge_support`)."""
+    white = config.white
+    hulls = [_hull(mask, config) for mask, _ in unions]
+    panels = {box for (_, box), hull in zip(unions, hulls)
+              if hull is not None and _may_be_panel(box, hull.cover, white)}
+    panel_faces = {box: refine_box(gradients, box, white.white_panel_grow) for box in sorted(panels)}
+    panel_support = dict(zip(panel_faces, box_edge_supports(gradients, list(panel_faces.values()), config)
+                             if panel_faces else ()))
+    # the smallest circle around each union's hull that does not fit a rectangle, widened by the edge band
+    circles = {}
+    for k, ((_, (x, y, _, _)), hull) in enumerate(zip(unions, hulls)):
+        if hull is None or hull.fitted:
+            continue
+        (cu, cv), r = cv2.minEnclosingCircle(hull.points)
+        if r >= 2 and hull.cover >= white.white_min_disc_cover * np.pi * r * r:
+            circles[k] = (x + cu, y + cv, r + white.white_edge_band_px)  # the cells end where the band begins
+    if circles:
+        cu, cv, r = (np.array(v, np.float64) for v in zip(*circles.values()))
+        near = np.atleast_1d(edge_support(gradients, cu, cv, r, config))
+        floor = white.white_min_edge_support - white.white_refine_margin
+        circles = {k: c for (k, c), s in zip(circles.items(), near) if s >= floor}
+    refined = {c: refine_circle(gradients, *c, config) for c in set(circles.values())}
+    readings = []
+    for k, ((_, box), hull) in enumerate(zip(unions, hulls)):
+        found = []
+        if hull is not None and _may_be_panel(box, hull.cover, white):
+            face = panel_faces[box]
+            if panel_support[box] >= (white.white_min_edge_support if hull.fitted else white.white_min_panel_support):
+                found.append(("rectangle", face, np.full((face[3], face[2]), 255, np.uint8)))
+        if k in circles:
+            cu, cv, r, support = refined[circles[k]]
+            if support >= white.white_min_edge_support:
+                side = int(round(2 * r)) + 1
+                disc = np.zeros((side, side), np.uint8)
+                cv2.circle(disc, (side // 2, side // 2), side // 2, 255, -1)
+                found.append(("circle", (int(round(cu - side / 2)), int(round(cv - side / 2)), side, side), disc))
+        readings.append(found)
+    return readings
+
+
+@dataclass(frozen=True)
+class _Hull:
+    points: np.ndarray  # the convex hull of the joined cells (pixels of their box)
+    cover: int  # pixels of the cells
+    fitted: bool  # whether the filled hull reads as a rectangle (:func:`.shape.classify_shape`)
+
+
+def _hull(mask: np.ndarray, config: PipelineConfig) -> Optional[_Hull]:
+    """The hull of joined cells ``mask``: it bridges stripe bands, digits and frame lines of a convex face. Its
+    outline is fitted only when its fill leaves a rectangle among the shapes tried."""
     contours, _ = cv2.findContours(mask, cv2.RETR_EXTERNAL, cv2.CHAIN_APPROX_SIMPLE)
     if not contours:
-        return []
-    hull = cv2.convexHull(np.vstack(contours))  # bridges stripe bands, digits and frame lines of a convex face
+        return None
+    hull = cv2.convexHull(np.vstack(contours))
     closed = np.zeros_like(mask)
     cv2.fillConvexPoly(closed, hull, 255)
-    result = classify_shape(closed, config.white.white_min_shape_fit, config.shape.shape_fill_window)
-    fitted = result.shape in ("rectangle", "square")
-    readings = []
-    white = config.white
-    cover = np.count_nonzero(mask)
-    if max(w, h) <= white.white_max_aspect * min(w, h) and cover >= white.white_min_panel_cover * w * h:
-        # a panel whose field the stripes cut into pieces that leave its corners out still has four straight
-        # sides on strong edges, where a disc's box touches its outline at four points only
-        face = refine_box(gradients, box, white.white_panel_grow)
-        support = box_edge_support(gradients, face, config)
-        if support >= (white.white_min_edge_support if fitted else white.white_min_panel_support):
-            readings.append(("rectangle", face, np.full((face[3], face[2]), 255, np.uint8)))
-    if fitted:
-        return readings
-    (cu, cv), r = cv2.minEnclosingCircle(hull)
-    if r < 2 or cover < white.white_min_disc_cover * np.pi * r * r:
-        return readings
-    r += white.white_edge_band_px  # the cells end where the (widened) edge band of the outline begins
-    if edge_support(gradients, x + cu, y + cv, r, config) < white.white_min_edge_support - white.white_refine_margin:
-        return readings
-    cu, cv, r, support = refine_circle(gradients, x + cu, y + cv, r, config)
-    if support < white.white_min_edge_support:
-        return readings
-    cu, cv = cu - x, cv - y
-    side = int(round(2 * r)) + 1
-    disc = np.zeros((side, side), np.uint8)
-    cv2.circle(disc, (side // 2, side // 2), side // 2, 255, -1)
-    return readings + [("circle", (int(round(x + cu - side / 2)), int(round(y + cv - side / 2)), side, side), disc)]
+    fill_window = config.shape.shape_fill_window
+    fitted = ("rectangle" in shapes_tried(fill_ratio(closed), fill_window)
+              and classify_shape(closed, config.white.white_min_shape_fit, fill_window).shape
+              in ("rectangle", "square"))
+    return _Hull(hull, int(np.count_nonzero(mask)), fitted)
+
+
+def _may_be_panel(box: Box, cover: int, white) -> bool:
+    """A panel whose field the stripes cut into pieces that leave its corners out still has four straight sides on
+    strong edges, where a disc's box touches its outline at four points only: unions of a panel's aspect whose
+    cells cover enough of their box have their box's sides measured."""
+    x, y, w, h = box
+    return max(w, h) <= white.white_max_aspect * min(w, h) and cover >= white.white_min_panel_cover * w * h
 
 
 def hough_discs(scan: WhiteScan, side_range: Tuple[float, float], config: PipelineConfig
@@ -411,7 +455,17 @@ def format_outline(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[str, fl
     """
     min_iou = config.white.white_format_min_iou
     return _best_outline(grey, bbox, sizes_px, scale, config, config.white.white_min_edge_support,
-                         lambda placed, face: box_iou(placed, face) >= min_iou)
+                         lambda u, v, fw, fh, face: boxes_iou(u, v, fw, fh, face) >= min_iou)
+
+
+def boxes_iou(u: np.ndarray, v: np.ndarray, w: float, h: float, box) -> np.ndarray:
+    """Intersection over union of the boxes (u, v, w, h) (corners as arrays, one size) with ``box``; 0 where
+    they do not overlap (:func:`.boxes.box_iou` of each)."""
+    x, y, bw, bh = box
+    inter = (np.maximum(0.0, np.minimum(u + w, x + bw) - np.maximum(u, x))
+             * np.maximum(0.0, np.minimum(v + h, y + bh) - np.maximum(v, y)))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(inter > 0, inter / (w * h + bw * bh - inter), 0.0)
 
 
 def panel_around(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[float, float]], scale: float,
@@ -430,9 +484,12 @@ def panel_around(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[float, fl
     if not sizes:
         return None
     return _best_outline(grey, bbox, sizes, scale, config, config.white.white_min_panel_support,
-                         lambda placed, face: (placed[0] <= face[0] + 1 and placed[1] <= face[1] + 1
-                                               and placed[0] + placed[2] >= face[0] + face[2] - 1
-                                               and placed[1] + placed[3] >= face[1] + face[3] - 1))
+                         lambda u, v, fw, fh, face: ((u <= face[0] + 1) & (v <= face[1] + 1)
+                                                     & (u + fw >= face[0] + face[2] - 1)
+                                                     & (v + fh >= face[1] + face[3] - 1)))
+
+
+_OUTLINES_AT_ONCE = 4096  # placements whose edge support is measured in one call: bounds its arrays' memory
 
 
 def _best_outline(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[str, float, float]], scale: float,
@@ -440,8 +497,9 @@ def _best_outline(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[str, flo
                   ) -> Optional[Tuple[str, Box, float]]:
     """(shape, box, edge support) of the outline among ``sizes_px`` (shape, width, height in full-image pixels)
     lying best on strong edges, placed on a one-pixel grid of the image scanned at ``scale`` wherever
-    ``placed_well(placed, face)`` holds (both boxes at that scale; ``face`` is ``bbox``), or None when the
-    best has less support than ``min_support``."""
+    ``placed_well(u, v, width, height, face)`` holds (corners as arrays, both at that scale; ``face`` is
+    ``bbox``), or None when the best has less support than ``min_support``. Of equal supports the first
+    (in the order of ``sizes_px``, then of the corner's column and row) wins."""
     x, y, w, h = bbox
     height, width = grey.shape[:2]
     big = max([w, h] + [max(sw, sh) for _, sw, sh in sizes_px])
@@ -460,17 +518,20 @@ def _best_outline(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[str, flo
         # positions of the format's box overlapping the candidate's: its corner on a one-pixel grid
         us = np.arange(np.floor(min(sx, sx + sw0 - fw)), np.ceil(max(sx, sx + sw0 - fw)) + 1.0)
         vs = np.arange(np.floor(min(sy, sy + sh0 - fh)), np.ceil(max(sy, sy + sh0 - fh)) + 1.0)
-        for u in us:
-            for v in vs:
-                if not placed_well((u, v, fw, fh), face):
-                    continue
-                if shape == "circle":
-                    support = edge_support(gradients, u + fw / 2.0, v + fh / 2.0, fw / 2.0, config)
-                else:
-                    support = box_edge_support(gradients, (int(round(u)), int(round(v)), int(round(fw)),
-                                                           int(round(fh))), config)
-                if best is None or support > best[0]:
-                    best = (support, shape, (u, v, fw, fh))
+        u, v = (a.ravel() for a in np.meshgrid(us, vs, indexing="ij"))
+        well = placed_well(u, v, fw, fh, face)
+        u, v = u[well], v[well]
+        for start in range(0, len(u), _OUTLINES_AT_ONCE):
+            cu, cv = u[start : start + _OUTLINES_AT_ONCE], v[start : start + _OUTLINES_AT_ONCE]
+            if shape == "circle":
+                support = np.atleast_1d(edge_support(gradients, cu + fw / 2.0, cv + fh / 2.0, fw / 2.0, config))
+            else:
+                side_w, side_h = int(round(fw)), int(round(fh))
+                support = box_edge_supports(gradients, [(int(a), int(b), side_w, side_h) for a, b in zip(cu, cv)],
+                                            config)
+            k = int(np.argmax(support))
+            if best is None or support[k] > best[0]:
+                best = (float(support[k]), shape, (float(cu[k]), float(cv[k]), fw, fh))
     if best is None or best[0] < min_support:
         return None
     support, shape, (u, v, fw, fh) = best
@@ -543,15 +604,16 @@ def white_candidates(bgr: np.ndarray, side_range_px: Tuple[float, float], config
                          config.white.white_join_steps)
     in_reach = outlines_in_reach(gradients, [box for box, _ in groups], config)
     labels = int(scan.labels.max()) + 1 if groups else 0
+    unions = []
     for (box, members), reached in zip(groups, in_reach):
         if not reached:
             continue
         x, y, w, h = box
         member = np.zeros(labels, np.uint8)  # a table of the group's labels: a lookup instead of np.isin
         member[ids[list(members)]] = 255
-        mask = member[scan.labels[y : y + h, x : x + w]]
-        faces += [face for face in read_face(mask, box, gradients, config)
-                  if lo * scale <= min(face[1][2:]) and max(face[1][2:]) <= hi * scale]
+        unions.append((member[scan.labels[y : y + h, x : x + w]], box))
+    faces += [face for readings in read_faces(unions, gradients, config) for face in readings
+              if lo * scale <= min(face[1][2:]) and max(face[1][2:]) <= hi * scale]
     faces.sort(key=lambda f: f[1][2] * f[1][3], reverse=True)
     kept: List[WhiteCandidate] = []
     margin = config.colour.border_margin_px

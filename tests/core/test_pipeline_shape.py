@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 from signmapper_core.pipeline.config import TEMPLATE_GEOMETRY
-from signmapper_core.pipeline.shape import ShapeResult, classify_shape, outline_shapes
+from signmapper_core.pipeline.shape import ShapeResult, classify_shape, fill_ratio, outline_shapes, shapes_tried
 
 SIZE = 61
 # clean drawn outlines, read as the catalogue's templates are
@@ -102,3 +102,13 @@ def test_near_tied_outlines_keep_both_readings():
     assert outline_shapes(result({"circle": 0.972, "octagon": 0.921}), 0.03, FIT) == ("circle",)
     assert outline_shapes(result({"octagon": 0.95, "circle": 0.93, "rectangle": 0.8}), 0.03, FIT) == \
         ("octagon", "circle")
+
+
+@pytest.mark.parametrize("shape", ["circle", "triangle", "octagon", "rectangle"])
+def test_the_shapes_tried_are_those_fitted(shape):
+    # read_faces skips the fit when a rectangle is not among the shapes tried: they must be the ones fitted
+    mask = _crop(_drawn(shape))
+    result = classify_shape(mask, FIT, WINDOW)
+    tried = shapes_tried(fill_ratio(mask), WINDOW)
+    assert set(result.fits) == set(tried) and shape.split("-")[0] in tried
+    assert ("rectangle" in tried) == (shape == "rectangle")

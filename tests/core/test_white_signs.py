@@ -7,15 +7,18 @@ import pytest
 from pipeline_scenes import CAMERA, POSE, noisy_background, sign_scene
 
 from signmapper_core.pipeline import PipelineConfig, detect_pair
+from signmapper_core.pipeline.boxes import box_iou
 from signmapper_core.pipeline.config import with_settings
 from signmapper_core.pipeline.detection import Detection
 from signmapper_core.pipeline.white_outlines import (
+    boxes_iou,
     edge_support,
     face_side_range_px,
     format_outline,
     group_cells,
     panel_around,
     read_face,
+    read_faces,
     ring_around,
     scan_scale,
     white_candidates,
@@ -175,6 +178,28 @@ def test_a_disc_does_not_read_as_a_rectangle():
     box = (14, 14, 53, 53)
     readings = read_face(mask[14:67, 14:67], box, gradients, CONFIG)
     assert [r[0] for r in readings] == ["circle"]
+
+
+def test_unions_read_together_keep_each_its_own_readings():
+    # a striped panel's cells, the same box with only a thin sliver of cells (too little of the box covered for a
+    # panel), and a disc: read in one call, each union keeps the readings of its own cells
+    gradients, mask, box = _striped_panel_cells()
+    x, y, w, h = box
+    cells = mask[1 : 1 + h, 1 : 1 + w]
+    sliver = np.zeros_like(cells)
+    sliver[: h // 4, : w // 4] = 255
+    readings = read_faces([(cells, box), (sliver, box)], gradients, CONFIG)
+    assert [[r[0] for r in found] for found in readings] == [["rectangle"], []]
+    assert readings[0][0][1] == read_face(cells, box, gradients, CONFIG)[0][1]
+
+
+def test_boxes_iou_agrees_with_the_iou_of_each_box():
+    rng = np.random.default_rng(5)
+    face = (10.0, 12.0, 30.0, 20.0)
+    u, v = rng.uniform(-20, 50, 200), rng.uniform(-20, 50, 200)
+    expected = [box_iou((a, b, 25.0, 18.0), face) for a, b in zip(u, v)]
+    assert boxes_iou(u, v, 25.0, 18.0, face) == pytest.approx(expected)
+    assert 0 < np.count_nonzero(boxes_iou(u, v, 25.0, 18.0, face)) < 200  # some overlap, some do not
 
 
 def test_a_disc_above_its_plate_stays_a_candidate_beside_their_joint_panel_reading(catalogue):
