@@ -346,7 +346,7 @@ class WhiteConfig:
     white_signs: bool = True  # seek white and grey signs (an inventory holds them); off is faster
     white_max_side_m: float = 0.9  # formats up to this side [m]: the 1.2 m motorway discs would set the cost
     white_min_side_m: float = 0.35  # shorter sides count as this [m]: found nearer, the scan keeps its reduction
-    white_scan_side_px: float = 20.0  # scan reduced by a whole factor keeping the smallest face this wide [px]
+    white_scan_side_px: float = 18.0  # scan reduced by a whole factor keeping the smallest face this wide [px]
     white_canny_low: int = 40  # Canny low threshold of the outline edges [grey levels of the reduced image]
     white_canny_high: int = 110  # Canny high threshold [grey levels of the reduced image]
     white_max_saturation: int = 60  # an achromatic pixel's saturation [0-255]: faded red rims stay above
@@ -379,6 +379,7 @@ class WhiteConfig:
     white_hough_edge: float = 300.0  # its edge threshold on Scharr gradients (~ Canny 110 on Sobel)...
     white_hough_roundness: float = 0.75  # ...and how round an outline must be (0-1)
     white_hough_min_radius: float = 0.85  # smallest radius, x half the smallest face side: faint outlines read short
+    white_hough_coarse_radius: float = 30.0  # radii above this [px of the scan] are sought in the scan reduced by 2
     white_format_fit: bool = True  # a face between white formats is sought again as each format's outline
     white_format_min_iou: float = 0.5  # the format's outline overlaps the candidate's box at least this much [IoU]
     white_disc_in_panel: float = 0.8  # a disc this share inside a white panel found too is its zone disc, no sign

@@ -416,15 +416,11 @@ def hough_discs(scan: WhiteScan, side_range: Tuple[float, float], config: Pipeli
     r_min, r_max = max(2, int(white.white_hough_min_radius * lo / 2)), int(np.ceil(hi / 2))
     if r_max <= r_min:
         return []
-    circles = cv2.HoughCircles(grey, cv2.HOUGH_GRADIENT_ALT, white.white_hough_dp,
-                               white.white_hough_min_dist * r_min, param1=white.white_hough_edge,
-                               param2=white.white_hough_roundness, minRadius=r_min, maxRadius=r_max)
-    if circles is None:
-        return []
+    circles = hough_circles(grey, r_min, r_max, config)
     floor = white.white_min_brightness * scan.median_value
     height, width = grey.shape[:2]
     readings = []
-    for cu, cv, r in circles[0]:
+    for cu, cv, r in circles:
         cu, cv, r, support = refine_circle(gradients, float(cu), float(cv), float(r), config)
         if support < white.white_min_edge_support:
             continue
@@ -440,6 +436,31 @@ def hough_discs(scan: WhiteScan, side_range: Tuple[float, float], config: Pipeli
             continue
         readings.append(("circle", (x, y, side, side), disc))
     return readings
+
+
+def hough_circles(grey: np.ndarray, r_min: int, r_max: int, config: PipelineConfig) -> List[Tuple[float, float, float]]:
+    """(u, v, r) of the round outlines of radius ``r_min``..``r_max`` in ``grey`` (Hough transform). Radii above
+    ``white_hough_coarse_radius`` are sought in ``grey`` reduced by 2, where they still span that radius: the
+    transform's cost grows with the radii it sweeps over, and a large disc loses nothing at half the scale
+    (:func:`refine_circle` then places it on the full scan's gradients)."""
+    white = config.white
+    split = max(r_min, int(white.white_hough_coarse_radius))
+    passes = [(grey, 1.0, r_min, min(r_max, split))]
+    if r_max > split:
+        half = cv2.resize(grey, None, fx=0.5, fy=0.5, interpolation=cv2.INTER_AREA)
+        passes.append((half, 2.0, split // 2, int(np.ceil(r_max / 2.0))))
+    found = []
+    for image, factor, lo, hi in passes:
+        if hi <= lo:
+            continue
+        circles = cv2.HoughCircles(image, cv2.HOUGH_GRADIENT_ALT, white.white_hough_dp, white.white_hough_min_dist * lo,
+                                   param1=white.white_hough_edge, param2=white.white_hough_roundness,
+                                   minRadius=lo, maxRadius=hi)
+        if circles is not None:
+            shift = (factor - 1.0) / 2.0  # a reduced pixel's centre lies between the pixels it averages
+            found += [(float(u) * factor + shift, float(v) * factor + shift, float(r) * factor)
+                      for u, v, r in circles[0]]
+    return found
 
 
 def format_outline(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[str, float, float]], scale: float,
