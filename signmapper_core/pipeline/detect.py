@@ -309,6 +309,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     # enough to be mapped: one that would not be must not turn the face from `unknown` into nothing)
     pool = [r for r in pool if matches_its_entry(r[2], classifier, config) and
             r[2].score >= min_score(classifier, config)] or pool
+    pool = most_evident_per_face(pool)
     # near-ties (a confident network reads the face and its rimless part alike) go to the earliest reading: the
     # face as the colour extent implies it comes before the rims measured in the image
     top = max((r[2].score for r in pool), default=0.0)
@@ -374,6 +375,22 @@ def _open_set_limit(classifier, config: PipelineConfig) -> Optional[float]:
     """The logit the network gives the signs it reads right (its model card's ``unknown_logit``), or None where the
     open set is off or not calibrated."""
     return getattr(classifier, "unknown_logit", None) if config.classification.open_set else None
+
+
+def most_evident_per_face(readings: list) -> list:
+    """``readings`` (match, face, classification) with, of those of one face box, only the one whose sign the
+    network sees most clearly (its logit), in the order of the first reading of each face.
+
+    Readings of one box saw the same pixels, but each score is a probability among that reading's own
+    candidates: the box read as a standard format (the parking-disc sign 4.18 among 0.5 x 0.7 m entries, logit
+    3.8, 0.92) and as a face of measured size (among boards and pointers, without 4.18: 4.22 at logit 2.6, 0.97)
+    would otherwise go to the reading with fewer good rivals."""
+    best = {}
+    for k, (_, face, cls) in enumerate(readings):
+        if face not in best or cls.fit > readings[best[face]][2].fit:
+            best[face] = k
+    keep = set(best.values())
+    return [r for k, r in enumerate(readings) if k in keep]
 
 
 def matches_its_entry(cls, classifier, config: PipelineConfig) -> bool:
