@@ -9,6 +9,7 @@ step for white and grey signs, found by outline over the whole window (``white_o
 
 from __future__ import annotations
 
+import math
 import time
 from contextlib import contextmanager
 from dataclasses import replace
@@ -379,12 +380,15 @@ def _open_set_limit(classifier, config: PipelineConfig) -> Optional[float]:
 
 def most_evident_per_face(readings: list) -> list:
     """``readings`` (match, face, classification) with, of those of one face box, only the one whose sign the
-    network sees most clearly (its logit), in the order of the first reading of each face.
+    network sees most clearly (its logit), in their order; all of them where
+    the classifier gives no logit (template matching).
 
     Readings of one box saw the same pixels, but each score is a probability among that reading's own
-    candidates: the box read as a standard format (the parking-disc sign 4.18 among 0.5 x 0.7 m entries, logit
-    3.8, 0.92) and as a face of measured size (among boards and pointers, without 4.18: 4.22 at logit 2.6, 0.97)
-    would otherwise go to the reading with fewer good rivals."""
+    candidates: read among standard formats and among entries of measured size, the box goes to the reading
+    with fewer good rivals (the parking-disc sign 4.18 at logit 3.8, 0.92, lost to 4.22, which the network
+    sees less, at logit 2.6, 0.97, where 4.18 was no candidate)."""
+    if not all(math.isfinite(cls.fit) for _, _, cls in readings):
+        return list(readings)
     best = {}
     for k, (_, face, cls) in enumerate(readings):
         if face not in best or cls.fit > readings[best[face]][2].fit:
