@@ -342,8 +342,12 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     if off_format and cls.score < accept:  # a size no standard sign has needs a clear reading
         return None
     by_depth = any(best is r for r in held_panels)
-    status = ACCEPTED if cls.score >= accept and not (by_depth or off_format) else REVIEW
-    reason = ZONE_PANEL_BY_DEPTH if by_depth and cls.score >= accept else (OFF_FORMAT if off_format else "")
+    # a reading the network does not see clearly (a grown face's, or a loose outline's) is no sign to accept: its
+    # score may be high among few candidates (a plate's parking pictogram read as 2.41.2b, its one candidate)
+    unclear = matches_no_entry(cls, classifier, config)
+    status = ACCEPTED if cls.score >= accept and not (by_depth or off_format or unclear) else REVIEW
+    reason = ZONE_PANEL_BY_DEPTH if by_depth and cls.score >= accept else (
+        OFF_FORMAT if off_format else NO_ENTRY_MATCHES if unclear else "")
     if seg.source == "hough" and status == ACCEPTED:
         # a circle with a full-colour ring is a colour find the colour step lost (an attachment
         # spoiled its outline); faded or white ones stay for review
