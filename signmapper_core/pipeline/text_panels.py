@@ -185,9 +185,10 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
         if share < white.panel_min_frame:
             continue
         line = line_share(grey, (x, y, bw, bh), mask, config)
-        if line < white.panel_min_line:
-            continue
-        layout = DIRECTION if pointed_end(mask, config) else PLACE_NAME
+        pointed = pointed_end(mask, config)
+        if line < white.panel_min_line and not pointed:
+            continue  # a white board; a pointed field is a pointer, its frame maybe the edge (its indicator holds it)
+        layout = DIRECTION if pointed else PLACE_NAME
         fields.append(PanelField((x, y, bw, bh), mask, layout, share, line, lettered=ink >= white.panel_min_ink))
     # a blank field is no panel alone (a white board), but may be the part of a 4.30 a dirt mark cut off
     return [f for f in stacked_on_bars(fields, grey, config) if f.lettered]
