@@ -187,7 +187,7 @@ def panel_fields(bgr: np.ndarray, height_range_px: Tuple[float, float], config) 
         line = line_share(grey, (x, y, bw, bh), mask, config)
         pointed = pointed_end(mask, config)
         if line < white.panel_min_line and not pointed:
-            continue  # a white board; a pointed field is a pointer, its frame maybe the edge (its indicator holds it)
+            continue  # a white board; a pointed field is a pointer, its dark frame maybe the sign's edge
         layout = DIRECTION if pointed else PLACE_NAME
         fields.append(PanelField((x, y, bw, bh), mask, layout, share, line, lettered=ink >= white.panel_min_ink))
     # a blank field is no panel alone (a white board), but may be the part of a 4.30 a dirt mark cut off
@@ -344,7 +344,10 @@ def held(box: Box, depth: np.ndarray, grey: np.ndarray, z: float, config) -> Tup
 def frame_indicator(field: PanelField, config) -> float:
     """The classification indicator of a text panel: how clearly its frame is seen, the share of its outline
     with dark beside it, scaled down where less than ``panel_full_line`` of its top and bottom show that dark
-    as a thin line (a white board before a dark wall has dark beside it, but no line)."""
+    as a thin line (a white board before a dark wall has dark beside it, but no line). A pointer's point tells
+    it from a board: its frame share alone (its dark edge may be the sign's own, no margin outside it)."""
+    if field.layout == DIRECTION:
+        return field.frame_share
     return field.frame_share * min(1.0, field.line_share / config.white.panel_full_line)
 
 
