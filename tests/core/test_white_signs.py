@@ -72,9 +72,11 @@ def test_face_side_range_covers_every_white_format_in_the_search_space(catalogue
     assert lo == pytest.approx(0.35 * 600 / 14 * 0.85)
     assert hi == pytest.approx(0.9 * 600 / 4 * 1.15)
     assert scan_scale(lo, CONFIG) == 1.0  # a small image is scanned as it is
-    # a whole reduction that keeps the smallest face at least white_scan_side_px (20) wide
-    assert scan_scale(85.0, CONFIG) == pytest.approx(1 / 4)
-    assert scan_scale(79.0, CONFIG) == pytest.approx(1 / 3)
+    # a whole reduction that keeps the smallest face at least white_scan_side_px (18) wide
+    assert scan_scale(72.0, CONFIG) == pytest.approx(1 / 4)
+    assert scan_scale(71.0, CONFIG) == pytest.approx(1 / 3)
+    # Full HD (fx 1750), 4-14 m: the smallest face, 37 px, is scanned in the image reduced by 2, not at full size
+    assert scan_scale(0.35 * 1750 / 14 * 0.85, CONFIG) == pytest.approx(1 / 2)
 
 
 def test_cells_overlapping_one_face_are_joined_and_far_ones_are_not():
