@@ -32,7 +32,15 @@ from .boxes import box_iou, nonzero_box, touches_border, union_box
 from .bright_fields import bright_faces
 from .config import ColourConfig, HsvRange, PipelineConfig
 from .scene_colour import apply_gains, chroma_at_least, scene_colour
-from .shape import CROSS_OUTLINES, DOUBLE_CROSS_OUTLINES, classify_shape, plausible_outlines
+from .shape import (
+    CROSS_OUTLINES,
+    DOUBLE_CROSS_OUTLINES,
+    classify_shape,
+    fill_ratio,
+    plausible_outlines,
+    shape_fits,
+    shapes_tried,
+)
 
 
 @dataclass
@@ -128,14 +136,18 @@ def colour_masks(bgr: np.ndarray, settings: ColourConfig, colours: Iterable[str]
 
 CROSS_SOLIDITY = (0.4, 0.75)  # a St Andrew's cross fills about half of its hull
 CROSS_MIN_FIT = 0.75  # a non-convex outline is kept as a cross only where it fits one this well
+CROSS_FILL_WINDOW = 0.2  # the shapes it is compared with: those whose ideal fill is this close to its own
 
 
 def is_cross(filled: np.ndarray, solidity: float) -> bool:
     """Whether a filled outline far from convex is a St Andrew's cross (``shape.CROSS_OUTLINES``)."""
     if not CROSS_SOLIDITY[0] <= solidity <= CROSS_SOLIDITY[1]:
         return False
-    result = classify_shape(filled, CROSS_MIN_FIT, 0.2)
-    return result.shape in CROSS_OUTLINES
+    # most such outlines (foliage, façades) fit no cross: the other shapes are fitted only where one does
+    crosses = [s for s in shapes_tried(fill_ratio(filled), CROSS_FILL_WINDOW) if s in CROSS_OUTLINES]
+    if max(shape_fits(filled, crosses).values(), default=0.0) < CROSS_MIN_FIT:
+        return False
+    return classify_shape(filled, CROSS_MIN_FIT, CROSS_FILL_WINDOW).shape in CROSS_OUTLINES
 
 
 def _filled_segment(contour, colour, width, height, border_margin_px, source, min_solidity, box):

@@ -384,8 +384,8 @@ def _open_set_limit(classifier, config: PipelineConfig) -> Optional[float]:
 
 def most_evident_per_face(readings: list) -> list:
     """``readings`` (match, face, classification) with, of those of one face box, only the one whose sign the
-    network sees most clearly (its logit), in their order; all of them where
-    the classifier gives no logit (template matching).
+    network sees most clearly (its logit), in their order; all of them where the classifier gives no logit
+    (template matching).
 
     Readings of one box saw the same pixels, but each score is a probability among that reading's own
     candidates: read among standard formats and among entries of measured size, the box goes to the reading

@@ -136,6 +136,20 @@ def shapes_tried(fill: float, fill_window: float) -> Tuple[str, ...]:
     return tuple(shape for shape, ideal_fill in IDEAL_FILL.items() if abs(fill - ideal_fill) <= fill_window)
 
 
+def shape_fits(mask: np.ndarray, shapes, count: Optional[int] = None) -> Dict[str, float]:
+    """IoU of a filled segment mask (cropped to its bounding box) with the ideal outline of each of ``shapes``;
+    ``count``: its nonzero pixels, when already counted."""
+    height, width = mask.shape[:2]
+    pixels = mask > 0
+    if count is None or mask.dtype not in (np.uint8, np.bool_):
+        count = int(np.count_nonzero(pixels))
+    fits = {}
+    for shape in shapes:
+        ideal, ideal_count = _ideal_pixels(shape, width, height)
+        fits[shape] = mask_iou(pixels, ideal, (count, ideal_count))
+    return fits
+
+
 def classify_shape(mask: np.ndarray, min_fit: float, fill_window: float) -> ShapeResult:
     """Shape of a filled segment mask cropped to its bounding box.
 
@@ -156,12 +170,7 @@ def classify_shape(mask: np.ndarray, min_fit: float, fill_window: float) -> Shap
             circularity = float(4 * np.pi * cv2.contourArea(contour) / perimeter**2)
             hull = cv2.convexHull(contour)
             corners = len(cv2.approxPolyDP(hull, 0.04 * cv2.arcLength(hull, True), True))
-    fits = {}
-    pixels = mask > 0
-    count = int(area) if mask.dtype in (np.uint8, np.bool_) else int(np.count_nonzero(pixels))
-    for shape in shapes_tried(fill, fill_window):
-        ideal, ideal_count = _ideal_pixels(shape, width, height)
-        fits[shape] = mask_iou(pixels, ideal, (count, ideal_count))
+    fits = shape_fits(mask, shapes_tried(fill, fill_window), int(area))
     best = max(fits, key=fits.get) if fits else None
     if best is None or fits[best] < min_fit:
         return ShapeResult(None, fits.get(best, 0.0) if best else 0.0, fill, circularity, corners, fits)

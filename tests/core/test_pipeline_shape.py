@@ -3,7 +3,14 @@ import numpy as np
 import pytest
 
 from signmapper_core.pipeline.config import TEMPLATE_GEOMETRY
-from signmapper_core.pipeline.shape import ShapeResult, classify_shape, fill_ratio, outline_shapes, shapes_tried
+from signmapper_core.pipeline.shape import (
+    ShapeResult,
+    classify_shape,
+    fill_ratio,
+    outline_shapes,
+    shape_fits,
+    shapes_tried,
+)
 
 SIZE = 61
 # clean drawn outlines, read as the catalogue's templates are
@@ -112,3 +119,4 @@ def test_the_shapes_tried_are_those_fitted(shape):
     tried = shapes_tried(fill_ratio(mask), WINDOW)
     assert set(result.fits) == set(tried) and shape.split("-")[0] in tried
     assert ("rectangle" in tried) == (shape == "rectangle")
+    assert shape_fits(mask, tried) == result.fits  # is_cross fits the crosses alone first, with the same values
