@@ -34,6 +34,16 @@ def box_iou(a, b) -> float:
     return inter / float(a[2] * a[3] + b[2] * b[3] - inter) if inter else 0.0
 
 
+def box_ious(box, boxes: np.ndarray) -> np.ndarray:
+    """IoU of one box (x, y, w, h) with each row of ``boxes`` (:func:`box_iou` of each)."""
+    x0 = np.maximum(box[0], boxes[:, 0])
+    y0 = np.maximum(box[1], boxes[:, 1])
+    x1 = np.minimum(box[0] + box[2], boxes[:, 0] + boxes[:, 2])
+    y1 = np.minimum(box[1] + box[3], boxes[:, 1] + boxes[:, 3])
+    inter = np.maximum(x1 - x0, 0) * np.maximum(y1 - y0, 0)
+    return inter / (box[2] * box[3] + boxes[:, 2] * boxes[:, 3] - inter)
+
+
 def intersection_area(a, b) -> int:
     """Pixels two boxes share; 0 when they do not overlap."""
     iw = max(0, min(a[0] + a[2], b[0] + b[2]) - max(a[0], b[0]))

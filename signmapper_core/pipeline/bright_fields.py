@@ -24,6 +24,7 @@ from typing import List, Optional, Tuple
 import cv2
 import numpy as np
 
+from .boxes import box_ious
 from .config import PipelineConfig
 from .framed_diamonds import box_yellow_against_frame, framed_diamond
 from .shape import plausible_outlines
@@ -58,16 +59,6 @@ def grey_levels(first: int, ratio: float) -> List[int]:
     return levels
 
 
-def _box_ious(box: np.ndarray, boxes: np.ndarray) -> np.ndarray:
-    """IoU of one box (x, y, w, h) with each row of ``boxes``."""
-    x0 = np.maximum(box[0], boxes[:, 0])
-    y0 = np.maximum(box[1], boxes[:, 1])
-    x1 = np.minimum(box[0] + box[2], boxes[:, 0] + boxes[:, 2])
-    y1 = np.minimum(box[1] + box[3], boxes[:, 1] + boxes[:, 3])
-    inter = np.maximum(x1 - x0, 0) * np.maximum(y1 - y0, 0)
-    return inter / (box[2] * box[3] + boxes[:, 2] * boxes[:, 3] - inter)
-
-
 def _same_component(box: np.ndarray, area: int, seen: np.ndarray, seen_areas: np.ndarray, fields) -> bool:
     """Whether a component was judged already at a lower level: nearly the same box and pixel count.
 
@@ -75,7 +66,7 @@ def _same_component(box: np.ndarray, area: int, seen: np.ndarray, seen_areas: np
     fewer pixels; there it may be the field alone (a thin dusk ring around a speed limit), so it
     is judged again.
     """
-    same_box = _box_ious(box, seen) >= fields.field_same_iou
+    same_box = box_ious(box, seen) >= fields.field_same_iou
     return bool(np.any(same_box & (area >= (1.0 - fields.field_same_area_drop) * seen_areas)))
 
 
@@ -220,7 +211,7 @@ def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: Pipeli
                 continue
             bitten = areas[k - 1] < fields.field_min_fill * box[2] * box[3]
             field = _ring_field(image, labels, k, box, scale, config, dark, bitten)
-            if field is not None and not any(_box_ious(np.asarray(field.bbox), np.asarray([f.bbox]))[0]
+            if field is not None and not any(box_ious(np.asarray(field.bbox), np.asarray([f.bbox]))[0]
                                              >= config.scene.pass_duplicate_iou for f in out):
                 out.append(field)  # the first level that shows a field in its ring stands for it
         if not diamonds_wanted:
@@ -232,11 +223,11 @@ def bright_faces(image: np.ndarray, search: Optional[np.ndarray], config: Pipeli
             box = stats[k, :4]
             if not box_yellow_against_frame(small, labels, k, tuple(int(v) for v in box), config):
                 continue  # most bright components (leaves, windows, sky) end here, before anything else is read
-            if len(seen_diamonds) and _box_ious(box, seen_diamonds).max() >= fields.field_same_iou:
+            if len(seen_diamonds) and box_ious(box, seen_diamonds).max() >= fields.field_same_iou:
                 continue
             seen_diamonds = np.vstack([seen_diamonds, box[None]])
             diamond = framed_diamond(image, small, labels, k, tuple(int(v) for v in box), scale, config)
-            if diamond is not None and not any(_box_ious(np.asarray(diamond[0]), np.asarray([d.bbox]))[0]
+            if diamond is not None and not any(box_ious(np.asarray(diamond[0]), np.asarray([d.bbox]))[0]
                                                >= config.scene.pass_duplicate_iou for d in diamonds):
                 diamonds.append(Field(*diamond))  # the first level that shows the diamond stands for it
     return BrightFaces(out, diamonds)

@@ -21,7 +21,7 @@ import cv2
 import numpy as np
 
 from ..geometry import Camera
-from .boxes import box_iou
+from .boxes import box_iou, box_ious
 from .colour import Segment
 from .config import PipelineConfig
 from .scene_colour import median_u8
@@ -237,15 +237,11 @@ def refine_circle(gradients: Tuple[np.ndarray, np.ndarray], cu: float, cv: float
     return cu + du.ravel()[best], cv + dv.ravel()[best], r + dr.ravel()[best], float(support[best])
 
 
-def box_edge_support(gradients: Tuple[np.ndarray, np.ndarray], box: Box, config: PipelineConfig) -> float:
-    """Share of points on the sides of ``box`` (each looked for a pixel inward or outward) where the grey
-    image has a strong gradient across the side: the outline of a panel (the settings of :func:`edge_support`)."""
-    return float(box_edge_supports(gradients, [box], config)[0])
-
-
 def box_edge_supports(gradients: Tuple[np.ndarray, np.ndarray], boxes: Sequence[Box], config: PipelineConfig
                       ) -> np.ndarray:
-    """:func:`box_edge_support` of each of ``boxes``, all at once."""
+    """Share of points on the sides of each of ``boxes`` (each looked for a pixel inward or outward) where the grey
+    image has a strong gradient across the side: the outline of a panel (the settings of :func:`edge_support`),
+    all boxes at once."""
     white = config.white
     min_gradient, samples = white.white_min_gradient, white.white_support_samples
     gx, gy = gradients
@@ -335,8 +331,8 @@ def read_faces(unions: Sequence[Tuple[np.ndarray, Box]], gradients: Tuple[np.nda
     each (:func:`box_edge_supports`, :func:`edge_support`)."""
     white = config.white
     hulls = [_hull(mask, config) for mask, _ in unions]
-    panels = {box for (_, box), hull in zip(unions, hulls)
-              if hull is not None and _may_be_panel(box, hull.cover, white)}
+    panel = [hull is not None and _may_be_panel(box, hull.cover, white) for (_, box), hull in zip(unions, hulls)]
+    panels = {box for (_, box), is_panel in zip(unions, panel) if is_panel}
     panel_faces = {box: refine_box(gradients, box, white.white_panel_grow) for box in sorted(panels)}
     panel_support = dict(zip(panel_faces, box_edge_supports(gradients, list(panel_faces.values()), config)
                              if panel_faces else ()))
@@ -357,7 +353,7 @@ def read_faces(unions: Sequence[Tuple[np.ndarray, Box]], gradients: Tuple[np.nda
     readings = []
     for k, ((_, box), hull) in enumerate(zip(unions, hulls)):
         found = []
-        if hull is not None and _may_be_panel(box, hull.cover, white):
+        if panel[k]:
             face = panel_faces[box]
             if panel_support[box] >= (white.white_min_edge_support if hull.fitted else white.white_min_panel_support):
                 found.append(("rectangle", face, np.full((face[3], face[2]), 255, np.uint8)))
@@ -476,17 +472,8 @@ def format_outline(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[str, fl
     """
     min_iou = config.white.white_format_min_iou
     return _best_outline(grey, bbox, sizes_px, scale, config, config.white.white_min_edge_support,
-                         lambda u, v, fw, fh, face: boxes_iou(u, v, fw, fh, face) >= min_iou)
-
-
-def boxes_iou(u: np.ndarray, v: np.ndarray, w: float, h: float, box) -> np.ndarray:
-    """Intersection over union of the boxes (u, v, w, h) (corners as arrays, one size) with ``box``; 0 where
-    they do not overlap (:func:`.boxes.box_iou` of each)."""
-    x, y, bw, bh = box
-    inter = (np.maximum(0.0, np.minimum(u + w, x + bw) - np.maximum(u, x))
-             * np.maximum(0.0, np.minimum(v + h, y + bh) - np.maximum(v, y)))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(inter > 0, inter / (w * h + bw * bh - inter), 0.0)
+                         lambda u, v, fw, fh, face: box_ious(face, np.column_stack(
+                             [u, v, np.full_like(u, fw), np.full_like(u, fh)])) >= min_iou)
 
 
 def panel_around(grey: np.ndarray, bbox: Box, sizes_px: Sequence[Tuple[float, float]], scale: float,

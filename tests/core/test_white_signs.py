@@ -7,11 +7,10 @@ import pytest
 from pipeline_scenes import CAMERA, POSE, noisy_background, sign_scene
 
 from signmapper_core.pipeline import PipelineConfig, detect_pair
-from signmapper_core.pipeline.boxes import box_iou
+from signmapper_core.pipeline.boxes import box_iou, box_ious
 from signmapper_core.pipeline.config import with_settings
 from signmapper_core.pipeline.detection import Detection
 from signmapper_core.pipeline.white_outlines import (
-    boxes_iou,
     edge_support,
     face_side_range_px,
     format_outline,
@@ -195,13 +194,14 @@ def test_unions_read_together_keep_each_its_own_readings():
     assert readings[0][0][1] == read_face(cells, box, gradients, CONFIG)[0][1]
 
 
-def test_boxes_iou_agrees_with_the_iou_of_each_box():
+def test_box_ious_agrees_with_the_iou_of_each_box():
     rng = np.random.default_rng(5)
     face = (10.0, 12.0, 30.0, 20.0)
     u, v = rng.uniform(-20, 50, 200), rng.uniform(-20, 50, 200)
     expected = [box_iou((a, b, 25.0, 18.0), face) for a, b in zip(u, v)]
-    assert boxes_iou(u, v, 25.0, 18.0, face) == pytest.approx(expected)
-    assert 0 < np.count_nonzero(boxes_iou(u, v, 25.0, 18.0, face)) < 200  # some overlap, some do not
+    placed = np.column_stack([u, v, np.full(200, 25.0), np.full(200, 18.0)])
+    assert box_ious(face, placed) == pytest.approx(expected)
+    assert 0 < np.count_nonzero(box_ious(face, placed)) < 200  # some overlap, some do not
 
 
 def test_a_disc_above_its_plate_stays_a_candidate_beside_their_joint_panel_reading(catalogue):
