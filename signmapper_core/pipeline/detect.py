@@ -293,7 +293,8 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
             panels.append((match, face, cls))
         elif cls.template_id in zone_panels and inside_white_panel(left, depth, seg.bbox, size.depth_m, config):
             held_panels.append((match, face, cls))
-    readings, panels, held_panels = (_without_unclear_off_format(found, catalogue, accept)
+    readings, panels, held_panels = (most_evident_per_face(_without_unclear_off_format(found, catalogue, accept),
+                                                           config.rims.rim_same_iou)
                                      for found in (readings, panels, held_panels))
     good_panels = [r for r in panels + held_panels if r[2].score >= accept]
     # each reading's indicator is a probability over its own candidates, so readings of other shapes are not
@@ -310,7 +311,6 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     # enough to be mapped: one that would not be must not turn the face from `unknown` into nothing)
     pool = [r for r in pool if matches_its_entry(r[2], classifier, config) and
             r[2].score >= min_score(classifier, config)] or pool
-    pool = most_evident_per_face(pool)
     # near-ties (a confident network reads the face and its rimless part alike) go to the earliest reading: the
     # face as the colour extent implies it comes before the rims measured in the image
     top = max((r[2].score for r in pool), default=0.0)
@@ -382,22 +382,24 @@ def _open_set_limit(classifier, config: PipelineConfig) -> Optional[float]:
     return getattr(classifier, "unknown_logit", None) if config.classification.open_set else None
 
 
-def most_evident_per_face(readings: list) -> list:
-    """``readings`` (match, face, classification) with, of those of one face box, only the one whose sign the
+def most_evident_per_face(readings: list, same_iou: float) -> list:
+    """``readings`` (match, face, classification) with, of those of one face, only the one whose sign the
     network sees most clearly (its logit), in their order; all of them where the classifier gives no logit
-    (template matching).
+    (template matching). Boxes overlapping at least ``same_iou`` [IoU] are one face: entries whose colour lies
+    elsewhere in their drawing place the same face a pixel or two apart.
 
-    Readings of one box saw the same pixels, but each score is a probability among that reading's own
+    Readings of one face saw the same pixels, but each score is a probability among that reading's own
     candidates: read among standard formats and among entries of measured size, the box goes to the reading
     with fewer good rivals (the parking-disc sign 4.18 at logit 3.8, 0.92, lost to 4.22, which the network
-    sees less, at logit 2.6, 0.97, where 4.18 was no candidate)."""
+    sees less, at logit 2.6, 0.97, where 4.18 was no candidate; a mountain-bike pointer 4.50.3 at logit 5.2,
+    0.78 among two cycle pointers, to the skating pointer 4.50.4 at logit 3.9, its box's one candidate)."""
     if not all(math.isfinite(cls.fit) for _, _, cls in readings):
         return list(readings)
-    best = {}
-    for k, (_, face, cls) in enumerate(readings):
-        if face not in best or cls.fit > readings[best[face]][2].fit:
-            best[face] = k
-    keep = set(best.values())
+    kept: list = []
+    for k in sorted(range(len(readings)), key=lambda k: -readings[k][2].fit):
+        if all(box_iou(readings[k][1], readings[j][1]) < same_iou for j in kept):
+            kept.append(k)
+    keep = set(kept)
     return [r for k, r in enumerate(readings) if k in keep]
 
 

@@ -1,12 +1,14 @@
-"""Which of a face's readings stands for it (``detect.most_evident_per_face``): readings of one box are told
+"""Which of a face's readings stands for it (``detect.most_evident_per_face``): readings of one face are told
 apart by the network's logit, not by their scores, which are probabilities among each reading's own candidates."""
 
 import math
 
 from signmapper_core.pipeline.classify import ClassificationResult
+from signmapper_core.pipeline.config import PipelineConfig
 from signmapper_core.pipeline.detect import most_evident_per_face
 
 BOX, OTHER_BOX = (1370, 353, 97, 138), (1349, 284, 139, 276)
+SAME_IOU = PipelineConfig().rims.rim_same_iou
 
 
 def _reading(face, template_id, score, logit):
@@ -17,16 +19,32 @@ def test_of_one_box_the_reading_the_network_sees_most_clearly_stays():
     measured = _reading(BOX, "4.22", 0.97, 2.6)  # among boards without 4.18: fewer good rivals, a higher score
     standard = _reading(BOX, "4.18", 0.92, 3.8)
     grown = _reading(OTHER_BOX, "2.59.1-P", 0.40, 0.5)
-    kept = most_evident_per_face([measured, grown, standard])
+    kept = most_evident_per_face([measured, grown, standard], SAME_IOU)
     assert [r[2].template_id for r in kept] == ["2.59.1-P", "4.18"]  # in their order, one per box
 
 
 def test_readings_without_a_logit_all_stay():
     # template matching gives no logit: its scores are what there is to compare
     a, b = _reading(BOX, "4.22", 0.97, math.inf), _reading(BOX, "4.18", 0.92, math.inf)
-    assert most_evident_per_face([a, b]) == [a, b]
+    assert most_evident_per_face([a, b], SAME_IOU) == [a, b]
 
 
 def test_equal_logits_keep_the_earlier_reading():
     a, b = _reading(BOX, "4.08", 0.99, 5.0), _reading(BOX, "4.08.1", 0.99, 5.0)
-    assert most_evident_per_face([a, b]) == [a]
+    assert most_evident_per_face([a, b], SAME_IOU) == [a]
+
+
+def test_boxes_a_pixel_or_two_apart_are_one_face():
+    # a cycle pointer placed by each entry's colour extent: the mountain-bike reading among two pointers
+    # (seed 604, pair 18) and the skating pointer's, its box's one candidate, 3 px narrower
+    skating = _reading((380, 555, 89, 17), "4.50.4", 1.0, 3.92)
+    mountain_bike = _reading((377, 555, 92, 18), "4.50.3", 0.775, 5.23)
+    tourist = _reading((374, 555, 95, 17), "0.1", 0.996, -0.43)
+    kept = most_evident_per_face([tourist, mountain_bike, skating], SAME_IOU)
+    assert [r[2].template_id for r in kept] == ["4.50.3"]
+
+
+def test_overlapping_boxes_below_the_limit_stay_apart():
+    disc, with_rim = (100, 100, 40, 40), (94, 94, 52, 52)  # a rim measured around a disc: IoU 0.59
+    a, b = _reading(disc, "2.02", 0.99, 6.0), _reading(with_rim, "3.01", 0.98, 4.0)
+    assert most_evident_per_face([a, b], SAME_IOU) == [a, b]
