@@ -174,6 +174,12 @@ class Catalogue:
         entry = self[template_id]
         return [_read_image(self.folder / image, entry.shape, template_id) for image in entry.variants]
 
+    def render_variants(self, template_id: str, size_px) -> list[tuple[np.ndarray, np.ndarray]]:
+        """(bgr, alpha) of each further drawing of an entry at ``size_px``, as :meth:`render` gives its master;
+        read from the PNGs each time (callers keep what they need)."""
+        w, h = pixel_size(self[template_id].aspect, size_px)
+        return [(_resize(bgr, w, h), _resize(alpha, w, h)) for bgr, alpha in self.variant_masters(template_id)]
+
     def render(self, template_id: str, size_px, keep_master: bool = True) -> tuple[np.ndarray, np.ndarray]:
         """(bgr, alpha) at ``size_px`` (longer side, or (w, h)); alpha is 255 inside the sign outline.
 

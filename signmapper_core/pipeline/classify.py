@@ -52,6 +52,22 @@ def _cropped_to_face(bgr: np.ndarray, alpha: np.ndarray) -> tuple:
     return bgr, alpha
 
 
+def canonical_drawings(catalogue, template_id: str) -> list:
+    """:func:`canonical_template` of the entry and of each of its further drawings (a pointer pointing the other
+    way, another language), each cropped to its face; the further ones rendered once per catalogue."""
+    key = (id(catalogue), template_id + "~variants")
+    hit = _render_cache.get(key)
+    if hit is None or hit[0] is not catalogue:
+        hit = (catalogue, [_cropped_to_face(*drawn) for drawn in catalogue.render_variants(template_id, CANONICAL_PX)])
+        _render_cache[key] = hit
+    return [canonical_template(catalogue, template_id)] + hit[1]
+
+
+def drawings_at(catalogue, template_id: str, width: int, height: int) -> list:
+    """:func:`template_at` of the entry's master and of each of its further drawings (:func:`canonical_drawings`)."""
+    return [_sized(bgr, alpha, width, height) for bgr, alpha in canonical_drawings(catalogue, template_id)]
+
+
 def canonical_templates(catalogue, threads: int = 1) -> Dict[str, tuple]:
     """:func:`canonical_template` of every template, without keeping the full-size images.
 
@@ -76,7 +92,10 @@ def seed_canonical_templates(catalogue, templates: Dict[str, tuple]) -> None:
 
 def template_at(catalogue, template_id: str, width: int, height: int) -> tuple:
     """Template (bgr, binary alpha) resized so its face fills width x height pixels."""
-    bgr, alpha = canonical_template(catalogue, template_id)
+    return _sized(*canonical_template(catalogue, template_id), width, height)
+
+
+def _sized(bgr: np.ndarray, alpha: np.ndarray, width: int, height: int) -> tuple:
     interp = cv2.INTER_AREA if width < bgr.shape[1] else cv2.INTER_LINEAR
     bgr = cv2.resize(bgr, (width, height), interpolation=interp)
     alpha = cv2.resize(alpha, (width, height), interpolation=cv2.INTER_LINEAR)
@@ -220,19 +239,25 @@ def surround_score(image: np.ndarray, face, catalogue, template_id: str, extent,
     sign on a wall: only the pixels outside the colour part, grown by ``grow`` of the face, count.
     With ``max_saturation``, a surround the drawing has achromatic (its median saturation at most that) must be
     so in the image too, else -1: the grey levels of a pale blue sky around a disc high on a pole match a zone
-    panel's white.
+    panel's white. Each drawing of the entry is compared (a pointer is made pointing either way); the best counts.
     """
     x, y, w, h = face
     height, width = image.shape[:2]
     if w < 4 or h < 4 or x < 0 or y < 0 or x + w > width or y + h > height:
         return -1.0
-    tmpl, alpha = template_at(catalogue, template_id, w, h)
+    crop = image[y : y + h, x : x + w]
+    return max(_surround_match(crop, tmpl, alpha, extent, grow, max_saturation)
+               for tmpl, alpha in drawings_at(catalogue, template_id, w, h))
+
+
+def _surround_match(crop: np.ndarray, tmpl: np.ndarray, alpha: np.ndarray, extent, grow: float,
+                    max_saturation: Optional[int]) -> float:
+    h, w = crop.shape[:2]
     fx0, fy0, fx1, fy1 = extent
     alpha[max(0, int((fy0 - grow) * h)) : int(np.ceil((fy1 + grow) * h)),
           max(0, int((fx0 - grow) * w)) : int(np.ceil((fx1 + grow) * w))] = 0
     if np.count_nonzero(alpha) < 16:
         return -1.0
-    crop = image[y : y + h, x : x + w]
     if max_saturation is not None:
         around = alpha > 0
         drawn = np.median(cv2.cvtColor(tmpl, cv2.COLOR_BGR2HSV)[..., 1][around])

@@ -506,6 +506,7 @@ class TemplateGeometry:
     template_panel_part_area: Tuple[float, float] = (0.1, 0.8)  # share of a panel its inset part (zone disc) covers
     template_bright_grey: int = 128  # a face's bright part is its pixels at least this grey [0-255]: yellow is ~190
     template_same_part_tolerance: float = 0.03  # a colour in another's range over its part within this reads as it
+    template_same_place: float = 0.03  # parts of two drawings whose sides lie this close [share of the face] are one
 
 
 TEMPLATE_GEOMETRY = TemplateGeometry()

@@ -311,15 +311,14 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     # enough to be mapped: one that would not be must not turn the face from `unknown` into nothing)
     pool = [r for r in pool if matches_its_entry(r[2], classifier, config) and
             r[2].score >= min_score(classifier, config)] or pool
-    # near-ties (a confident network reads the face and its rimless part alike) go to the earliest reading: the
-    # face as the colour extent implies it comes before the rims measured in the image
+    # near-ties are told apart by how well each face matches its sign, the logit: readings near 1 that name
+    # different signs (the square 4.08 and, grown by its white lower part, the one-way street for cyclists
+    # 4.08.1), or one sign's face placed by two of its drawings (a pointer grown from its symbol as if pointing
+    # either way); equal logits (or none: template matching) go to the earliest reading, the face as the colour
+    # extent implies it before the rims measured in the image
     top = max((r[2].score for r in pool), default=0.0)
     tied = [r for r in pool if r[2].score >= top - READING_TIE]
-    best = tied[0] if tied else None
-    if best is not None and any(r[2].template_id != best[2].template_id for r in tied):
-        # readings near 1 that name different signs (the square 4.08 and, grown by its white lower part, the
-        # one-way street for cyclists 4.08.1) are told apart by how well each face matches its sign: the logit
-        best = max(tied, key=lambda r: r[2].fit)
+    best = max(tied, key=lambda r: r[2].fit) if tied else None
     # an outline that only fits loosely, or a round one sized as seen at an angle (its box alone fits no
     # format), must resemble its template clearly: a cut of something else fits those readings too easily
     w, h = seg.bbox[2], seg.bbox[3]

@@ -18,7 +18,7 @@ import cv2
 import numpy as np
 
 from .boxes import box_iou
-from .classify import canonical_template
+from .classify import canonical_drawings, canonical_template
 from .colour import hsv_mask
 from .config import TEMPLATE_GEOMETRY
 from .shape import IDEAL_POLYGONS, classify_shape
@@ -52,8 +52,11 @@ def _colour_mask(catalogue, template_id: str, colour: str, hsv_ranges) -> Option
     None for a colour without thresholds."""
     if colour not in hsv_ranges:
         return None
-    bgr, alpha = canonical_template(catalogue, template_id)
-    mask = hsv_mask(cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV), hsv_ranges[colour])
+    return _drawing_colour_mask(*canonical_template(catalogue, template_id), hsv_ranges[colour])
+
+
+def _drawing_colour_mask(bgr: np.ndarray, alpha: np.ndarray, ranges) -> np.ndarray:
+    mask = hsv_mask(cv2.cvtColor(bgr, cv2.COLOR_BGR2HSV), ranges)
     mask[alpha <= 127] = 0
     return mask
 
@@ -69,6 +72,28 @@ def colour_part(catalogue, template_id: str, colour: str, hsv_ranges) -> Tuple[O
     """
     return _measured_once(catalogue, (id(catalogue), template_id, colour, _ranges_key(hsv_ranges, colour)),
                           lambda: _part_of(_colour_mask(catalogue, template_id, colour, hsv_ranges)))
+
+
+def further_parts(catalogue, template_id: str, colour: str, hsv_ranges) -> List[Tuple[Extent, Optional[str]]]:
+    """(extent, outline shape) of the ``colour`` part in each further drawing of the template (a pointer pointing
+    the other way carries its symbol at the other end) placed otherwise than in its master and in each other."""
+    def measure():
+        master = colour_part(catalogue, template_id, colour, hsv_ranges)
+        places = [master] if master[0] is not None else []
+        for bgr, alpha in canonical_drawings(catalogue, template_id)[1:]:
+            part = _part_of(_drawing_colour_mask(bgr, alpha, hsv_ranges[colour]))
+            if part[0] is not None and not any(_same_place(part[0], seen) for seen, _ in places):
+                places.append(part)
+        return places[1:] if master[0] is not None else places
+
+    if colour not in hsv_ranges:
+        return []
+    return _measured_once(catalogue, (id(catalogue), template_id, "further:" + colour,
+                                      _ranges_key(hsv_ranges, colour)), measure)
+
+
+def _same_place(a: Extent, b: Extent) -> bool:
+    return all(abs(p - q) <= TEMPLATE_GEOMETRY.template_same_place for p, q in zip(a, b))
 
 
 def _template_shape(mask: np.ndarray) -> Optional[str]:
@@ -218,6 +243,9 @@ def _candidate_entries(catalogue, colour: str, shapes, hsv_ranges, allowed, excl
             out.append((entry, extent))
         elif entry.shape in PANEL_SHAPES and part_shape in shapes and _panel_part(extent):
             out.append((entry, extent))
+            # the same panel drawn otherwise (pointing the other way): its part elsewhere, its face grown elsewhere
+            out += [(entry, other) for other, other_shape in further_parts(catalogue, entry.id, colour, hsv_ranges)
+                    if other_shape in shapes and _panel_part(other)]
         elif entry.shape in shapes and part_shape in shapes and reads_as(catalogue, entry, colour, hsv_ranges):
             out.append((entry, extent))  # its own colour reads as this one: the network tells them apart
     return out

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import cv2
 import numpy as np
 
 from signmapper_core.geometry import Camera, Pose
@@ -45,11 +46,12 @@ def paste(image: np.ndarray, bgr: np.ndarray, alpha: np.ndarray, x: int, y: int)
 
 
 def sign_scene(catalogue, template_id, size_m, sign_world, depth_m=None, seed=0, camera=CAMERA, pose=POSE,
-               background_depth=None):
+               background_depth=None, variant=None):
     """Left image and depth of a flat sign face centred at ``sign_world``, facing the camera.
 
     Returns (left, depth, bbox). Depth is the sign's Z on the face (constant: it faces
-    the camera) and ``background_depth`` elsewhere (default: the same plane).
+    the camera) and ``background_depth`` elsewhere (default: the same plane). ``variant``: the index of one of
+    the entry's further drawings (a pointer pointing the other way) instead of its master.
     """
     from signmapper_core.geometry import world_to_pixel
 
@@ -58,7 +60,12 @@ def sign_scene(catalogue, template_id, size_m, sign_world, depth_m=None, seed=0,
     entry = catalogue[template_id]
     w_m, h_m = entry.formats[size_m] if isinstance(size_m, str) else size_m
     w, h = int(round(w_m * camera.fx / z)), int(round(h_m * camera.fy / z))
-    bgr, alpha = catalogue.render(template_id, (w, h))
+    if variant is None:
+        bgr, alpha = catalogue.render(template_id, (w, h))
+    else:
+        drawn, drawn_alpha = catalogue.variant_masters(template_id)[variant]
+        bgr = cv2.resize(drawn, (w, h), interpolation=cv2.INTER_AREA)
+        alpha = np.where(cv2.resize(drawn_alpha, (w, h), interpolation=cv2.INTER_AREA) > 127, 255, 0).astype(np.uint8)
     left = noisy_background(seed=seed)
     x, y = int(round(float(u) - (w - 1) / 2)), int(round(float(v) - (h - 1) / 2))
     paste(left, bgr, alpha, x, y)

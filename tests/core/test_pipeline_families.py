@@ -133,13 +133,15 @@ def test_a_one_way_street_for_cyclists_is_not_read_as_its_upper_square(catalogue
 
 @pytest.mark.parametrize("template_id", ["4.46", "4.46.1"])
 @pytest.mark.parametrize("ahead", [6.0, 9.0])
-def test_a_white_pointer_is_found_by_its_blue_parking_symbol(catalogue, template_id, ahead):
+@pytest.mark.parametrize("variant", [None, 0])
+def test_a_white_pointer_is_found_by_its_blue_parking_symbol(catalogue, template_id, ahead, variant):
     """The blue square of a white parking pointer is a part of a panel, as a zone panel's disc is: read alone it
-    was mapped as `unknown` (0.21 m wide), the pointer around it not at all."""
+    was mapped as `unknown` (0.21 m wide), the pointer around it not at all. Pointing the other way (variant 0, the
+    symbol at its left end) the pointer was grown from the symbol to the left, as the master is drawn, and missed."""
     entry = catalogue[template_id]
     face = _size(entry, 1.2)
     sign = _world(ahead, -1.0, 0.3)
-    left, depth, _ = sign_scene(catalogue, template_id, face, sign, seed=2)
+    left, depth, _ = sign_scene(catalogue, template_id, face, sign, seed=2, variant=variant)
     dets = detect_pair(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig())
     assert [(d.template_id, d.status) for d in dets] == [(template_id, "accepted")]
     assert dets[0].width_m == pytest.approx(face[0], rel=0.05) and np.linalg.norm(dets[0].position - sign) < 0.03
