@@ -293,9 +293,10 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
             panels.append((match, face, cls))
         elif cls.template_id in zone_panels and inside_white_panel(left, depth, seg.bbox, size.depth_m, config):
             held_panels.append((match, face, cls))
-    readings, panels, held_panels = (most_evident_per_face(_without_unclear_off_format(found, catalogue, accept),
-                                                           config.rims.rim_same_iou)
-                                     for found in (readings, panels, held_panels))
+    readings, panels, held_panels = (
+        most_evident_per_face(_without_unclear_off_format(found, catalogue, accept),
+                              config.classification.same_sign_max_iou, lambda tid: catalogue[tid].shape)
+        for found in (readings, panels, held_panels))
     good_panels = [r for r in panels + held_panels if r[2].score >= accept]
     # each reading's indicator is a probability over its own candidates, so readings of other shapes are not
     # ranked by it: the outline's best-fitting shape decides (a stop sign, its octagon the best fit, read as
@@ -381,11 +382,13 @@ def _open_set_limit(classifier, config: PipelineConfig) -> Optional[float]:
     return getattr(classifier, "unknown_logit", None) if config.classification.open_set else None
 
 
-def most_evident_per_face(readings: list, same_iou: float) -> list:
+def most_evident_per_face(readings: list, same_iou: float, shape_of=None) -> list:
     """``readings`` (match, face, classification) with, of those of one face, only the one whose sign the
     network sees most clearly (its logit), in their order; all of them where the classifier gives no logit
-    (template matching). Boxes overlapping at least ``same_iou`` [IoU] are one face: entries whose colour lies
-    elsewhere in their drawing place the same face a pixel or two apart.
+    (template matching). Boxes overlapping more than ``same_iou`` [IoU] are one face, as detections of a pair
+    are one sign (entries whose colour lies elsewhere in their drawing place the same face a few pixels apart);
+    with ``shape_of`` (template id -> outline shape), only readings that name signs of one shape (the outline
+    decides between shapes, not the logit).
 
     Readings of one face saw the same pixels, but each score is a probability among that reading's own
     candidates: read among standard formats and among entries of measured size, the box goes to the reading
@@ -394,9 +397,11 @@ def most_evident_per_face(readings: list, same_iou: float) -> list:
     0.78 among two cycle pointers, to the skating pointer 4.50.4 at logit 3.9, its box's one candidate)."""
     if not all(math.isfinite(cls.fit) for _, _, cls in readings):
         return list(readings)
+    kind = (lambda r: shape_of(r[2].template_id)) if shape_of is not None else (lambda r: None)
     kept: list = []
     for k in sorted(range(len(readings)), key=lambda k: -readings[k][2].fit):
-        if all(box_iou(readings[k][1], readings[j][1]) < same_iou for j in kept):
+        if all(box_iou(readings[k][1], readings[j][1]) <= same_iou or kind(readings[k]) != kind(readings[j])
+               for j in kept):
             kept.append(k)
     keep = set(kept)
     return [r for k, r in enumerate(readings) if k in keep]

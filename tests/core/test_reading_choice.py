@@ -7,8 +7,8 @@ from signmapper_core.pipeline.classify import ClassificationResult
 from signmapper_core.pipeline.config import PipelineConfig
 from signmapper_core.pipeline.detect import most_evident_per_face
 
-BOX, OTHER_BOX = (1370, 353, 97, 138), (1349, 284, 139, 276)
-SAME_IOU = PipelineConfig().rims.rim_same_iou
+BOX, OTHER_BOX = (1370, 353, 97, 138), (1349, 120, 139, 276)  # IoU 0.09
+SAME_IOU = PipelineConfig().classification.same_sign_max_iou
 
 
 def _reading(face, template_id, score, logit):
@@ -44,7 +44,17 @@ def test_boxes_a_pixel_or_two_apart_are_one_face():
     assert [r[2].template_id for r in kept] == ["4.50.3"]
 
 
-def test_overlapping_boxes_below_the_limit_stay_apart():
-    disc, with_rim = (100, 100, 40, 40), (94, 94, 52, 52)  # a rim measured around a disc: IoU 0.59
-    a, b = _reading(disc, "2.02", 0.99, 6.0), _reading(with_rim, "3.01", 0.98, 4.0)
+def test_boxes_overlapping_less_than_one_sign_stay_apart():
+    sign, beside = (100, 100, 40, 40), (125, 100, 40, 40)  # IoU 0.23: two signs side by side
+    a, b = _reading(sign, "2.02", 0.99, 6.0), _reading(beside, "2.01", 0.98, 4.0)
     assert most_evident_per_face([a, b], SAME_IOU) == [a, b]
+
+
+def test_readings_of_other_shapes_are_left_to_the_outline():
+    # a stop sign read with its white rim (its octagon) and, as a disc of the red alone, as no entry: the
+    # outline's best fit decides between them later, the logit only among signs of one shape
+    disc, with_rim = (100, 100, 40, 40), (96, 96, 48, 48)
+    no_entry, stop = _reading(disc, "2.02", 0.99, 6.0), _reading(with_rim, "3.01", 0.98, 4.0)
+    shapes = {"2.02": "circle", "3.01": "octagon"}.get
+    assert most_evident_per_face([stop, no_entry], SAME_IOU, shapes) == [stop, no_entry]
+    assert most_evident_per_face([stop, no_entry], SAME_IOU) == [no_entry]
