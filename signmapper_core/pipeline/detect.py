@@ -293,16 +293,17 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
             panels.append((match, face, cls))
         elif cls.template_id in zone_panels and inside_white_panel(left, depth, seg.bbox, size.depth_m, config):
             held_panels.append((match, face, cls))
-    readings, panels, held_panels = (
-        most_evident_per_face(_without_unclear_off_format(found, catalogue, accept),
-                              config.classification.same_sign_max_iou, lambda tid: catalogue[tid].shape)
-        for found in (readings, panels, held_panels))
-    good_panels = [r for r in panels + held_panels if r[2].score >= accept]
     # each reading's indicator is a probability over its own candidates, so readings of other shapes are not
     # ranked by it: the outline's best-fitting shape decides (a stop sign, its octagon the best fit, read as
     # 3.01 with its white rim at 0.98 and, as a disc of the red alone, as no entry 2.02 at 0.99; a disc read
     # doubtfully among the round signs and, with a rim, as the stop sign, its octagon reading's one candidate)
     best_fit_shapes = set(catalogue_shapes(shape, seg.bbox[2], seg.bbox[3]))
+    readings, panels, held_panels = (
+        most_evident_per_face(_without_unclear_off_format(found, catalogue, accept),
+                              config.classification.same_sign_max_iou,
+                              lambda tid: catalogue[tid].shape in best_fit_shapes)
+        for found in (readings, panels, held_panels))
+    good_panels = [r for r in panels + held_panels if r[2].score >= accept]
     of_best_fit = [r for r in readings if catalogue[r[2].template_id].shape in best_fit_shapes]
     of_outline = [r for r in of_best_fit if r[2].score >= accept]
     pool = good_panels or of_outline or of_best_fit or readings or panels
@@ -387,8 +388,8 @@ def most_evident_per_face(readings: list, same_iou: float, shape_of=None) -> lis
     network sees most clearly (its logit), in their order; all of them where the classifier gives no logit
     (template matching). Boxes overlapping more than ``same_iou`` [IoU] are one face, as detections of a pair
     are one sign (entries whose colour lies elsewhere in their drawing place the same face a few pixels apart);
-    with ``shape_of`` (template id -> outline shape), only readings that name signs of one shape (the outline
-    decides between shapes, not the logit).
+    with ``shape_of`` (template id -> a key: the shape, or whether it is the outline's best fit), only readings
+    that name signs of one key (the outline decides between shapes, not the logit).
 
     Readings of one face saw the same pixels, but each score is a probability among that reading's own
     candidates: read among standard formats and among entries of measured size, the box goes to the reading
