@@ -1,9 +1,8 @@
 """Counting the lines of text on a direction sign's face, to type it within its group of line counts.
 
-The face's field is the median colour around each pixel (a shadow across the face is field); text (white on
-brown, blue or green, black on orange) is every pixel far from it. Rows holding text form one band per line; a
-band narrower than a share of the face's height, or than a share of the highest band, is a stroke of the border,
-a speck or a line's accents, not a line.
+The face's field is its most common colour; text (white on brown, blue or green, black on orange) is every
+pixel far from it. Rows holding text form one band per line; a band narrower than a share of the face's height,
+or than a share of the highest band, is a stroke of the border, a speck or a line's accents, not a line.
 """
 
 from __future__ import annotations
@@ -34,11 +33,9 @@ def text_line_count(bgr: np.ndarray, bbox, config) -> Optional[int]:
     inner = bgr[max(y + dy, 0) : max(y + h - dy, 0), max(x + dx, 0) : max(x + w - dx, 0)]
     if inner.shape[0] < 3 or inner.shape[1] < 3:
         return None
-    lab = cv2.cvtColor(np.ascontiguousarray(inner), cv2.COLOR_BGR2LAB)
-    # the field around each pixel: a shadow across the face or a sunlit half is field, not text
-    window = max(3, int(round(config.text_lines_field_window * h)) | 1)
-    field = cv2.medianBlur(lab, window)
-    ink = np.linalg.norm(lab.astype(np.float32) - field, axis=2) > config.text_lines_contrast
+    lab = cv2.cvtColor(inner, cv2.COLOR_BGR2LAB).reshape(-1, 3).astype(np.float32)
+    field = np.median(lab, axis=0)
+    ink = (np.linalg.norm(lab - field, axis=1) > config.text_lines_contrast).reshape(inner.shape[:2])
     ink = ink[:, ink.mean(axis=0) <= config.text_lines_max_column_ink]  # a pole in front is no text
     if ink.shape[1] == 0:
         return None

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import cv2
 import numpy as np
 import pytest
 
@@ -64,18 +63,3 @@ def test_accents_above_a_line_are_no_line_of_their_own():
     face[14:19, 16:58:3] = 255  # the second's
     assert text_line_count(face, (0, 0, 80, 21), CONFIG) == 2
 
-
-def test_a_shadow_across_the_face_is_field_not_text(catalogue):
-    """A place-name sign 4.27-3 ('Biel / Bienne / BE') half in the sun: measured from the face's one median colour,
-    the sunlit part was text in every row, the lines one band (tune drive 604: the last two, and the sign typed
-    4.27-2)."""
-    face = _drawing(catalogue, "4.27-3", 200)
-    h, w = face.shape[:2]
-    sunlit = np.zeros((h, w), np.uint8)
-    cv2.fillPoly(sunlit, [np.int32([[w * 0.5, 0], [w, 0], [w, h], [w * 0.6, h]])], 1)
-    sunlit = cv2.GaussianBlur(sunlit.astype(np.float32), (0, 0), 3.0)  # a shadow's soft edge
-    lit = face.astype(np.float32) + sunlit[..., None] * np.float32([90, 80, 60])
-    face = np.clip(lit, 0, 255).astype(np.uint8)
-    box = (0, 0, w, h)
-    assert text_line_count(face, box, CONFIG) == 3
-    assert typed_by_lines("4.27-3", face, box, catalogue, CONFIG) == "4.27-3"
