@@ -53,7 +53,7 @@ class ColourConfig:
     split_min_gain: float = 0.05  # ...and their hull fits an ideal outline this much better than either piece
     board_edge_align: float = 0.12  # two rectangles a pole cut from one board: edges level within this x their height
     board_max_gap: float = 0.6  # ...at most this x their height apart...
-    board_min_aspect: float = 2.0  # ...and together at least this many times as wide as high
+    board_min_aspect: float = 1.3  # ...and together at least this many times as wide as high (place names: 1.4)
 
     def __post_init__(self):
         unknown = set(self.colours) - set(self.hsv_ranges)
@@ -296,8 +296,7 @@ class ClassificationConfig:
     measured_print_inset: float = 0.2  # a face sized as measured shows such print this far inside (tail lights: none)
     text_lines_min_px: int = 18  # direction signs are told by their lines of text on faces this high [px]
     text_lines_inset: Tuple[float, float] = (0.2, 0.06)  # (width, height) share cut off each side: border, a tip
-    text_lines_contrast: float = 60.0  # text is this far from the field's colour [Lab distance]...
-    text_lines_field_window: float = 0.25  # ...around it, its median over this x the face's height (a shadow)
+    text_lines_contrast: float = 60.0  # text is this far from the field's colour [Lab distance]
     text_lines_max_column_ink: float = 0.8  # a column this full of "text" is a pole or post in front
     text_lines_row_share: float = 0.03  # a row with this share of text pixels is text (a gap between lines: none)
     text_lines_min_height: float = 0.08  # a line is a band of text rows at least this x the face's height
