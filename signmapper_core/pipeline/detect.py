@@ -225,6 +225,12 @@ def segment_candidates(seg: Segment, shape, catalogue, config: PipelineConfig):
                                exclude)
     allowed = tuple(config.colour.colours) + ("white",)
     out = candidate_entries(catalogue, seg.colour, shapes, hsv_ranges, allowed, exclude)
+    offered = {entry.id for entry, _ in out}
+    for other in config.colour.also_offered.get(seg.colour, ()):
+        if other in allowed:  # its own entries, read as if segmented in their colour
+            out += [(entry, ext) for entry, ext in candidate_entries(catalogue, other, shapes, hsv_ranges, allowed,
+                                                                     exclude)
+                    if entry.colour == other and entry.id not in offered]
     dusk_yellow = config.colour.red_diamonds_as_yellow and "yellow" in allowed
     if dusk_yellow and seg.colour == "red" and outlines[0] == "diamond":
         # a priority road's yellow turns dark orange at dusk and reads as red; no red sign is a diamond (only as

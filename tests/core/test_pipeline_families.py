@@ -162,6 +162,26 @@ def test_a_cars_tail_lights_are_no_boards(catalogue, ahead):
     assert detect_pair(left, depth, None, CAMERA, POSE, catalogue, PipelineConfig()) == []
 
 
+@pytest.mark.parametrize("ahead", [7.0, 10.0])
+def test_a_diversion_pointer_in_shade_segmented_as_yellow_is_offered_its_orange_entries(catalogue, ahead):
+    """Diversion orange in shade turns dark and a little yellower (tune drive 602: hue 16, value 132, below
+    orange's 150): segmented as yellow, the pointer 4.34 was read among the yellow hiking pointers, 0.3."""
+    face = _size(catalogue["4.34"], 1.0)
+    sign = _world(ahead, -1.0, 0.3)
+    left, depth, (x, y, w, h) = sign_scene(catalogue, "4.34", face, sign, seed=2)
+    hsv = cv2.cvtColor(left[y : y + h, x : x + w], cv2.COLOR_BGR2HSV).astype(np.int16)
+    orange = (hsv[..., 0] >= 8) & (hsv[..., 0] <= 18) & (hsv[..., 1] >= 150)
+    hsv[..., 0][orange] += 3
+    hsv[..., 2] = hsv[..., 2] * 55 // 100
+    left[y : y + h, x : x + w] = cv2.cvtColor(hsv.astype(np.uint8), cv2.COLOR_HSV2BGR)
+    config = PipelineConfig()
+    dets = detect_pair(left, depth, None, CAMERA, POSE, catalogue, config)
+    assert [d.template_id for d in dets] == ["4.34"] and np.linalg.norm(dets[0].position - sign) < 0.05
+    alone = detect_pair(left, depth, None, CAMERA, POSE, catalogue,
+                        PipelineConfig(colour=ColourConfig(also_offered={})))
+    assert "4.34" not in [d.template_id for d in alone]  # among the yellow entries alone it is no diversion
+
+
 def test_a_brown_board_segmented_as_red_is_offered_its_brown_entries(catalogue):
     """Tourist brown lies inside red's thresholds (dark red): the colour cut must not decide between them."""
     config = PipelineConfig()
