@@ -54,7 +54,7 @@ def readings_of(seg: Segment, shapes, catalogue, config: PipelineConfig,
     readings of its rim as measured in the image (:func:`.face_extent.rim_face_bboxes`).
     """
     groups: dict = {}
-    for entry, ext in segment_candidates(seg, shapes, catalogue, config):
+    for entry, ext in segment_candidates(seg, shapes, catalogue, config, image):
         key = tuple(round(v, 2) for v in ext)
         groups.setdefault(key, (ext, [], []))[1].append(entry.id)
         groups[key][2].append(entry.shape)

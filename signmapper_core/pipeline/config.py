@@ -46,8 +46,9 @@ class ColourConfig:
     min_face_px: int = 16  # smallest face found without depth [px] (GTSDB's smallest signs); sets the small pass
     max_merge_pieces: int = 40  # most rejected segments tried in pairs as one face split by an occluder
     red_diamonds_as_yellow: bool = True  # a red diamond is a dusk priority road's darkened yellow: no red sign is one
-    # a segment of a key colour is also offered the entries of these colours: orange in shade reads as yellow
+    # a segment of a key colour is also offered the entries of these colours: orange in shade reads as yellow...
     also_offered: Dict[str, Tuple[str, ...]] = field(default_factory=lambda: {"yellow": ("orange",)})
+    offered_hue_drift: int = 2  # ...where its median hue is this close to theirs [0-179] (shaded orange 16, a bus 23)
     merge_max_gap: float = 0.35  # two pieces of one face are at most this x the merged box's size apart...
     merge_max_aspect: float = 2.0  # ...their merged box at most this x longer than wide (else two stacked faces)
     split_min_span_overlap: float = 0.6  # pieces a bar or pole cut apart overlap along the other axis by this share

@@ -208,10 +208,12 @@ def segment_shapes(seg: Segment, config: PipelineConfig) -> Tuple[str, ...]:
     return segment_outline(seg, config)[0]
 
 
-def segment_candidates(seg: Segment, shape, catalogue, config: PipelineConfig):
+def segment_candidates(seg: Segment, shape, catalogue, config: PipelineConfig, image: Optional[np.ndarray] = None):
     """(entry, extent) pairs the segment may be: colour and shape(s) cut the catalogue.
 
-    ``shape``: one outline shape or several (:func:`segment_shapes`).
+    ``shape``: one outline shape or several (:func:`segment_shapes`). With the left ``image``, a segment whose
+    hue lies at the edge of a neighbouring colour's is also offered that colour's entries
+    (``ColourConfig.also_offered``).
     """
     outlines = (shape,) if isinstance(shape, str) else tuple(shape)
     shapes = tuple(dict.fromkeys(c for s in outlines for c in catalogue_shapes(s, seg.bbox[2], seg.bbox[3])))
@@ -227,7 +229,9 @@ def segment_candidates(seg: Segment, shape, catalogue, config: PipelineConfig):
     out = candidate_entries(catalogue, seg.colour, shapes, hsv_ranges, allowed, exclude)
     offered = {entry.id for entry, _ in out}
     for other in config.colour.also_offered.get(seg.colour, ()):
-        if other in allowed:  # its own entries, read as if segmented in their colour
+        if other in allowed and image is not None and _hue_near(image, seg, hsv_ranges.get(other, ()),
+                                                                config.colour.offered_hue_drift):
+            # its own entries, read as if segmented in their colour
             out += [(entry, ext) for entry, ext in candidate_entries(catalogue, other, shapes, hsv_ranges, allowed,
                                                                      exclude)
                     if entry.colour == other and entry.id not in offered]
@@ -237,6 +241,16 @@ def segment_candidates(seg: Segment, shape, catalogue, config: PipelineConfig):
         # the best outline: a blob that fits a disc as well is no middle of a priority road)
         out += candidate_entries(catalogue, "yellow", ("diamond",), hsv_ranges, allowed, exclude)
     return out
+
+
+def _hue_near(image: np.ndarray, seg: Segment, ranges, drift: int) -> bool:
+    """Whether the median hue of the segment's pixels lies within ``drift`` of one of ``ranges``' hue bands."""
+    x, y, w, h = seg.bbox
+    hue = cv2.cvtColor(image[y : y + h, x : x + w], cv2.COLOR_BGR2HSV)[..., 0][seg.mask > 0]
+    if hue.size == 0:
+        return False
+    median = float(np.median(hue))
+    return any(lo - drift <= median <= hi + drift for lo, hi, *_ in ranges)
 
 
 def _off_format(match, entry) -> bool:
@@ -263,7 +277,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     if not shapes:
         return None
     shape = shapes[0]
-    candidates = segment_candidates(seg, shapes, catalogue, config)
+    candidates = segment_candidates(seg, shapes, catalogue, config, left)
     if not candidates:
         return None
     limits = face_depth_limits(camera, seg.bbox, config.depth)
