@@ -296,6 +296,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     # the official one (another design, a shadow) still wins where white lies at its disc's depth above and beside
     # it (zone_panel_surround), held for review.
     readings, panels, held_panels = [], [], []
+    drawn_as = {}  # id(reading) -> (its id, its drawing's colour extent): one drawing placed by its colour or a rim
     zone_panels = carried_discs(catalogue, config.colour.hsv_ranges)
     same_shapes = {c for s in shapes for c in catalogue_shapes(s, seg.bbox[2], seg.bbox[3])}
     classifier = pair.classifier_knowing([i for *_, ids, _ in fits for i in ids])
@@ -306,13 +307,15 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
             continue
         # of a board without standard size, the share of its face the colour segment is
         board_part = (ext[2] - ext[0]) * (ext[3] - ext[1]) if match.format == MEASURED else 1.0
+        reading = (match, face, cls)
+        drawn_as[id(reading)] = (cls.template_id, ext)
         if catalogue[cls.template_id].shape in same_shapes and board_part >= config.classification.min_face_part:
-            readings.append((match, face, cls))  # the face is the segment (maybe with a rim)
+            readings.append(reading)  # the face is the segment (maybe with a rim)
         elif surround_score(left, face, catalogue, cls.template_id, ext, config.classification.surround_grow,
                             config.white.white_max_saturation) >= config.classification.min_surround_score:
-            panels.append((match, face, cls))
+            panels.append(reading)
         elif cls.template_id in zone_panels and inside_white_panel(left, depth, seg.bbox, size.depth_m, config):
-            held_panels.append((match, face, cls))
+            held_panels.append(reading)
     # each reading's indicator is a probability over its own candidates, so readings of other shapes are not
     # ranked by it: the outline's best-fitting shape decides (a stop sign, its octagon the best fit, read as
     # 3.01 with its white rim at 0.98 and, as a disc of the red alone, as no entry 2.02 at 0.99; a disc read
@@ -321,7 +324,7 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     readings, panels, held_panels = (
         most_evident_per_face(_without_unclear_off_format(found, catalogue, accept),
                               config.classification.same_sign_max_iou,
-                              lambda tid: catalogue[tid].shape in best_fit_shapes)
+                              lambda tid: catalogue[tid].shape in best_fit_shapes, lambda r: drawn_as[id(r)])
         for found in (readings, panels, held_panels))
     good_panels = [r for r in panels + held_panels if r[2].score >= accept]
     of_best_fit = [r for r in readings if catalogue[r[2].template_id].shape in best_fit_shapes]
@@ -333,14 +336,15 @@ def evaluate_segment(seg: Segment, pair: PairContext, depth: np.ndarray) -> Opti
     # enough to be mapped: one that would not be must not turn the face from `unknown` into nothing)
     pool = [r for r in pool if matches_its_entry(r[2], classifier, config) and
             r[2].score >= min_score(classifier, config)] or pool
-    # near-ties are told apart by how well each face matches its sign, the logit: readings near 1 that name
-    # different signs (the square 4.08 and, grown by its white lower part, the one-way street for cyclists
-    # 4.08.1), or one sign's face placed by two of its drawings (a pointer grown from its symbol as if pointing
-    # either way); equal logits (or none: template matching) go to the earliest reading, the face as the colour
-    # extent implies it before the rims measured in the image
+    # near-ties (a confident network reads the face and its rimless part alike) go to the earliest reading: the
+    # face as the colour extent implies it comes before the rims measured in the image
     top = max((r[2].score for r in pool), default=0.0)
     tied = [r for r in pool if r[2].score >= top - READING_TIE]
-    best = max(tied, key=lambda r: r[2].fit) if tied else None
+    best = tied[0] if tied else None
+    if best is not None and any(r[2].template_id != best[2].template_id for r in tied):
+        # readings near 1 that name different signs (the square 4.08 and, grown by its white lower part, the
+        # one-way street for cyclists 4.08.1) are told apart by how well each face matches its sign: the logit
+        best = max(tied, key=lambda r: r[2].fit)
     # an outline that only fits loosely, or a round one sized as seen at an angle (its box alone fits no
     # format), must resemble its template clearly: a cut of something else fits those readings too easily
     w, h = seg.bbox[2], seg.bbox[3]
@@ -403,7 +407,7 @@ def _open_set_limit(classifier, config: PipelineConfig) -> Optional[float]:
     return getattr(classifier, "unknown_logit", None) if config.classification.open_set else None
 
 
-def most_evident_per_face(readings: list, same_iou: float, shape_of=None) -> list:
+def most_evident_per_face(readings: list, same_iou: float, shape_of=None, drawn_as=None) -> list:
     """``readings`` (match, face, classification) with, of those of one face, only the one whose sign the
     network sees most clearly (its logit), in their order; all of them where the classifier gives no logit
     (template matching). Boxes overlapping more than ``same_iou`` [IoU] are one face, as detections of a pair
@@ -415,9 +419,14 @@ def most_evident_per_face(readings: list, same_iou: float, shape_of=None) -> lis
     candidates: read among standard formats and among entries of measured size, the box goes to the reading
     with fewer good rivals (the parking-disc sign 4.18 at logit 3.8, 0.92, lost to 4.22, which the network
     sees less, at logit 2.6, 0.97, where 4.18 was no candidate; a mountain-bike pointer 4.50.3 at logit 5.2,
-    0.78 among two cycle pointers, to the skating pointer 4.50.4 at logit 3.9, its box's one candidate)."""
+    0.78 among two cycle pointers, to the skating pointer 4.50.4 at logit 3.9, its box's one candidate).
+    ``drawn_as`` (reading -> a key: its id and its drawing's colour extent) says which readings place one
+    drawing, by its colour or by a rim measured around it: among those the logit does not decide (a tighter box
+    can score higher), their :func:`best_placement` stands for them."""
     if not all(math.isfinite(cls.fit) for _, _, cls in readings):
         return list(readings)
+    if drawn_as is not None:
+        readings = best_placement(readings, same_iou, drawn_as)
     kind = (lambda r: shape_of(r[2].template_id)) if shape_of is not None else (lambda r: None)
     kept: list = []
     for k in sorted(range(len(readings)), key=lambda k: -readings[k][2].fit):
@@ -426,6 +435,22 @@ def most_evident_per_face(readings: list, same_iou: float, shape_of=None) -> lis
             kept.append(k)
     keep = set(kept)
     return [r for k, r in enumerate(readings) if k in keep]
+
+
+def best_placement(readings: list, same_iou: float, drawn_as) -> list:
+    """``readings`` with, of those of one face (boxes overlapping more than ``same_iou``) that place one drawing
+    (equal ``drawn_as`` keys), only the best scored, near-ties (``READING_TIE``) to the earliest: the face as
+    its colour extent implies comes before the rims measured in the image (a priority road's yellow diamond at
+    70 px: its rim's inner edge, 5 px inside the face, read at logit 6.9 against the face's 6.3)."""
+    kept: list = []
+    for reading in readings:
+        rival = next((k for k, other in enumerate(kept) if drawn_as(other) == drawn_as(reading)
+                      and box_iou(other[1], reading[1]) > same_iou), None)
+        if rival is None:
+            kept.append(reading)
+        elif reading[2].score > kept[rival][2].score + READING_TIE:
+            kept[rival] = reading
+    return kept
 
 
 def matches_its_entry(cls, classifier, config: PipelineConfig) -> bool:

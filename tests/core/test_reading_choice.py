@@ -58,3 +58,17 @@ def test_readings_of_other_shapes_are_left_to_the_outline():
     shapes = {"2.02": "circle", "3.01": "octagon"}.get
     assert most_evident_per_face([stop, no_entry], SAME_IOU, shapes) == [stop, no_entry]
     assert most_evident_per_face([stop, no_entry], SAME_IOU) == [no_entry]
+
+
+def test_placements_of_one_drawing_keep_the_face_its_colour_implies():
+    # a priority road 3.03 at 70 px (tests/core/test_split_diamond.py): its face as the yellow's extent implies,
+    # and its rim's inner edge 5 px inside, read at a higher logit; the logit does not choose between placements
+    face = _reading((251, 121, 68, 68), "3.03", 0.994, 6.27)
+    inner_rim = _reading((255, 125, 60, 60), "3.03", 0.998, 6.91)
+    drawn = {id(face): ("3.03", (0.0, 0.0, 1.0, 1.0)), id(inner_rim): ("3.03", (0.0, 0.0, 1.0, 1.0))}.get
+    assert most_evident_per_face([face, inner_rim], SAME_IOU, None, lambda r: drawn(id(r))) == [face]
+    assert most_evident_per_face([face, inner_rim], SAME_IOU) == [inner_rim]  # by the logit alone
+    # a rim read clearly better than the colour's placement stands for the drawing
+    loose = _reading((251, 121, 68, 68), "3.03", 0.90, 6.27)
+    drawn = {id(loose): ("3.03", (0.0, 0.0, 1.0, 1.0)), id(inner_rim): ("3.03", (0.0, 0.0, 1.0, 1.0))}.get
+    assert most_evident_per_face([loose, inner_rim], SAME_IOU, None, lambda r: drawn(id(r))) == [inner_rim]
